@@ -1,0 +1,96 @@
+#include "assets/image.h"
+
+#include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imagebufalgo.h>
+#include <OpenImageIO/imageio.h>
+
+#include <algorithm>
+#include <string>
+
+#include "core/error.h"
+
+namespace terrasol {
+namespace {
+
+constexpr int kMaxSide = 32768;  // larger headers are corrupt or hostile; refuse before allocating
+
+OIIO::ImageBuf wrap(const Image& image) {
+  OIIO::ImageSpec spec(image.width, image.height, 4, OIIO::TypeDesc::UINT8);
+  // ImageBuf only reads through this pointer in the callers below.
+  return OIIO::ImageBuf(spec, const_cast<std::uint8_t*>(image.rgba.data()));
+}
+
+void expandToRgba(const std::vector<std::uint8_t>& src, int channels, Image& out) {
+  const std::size_t n = static_cast<std::size_t>(out.width) * out.height;
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::uint8_t* s = &src[i * channels];
+    std::uint8_t* d = &out.rgba[i * 4];
+    if (channels <= 2) {
+      d[0] = d[1] = d[2] = s[0];
+      d[3] = channels == 2 ? s[1] : 255;
+    } else {
+      d[0] = s[0];
+      d[1] = s[1];
+      d[2] = s[2];
+      d[3] = channels >= 4 ? s[3] : 255;
+    }
+  }
+}
+
+}  // namespace
+
+Image loadImage(const std::filesystem::path& file) {
+  auto in = OIIO::ImageInput::open(file.string());
+  if (!in) throw Error(locate(file, 0, "cannot read image: " + OIIO::geterror()));
+  const OIIO::ImageSpec& spec = in->spec();
+  if (spec.width <= 0 || spec.height <= 0 || spec.width > kMaxSide || spec.height > kMaxSide ||
+      spec.nchannels <= 0) {
+    throw Error(locate(file, 0,
+                       "unsupported image size " + std::to_string(spec.width) + "x" +
+                           std::to_string(spec.height) + " with " + std::to_string(spec.nchannels) +
+                           " channels"));
+  }
+  const int channels = std::min(spec.nchannels, 4);
+  std::vector<std::uint8_t> raw(static_cast<std::size_t>(spec.width) * spec.height * channels);
+  if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::UINT8, raw.data())) {
+    throw Error(locate(file, 0, "corrupt or truncated image: " + in->geterror()));
+  }
+  Image image(spec.width, spec.height);
+  expandToRgba(raw, channels, image);
+  return image;
+}
+
+void saveImage(const std::filesystem::path& file, const Image& image) {
+  auto out = OIIO::ImageOutput::create(file.string());
+  if (!out) throw Error(locate(file, 0, "cannot write image: " + OIIO::geterror()));
+  OIIO::ImageSpec spec(image.width, image.height, 4, OIIO::TypeDesc::UINT8);
+  if (!out->open(file.string(), spec) ||
+      !out->write_image(OIIO::TypeDesc::UINT8, image.rgba.data()) || !out->close()) {
+    throw Error(locate(file, 0, "cannot write image: " + out->geterror()));
+  }
+}
+
+ImageComparison compareImages(const Image& actual, const Image& expected, const ImageTolerance& tolerance) {
+  ImageComparison result;
+  result.sameSize = actual.width == expected.width && actual.height == expected.height;
+  if (!result.sameSize || actual.width == 0 || actual.height == 0) return result;
+
+  const OIIO::ImageBuf a = wrap(actual);
+  const OIIO::ImageBuf b = wrap(expected);
+  const auto stats = OIIO::ImageBufAlgo::compare(a, b, tolerance.pixel, tolerance.pixel);
+  const double pixels = static_cast<double>(actual.width) * actual.height;
+  result.failingPixels = static_cast<std::int64_t>(stats.nfail);
+  result.failingPercent = 100.0 * static_cast<double>(stats.nfail) / pixels;
+  result.maxError = stats.maxerror;
+  // (stats.error is set whenever any pixel fails, so it says nothing beyond nfail.)
+  result.matches = result.failingPercent <= tolerance.percent;
+
+  OIIO::ImageBuf diff = OIIO::ImageBufAlgo::absdiff(a, b);
+  diff = OIIO::ImageBufAlgo::mul(diff, {8.0f, 8.0f, 8.0f, 0.0f});
+  diff = OIIO::ImageBufAlgo::add(diff, {0.0f, 0.0f, 0.0f, 1.0f});
+  result.diff = Image(actual.width, actual.height);
+  diff.get_pixels(OIIO::ROI::All(), OIIO::TypeDesc::UINT8, result.diff.rgba.data());
+  return result;
+}
+
+}  // namespace terrasol

@@ -1,0 +1,22 @@
+#pragma once
+// Errors at load boundaries: every message names the file, the place in it and what is wrong.
+
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+namespace terrasol {
+
+class Error : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// "FILE:LINE: what" (line omitted when 0), the form compilers use, so editors can jump to it.
+std::string locate(const std::filesystem::path& file, int line, std::string_view what);
+
+// Reads a whole file; throws Error naming the file when it cannot.
+std::string readTextFile(const std::filesystem::path& file);
+
+}  // namespace terrasol

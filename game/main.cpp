@@ -1,0 +1,63 @@
+// terrasol: the game. For now it shows the test scene in a window; with no display it says so and
+// renders a short demo headless instead.
+
+#include <cstdio>
+#include <exception>
+
+#include "core/log.h"
+#include "core/paths.h"
+#include "demo.h"
+#include "options.h"
+#include "platform/glfw/glfw_window.h"
+#include "render/cube_scene.h"
+
+namespace terrasol {
+namespace {
+
+int runWindowed(GlfwWindow& window, const GameOptions& options) {
+  logInfo("OpenGL: " + window.description());
+  const ShaderPreprocessor shaders(shaderDir());
+  const CubeScene scene(shaders, CubeScene::standardCubes());
+  for (int frame = 0; !window.shouldClose(); ++frame) {
+    if (options.frames && frame >= *options.frames) break;
+    window.pollEvents();
+    const DemoView view = demoView(window.time());
+    scene.draw(0, window.framebufferSize(), view.camera, view.towardLight);
+    window.checkErrors("frame");
+    window.swapBuffers();
+  }
+  return 0;
+}
+
+int run(const GameOptions& options) {
+  try {
+    GlfwWindow window("Terrasol", options.size);
+    return runWindowed(window, options);
+  } catch (const NoDisplayError& e) {
+    constexpr int kDemoFrames = 8;
+    std::printf("terrasol: %s.\nNo window can be opened here, so rendering a %d-frame demo headless instead...\n",
+                e.what(), kDemoFrames);
+    std::fflush(stdout);
+    const auto dir = renderHeadlessDemo(options.demoDir, kDemoFrames, {640, 360});
+    std::printf("terrasol: wrote %d demo frames to %s/frame_0000.png ... frame_%04d.png\n", kDemoFrames,
+                dir.string().c_str(), kDemoFrames - 1);
+    return 0;
+  }
+}
+
+}  // namespace
+}  // namespace terrasol
+
+int main(int argc, char** argv) {
+  try {
+    const auto options = terrasol::parseGameOptions({argv + 1, argv + argc});
+    if (options.help) {
+      std::fputs(terrasol::gameUsage().c_str(), stdout);
+      return 0;
+    }
+    return terrasol::run(options);
+  } catch (const std::exception& e) {
+    terrasol::logError(e.what());
+    return 1;
+  }
+}

@@ -1,0 +1,73 @@
+#include <map>
+
+#include "render/gl/program.h"
+#include "render/gl_slots.h"
+#include "support/gl_test.h"
+
+namespace terrasol {
+namespace {
+
+using testing::GlTest;
+
+ShaderPreprocessor memory(std::map<std::string, std::string> files) {
+  return ShaderPreprocessor([files = std::move(files)](const std::string& path) -> std::optional<std::string> {
+    const auto it = files.find(path);
+    return it == files.end() ? std::nullopt : std::optional(it->second);
+  });
+}
+
+const std::string kVertex =
+    "#version 450 core\n"
+    "layout(location = ATTRIB_POSITION) in vec3 a_position;\n"
+    "void main() { gl_Position = vec4(a_position, 1.0); }\n";
+
+TEST_F(GlTest, BrokenShaderErrorNamesTheOriginalFileAndLine) {
+  const auto sources = memory({
+      {"t.vert", kVertex},
+      {"t.frag",
+       "#version 450 core\n"
+       "#include \"lib/helpers.glsl\"\n"
+       "out vec4 o;\n"
+       "void main() { o = vec4(helper()); }\n"},
+      {"lib/helpers.glsl",
+       "// helpers\n"
+       "float helper() {\n"
+       "  return undefined_variable * 2.0;\n"
+       "}\n"},
+  });
+  try {
+    buildProgram(sources, {{GL_VERTEX_SHADER, "t.vert"}, {GL_FRAGMENT_SHADER, "t.frag"}}, slotDefines());
+    FAIL() << "the broken shader compiled";
+  } catch (const ShaderError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("shaders/lib/helpers.glsl:3:"), std::string::npos) << what;
+    EXPECT_NE(what.find("undefined_variable"), std::string::npos) << what;
+  }
+}
+
+TEST_F(GlTest, InjectedSlotDefinesReachTheShader) {
+  const auto sources = memory({
+      {"t.vert", kVertex},
+      {"t.frag", "#version 450 core\nlayout(location = OUT_COLOR) out vec4 o;\nvoid main() { o = vec4(1.0); }\n"},
+  });
+  const gl::Program program =
+      buildProgram(sources, {{GL_VERTEX_SHADER, "t.vert"}, {GL_FRAGMENT_SHADER, "t.frag"}}, slotDefines());
+  EXPECT_EQ(glGetAttribLocation(program.id(), "a_position"), slots::kAttribPosition);
+  EXPECT_EQ(glGetFragDataLocation(program.id(), "o"), slots::kOutColor);
+}
+
+TEST_F(GlTest, LinkErrorNamesTheStages) {
+  const auto sources = memory({
+      {"t.vert", "#version 450 core\nout vec3 v_missing;\nvoid main() { v_missing = vec3(0); gl_Position = vec4(0); }\n"},
+      {"t.frag", "#version 450 core\nin vec4 v_other;\nout vec4 o;\nvoid main() { o = v_other; }\n"},
+  });
+  try {
+    buildProgram(sources, {{GL_VERTEX_SHADER, "t.vert"}, {GL_FRAGMENT_SHADER, "t.frag"}}, {});
+    FAIL() << "mismatched stages linked";
+  } catch (const ShaderError& e) {
+    EXPECT_NE(std::string(e.what()).find("shaders/t.vert + shaders/t.frag"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace terrasol
