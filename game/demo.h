@@ -12,6 +12,9 @@ struct DemoView {
   glm::vec3 towardLight;
 };
 
+// Seconds per frame when the game runs a fixed number of frames (--frames).
+inline constexpr double kFixedStep = 1.0 / 60.0;
+
 // The view `seconds` into the demo.
 DemoView demoView(double seconds);
 

@@ -10,6 +10,7 @@
 #include "options.h"
 #include "platform/glfw/glfw_window.h"
 #include "render/cube_scene.h"
+#include "render/gl/render_target.h"
 
 namespace terrasol {
 namespace {
@@ -19,12 +20,19 @@ int runWindowed(GlfwWindow& window, const GameOptions& options) {
   const ShaderPreprocessor shaders(shaderDir());
   const CubeScene scene(shaders, CubeScene::standardCubes());
   for (int frame = 0; !window.shouldClose(); ++frame) {
-    if (options.frames && frame >= *options.frames) break;
     window.pollEvents();
-    const DemoView view = demoView(window.time());
+    // A fixed step when the frame count is fixed, so smoke-test screenshots are reproducible.
+    const double seconds = options.frames ? frame * kFixedStep : window.time();
+    const DemoView view = demoView(seconds);
     scene.draw(0, window.framebufferSize(), view.camera, view.towardLight);
     window.checkErrors("frame");
+    const bool last = options.frames && frame + 1 >= *options.frames;
+    if (last && !options.screenshot.empty()) {
+      saveImage(options.screenshot, readFramebuffer(0, window.framebufferSize()));
+      logInfo("screenshot saved to " + options.screenshot.string());
+    }
     window.swapBuffers();
+    if (last) break;
   }
   return 0;
 }

@@ -29,6 +29,7 @@ std::string gameUsage() {
   return "usage: terrasol [options]\n"
          "  --frames N        quit after N frames (for smoke tests)\n"
          "  --size WxH        window size in pixels (default 1280x720)\n"
+         "  --screenshot FILE save the last frame as an image (with --frames)\n"
          "  --demo-dir DIR    where to write the headless demo when there is no display\n"
          "                    (default: demo/ beside the executable)\n"
          "  --help            show this text\n";
@@ -49,12 +50,15 @@ GameOptions parseGameOptions(const std::vector<std::string>& args) {
       options.frames = parseInt(arg, value(), 1);
     } else if (arg == "--size") {
       options.size = parseSize(arg, value());
+    } else if (arg == "--screenshot") {
+      options.screenshot = value();
     } else if (arg == "--demo-dir") {
       options.demoDir = value();
     } else {
       throw Error("unknown option '" + arg + "' (see --help)");
     }
   }
+  if (!options.screenshot.empty() && !options.frames) throw Error("--screenshot needs --frames");
   return options;
 }
 

@@ -14,6 +14,7 @@ struct GameOptions {
   std::optional<int> frames;                 // quit after this many frames (smoke tests)
   glm::ivec2 size{1280, 720};                // window size
   std::filesystem::path demoDir;             // where the headless demo goes when there is no display
+  std::filesystem::path screenshot;          // with --frames: the last frame is saved here
   bool help = false;
 };
 

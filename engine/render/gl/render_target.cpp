@@ -26,16 +26,22 @@ RenderTarget::RenderTarget(glm::ivec2 size)
   }
 }
 
-Image RenderTarget::readPixels() const {
-  Image image(size_.x, size_.y);
+Image readFramebuffer(GLuint framebuffer, glm::ivec2 size) {
+  Image image(size.x, size.y);
+  if (size.x <= 0 || size.y <= 0) return image;
+  glNamedFramebufferReadBuffer(framebuffer, framebuffer == 0 ? GL_BACK : GL_COLOR_ATTACHMENT0);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer);
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glGetTextureImage(color_.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, static_cast<GLsizei>(image.rgba.size()),
-                    image.rgba.data());
-  const std::size_t row = static_cast<std::size_t>(size_.x) * 4;
-  for (int y = 0; y < size_.y / 2; ++y) {
-    std::swap_ranges(image.pixel(0, y), image.pixel(0, y) + row, image.pixel(0, size_.y - 1 - y));
+  glReadnPixels(0, 0, size.x, size.y, GL_RGBA, GL_UNSIGNED_BYTE, static_cast<GLsizei>(image.rgba.size()),
+                image.rgba.data());
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+  const std::size_t row = static_cast<std::size_t>(size.x) * 4;
+  for (int y = 0; y < size.y / 2; ++y) {  // GL's rows run bottom to top
+    std::swap_ranges(image.pixel(0, y), image.pixel(0, y) + row, image.pixel(0, size.y - 1 - y));
   }
   return image;
 }
+
+Image RenderTarget::readPixels() const { return readFramebuffer(framebuffer_.id(), size_); }
 
 }  // namespace terrasol

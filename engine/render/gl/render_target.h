@@ -9,6 +9,9 @@
 
 namespace terrasol {
 
+// Reads colour attachment 0 of `framebuffer` (the back buffer for 0), top row first.
+Image readFramebuffer(GLuint framebuffer, glm::ivec2 size);
+
 class RenderTarget {
  public:
   // Throws Error for a non-positive size or an incomplete framebuffer.
