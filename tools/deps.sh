@@ -12,6 +12,8 @@ packages=(
   libgl1-mesa-dri libegl-mesa0
   # math, images, models, JSON
   libglm-dev libopenimageio-dev libtinygltf-dev nlohmann-json3-dev libstb-dev
+  # saves: chunk compression and checksums
+  libzstd-dev libxxhash-dev
   # tests and benchmarks
   libgtest-dev libgmock-dev libbenchmark-dev
   # a virtual display for windowed smoke tests

@@ -1,0 +1,35 @@
+#pragma once
+// Block types as data: everything the light, mesh and render code needs to know about a block.
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace terrasol {
+
+using BlockId = std::uint16_t;  // index into the BlockRegistry; 0 is always air
+inline constexpr BlockId kAir = 0;
+
+enum class BlockShape : std::uint8_t { None, Cube, Cross, Liquid, Torch };
+enum class RenderLayer : std::uint8_t { None, Opaque, Cutout, Translucent };
+enum class Tint : std::uint8_t { None, Grass, Foliage, Water };
+
+// Texture names per face in Direction order (west, east, down, up, north, south). Each face lists
+// candidates, first found in the packs wins (e.g. "short_grass" then its pre-1.20.3 name "grass").
+using FaceTextures = std::array<std::vector<std::string>, 6>;
+
+struct BlockType {
+  std::string name;
+  BlockShape shape = BlockShape::None;
+  RenderLayer layer = RenderLayer::None;
+  std::uint8_t opacity = 0;   // light lost passing through, 0..15; 15 stops light
+  std::uint8_t emission = 0;  // light level emitted, 0..15
+  Tint tint = Tint::None;
+  FaceTextures textures;
+
+  // A full opaque cube: hides neighbouring faces and is solid to walk on.
+  bool isOpaqueCube() const { return shape == BlockShape::Cube && layer == RenderLayer::Opaque; }
+};
+
+}  // namespace terrasol

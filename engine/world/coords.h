@@ -1,0 +1,54 @@
+#pragma once
+// Integer world coordinates. Blocks are int32 on every axis: the world border at ±30 000 000 fits
+// with room to spare, and chunk coordinates are exact (no floating point anywhere in addressing).
+
+#include <compare>
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+
+namespace terrasol {
+
+inline constexpr int kChunkSize = 16;  // blocks per chunk and per section along each axis
+inline constexpr int kMinY = -64;      // lowest block (inclusive)
+inline constexpr int kMaxY = 320;      // one above the highest block
+inline constexpr int kSectionCount = (kMaxY - kMinY) / kChunkSize;
+inline constexpr int kWorldBorder = 30'000'000;
+static_assert(kSectionCount == 24);
+static_assert((kMaxY - kMinY) % kChunkSize == 0);
+
+// Floor division by 16 for negative values too (-1 -> chunk -1, local 15).
+constexpr int chunkOf(int block) { return block >> 4; }
+constexpr int localOf(int block) { return block & 15; }
+
+struct BlockPos {
+  int x = 0, y = 0, z = 0;
+  friend constexpr auto operator<=>(const BlockPos&, const BlockPos&) = default;
+  constexpr BlockPos offset(int dx, int dy, int dz) const { return {x + dx, y + dy, z + dz}; }
+};
+
+struct ChunkPos {
+  int x = 0, z = 0;
+  friend constexpr auto operator<=>(const ChunkPos&, const ChunkPos&) = default;
+  static constexpr ChunkPos of(const BlockPos& p) { return {chunkOf(p.x), chunkOf(p.z)}; }
+  constexpr int minBlockX() const { return x * kChunkSize; }
+  constexpr int minBlockZ() const { return z * kChunkSize; }
+};
+
+constexpr bool inWorldHeight(int y) { return y >= kMinY && y < kMaxY; }
+constexpr int sectionOf(int y) { return (y - kMinY) >> 4; }  // valid for y in world height
+
+// The six face directions, in the order neighbours and faces are numbered everywhere.
+enum class Direction : std::uint8_t { West, East, Down, Up, North, South };  // -x +x -y +y -z +z
+inline constexpr BlockPos kDirectionOffsets[6] = {{-1, 0, 0}, {1, 0, 0}, {0, -1, 0}, {0, 1, 0}, {0, 0, -1}, {0, 0, 1}};
+
+}  // namespace terrasol
+
+template <>
+struct std::hash<terrasol::ChunkPos> {
+  std::size_t operator()(const terrasol::ChunkPos& p) const noexcept {
+    const auto key = (static_cast<std::uint64_t>(static_cast<std::uint32_t>(p.x)) << 32) |
+                     static_cast<std::uint32_t>(p.z);
+    return static_cast<std::size_t>(key * 0x9E3779B97F4A7C15ull);  // Fibonacci hashing mixes both halves
+  }
+};

@@ -1,0 +1,46 @@
+#pragma once
+// Chunk generators: pure functions from (settings, chunk position) to blocks. `generate` is const and
+// touches no shared mutable state, so any number of worker threads call it at once, and a chunk's
+// blocks never depend on which thread made it or in which order.
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "world/block_registry.h"
+#include "world/chunk.h"
+
+namespace terrasol {
+
+class ChunkGenerator {
+ public:
+  virtual ~ChunkGenerator() = default;
+  // Fills `chunk`, which is all air on entry.
+  virtual void generate(Chunk& chunk) const = 0;
+  // The y of the highest block the generator puts in this column before carving (kMinY - 1 for none);
+  // the game spawns the player above it.
+  virtual int surfaceHeight(int x, int z) const = 0;
+};
+
+struct FlatLayer {
+  BlockId block = kAir;
+  int thickness = 1;
+};
+
+struct GeneratorSettings {
+  std::string type = "terrain";  // "void" | "flat" | "terrain"
+  std::uint64_t seed = 0;
+  std::vector<FlatLayer> flatLayers;  // for "flat", bottom first from y = 0; empty means the default
+};
+
+// Minecraft's superflat layer string, bottom first: "bedrock,59*stone,3*dirt,grass_block"
+// ("minecraft:" prefixes allowed). Throws Error naming the bad entry.
+std::vector<FlatLayer> parseFlatLayers(const std::string& text, const BlockRegistry& blocks);
+// bedrock x1, stone x59, dirt x3, grass_block x1: the surface is y = 63, standing height y = 64.
+std::vector<FlatLayer> defaultFlatLayers(const BlockRegistry& blocks);
+
+// Throws Error for an unknown type.
+std::unique_ptr<ChunkGenerator> makeGenerator(const GeneratorSettings& settings, const BlockRegistry& blocks);
+
+}  // namespace terrasol

@@ -1,0 +1,138 @@
+// Features the terrain generator adds after shaping and carving. Each feature is placed from hashes
+// of the seed and the chunk it starts in; features that reach across a border (trees) are replayed
+// by every chunk they touch, each writing only its own blocks, so the result is independent of
+// generation order.
+
+#include "world/terrain_generator.h"
+
+#include <cmath>
+#include <cstdlib>
+
+namespace terrasol {
+namespace {
+
+// Feature kinds, mixed into hashes so each draws its own random numbers.
+enum Salt : std::int64_t { kOreSalt = 101, kGlowSalt = 102, kTreeSalt = 103, kPlantSalt = 104 };
+
+bool insideChunk(const Chunk& chunk, int wx, int wz) {
+  return chunkOf(wx) == chunk.pos().x && chunkOf(wz) == chunk.pos().z;
+}
+
+BlockId getWorld(const Chunk& chunk, int wx, int y, int wz) { return chunk.get(localOf(wx), y, localOf(wz)); }
+void setWorld(Chunk& chunk, int wx, int y, int wz, BlockId id) { chunk.set(localOf(wx), y, localOf(wz), id); }
+
+struct OreKind {
+  BlockId TerrainGenerator::Blocks::*block;
+  int attempts;  // veins started per chunk
+  int minY, maxY;
+  double radius;
+};
+
+}  // namespace
+
+void TerrainGenerator::placeOres(Chunk& chunk) const {
+  static constexpr OreKind kOres[] = {
+      {&Blocks::coalOre, 14, 0, 130, 1.6},
+      {&Blocks::ironOre, 10, -60, 72, 1.3},
+      {&Blocks::goldOre, 3, -60, 30, 1.1},
+  };
+  const ChunkPos p = chunk.pos();
+  for (std::size_t kind = 0; kind < std::size(kOres); ++kind) {
+    const OreKind& ore = kOres[kind];
+    for (int i = 0; i < ore.attempts; ++i) {
+      const std::uint64_t h = hashCoords(seed_ ^ (kOreSalt + kind), p.x, i, p.z);
+      const int cx = static_cast<int>(h & 15), cz = static_cast<int>((h >> 4) & 15);
+      const int cy = ore.minY + static_cast<int>((h >> 8) % static_cast<std::uint64_t>(ore.maxY - ore.minY));
+      const int r = static_cast<int>(std::ceil(ore.radius));
+      for (int dy = -r; dy <= r; ++dy)
+        for (int dz = -r; dz <= r; ++dz)
+          for (int dx = -r; dx <= r; ++dx) {
+            const int x = cx + dx, y = cy + dy, z = cz + dz;
+            if (x < 0 || x > 15 || z < 0 || z > 15 || dx * dx + dy * dy + dz * dz > ore.radius * ore.radius) continue;
+            // Ragged edges: each cell of the sphere is kept with probability 3/4.
+            if ((hashCoords(h, dx, dy, dz) & 3) == 0) continue;
+            if (chunk.get(x, y, z) == b_.stone) chunk.set(x, y, z, b_.*ore.block);
+          }
+    }
+  }
+}
+
+void TerrainGenerator::placeGlowstone(Chunk& chunk) const {
+  const ChunkPos p = chunk.pos();
+  for (int i = 0; i < 8; ++i) {
+    const std::uint64_t h = hashCoords(seed_ ^ kGlowSalt, p.x, i, p.z);
+    const int x = static_cast<int>(h & 15), z = static_cast<int>((h >> 4) & 15);
+    const int start = -56 + static_cast<int>((h >> 8) % 50);  // deep caves, y -56..-7
+    // Find a cave ceiling above the start: air with stone over it.
+    int ceiling = kMinY - 1;
+    for (int y = start; y < start + 16; ++y) {
+      if (chunk.get(x, y, z) == kAir && chunk.get(x, y + 1, z) == b_.stone) {
+        ceiling = y + 1;
+        break;
+      }
+    }
+    if (ceiling < kMinY) continue;
+    // A hanging cluster: the ceiling block becomes glowstone and blobs grow down into the air.
+    for (int dy = 0; dy >= -3; --dy)
+      for (int dz = -2; dz <= 2; ++dz)
+        for (int dx = -2; dx <= 2; ++dx) {
+          const int bx = x + dx, by = ceiling + dy, bz = z + dz;
+          if (bx < 0 || bx > 15 || bz < 0 || bz > 15) continue;
+          const int reach = 2 + dy;  // narrower the lower it hangs
+          if (dx * dx + dz * dz > reach * reach + 1 || (hashCoords(h, dx, dy, dz) & 3) == 0) continue;
+          const BlockId here = chunk.get(bx, by, bz);
+          if ((dy == 0 && here == b_.stone) || (dy < 0 && here == kAir)) chunk.set(bx, by, bz, b_.glowstone);
+        }
+  }
+}
+
+void TerrainGenerator::placeTrees(Chunk& chunk) const {
+  const ChunkPos p = chunk.pos();
+  for (int ncz = p.z - 1; ncz <= p.z + 1; ++ncz)
+    for (int ncx = p.x - 1; ncx <= p.x + 1; ++ncx) {
+      // Forest density varies smoothly: none on open plains, up to 8 trees per chunk in woods.
+      const double forest = forests_.fractal(ncx / 12.0, ncz / 12.0, 2) * 2.0;
+      const int attempts = forest > 0.1 ? static_cast<int>(std::min(8.0, 2.0 + forest * 10.0)) : 1;
+      for (int i = 0; i < attempts; ++i) {
+        const std::uint64_t h = hashCoords(seed_ ^ kTreeSalt, ncx, i, ncz);
+        if (forest <= 0.1 && (h >> 60) > 3) continue;  // lone trees on plains: 1 chunk in 4
+        const int tx = ncx * 16 + static_cast<int>(h & 15), tz = ncz * 16 + static_cast<int>((h >> 4) & 15);
+        const int ground = surfaceHeight(tx, tz);
+        if (ground <= kSeaLevel + 1 || ground >= 118) continue;  // not on beaches, sea beds or rock
+        if (caveDensity(tx, ground, tz) < 0.0 && carveAllowed(ground, ground)) continue;  // ground carved away
+        const int trunk = 4 + static_cast<int>((h >> 8) % 3);
+        const int top = ground + trunk;
+        // Leaves: two wide layers below the top, two narrow ones at and above it.
+        for (int y = top - 2; y <= top + 1; ++y) {
+          const int radius = y < top ? 2 : 1;
+          for (int dz = -radius; dz <= radius; ++dz)
+            for (int dx = -radius; dx <= radius; ++dx) {
+              const bool corner = std::abs(dx) == radius && std::abs(dz) == radius;
+              if (corner && (radius == 1 ? y == top + 1 : (hashCoords(h, dx, y, dz) & 1))) continue;
+              const int lx = tx + dx, lz = tz + dz;
+              if (insideChunk(chunk, lx, lz) && getWorld(chunk, lx, y, lz) == kAir) {
+                setWorld(chunk, lx, y, lz, b_.leaves);
+              }
+            }
+        }
+        if (insideChunk(chunk, tx, tz)) {
+          setWorld(chunk, tx, ground, tz, b_.dirt);
+          for (int y = ground + 1; y < top; ++y) setWorld(chunk, tx, y, tz, b_.log);
+        }
+      }
+    }
+}
+
+void TerrainGenerator::placePlants(Chunk& chunk) const {
+  const int x0 = chunk.pos().minBlockX(), z0 = chunk.pos().minBlockZ();
+  for (int z = 0; z < 16; ++z)
+    for (int x = 0; x < 16; ++x) {
+      const int y = surfaceHeight(x0 + x, z0 + z);
+      if (chunk.get(x, y, z) != b_.grass || chunk.get(x, y + 1, z) != kAir) continue;
+      const std::uint64_t roll = hashCoords(seed_ ^ kPlantSalt, x0 + x, y, z0 + z) % 100;
+      const BlockId plant = roll < 14 ? b_.shortGrass : roll < 15 ? b_.dandelion : roll < 16 ? b_.poppy : kAir;
+      if (plant != kAir) chunk.set(x, y + 1, z, plant);
+    }
+}
+
+}  // namespace terrasol

@@ -1,0 +1,51 @@
+#pragma once
+// The `terrain` generator: seeded, deterministic Minecraft-like land. Shape from 2D noise (continents,
+// hills, ridged mountains), sea-level water, beaches, snowy peaks; 3D noise caves (tunnels and
+// caverns, open to the surface on land), lava below y = -54; then features: ores, glowstone clusters
+// on deep cave ceilings, oak trees, grass and flowers.
+
+#include <array>
+#include <cstdint>
+
+#include "world/generator.h"
+#include "world/noise.h"
+
+namespace terrasol {
+
+class TerrainGenerator final : public ChunkGenerator {
+ public:
+  static constexpr int kSeaLevel = 62;  // highest water block
+  static constexpr int kLavaLevel = -54;  // caves at or below fill with lava
+
+  TerrainGenerator(std::uint64_t seed, const BlockRegistry& blocks);
+
+  void generate(Chunk& chunk) const override;
+  int surfaceHeight(int x, int z) const override;
+
+  // Cave density at a block: negative inside a cave. Pure; the same value generate() uses.
+  double caveDensity(int x, int y, int z) const;
+
+  struct Blocks {
+    BlockId stone, dirt, grass, sand, gravel, bedrock, water, lava, snow, log, leaves, shortGrass, dandelion,
+        poppy, coalOre, ironOre, goldOre, glowstone;
+  };
+
+ private:
+  // Cave density is evaluated on a lattice of 4 x 8 x 4 blocks and interpolated in between.
+  static constexpr int kCaveCellXZ = 4;
+  static constexpr int kCaveCellY = 8;
+
+  double caveLattice(std::int64_t cx, std::int64_t cy, std::int64_t cz) const;
+  bool carveAllowed(int y, int surface) const;
+
+  void placeOres(Chunk& chunk) const;
+  void placeGlowstone(Chunk& chunk) const;
+  void placeTrees(Chunk& chunk) const;
+  void placePlants(Chunk& chunk) const;
+
+  std::uint64_t seed_;
+  Blocks b_;
+  Noise continents_, hills_, mountains_, ridges_, tunnelA_, tunnelB_, caverns_, forests_;
+};
+
+}  // namespace terrasol
