@@ -44,7 +44,11 @@ class World {
 
   template <class F>
   void forEachChunk(F&& f) const {
-    for (const auto& [pos, chunk] : chunks_) f(*chunk);
+    for (const auto& [pos, chunk] : chunks_) f(static_cast<const Chunk&>(*chunk));
+  }
+  template <class F>
+  void forEachChunk(F&& f) {
+    for (auto& [pos, chunk] : chunks_) f(*chunk);
   }
 
  private:

@@ -1,0 +1,61 @@
+#include "world/chunk_streamer.h"
+
+#include <cstdlib>
+#include <utility>
+
+namespace terrasol {
+namespace {
+
+int chebyshev(ChunkPos a, ChunkPos b) { return std::max(std::abs(a.x - b.x), std::abs(a.z - b.z)); }
+
+}  // namespace
+
+ChunkStreamer::ChunkStreamer(World& world, const ChunkGenerator& generator, WorldStorage* storage, int threads,
+                             int radius)
+    : world_(world), storage_(storage), radius_(radius), loader_(generator, storage, threads) {}
+
+std::vector<ChunkPos> ChunkStreamer::update(ChunkPos center) {
+  loader_.setCenter(center);
+  std::vector<ChunkPos> added;
+  for (auto& chunk : loader_.takeFinished()) {
+    const ChunkPos pos = chunk->pos();
+    requested_.erase(pos);
+    if (chebyshev(pos, center) > radius_ + 1 || world_.isLoaded(pos)) continue;  // no longer wanted
+    world_.insertChunk(std::move(chunk));
+    added.push_back(pos);
+  }
+
+  // Unload what is out of range; edited chunks are saved first.
+  std::vector<ChunkPos> far;
+  std::as_const(world_).forEachChunk([&](const Chunk& c) {
+    if (chebyshev(c.pos(), center) > radius_ + 1) far.push_back(c.pos());
+  });
+  for (ChunkPos pos : far) {
+    auto chunk = world_.removeChunk(pos);
+    if (storage_ && chunk->modified()) storage_->save(*chunk);
+  }
+  loader_.cancelIf([&](ChunkPos pos) {
+    const bool drop = chebyshev(pos, center) > radius_ + 1;
+    if (drop) requested_.erase(pos);
+    return drop;
+  });
+
+  for (int dz = -radius_; dz <= radius_; ++dz)
+    for (int dx = -radius_; dx <= radius_; ++dx) {
+      const ChunkPos pos{center.x + dx, center.z + dz};
+      if (!world_.isLoaded(pos) && requested_.insert(pos).second) loader_.request(pos);
+    }
+  return added;
+}
+
+void ChunkStreamer::saveAll() {
+  if (!storage_) return;
+  world_.forEachChunk([&](Chunk& c) {
+    if (!c.modified()) return;
+    storage_->save(c);
+    c.setModified(false);
+  });
+  storage_->flush();
+}
+
+}  // namespace terrasol

@@ -1,0 +1,36 @@
+#pragma once
+// Keeps the chunks around a centre loaded: requests missing ones from a ChunkLoader, adds finished
+// ones to the World, and saves (when edited) and unloads those that fall out of range, so memory
+// stays bounded however far the player travels. Main thread only.
+
+#include <unordered_set>
+#include <vector>
+
+#include "world/chunk_loader.h"
+#include "world/world.h"
+
+namespace terrasol {
+
+class ChunkStreamer {
+ public:
+  // Chunks within `radius` (in chunks, a square) of the centre are loaded; those beyond radius + 1
+  // are unloaded (the margin keeps a player walking along a border from reloading chunks).
+  ChunkStreamer(World& world, const ChunkGenerator& generator, WorldStorage* storage, int threads, int radius);
+
+  // Call once a frame. Never blocks on generation. Returns the chunks added to the world.
+  std::vector<ChunkPos> update(ChunkPos center);
+  // Saves every edited chunk (e.g. before quitting).
+  void saveAll();
+
+  int radius() const { return radius_; }
+  std::size_t pending() const { return loader_.pending(); }
+
+ private:
+  World& world_;
+  WorldStorage* storage_;
+  int radius_;
+  std::unordered_set<ChunkPos> requested_;
+  ChunkLoader loader_;  // last: its workers stop before the rest is destroyed
+};
+
+}  // namespace terrasol

@@ -1,0 +1,172 @@
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <map>
+#include <thread>
+
+#include "core/error.h"
+#include "support/world_support.h"
+#include "world/chunk_loader.h"
+#include "world/generator.h"
+#include "world/terrain_generator.h"
+
+namespace terrasol {
+namespace {
+
+using testing::defaultBlocks;
+using testing::sameBlocks;
+
+std::unique_ptr<Chunk> generate(const ChunkGenerator& g, ChunkPos pos) {
+  auto chunk = std::make_unique<Chunk>(pos);
+  g.generate(*chunk);
+  return chunk;
+}
+
+TEST(FlatGenerator, DefaultLayersPutTheGrassAtY63AndCostLittleMemory) {
+  const BlockRegistry& b = defaultBlocks();
+  const auto gen = makeGenerator({"flat", 0, {}}, b);
+  const auto chunk = generate(*gen, {-3, 7});
+  EXPECT_EQ(chunk->get(0, -1, 0), kAir);
+  EXPECT_EQ(chunk->get(4, 0, 9), b.id("bedrock"));
+  EXPECT_EQ(chunk->get(4, 1, 9), b.id("stone"));
+  EXPECT_EQ(chunk->get(4, 59, 9), b.id("stone"));
+  EXPECT_EQ(chunk->get(4, 60, 9), b.id("dirt"));
+  EXPECT_EQ(chunk->get(4, 62, 9), b.id("dirt"));
+  EXPECT_EQ(chunk->get(15, 63, 15), b.id("grass_block"));
+  EXPECT_EQ(chunk->get(15, 64, 15), kAir);
+  EXPECT_EQ(gen->surfaceHeight(0, 0), 63);
+  // Sections y 16..31 and 32..47 are all stone: uniform, no arrays. Only y 0..15 and 48..63 are mixed.
+  EXPECT_EQ(chunk->memoryBytes(), sizeof(Chunk) + 2 * 8192u);
+}
+
+TEST(FlatGenerator, LayerStringsParseLikeMinecraftsAndBadOnesAreNamed) {
+  const BlockRegistry& b = defaultBlocks();
+  const auto layers = parseFlatLayers("minecraft:bedrock,2*dirt,sand", b);
+  ASSERT_EQ(layers.size(), 3u);
+  EXPECT_EQ(layers[1].thickness, 2);
+  EXPECT_EQ(layers[2].block, b.id("sand"));
+  auto error = [&](const std::string& s) {
+    try {
+      parseFlatLayers(s, b);
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_NE(error("bedrock,3*diamond").find("unknown block 'diamond'"), std::string::npos);
+  EXPECT_NE(error("0*stone").find("COUNT >= 1"), std::string::npos);
+  EXPECT_NE(error("x*stone").find("entry 'x*stone'"), std::string::npos);
+  EXPECT_NE(error("400*stone").find("above the world top"), std::string::npos);
+  EXPECT_THROW(makeGenerator({"moon", 0, {}}, b), Error);
+}
+
+TEST(VoidGenerator, IsAllAir) {
+  const auto chunk = generate(*makeGenerator({"void", 0, {}}, defaultBlocks()), {5, 5});
+  EXPECT_EQ(chunk->memoryBytes(), sizeof(Chunk));
+}
+
+TEST(TerrainGenerator, SameSeedSameBlocksDifferentSeedDifferentBlocks) {
+  const auto a = makeGenerator({"terrain", 42, {}}, defaultBlocks());
+  const auto b = makeGenerator({"terrain", 42, {}}, defaultBlocks());
+  const auto c = makeGenerator({"terrain", 43, {}}, defaultBlocks());
+  for (ChunkPos p : {ChunkPos{0, 0}, ChunkPos{-7, 3}, ChunkPos{100, -250}}) {
+    EXPECT_TRUE(sameBlocks(*generate(*a, p), *generate(*b, p)));
+    EXPECT_FALSE(sameBlocks(*generate(*a, p), *generate(*c, p)));
+  }
+}
+
+// The loader's workers must produce exactly what a single thread does, whatever their number and
+// order (trees cross chunk borders, so this also checks features are order-independent).
+TEST(TerrainGenerator, ThreadCountDoesNotChangeTheWorld) {
+  const auto gen = makeGenerator({"terrain", 7, {}}, defaultBlocks());
+  std::vector<ChunkPos> positions;
+  for (int z = -3; z <= 3; ++z)
+    for (int x = -3; x <= 3; ++x) positions.push_back({x, z});
+  std::map<std::pair<int, int>, std::unique_ptr<Chunk>> reference;
+  for (ChunkPos p : positions) reference[{p.x, p.z}] = generate(*gen, p);
+
+  for (int threads : {1, 2, 4}) {
+    ChunkLoader loader(*gen, nullptr, threads);
+    loader.setCenter({3, -3});  // a different order for every thread count
+    for (ChunkPos p : positions) loader.request(p);
+    std::size_t received = 0;
+    while (received < positions.size()) {
+      for (auto& chunk : loader.takeFinished()) {
+        EXPECT_TRUE(sameBlocks(*chunk, *reference[{chunk->pos().x, chunk->pos().z}]))
+            << threads << " threads, chunk " << chunk->pos().x << "," << chunk->pos().z;
+        ++received;
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+    EXPECT_EQ(loader.pending(), 0u);
+  }
+}
+
+// Counts every block kind over an area, so the features the issue asks for are known to appear.
+std::map<std::string, int> census(const ChunkGenerator& gen, int cx0, int cz0, int n) {
+  std::map<std::string, int> counts;
+  const BlockRegistry& b = defaultBlocks();
+  for (int cz = cz0; cz < cz0 + n; ++cz)
+    for (int cx = cx0; cx < cx0 + n; ++cx) {
+      const auto chunk = generate(gen, {cx, cz});
+      for (int y = kMinY; y < kMaxY; ++y)
+        for (int z = 0; z < 16; ++z)
+          for (int x = 0; x < 16; ++x) {
+            const BlockId id = chunk->get(x, y, z);
+            // Air below the surface is cave.
+            const bool cave = id == kAir && y < gen.surfaceHeight(cx * 16 + x, cz * 16 + z) - 1;
+            ++counts[cave ? "cave air" : b[id].name];
+          }
+    }
+  return counts;
+}
+
+TEST(TerrainGenerator, HasEveryFeatureOfAMinecraftLikeWorld) {
+  const auto gen = makeGenerator({"terrain", 1, {}}, defaultBlocks());
+  const auto counts = census(*gen, -8, -8, 16);  // 256 x 256 blocks
+  for (const char* name : {"stone", "dirt", "grass_block", "sand", "water", "bedrock", "oak_log", "oak_leaves",
+                           "short_grass", "dandelion", "poppy", "coal_ore", "iron_ore", "gold_ore", "lava",
+                           "glowstone", "cave air"}) {
+    EXPECT_GT(counts.count(name) ? counts.at(name) : 0, 0) << name << " never generated";
+  }
+  // Heights cover sea, plains and mountains somewhere in a wider sample.
+  int lowest = kMaxY, highest = kMinY;
+  for (int z = -2000; z <= 2000; z += 50)
+    for (int x = -2000; x <= 2000; x += 50) {
+      lowest = std::min(lowest, gen->surfaceHeight(x, z));
+      highest = std::max(highest, gen->surfaceHeight(x, z));
+    }
+  EXPECT_LT(lowest, TerrainGenerator::kSeaLevel - 10);
+  EXPECT_GT(highest, 140);
+}
+
+TEST(TerrainGenerator, CavesOpenToTheSurfaceSomewhere) {
+  const auto gen = makeGenerator({"terrain", 1, {}}, defaultBlocks());
+  const TerrainGenerator& terrain = static_cast<const TerrainGenerator&>(*gen);
+  int openings = 0;
+  for (int z = -512; z < 512; z += 2)
+    for (int x = -512; x < 512; x += 2) {
+      const int h = gen->surfaceHeight(x, z);
+      if (h > TerrainGenerator::kSeaLevel + 2 && terrain.caveDensity(x, h, z) < 0.0) ++openings;
+    }
+  EXPECT_GT(openings, 10);
+}
+
+TEST(TerrainGenerator, FarAwayTerrainIsAsSmoothAsAtTheOrigin) {
+  const auto gen = makeGenerator({"terrain", 3, {}}, defaultBlocks());
+  auto maxStep = [&](int x0, int z0) {
+    int step = 0;
+    for (int i = 0; i < 2000; ++i) {
+      step = std::max(step, std::abs(gen->surfaceHeight(x0 + i + 1, z0) - gen->surfaceHeight(x0 + i, z0)));
+    }
+    return step;
+  };
+  const int near = maxStep(0, 0), far = maxStep(29'997'000, 29'999'000);
+  EXPECT_LE(far, std::max(near, 6)) << "terrain far away must not become jagged (float precision)";
+  EXPECT_GT(far, 0) << "terrain far away must not become flat";
+  const auto chunk = generate(*gen, ChunkPos::of({29'999'000, 0, 29'999'000}));
+  EXPECT_EQ(chunk->get(0, kMinY, 0), defaultBlocks().id("bedrock"));
+}
+
+}  // namespace
+}  // namespace terrasol

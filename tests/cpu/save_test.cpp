@@ -1,0 +1,247 @@
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <random>
+
+#include "core/error.h"
+#include "support/world_support.h"
+#include "world/chunk_codec.h"
+#include "world/chunk_streamer.h"
+#include "world/generator.h"
+#include "world/level.h"
+#include "world/region_file.h"
+#include "world/world_storage.h"
+
+namespace terrasol {
+namespace {
+
+using testing::defaultBlocks;
+using testing::sameBlocks;
+using testing::scratchDir;
+
+std::vector<std::uint8_t> readBytes(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), {}};
+}
+void writeBytes(const std::filesystem::path& file, const std::vector<std::uint8_t>& bytes, std::size_t count) {
+  std::ofstream(file, std::ios::binary | std::ios::trunc)
+      .write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(count));
+}
+
+// A terrain chunk with random edits on top.
+std::unique_ptr<Chunk> editedChunk(ChunkPos pos, unsigned seed) {
+  static const auto gen = makeGenerator({"terrain", 5, {}}, defaultBlocks());
+  auto chunk = std::make_unique<Chunk>(pos);
+  gen->generate(*chunk);
+  std::mt19937 rng(seed);
+  for (int i = 0; i < 300; ++i) {
+    chunk->set(static_cast<int>(rng() % 16), kMinY + static_cast<int>(rng() % (kMaxY - kMinY)),
+               static_cast<int>(rng() % 16), static_cast<BlockId>(rng() % defaultBlocks().size()));
+  }
+  return chunk;
+}
+
+TEST(ChunkCodec, RoundTripsBlocksExactly) {
+  const auto chunk = editedChunk({3, -4}, 1);
+  const auto bytes = encodeChunk(*chunk, defaultBlocks());
+  const auto back = decodeChunk({3, -4}, bytes.data(), bytes.size(), defaultBlocks());
+  EXPECT_TRUE(sameBlocks(*chunk, *back));
+  EXPECT_LT(bytes.size(), 40000u) << "zstd should shrink a 200 KB chunk a lot";
+}
+
+TEST(ChunkCodec, GarbageIsAnErrorNotACrash) {
+  const auto bytes = encodeChunk(*editedChunk({0, 0}, 2), defaultBlocks());
+  for (std::size_t cut : {std::size_t{0}, std::size_t{3}, bytes.size() / 2, bytes.size() - 1}) {
+    EXPECT_THROW(decodeChunk({0, 0}, bytes.data(), cut, defaultBlocks()), Error) << cut;
+  }
+  std::vector<std::uint8_t> noise(500);
+  std::mt19937 rng(3);
+  for (auto& b : noise) b = static_cast<std::uint8_t>(rng());
+  EXPECT_THROW(decodeChunk({0, 0}, noise.data(), noise.size(), defaultBlocks()), Error);
+}
+
+TEST(RegionFile, SavesReloadAndTheNewestRecordWins) {
+  const auto path = scratchDir("region_roundtrip") / "r.0.0.tsr";
+  std::map<int, std::unique_ptr<Chunk>> saved;
+  {
+    RegionFile region(path, {0, 0});
+    for (int i = 0; i < 12; ++i) {
+      const ChunkPos p{i % 4, i % 3};
+      saved[p.x * 100 + p.z] = editedChunk(p, static_cast<unsigned>(i));
+      region.write(p, encodeChunk(*saved[p.x * 100 + p.z], defaultBlocks()));
+    }
+  }
+  RegionFile region(path, {0, 0});
+  EXPECT_TRUE(region.problems().empty());
+  EXPECT_EQ(region.chunkCount(), saved.size());
+  for (const auto& [key, chunk] : saved) {
+    const auto bytes = region.read(chunk->pos());
+    ASSERT_TRUE(bytes);
+    EXPECT_TRUE(sameBlocks(*chunk, *decodeChunk(chunk->pos(), bytes->data(), bytes->size(), defaultBlocks())));
+  }
+  EXPECT_FALSE(region.read({31, 31}));
+}
+
+// Kill the process in the middle of the last save, at every byte: everything saved before stays
+// readable, the interrupted chunk keeps its previous version, and the torn bytes are kept aside.
+TEST(RegionFile, ASaveKilledAtAnyByteLosesNothingSavedBefore) {
+  const auto dir = scratchDir("region_crash");
+  const auto path = dir / "r.-1.0.tsr";
+  const ChunkPos a{-1, 0}, b{-32, 31};
+  // Payloads compared as bytes: the codec round trip is tested above, and this runs thousands of times.
+  const auto payloadA = encodeChunk(*editedChunk(a, 10), defaultBlocks());
+  const auto payloadB = encodeChunk(*editedChunk(b, 11), defaultBlocks());
+  const auto payloadA2 = encodeChunk(*editedChunk(a, 12), defaultBlocks());
+  std::size_t before = 0;
+  {
+    RegionFile region(path, {-1, 0});
+    region.write(a, payloadA);
+    region.write(b, payloadB);
+    before = region.fileSize();
+    region.write(a, payloadA2);  // the write that gets cut
+  }
+  const auto full = readBytes(path);
+  ASSERT_GT(full.size(), before);
+  for (std::size_t cut = before; cut <= full.size(); ++cut) {
+    std::filesystem::remove_all(dir / "r.-1.0.tsr.corrupt");
+    writeBytes(path, full, cut);
+    RegionFile region(path, {-1, 0});
+    ASSERT_EQ(region.read(b), payloadB) << "cut at " << cut;
+    ASSERT_EQ(region.read(a), cut == full.size() ? payloadA2 : payloadA) << "cut at " << cut;
+    if (cut == before || cut == full.size()) {
+      EXPECT_TRUE(region.problems().empty()) << region.problems()[0];
+      continue;
+    }
+    ASSERT_EQ(region.problems().size(), 1u) << "cut at " << cut;
+    EXPECT_NE(region.problems()[0].find("torn record"), std::string::npos);
+    if (cut - before >= 12) {  // the header got as far as the chunk coordinates
+      EXPECT_NE(region.problems()[0].find("chunk (-1, 0)"), std::string::npos) << region.problems()[0];
+    }
+    const auto aside = dir / "r.-1.0.tsr.corrupt" /
+                       ((cut - before >= 12 ? "chunk_-1_0" : "unknown_chunk") + std::string("_torn_at_") +
+                        std::to_string(before) + ".bin");
+    ASSERT_EQ(std::filesystem::file_size(aside), cut - before) << region.problems()[0];
+    // The next save goes after the last good record and reads back.
+    region.write(a, payloadA2);
+    ASSERT_EQ(RegionFile(path, {-1, 0}).read(a), payloadA2) << "cut at " << cut;
+  }
+}
+
+TEST(RegionFile, ACorruptChunkIsReportedKeptAsideAndTheRestLoads) {
+  const auto dir = scratchDir("region_corrupt");
+  const auto path = dir / "r.0.0.tsr";
+  std::vector<std::unique_ptr<Chunk>> chunks;
+  std::vector<std::uint64_t> offsets;
+  {
+    RegionFile region(path, {0, 0});
+    for (int i = 0; i < 3; ++i) {
+      chunks.push_back(editedChunk({i, 2 * i}, 20u + static_cast<unsigned>(i)));
+      offsets.push_back(region.fileSize());
+      region.write(chunks.back()->pos(), encodeChunk(*chunks.back(), defaultBlocks()));
+    }
+  }
+  for (const std::size_t where : {std::size_t{40}, std::size_t{13}}) {  // a payload byte; the size field
+    auto bytes = readBytes(path);
+    const auto original = bytes;
+    bytes[offsets[1] + where] ^= 0x5A;
+    writeBytes(path, bytes, bytes.size());
+    {
+      RegionFile region(path, {0, 0});
+      ASSERT_EQ(region.problems().size(), 1u);
+      const std::string& problem = region.problems()[0];
+      EXPECT_NE(problem.find(path.string()), std::string::npos) << problem;
+      EXPECT_NE(problem.find(where == 13 ? "chunk (1, 2)" : "chunk (1, 2) fails its checksum"), std::string::npos)
+          << problem;
+      EXPECT_FALSE(region.read({1, 2}));
+      EXPECT_TRUE(region.read({0, 0}));
+      EXPECT_TRUE(region.read({2, 4})) << "the chunk after the corrupt one must still load";
+      EXPECT_FALSE(std::filesystem::is_empty(dir / "r.0.0.tsr.corrupt"));
+    }
+    EXPECT_EQ(readBytes(path), bytes) << "opening must not rewrite the corrupt file";
+    writeBytes(path, original, original.size());
+    std::filesystem::remove_all(dir / "r.0.0.tsr.corrupt");
+  }
+}
+
+TEST(RegionFile, CompactionKeepsOnlyTheNewestRecords) {
+  const auto path = scratchDir("region_compact") / "r.0.0.tsr";
+  RegionFile region(path, {0, 0});
+  const auto chunk = editedChunk({1, 1}, 30);
+  const auto payload = encodeChunk(*chunk, defaultBlocks());
+  while (region.fileSize() < (1u << 20) + payload.size() * 2) region.write({1, 1}, payload);
+  const auto other = editedChunk({2, 2}, 31);
+  region.write({2, 2}, encodeChunk(*other, defaultBlocks()));
+  EXPECT_TRUE(region.compactIfWasteful());
+  EXPECT_LT(region.fileSize(), payload.size() * 3);
+  RegionFile reopened(path, {0, 0});
+  EXPECT_TRUE(reopened.problems().empty());
+  const auto bytes = reopened.read({2, 2});
+  ASSERT_TRUE(bytes);
+  EXPECT_TRUE(sameBlocks(*other, *decodeChunk({2, 2}, bytes->data(), bytes->size(), defaultBlocks())));
+}
+
+TEST(Level, RoundTripsAndBadFilesNameTheKey) {
+  const auto dir = scratchDir("level");
+  Level level;
+  level.seed = 123456789012345ull;
+  level.time = 1'000'000'007;
+  level.playerPosition = {29'999'000.5, 70.25, -12.75};
+  level.playerYaw = 90.0f;
+  saveLevel(dir / "level.json", level);
+  const Level back = loadLevel(dir / "level.json");
+  EXPECT_EQ(back.seed, level.seed);
+  EXPECT_EQ(back.time, level.time);
+  EXPECT_EQ(back.playerPosition, level.playerPosition);
+  EXPECT_EQ(back.playerYaw, 90.0f);
+
+  auto error = [&](const std::string& text) {
+    std::ofstream(dir / "bad.json") << text;
+    try {
+      loadLevel(dir / "bad.json");
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_NE(error("{\"seed\": 1").find("bad.json: invalid JSON"), std::string::npos);
+  EXPECT_NE(error(R"({"generator":"terrain","seed":1,"time":0})").find("missing key \"player\""), std::string::npos);
+  EXPECT_NE(error(R"({"generator":"terrain","seed":"x","time":0})").find("\"seed\" has the wrong type"),
+            std::string::npos);
+  EXPECT_NE(error(R"({"generator":"terrain","seed":1,"time":0,"player":{"position":[1,2],"yaw":0,"pitch":0}})")
+                .find("player.position must be three"),
+            std::string::npos);
+}
+
+// The whole path: edit, walk away (the chunk is saved and unloaded), walk back (it loads from disk).
+TEST(ChunkStreamer, EditedChunksSurviveUnloadingAndMemoryStaysBounded) {
+  const BlockRegistry& blocks = defaultBlocks();
+  const auto gen = makeGenerator({"terrain", 9, {}}, blocks);
+  WorldStorage storage(scratchDir("streamer"), blocks);
+  World world(blocks);
+  ChunkStreamer streamer(world, *gen, &storage, 2, 2);
+  auto settle = [&](ChunkPos center) {
+    for (int i = 0; i < 10000 && (streamer.update(center), streamer.pending() > 0 || !world.isLoaded(center)); ++i) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+    streamer.update(center);
+  };
+  settle({0, 0});
+  EXPECT_EQ(world.chunkCount(), 25u);
+  const BlockPos spot{5, 200, -7};
+  ASSERT_TRUE(world.setBlock(spot, blocks.id("gold_block")));
+
+  std::size_t most = 0;
+  for (int x = 0; x <= 40; x += 4) {
+    settle({x, 0});
+    most = std::max(most, world.chunkCount());
+  }
+  EXPECT_FALSE(world.isLoaded(ChunkPos::of(spot)));
+  EXPECT_LE(most, 7u * 7u) << "chunks beyond radius + 1 must be unloaded";
+
+  settle({0, 0});
+  EXPECT_EQ(world.getBlock(spot), blocks.id("gold_block"));
+  EXPECT_TRUE(storage.problems().empty());
+}
+
+}  // namespace
+}  // namespace terrasol

@@ -1,0 +1,19 @@
+#pragma once
+// Shared bits for world tests: the shipped block table and fresh scratch directories.
+
+#include <filesystem>
+#include <string>
+
+#include "world/block_registry.h"
+#include "world/chunk.h"
+
+namespace terrasol::testing {
+
+// resourcepacks/default/blocks.json, loaded once per process.
+const BlockRegistry& defaultBlocks();
+// build/test-output/<name>, emptied.
+std::filesystem::path scratchDir(const std::string& name);
+// True when both chunks hold the same blocks everywhere.
+bool sameBlocks(const Chunk& a, const Chunk& b);
+
+}  // namespace terrasol::testing
