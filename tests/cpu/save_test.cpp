@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <map>
 #include <random>
 
 #include "core/error.h"
@@ -210,6 +211,46 @@ TEST(Level, RoundTripsAndBadFilesNameTheKey) {
   EXPECT_NE(error(R"({"generator":"terrain","seed":1,"time":0,"player":{"position":[1,2],"yaw":0,"pitch":0}})")
                 .find("player.position must be three"),
             std::string::npos);
+}
+
+// Random edits all over a 4 x 4 chunk area, saved through WorldStorage and read back into a new world.
+TEST(WorldStorage, RandomEditsRoundTrip) {
+  const BlockRegistry& blocks = defaultBlocks();
+  const auto gen = makeGenerator({"terrain", 4, {}}, blocks);
+  const auto dir = scratchDir("storage_roundtrip");
+  std::map<std::pair<int, int>, std::unique_ptr<Chunk>> expected;
+  std::mt19937 rng(99);
+  {
+    WorldStorage storage(dir, blocks);
+    World world(blocks);
+    for (int z = -2; z < 2; ++z)
+      for (int x = -2; x < 2; ++x) {
+        auto c = std::make_unique<Chunk>(ChunkPos{x, z});
+        gen->generate(*c);
+        world.insertChunk(std::move(c));
+      }
+    for (int i = 0; i < 5000; ++i) {
+      const BlockPos p{static_cast<int>(rng() % 64) - 32, kMinY + static_cast<int>(rng() % 384),
+                       static_cast<int>(rng() % 64) - 32};
+      world.setBlock(p, static_cast<BlockId>(rng() % blocks.size()));
+    }
+    world.forEachChunk([&](const Chunk& c) {
+      EXPECT_TRUE(c.modified());
+      storage.save(c);
+      expected[{c.pos().x, c.pos().z}] = std::make_unique<Chunk>(c.pos());
+      for (int s = 0; s < kSectionCount; ++s) expected[{c.pos().x, c.pos().z}]->section(s) = c.section(s);
+    });
+    storage.flush();
+  }
+  WorldStorage storage(dir, blocks);
+  for (const auto& [key, chunk] : expected) {
+    const auto loaded = storage.load(chunk->pos());
+    ASSERT_TRUE(loaded);
+    EXPECT_TRUE(sameBlocks(*chunk, *loaded));
+    EXPECT_FALSE(loaded->modified());
+  }
+  EXPECT_FALSE(storage.load({10, 10})) << "never saved: the generator makes it";
+  EXPECT_TRUE(storage.problems().empty());
 }
 
 // The whole path: edit, walk away (the chunk is saved and unloaded), walk back (it loads from disk).
