@@ -1,20 +1,13 @@
 #include <gtest/gtest.h>
 
-#include <map>
 
 #include "assets/shader_source.h"
+#include "support/memory_shaders.h"
 #include "core/error.h"
 #include "core/paths.h"
 
 namespace terrasol {
 namespace {
-
-ShaderPreprocessor memory(std::map<std::string, std::string> files) {
-  return ShaderPreprocessor([files = std::move(files)](const std::string& path) -> std::optional<std::string> {
-    const auto it = files.find(path);
-    return it == files.end() ? std::nullopt : std::optional(it->second);
-  });
-}
 
 std::string errorOf(const ShaderPreprocessor& pre, const std::string& file) {
   try {
@@ -26,7 +19,7 @@ std::string errorOf(const ShaderPreprocessor& pre, const std::string& file) {
 }
 
 TEST(ShaderPreprocessor, InjectsDefinesRightAfterVersion) {
-  const auto pre = memory({{"a.frag", "// header\n#version 450 core\nvoid main() {}\n"}});
+  const auto pre = testing::memoryShaders({{"a.frag", "// header\n#version 450 core\nvoid main() {}\n"}});
   const auto out = pre.process("a.frag", {{"ATTRIB_POSITION", "0"}, {"FEATURE_FOG", "1"}});
   EXPECT_EQ(out.text, "// header\n#version 450 core\n#define ATTRIB_POSITION 0\n#define FEATURE_FOG 1\nvoid main() {}\n");
   EXPECT_EQ(out.origin(3).file, "<defines>");
@@ -35,7 +28,7 @@ TEST(ShaderPreprocessor, InjectsDefinesRightAfterVersion) {
 }
 
 TEST(ShaderPreprocessor, MapsIncludedLinesToTheirFiles) {
-  const auto pre = memory({
+  const auto pre = testing::memoryShaders({
       {"main.frag", "#version 450 core\n#include \"lib/x.glsl\"\nvoid main() {}\n"},
       {"lib/x.glsl", "float x1;\nfloat x2;\n"},
   });
@@ -48,7 +41,7 @@ TEST(ShaderPreprocessor, MapsIncludedLinesToTheirFiles) {
 }
 
 TEST(ShaderPreprocessor, IncludesEachFileOnceEvenInDiamondsAndCycles) {
-  const auto pre = memory({
+  const auto pre = testing::memoryShaders({
       {"main.frag", "#version 450 core\n#include \"lib/a.glsl\"\n#include \"lib/b.glsl\"\n"},
       {"lib/a.glsl", "#include \"lib/common.glsl\"\nA\n"},
       {"lib/b.glsl", "#  include \"lib/./common.glsl\"\n#include \"lib/a.glsl\"\nB\n"},
@@ -58,14 +51,14 @@ TEST(ShaderPreprocessor, IncludesEachFileOnceEvenInDiamondsAndCycles) {
 }
 
 TEST(ShaderPreprocessor, MissingIncludeNamesTheIncludingFileAndLine) {
-  const auto pre = memory({{"main.frag", "#version 450 core\n\n#include \"lib/nope.glsl\"\n"}});
+  const auto pre = testing::memoryShaders({{"main.frag", "#version 450 core\n\n#include \"lib/nope.glsl\"\n"}});
   const std::string error = errorOf(pre, "main.frag");
   EXPECT_NE(error.find("shaders/main.frag:3:"), std::string::npos) << error;
   EXPECT_NE(error.find("shaders/lib/nope.glsl"), std::string::npos) << error;
 }
 
 TEST(ShaderPreprocessor, RejectsMalformedDirectives) {
-  const auto pre = memory({
+  const auto pre = testing::memoryShaders({
       {"noversion.frag", "void main() {}\n"},
       {"early.frag", "#include \"lib/x.glsl\"\n#version 450 core\n"},
       {"twice.frag", "#version 450 core\n#version 450 core\n"},
@@ -86,7 +79,7 @@ TEST(ShaderPreprocessor, RejectsMalformedDirectives) {
 }
 
 TEST(ShaderPreprocessor, MapsDriverLogPositionsBackToSourceFiles) {
-  const auto pre = memory({
+  const auto pre = testing::memoryShaders({
       {"main.frag", "#version 450 core\n#include \"lib/x.glsl\"\nvoid main() {}\n"},
       {"lib/x.glsl", "float a;\nfloat b = c;\n"},
   });

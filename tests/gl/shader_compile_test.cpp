@@ -1,20 +1,13 @@
-#include <map>
 
 #include "render/gl/program.h"
 #include "render/gl_slots.h"
 #include "support/gl_test.h"
+#include "support/memory_shaders.h"
 
 namespace terrasol {
 namespace {
 
 using testing::GlTest;
-
-ShaderPreprocessor memory(std::map<std::string, std::string> files) {
-  return ShaderPreprocessor([files = std::move(files)](const std::string& path) -> std::optional<std::string> {
-    const auto it = files.find(path);
-    return it == files.end() ? std::nullopt : std::optional(it->second);
-  });
-}
 
 const std::string kVertex =
     "#version 450 core\n"
@@ -22,7 +15,7 @@ const std::string kVertex =
     "void main() { gl_Position = vec4(a_position, 1.0); }\n";
 
 TEST_F(GlTest, BrokenShaderErrorNamesTheOriginalFileAndLine) {
-  const auto sources = memory({
+  const auto sources = testing::memoryShaders({
       {"t.vert", kVertex},
       {"t.frag",
        "#version 450 core\n"
@@ -46,7 +39,7 @@ TEST_F(GlTest, BrokenShaderErrorNamesTheOriginalFileAndLine) {
 }
 
 TEST_F(GlTest, InjectedSlotDefinesReachTheShader) {
-  const auto sources = memory({
+  const auto sources = testing::memoryShaders({
       {"t.vert", kVertex},
       {"t.frag", "#version 450 core\nlayout(location = OUT_COLOR) out vec4 o;\nvoid main() { o = vec4(1.0); }\n"},
   });
@@ -57,7 +50,7 @@ TEST_F(GlTest, InjectedSlotDefinesReachTheShader) {
 }
 
 TEST_F(GlTest, LinkErrorNamesTheStages) {
-  const auto sources = memory({
+  const auto sources = testing::memoryShaders({
       {"t.vert", "#version 450 core\nout vec3 v_missing;\nvoid main() { v_missing = vec3(0); gl_Position = vec4(0); }\n"},
       {"t.frag", "#version 450 core\nin vec4 v_other;\nout vec4 o;\nvoid main() { o = v_other; }\n"},
   });
