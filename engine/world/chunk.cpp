@@ -10,6 +10,7 @@ std::size_t Chunk::compact() {
 std::size_t Chunk::memoryBytes() const {
   std::size_t bytes = sizeof(Chunk);
   for (const auto& s : sections_) bytes += s.memoryBytes();
+  bytes += light_.memoryBytes();
   return bytes;
 }
 

@@ -4,6 +4,7 @@
 
 #include <array>
 
+#include "world/chunk_light.h"
 #include "world/coords.h"
 #include "world/section.h"
 
@@ -32,6 +33,9 @@ class Chunk {
   std::size_t compact();
   std::size_t memoryBytes() const;
 
+  ChunkLight& light() { return light_; }
+  const ChunkLight& light() const { return light_; }
+
   // Edited since load or generation: must be saved before unloading.
   bool modified() const { return modified_; }
   void setModified(bool modified) { modified_ = modified; }
@@ -39,6 +43,7 @@ class Chunk {
  private:
   ChunkPos pos_;
   std::array<Section, kSectionCount> sections_;
+  ChunkLight light_;
   bool modified_ = false;
 };
 

@@ -35,6 +35,12 @@ struct ChunkPos {
   constexpr int minBlockZ() const { return z * kChunkSize; }
 };
 
+// A section by chunk coordinates and section index (0 = the bottom section, y -64..-49).
+struct SectionPos {
+  int x = 0, section = 0, z = 0;
+  friend constexpr auto operator<=>(const SectionPos&, const SectionPos&) = default;
+};
+
 constexpr bool inWorldHeight(int y) { return y >= kMinY && y < kMaxY; }
 constexpr int sectionOf(int y) { return (y - kMinY) >> 4; }  // valid for y in world height
 

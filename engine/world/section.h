@@ -29,6 +29,7 @@ class Section {
   Section& operator=(Section&&) noexcept = default;
 
   BlockId get(int x, int y, int z) const { return blocks_ ? (*blocks_)[index(x, y, z)] : uniform_; }
+  BlockId at(int index) const { return blocks_ ? (*blocks_)[static_cast<std::size_t>(index)] : uniform_; }
   // Returns the block that was there.
   BlockId set(int x, int y, int z, BlockId id);
   void fill(BlockId id) {

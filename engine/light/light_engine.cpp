@@ -1,0 +1,258 @@
+#include "light/light_engine.h"
+
+#include <algorithm>
+
+#include "light/propagator.h"
+
+namespace terrasol {
+
+using light::Cell;
+using light::ChunkGrid;
+using light::kAllDirections;
+using light::Propagator;
+
+namespace {
+
+constexpr int kReach = 2;  // chunks an update can reach beyond its seeds (see chunk_grid.h)
+
+ChunkGrid gridAround(World& world, ChunkPos center, int radius, const Chunk* excluded = nullptr) {
+  return ChunkGrid(world, {center.x - radius, center.z - radius}, {center.x + radius, center.z + radius}, excluded);
+}
+
+// Highest block with opacity >= 1 in each column; uniform sections are skipped whole.
+void computeSkyTops(const Chunk& chunk, const std::uint8_t* opacity, ChunkLight& light) {
+  light.skyTop.fill(static_cast<std::int16_t>(kMinY - 1));
+  std::array<bool, 256> done{};
+  int remaining = 256;
+  for (int s = kSectionCount - 1; s >= 0 && remaining > 0; --s) {
+    const Section& section = chunk.section(s);
+    if (section.isUniform()) {
+      if (opacity[section.uniformBlock()] == 0) continue;
+      for (int i = 0; i < 256; ++i) {
+        if (!done[static_cast<std::size_t>(i)]) light.skyTop[static_cast<std::size_t>(i)] = static_cast<std::int16_t>(kMinY + s * 16 + 15);
+      }
+      break;
+    }
+    for (int ly = 15; ly >= 0; --ly)
+      for (int i = 0; i < 256; ++i) {
+        if (done[static_cast<std::size_t>(i)] || opacity[section.at(ly * 256 + i)] == 0) continue;
+        done[static_cast<std::size_t>(i)] = true;
+        light.skyTop[static_cast<std::size_t>(i)] = static_cast<std::int16_t>(kMinY + s * 16 + ly);
+        --remaining;
+      }
+  }
+}
+
+// Sky light 15 above each column's top, 0 elsewhere; whole sections stay uniform where they can.
+void fillOpenSky(ChunkLight& light) {
+  const auto [lowest, highest] = std::minmax_element(light.skyTop.begin(), light.skyTop.end());
+  for (int s = 0; s < kSectionCount; ++s) {
+    const int bottom = kMinY + s * 16;
+    NibbleArray& sky = light.sky[static_cast<std::size_t>(s)];
+    if (bottom > *highest) {
+      sky.fill(15);
+    } else if (bottom + 15 <= *lowest) {
+      sky.fill(0);
+    } else {
+      sky.fill(0);
+      for (int ly = 0; ly < 16; ++ly)
+        for (int i = 0; i < 256; ++i) {
+          if (bottom + ly > light.skyTop[static_cast<std::size_t>(i)]) sky.set(ly * 256 + i, 15);
+        }
+    }
+  }
+}
+
+int skyTopAt(const ChunkGrid& grid, int x, int z) {
+  const Chunk* c = grid.at(x, z);
+  return c ? c->light().skyTop[static_cast<std::size_t>((z & 15) * 16 + (x & 15))] : kMaxY;  // unloaded: opaque
+}
+
+}  // namespace
+
+LightEngine::LightEngine(World& world)
+    : world_(world), opacity_(world.blocks().opacities().data()), emission_(world.blocks().emissions().data()) {}
+
+std::uint8_t LightEngine::lightAt(const BlockPos& pos, LightChannel channel) const {
+  if (pos.y >= kMaxY) return channel == LightChannel::Sky ? 15 : 0;
+  if (pos.y < kMinY) return 0;
+  const Chunk* c = world_.chunk(ChunkPos::of(pos));
+  if (!c || !c->light().lit) return 0;
+  const auto s = static_cast<std::size_t>(sectionOf(pos.y));
+  const int index = Section::index(localOf(pos.x), localOf(pos.y), localOf(pos.z));
+  return channel == LightChannel::Block ? c->light().block[s].get(index) : c->light().sky[s].get(index);
+}
+
+std::vector<SectionPos> LightEngine::takeChangedSections() {
+  std::vector<SectionPos> sections;
+  sections.reserve(changed_.size());
+  for (std::uint64_t key : changed_) sections.push_back(light::sectionFromKey(key));
+  changed_.clear();
+  return sections;
+}
+
+void LightEngine::chunkLoaded(ChunkPos pos) {
+  Chunk* chunk = world_.chunk(pos);
+  if (!chunk) return;
+  ChunkLight& light = chunk->light();
+  computeSkyTops(*chunk, opacity_, light);
+  for (auto& block : light.block) block.fill(0);
+  fillOpenSky(light);
+  light.lit = true;
+  for (int s = 0; s < kSectionCount; ++s) {
+    changed_.insert(light::sectionKey(pos.x, s, pos.z));
+  }
+
+  const ChunkGrid grid = gridAround(world_, pos, 1 + kReach);
+  const int x0 = pos.minBlockX(), z0 = pos.minBlockZ();
+  for (const LightChannel channel : {LightChannel::Block, LightChannel::Sky}) {
+    Propagator p(grid, channel, opacity_, emission_, decrease_, increase_, stats_, changed_);
+    Cell cell;
+    if (channel == LightChannel::Block) {
+      // Every emitter starts at its emission.
+      for (int s = 0; s < kSectionCount; ++s) {
+        const Section& section = chunk->section(s);
+        if (section.isUniform() && emission_[section.uniformBlock()] == 0) continue;
+        for (int i = 0; i < Section::kVolume; ++i) {
+          const std::uint8_t e = emission_[section.at(i)];
+          if (e == 0) continue;
+          const int x = x0 + (i & 15), y = kMinY + s * 16 + (i >> 8), z = z0 + ((i >> 4) & 15);
+          p.locate(x, y, z, cell);
+          p.setLight(cell, x, y, z, e);
+          p.increase(x, y, z, e, kAllDirections);
+        }
+      }
+    } else {
+      // Open-sky cells that border a cell outside the open sky spread from there: the cell just above
+      // each column's top, and those beside a taller neighbouring column.
+      for (int lz = 0; lz < 16; ++lz)
+        for (int lx = 0; lx < 16; ++lx) {
+          const int x = x0 + lx, z = z0 + lz;
+          const int top = light.skyTop[static_cast<std::size_t>(lz * 16 + lx)];
+          int highest = top + 1;
+          for (const int d : {0, 1, 4, 5}) {
+            const BlockPos& o = kDirectionOffsets[d];
+            if (grid.at(x + o.x, z + o.z)) highest = std::max(highest, skyTopAt(grid, x + o.x, z + o.z));
+          }
+          for (int y = top + 1; y <= std::min(highest, kMaxY - 1); ++y) p.increase(x, y, z, 15, kAllDirections);
+          if (top == kMaxY - 1 && p.locate(x, top, z, cell)) {  // a block in the top layer, lit from above
+            const std::uint8_t level = p.source(cell, top);
+            p.setLight(cell, x, top, z, level);
+            p.increase(x, top, z, level, kAllDirections);
+          }
+        }
+    }
+    // Light already in the neighbours flows in across the borders.
+    for (const int d : {0, 1, 4, 5}) {
+      const BlockPos& o = kDirectionOffsets[d];
+      const Chunk* neighbour = grid.at(x0 + o.x * 16, z0 + o.z * 16);
+      if (!neighbour) continue;
+      const int toward = light::opposite(d);
+      for (int s = 0; s < kSectionCount; ++s) {
+        const NibbleArray& layer = channel == LightChannel::Block ? neighbour->light().block[static_cast<std::size_t>(s)]
+                                                                  : neighbour->light().sky[static_cast<std::size_t>(s)];
+        if (layer.isUniform() && layer.uniformLevel() <= 1) continue;
+        for (int ly = 0; ly < 16; ++ly)
+          for (int k = 0; k < 16; ++k) {
+            // The neighbour's cell facing this chunk.
+            const int x = d == 0 ? x0 - 1 : d == 1 ? x0 + 16 : x0 + k;
+            const int z = d == 4 ? z0 - 1 : d == 5 ? z0 + 16 : z0 + k;
+            const int y = kMinY + s * 16 + ly;
+            const std::uint8_t level = layer.get(Section::index(x & 15, ly, z & 15));
+            if (level > 1) p.increase(x, y, z, level, static_cast<std::uint8_t>(1 << toward));
+          }
+      }
+    }
+    p.run();
+  }
+}
+
+void LightEngine::chunkUnloading(ChunkPos pos) {
+  Chunk* chunk = world_.chunk(pos);
+  if (!chunk || !chunk->light().lit) return;
+  // Propagate as if the chunk were already gone: every light level on its faces is removed from the
+  // neighbours, which then refill from their own sources.
+  const ChunkGrid grid = gridAround(world_, pos, 1 + kReach, chunk);
+  const int x0 = pos.minBlockX(), z0 = pos.minBlockZ();
+  for (const LightChannel channel : {LightChannel::Block, LightChannel::Sky}) {
+    Propagator p(grid, channel, opacity_, emission_, decrease_, increase_, stats_, changed_);
+    for (const int d : {0, 1, 4, 5}) {
+      const BlockPos& o = kDirectionOffsets[d];
+      if (!grid.at(x0 + o.x * 16, z0 + o.z * 16)) continue;
+      for (int s = 0; s < kSectionCount; ++s) {
+        const NibbleArray& layer = channel == LightChannel::Block ? chunk->light().block[static_cast<std::size_t>(s)]
+                                                                  : chunk->light().sky[static_cast<std::size_t>(s)];
+        if (layer.isUniform() && layer.uniformLevel() == 0) continue;
+        for (int ly = 0; ly < 16; ++ly)
+          for (int k = 0; k < 16; ++k) {
+            const int lx = d == 0 ? 0 : d == 1 ? 15 : k, lz = d == 4 ? 0 : d == 5 ? 15 : k;
+            const std::uint8_t level = layer.get(Section::index(lx, ly, lz));
+            if (level > 0) p.decrease(x0 + lx, kMinY + s * 16 + ly, z0 + lz, level, static_cast<std::uint8_t>(1 << d));
+          }
+      }
+    }
+    p.run();
+  }
+  chunk->light().lit = false;
+}
+
+void LightEngine::blockChanged(const BlockChange& change) {
+  const BlockPos& at = change.pos;
+  const bool sameLight = opacity_[change.before] == opacity_[change.after] &&
+                         emission_[change.before] == emission_[change.after];
+  Chunk* chunk = world_.chunk(ChunkPos::of(at));
+  if (sameLight || !chunk || !chunk->light().lit) return;
+
+  const ChunkGrid grid = gridAround(world_, ChunkPos::of(at), kReach);
+  ChunkLight& light = chunk->light();
+  const auto column = static_cast<std::size_t>(localOf(at.z) * 16 + localOf(at.x));
+  const int oldTop = light.skyTop[column];
+  int newTop = oldTop;
+  if (opacity_[change.after] > 0 && at.y > oldTop) newTop = at.y;
+  if (opacity_[change.after] == 0 && at.y == oldTop) {
+    newTop = kMinY - 1;
+    for (int y = at.y - 1; y >= kMinY; --y) {
+      if (opacity_[chunk->get(localOf(at.x), y, localOf(at.z))] > 0) {
+        newTop = y;
+        break;
+      }
+    }
+  }
+  light.skyTop[column] = static_cast<std::int16_t>(newTop);
+
+  for (const LightChannel channel : {LightChannel::Block, LightChannel::Sky}) {
+    Propagator p(grid, channel, opacity_, emission_, decrease_, increase_, stats_, changed_);
+    Cell cell;
+    p.locate(at.x, at.y, at.z, cell);
+    const std::uint8_t before = p.light(cell), own = p.source(cell, at.y);
+    if (own != before) p.setLight(cell, at.x, at.y, at.z, own);
+    if (before > own) p.decrease(at.x, at.y, at.z, before, kAllDirections);
+    if (own > 0) p.increase(at.x, at.y, at.z, own, kAllDirections);
+    // The cell may now let more light in: its neighbours offer theirs.
+    for (int d = 0; d < 6; ++d) {
+      const BlockPos& o = kDirectionOffsets[d];
+      Cell n;
+      if (!p.locate(at.x + o.x, at.y + o.y, at.z + o.z, n)) continue;
+      const std::uint8_t level = p.light(n);
+      if (level > 1) p.increase(at.x + o.x, at.y + o.y, at.z + o.z, level, static_cast<std::uint8_t>(1 << light::opposite(d)));
+    }
+    if (channel == LightChannel::Sky) {
+      // The open sky column got shorter (its cells lose their own 15) or longer (they gain it).
+      for (int y = newTop + 1; y <= oldTop && y < kMaxY; ++y) {
+        if (y == at.y || !p.locate(at.x, y, at.z, cell)) continue;
+        p.setLight(cell, at.x, y, at.z, 15);
+        p.increase(at.x, y, at.z, 15, kAllDirections);
+      }
+      for (int y = oldTop + 1; y <= newTop; ++y) {
+        if (y == at.y || !p.locate(at.x, y, at.z, cell)) continue;
+        const std::uint8_t level = p.light(cell);
+        if (level == 0) continue;
+        p.setLight(cell, at.x, y, at.z, 0);
+        p.decrease(at.x, y, at.z, level, kAllDirections);
+      }
+    }
+    p.run();
+  }
+}
+
+}  // namespace terrasol

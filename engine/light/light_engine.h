@@ -1,0 +1,64 @@
+#pragma once
+// Vanilla-style block and sky light (levels 0..15), kept up to date incrementally.
+//
+// Rules (Minecraft Java 1.20+): an emitter has its emission at its own cell; a neighbour receives
+// `level - max(1, opacity(neighbour))`. Sky light is 15 in the open sky column: every cell above the
+// highest block of opacity >= 1 in its column (ChunkLight::skyTop); from there it spreads in all six
+// directions like block light. A chunk that is not loaded acts as opaque.
+//
+// Updates run breadth first over explicit queues, decreases before increases; every queue entry
+// carries its level and the directions still to visit (Starlight's method). Main thread only, like
+// the World it lights.
+
+#include <cstdint>
+#include <unordered_set>
+#include <vector>
+
+#include "world/world.h"
+
+namespace terrasol {
+
+enum class LightChannel : std::uint8_t { Block, Sky };
+
+struct LightStats {
+  std::uint64_t blockReads = 0;   // block ids looked up during propagation
+  std::uint64_t lightWrites = 0;  // light values changed
+};
+
+class LightEngine {
+ public:
+  explicit LightEngine(World& world);
+
+  // Call after World::insertChunk: lights the chunk and lets light flow across its borders.
+  void chunkLoaded(ChunkPos pos);
+  // Call before World::removeChunk: takes back the light that flowed out of the chunk.
+  void chunkUnloading(ChunkPos pos);
+  // Call after a World::setBlock that changed something.
+  void blockChanged(const BlockChange& change);
+
+  // Sections whose light, or the light in their one-block halo, changed since the last call: what the
+  // mesher must rebuild. Each once, in no particular order.
+  std::vector<SectionPos> takeChangedSections();
+
+  // 0..15; sky light is 15 above the world, both are 0 below it and in unloaded chunks.
+  std::uint8_t lightAt(const BlockPos& pos, LightChannel channel) const;
+
+  const LightStats& stats() const { return stats_; }
+  void resetStats() { stats_ = {}; }
+
+  struct Entry {
+    std::int32_t x, y, z;
+    std::uint8_t level;
+    std::uint8_t directions;  // bit d set: still to visit Direction d
+  };
+
+ private:
+  World& world_;
+  const std::uint8_t* opacity_;
+  const std::uint8_t* emission_;
+  LightStats stats_;
+  std::vector<Entry> decrease_, increase_;  // reused between updates
+  std::unordered_set<std::uint64_t> changed_;
+};
+
+}  // namespace terrasol

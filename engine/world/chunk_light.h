@@ -1,0 +1,28 @@
+#pragma once
+// A chunk's light, filled in and kept up to date by engine/light: block light and sky light per
+// section, and the sky heightmap. Plain data; world code only stores it.
+
+#include <array>
+#include <cstdint>
+
+#include "world/coords.h"
+#include "world/nibble_array.h"
+
+namespace terrasol {
+
+struct ChunkLight {
+  std::array<NibbleArray, kSectionCount> block;
+  std::array<NibbleArray, kSectionCount> sky;
+  // Per column (index z * 16 + x): y of the highest block with light opacity >= 1, or kMinY - 1.
+  // Every cell above it is in the open sky column and has sky light 15.
+  std::array<std::int16_t, 256> skyTop{};
+  bool lit = false;  // set once the light engine has lit the chunk
+
+  std::size_t memoryBytes() const {
+    std::size_t bytes = 0;
+    for (int s = 0; s < kSectionCount; ++s) bytes += block[s].memoryBytes() + sky[s].memoryBytes();
+    return bytes;
+  }
+};
+
+}  // namespace terrasol

@@ -1,0 +1,260 @@
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <random>
+
+#include "light/light_engine.h"
+#include "support/reference_light.h"
+#include "support/world_support.h"
+#include "world/generator.h"
+
+namespace terrasol {
+namespace {
+
+using testing::compareWithReference;
+using testing::defaultBlocks;
+
+// A world with light, loaded and edited the way the game does it.
+struct LitWorld {
+  explicit LitWorld(const std::string& generator, const std::string& layers = "")
+      : world(defaultBlocks()), light(world) {
+    GeneratorSettings settings{generator, 1, {}};
+    if (!layers.empty()) settings.flatLayers = parseFlatLayers(layers, defaultBlocks());
+    gen = makeGenerator(settings, defaultBlocks());
+  }
+  void load(ChunkPos pos) {
+    auto chunk = std::make_unique<Chunk>(pos);
+    gen->generate(*chunk);
+    world.insertChunk(std::move(chunk));
+    light.chunkLoaded(pos);
+  }
+  void loadArea(int x0, int z0, int x1, int z1) {
+    for (int z = z0; z <= z1; ++z)
+      for (int x = x0; x <= x1; ++x) load({x, z});
+  }
+  void set(const BlockPos& p, const char* block) {
+    if (const auto change = world.setBlock(p, defaultBlocks().id(block))) light.blockChanged(*change);
+  }
+  void fill(BlockPos a, BlockPos b, const char* block) {
+    for (int y = a.y; y <= b.y; ++y)
+      for (int z = a.z; z <= b.z; ++z)
+        for (int x = a.x; x <= b.x; ++x) set({x, y, z}, block);
+  }
+  int block(const BlockPos& p) const { return light.lightAt(p, LightChannel::Block); }
+  int sky(const BlockPos& p) const { return light.lightAt(p, LightChannel::Sky); }
+
+  World world;
+  LightEngine light;
+  std::unique_ptr<ChunkGenerator> gen;
+};
+
+int manhattan(const BlockPos& a, const BlockPos& b) {
+  return std::abs(a.x - b.x) + std::abs(a.y - b.y) + std::abs(a.z - b.z);
+}
+
+// Checks the exact diamond of a source of `level` at `at` in open air.
+void expectDiamond(const LitWorld& w, const BlockPos& at, int level) {
+  for (int dy = -16; dy <= 16; ++dy)
+    for (int dz = -16; dz <= 16; ++dz)
+      for (int dx = -16; dx <= 16; ++dx) {
+        const BlockPos p = at.offset(dx, dy, dz);
+        if (!inWorldHeight(p.y)) continue;
+        ASSERT_EQ(w.block(p), std::max(0, level - manhattan(p, at))) << p.x << "," << p.y << "," << p.z;
+      }
+}
+
+TEST(Light, TorchInOpenAirMakesADiamondFrom14To1) {
+  LitWorld w("void");
+  w.loadArea(-1, -1, 1, 1);
+  const BlockPos torch{8, 64, 8};
+  w.set(torch, "torch");
+  expectDiamond(w, torch, 14);
+  EXPECT_EQ(w.sky(torch.offset(3, -100, 2)), 15);  // a void world is open sky everywhere
+  EXPECT_EQ(compareWithReference(w.world), "");
+  w.set(torch, "air");
+  expectDiamond(w, torch, 0);
+}
+
+TEST(Light, EveryKindOfBorderIsCrossed) {
+  LitWorld w("void");
+  w.loadArea(-2, -2, 1, 1);
+  // On a chunk corner and a section corner at once: the diamond spans 4 chunks and 2 section layers.
+  for (const BlockPos at : {BlockPos{-1, -1, -1}, BlockPos{0, 15, 0}, BlockPos{15, 16, -16}, BlockPos{-16, 319, 15}}) {
+    w.set(at, "glowstone");
+    expectDiamond(w, at, 15);
+    EXPECT_EQ(compareWithReference(w.world), "");
+    w.set(at, "air");
+    expectDiamond(w, at, 0);
+  }
+}
+
+TEST(Light, GlowstoneInAClosedRoomStaysInside) {
+  LitWorld w("flat");
+  w.loadArea(-1, -1, 1, 1);
+  w.fill({-4, 70, -4}, {4, 76, 4}, "stone");
+  w.fill({-3, 71, -3}, {3, 75, 3}, "air");
+  const BlockPos glow{0, 73, 0};
+  w.set(glow, "glowstone");
+  EXPECT_EQ(w.block(glow), 15);
+  EXPECT_EQ(w.block({1, 73, 0}), 14);
+  EXPECT_EQ(w.block({3, 75, 3}), 15 - 3 - 2 - 3);
+  EXPECT_EQ(w.block({-4, 73, 0}), 0) << "walls are opaque";
+  EXPECT_EQ(w.block({-5, 73, 0}), 0) << "no light gets out";
+  EXPECT_EQ(w.sky({0, 72, 0}), 0) << "a closed room has no sky light";
+  EXPECT_EQ(w.sky({0, 77, 0}), 15);
+  EXPECT_EQ(compareWithReference(w.world), "");
+}
+
+TEST(Light, A100BlockShaftFillsWithSkyAndEmptiesWhenCapped) {
+  LitWorld w("flat", "bedrock,199*stone");  // solid to y = 199
+  w.loadArea(-1, -1, 1, 1);
+  for (int y = 199; y >= 100; --y) w.set({5, y, 5}, "air");
+  for (int y = 100; y < 200; ++y) ASSERT_EQ(w.sky({5, y, 5}), 15) << y;
+  EXPECT_EQ(w.sky({5, 99, 5}), 0);
+  EXPECT_EQ(w.sky({6, 150, 5}), 0);
+  EXPECT_EQ(compareWithReference(w.world), "");
+  w.set({5, 200, 5}, "stone");  // capping it removes 100 sources at once
+  for (int y = 100; y < 200; ++y) ASSERT_EQ(w.sky({5, y, 5}), 0) << y;
+  EXPECT_EQ(compareWithReference(w.world), "");
+  w.set({5, 200, 5}, "air");
+  EXPECT_EQ(w.sky({5, 100, 5}), 15);
+  w.set({5, 230, 5}, "glass");  // opacity 0: still open sky
+  EXPECT_EQ(w.sky({5, 100, 5}), 15);
+  EXPECT_EQ(compareWithReference(w.world), "");
+}
+
+TEST(Light, WaterAndLeavesAttenuateSkyLight) {
+  LitWorld w("flat");
+  w.loadArea(-1, -1, 1, 1);
+  // A pool 10 deep and 21 wide: straight down it loses 1 per block.
+  w.fill({-10, 54, -10}, {10, 63, 10}, "water");
+  for (int depth = 0; depth < 10; ++depth) EXPECT_EQ(w.sky({0, 63 - depth, 0}), 14 - depth) << depth;
+  // A canopy of leaves: the leaves get 14, the air right under them 13.
+  w.fill({-10, 80, -10}, {10, 80, 10}, "oak_leaves");
+  EXPECT_EQ(w.sky({0, 80, 0}), 14);
+  EXPECT_EQ(w.sky({0, 79, 0}), 13);
+  EXPECT_EQ(w.sky({0, 81, 0}), 15);
+  // Torch light through water: opacity 1 costs the same as air.
+  w.set({0, 58, 0}, "torch");
+  EXPECT_EQ(w.block({0, 58, 3}), 11);
+  EXPECT_EQ(compareWithReference(w.world), "");
+}
+
+TEST(Light, RemovingOneOfTwoFullSourcesInACaveLeavesTheOther) {
+  LitWorld w("flat", "bedrock,199*stone");
+  w.loadArea(-1, -1, 1, 1);
+  w.fill({-12, 100, -12}, {12, 116, 12}, "air");  // a closed cave 25 x 17 x 25
+  const BlockPos a{-3, 108, 0}, b{4, 108, 0};
+  w.set(a, "glowstone");
+  w.set(b, "glowstone");
+  EXPECT_EQ(w.block({0, 108, 0}), 12);
+  w.set(a, "air");
+  for (int x = -12; x <= 12; ++x) EXPECT_EQ(w.block({x, 108, 0}), std::max(0, 15 - std::abs(x - b.x))) << x;
+  EXPECT_EQ(compareWithReference(w.world), "");
+}
+
+TEST(Light, TopAndBottomOfTheWorld) {
+  LitWorld w("void");
+  w.loadArea(0, 0, 0, 0);
+  w.set({3, 319, 3}, "oak_leaves");
+  EXPECT_EQ(w.sky({3, 319, 3}), 14);  // lit from the sky above the world, through its own opacity
+  EXPECT_EQ(w.sky({3, 318, 3}), 14);  // from the open-sky columns beside it, not 13 from above
+  w.set({4, 319, 3}, "stone");
+  EXPECT_EQ(w.sky({4, 319, 3}), 0);
+  w.set({8, -64, 8}, "torch");
+  EXPECT_EQ(w.block({8, -64, 8}), 14);
+  EXPECT_EQ(w.block({8, -63, 8}), 13);
+  EXPECT_EQ(w.light.lightAt({8, -65, 8}, LightChannel::Block), 0);
+  EXPECT_EQ(w.light.lightAt({8, 320, 8}, LightChannel::Sky), 15);
+  EXPECT_EQ(compareWithReference(w.world), "");
+  w.set({3, 319, 3}, "air");
+  w.set({4, 319, 3}, "air");
+  EXPECT_EQ(w.sky({3, 318, 3}), 15);
+  EXPECT_EQ(compareWithReference(w.world), "");
+}
+
+TEST(Light, UnloadedChunksActOpaqueAndLoadOrderDoesNotMatter) {
+  LitWorld w("flat");
+  w.load({0, 0});
+  w.set({15, 70, 8}, "glowstone");
+  EXPECT_EQ(w.block({16, 70, 8}), 0);  // not loaded: nothing there
+  w.load({1, 0});
+  EXPECT_EQ(w.block({16, 70, 8}), 14) << "light flows into a chunk when it loads";
+  EXPECT_EQ(compareWithReference(w.world), "");
+  w.light.chunkUnloading({0, 0});
+  w.world.removeChunk({0, 0});
+  EXPECT_EQ(w.block({16, 70, 8}), 0) << "and back out when its source unloads";
+  EXPECT_EQ(compareWithReference(w.world), "");
+}
+
+TEST(Light, ReportsChangedSectionsIncludingNeighboursWhoseHaloChanged) {
+  LitWorld w("void");
+  w.loadArea(-1, -1, 1, 1);
+  w.light.takeChangedSections();
+  w.set({0, 0, 0}, "torch");  // a section corner: light reaches 8 sections around it
+  const auto changed = w.light.takeChangedSections();
+  auto has = [&](SectionPos s) { return std::find(changed.begin(), changed.end(), s) != changed.end(); };
+  EXPECT_TRUE(has({0, sectionOf(0), 0}));
+  EXPECT_TRUE(has({-1, sectionOf(-1), -1}));
+  EXPECT_FALSE(has({0, sectionOf(40), 0})) << "light 14 cannot reach y = 32";
+  EXPECT_TRUE(w.light.takeChangedSections().empty());
+  w.set({8, 100, 8}, "cobblestone");
+  w.light.takeChangedSections();
+  w.set({8, 100, 8}, "stone");  // same light properties: nothing to redo
+  EXPECT_TRUE(w.light.takeChangedSections().empty());
+}
+
+// 100 000 random edits, many on section and chunk borders, with chunks loading and unloading in
+// random order; after every batch the incremental light equals a recompute from scratch.
+TEST(Light, IncrementalUpdatesMatchAFullRecompute) {
+  LitWorld w("flat", "bedrock,40*stone,dirt,grass_block");
+  std::mt19937 rng(20261121);
+  std::vector<ChunkPos> area;
+  for (int z = -2; z <= 1; ++z)
+    for (int x = -2; x <= 1; ++x) area.push_back({x, z});
+  std::shuffle(area.begin(), area.end(), rng);
+  std::vector<std::unique_ptr<Chunk>> unloaded;
+  for (std::size_t i = 0; i < area.size(); ++i) {
+    if (i < 10) {
+      w.load(area[i]);
+    } else {
+      unloaded.push_back(std::make_unique<Chunk>(area[i]));
+      w.gen->generate(*unloaded.back());
+    }
+  }
+  const char* palette[] = {"air", "air", "air", "stone", "stone", "glass", "oak_leaves", "water",
+                           "torch", "glowstone", "lava", "ice"};
+  auto coordinate = [&](int lo, int hi) {
+    // Half the edits sit on a border: local 0 or 15.
+    const int v = lo + static_cast<int>(rng() % static_cast<unsigned>(hi - lo));
+    return (rng() & 1) ? (v & ~15) + ((rng() & 1) ? 15 : 0) : v;
+  };
+  int edits = 0;
+  for (int batch = 0; batch < 100; ++batch) {
+    // Sometimes a chunk loads or unloads (keeping its blocks, as a save would).
+    if (batch % 5 == 4 && !unloaded.empty()) {
+      const std::size_t k = rng() % unloaded.size();
+      const ChunkPos pos = unloaded[k]->pos();
+      w.world.insertChunk(std::move(unloaded[k]));
+      unloaded.erase(unloaded.begin() + static_cast<std::ptrdiff_t>(k));
+      w.light.chunkLoaded(pos);
+    } else if (batch % 5 == 2 && w.world.chunkCount() > 4) {
+      std::vector<ChunkPos> loaded;
+      w.world.forEachChunk([&](const Chunk& c) { loaded.push_back(c.pos()); });
+      std::sort(loaded.begin(), loaded.end());
+      const ChunkPos pos = loaded[rng() % loaded.size()];
+      w.light.chunkUnloading(pos);
+      unloaded.push_back(w.world.removeChunk(pos));
+    }
+    for (int i = 0; i < 1000; ++i, ++edits) {
+      const BlockPos p{coordinate(-32, 32), coordinate(24, 104), coordinate(-32, 32)};
+      w.set(p, palette[rng() % std::size(palette)]);
+    }
+    const std::string mismatch = compareWithReference(w.world);
+    ASSERT_EQ(mismatch, "") << "after batch " << batch << " (" << edits << " edits)";
+  }
+  EXPECT_EQ(edits, 100000);
+}
+
+}  // namespace
+}  // namespace terrasol
