@@ -30,6 +30,11 @@ class ChunkGrid {
     return chunks_[gz * static_cast<unsigned>(width_) + gx];
   }
 
+  int minX() const { return minX_; }
+  int minZ() const { return minZ_; }
+  int width() const { return width_; }
+  int depth() const { return depth_; }
+
  private:
   int minX_, minZ_, width_, depth_;
   std::vector<Chunk*> chunks_;

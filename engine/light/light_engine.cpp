@@ -112,10 +112,12 @@ void LightEngine::chunkLoaded(ChunkPos pos) {
       // Every emitter starts at its emission.
       for (int s = 0; s < kSectionCount; ++s) {
         const Section& section = chunk->section(s);
+        light.emitters[static_cast<std::size_t>(s)] = 0;
         if (section.isUniform() && emission_[section.uniformBlock()] == 0) continue;
         for (int i = 0; i < Section::kVolume; ++i) {
           const std::uint8_t e = emission_[section.at(i)];
           if (e == 0) continue;
+          ++light.emitters[static_cast<std::size_t>(s)];
           const int x = x0 + (i & 15), y = kMinY + s * 16 + (i >> 8), z = z0 + ((i >> 4) & 15);
           p.locate(x, y, z, cell);
           p.setLight(cell, x, y, z, e);
@@ -219,6 +221,8 @@ void LightEngine::blockChanged(const BlockChange& change) {
     }
   }
   light.skyTop[column] = static_cast<std::int16_t>(newTop);
+  auto& emitters = light.emitters[static_cast<std::size_t>(sectionOf(at.y))];
+  emitters = static_cast<std::uint16_t>(emitters - (emission_[change.before] > 0) + (emission_[change.after] > 0));
 
   for (const LightChannel channel : {LightChannel::Block, LightChannel::Sky}) {
     Propagator p(grid, channel, opacity_, emission_, decrease_, increase_, stats_, changed_);
@@ -250,6 +254,64 @@ void LightEngine::blockChanged(const BlockChange& change) {
         p.setLight(cell, at.x, y, at.z, 0);
         p.decrease(at.x, y, at.z, level, kAllDirections);
       }
+    }
+    p.run();
+  }
+}
+
+void LightEngine::relightSection(const SectionPos& s) {
+  Chunk* chunk = world_.chunk({s.x, s.z});
+  if (!chunk || !chunk->light().lit || s.section < 0 || s.section >= kSectionCount) return;
+  const ChunkGrid grid = gridAround(world_, {s.x, s.z}, kReach);
+  const ChunkLight& light = chunk->light();
+  const auto index = static_cast<std::size_t>(s.section);
+  const int x0 = s.x * 16, y0 = kMinY + s.section * 16, z0 = s.z * 16;
+  // Open-sky cells only seed the fill where a darker cell can be beside them: at most as high as the
+  // tallest neighbouring column, or right above their own column's top.
+  std::array<int, 256> seedTop;
+  for (int i = 0; i < 256; ++i) {
+    const int x = x0 + (i & 15), z = z0 + (i >> 4);
+    int highest = light.skyTop[static_cast<std::size_t>(i)] + 1;
+    for (const int d : {0, 1, 4, 5}) highest = std::max(highest, skyTopAt(grid, x + kDirectionOffsets[d].x, z + kDirectionOffsets[d].z));
+    seedTop[static_cast<std::size_t>(i)] = highest;
+  }
+  for (const LightChannel channel : {LightChannel::Block, LightChannel::Sky}) {
+    const NibbleArray& layer = channel == LightChannel::Block ? light.block[index] : light.sky[index];
+    const bool noSources = channel == LightChannel::Block && light.emitters[index] == 0;
+    if (noSources && layer.isUniform() && layer.uniformLevel() == 0) continue;  // dark and stays dark
+    Propagator p(grid, channel, opacity_, emission_, decrease_, increase_, stats_, changed_);
+    Cell cell;
+    p.locate(x0, y0, z0, cell);  // every cell of the section shares the rest of its Cell
+    // Each cell gets its own level; light above it is removed, from here and from what it lit.
+    for (int i = 0; i < Section::kVolume; ++i) {
+      const std::uint8_t level = layer.get(i);
+      if (noSources && level == 0) continue;
+      const int x = x0 + (i & 15), y = y0 + (i >> 8), z = z0 + ((i >> 4) & 15);
+      cell.index = i;
+      cell.column = i & 255;
+      const std::uint8_t own = noSources ? 0 : p.source(cell, y);
+      if (level != own) p.setLight(cell, x, y, z, own);
+      if (level > own) p.decrease(x, y, z, level, kAllDirections);
+    }
+    // Then every lit cell offers its light again, so cells that were too dark fill up. Open-sky cells
+    // above the neighbouring columns only have 15s around them and are left out.
+    for (int i = 0; i < Section::kVolume; ++i) {
+      const std::uint8_t level = layer.get(i);
+      const int y = y0 + (i >> 8);
+      if (level <= 1 || (channel == LightChannel::Sky && level == 15 && y > seedTop[static_cast<std::size_t>(i & 255)])) continue;
+      p.increase(x0 + (i & 15), y, z0 + ((i >> 4) & 15), level, kAllDirections);
+    }
+    // And so does the light just outside each face.
+    for (int d = 0; d < 6; ++d) {
+      for (int a = 0; a < 16; ++a)
+        for (int b = 0; b < 16; ++b) {
+          const int lx = d == 0 ? -1 : d == 1 ? 16 : a, ly = d == 2 ? -1 : d == 3 ? 16 : (d < 2 ? a : b);
+          const int lz = d == 4 ? -1 : d == 5 ? 16 : b;
+          Cell outside;
+          if (!p.locate(x0 + lx, y0 + ly, z0 + lz, outside)) continue;
+          const std::uint8_t level = p.light(outside);
+          if (level > 1) p.increase(x0 + lx, y0 + ly, z0 + lz, level, static_cast<std::uint8_t>(1 << light::opposite(d)));
+        }
     }
     p.run();
   }

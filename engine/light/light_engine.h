@@ -35,6 +35,9 @@ class LightEngine {
   void chunkUnloading(ChunkPos pos);
   // Call after a World::setBlock that changed something.
   void blockChanged(const BlockChange& change);
+  // Recomputes one section's light from scratch, as if nothing were known about it: its light, and
+  // whatever light spread from it, is removed, then refilled from sources inside and outside.
+  void relightSection(const SectionPos& section);
 
   // Sections whose light, or the light in their one-block halo, changed since the last call: what the
   // mesher must rebuild. Each once, in no particular order.

@@ -2,6 +2,7 @@
 // The flood fill shared by every light update: one channel, a decrease queue, then an increase queue.
 // Internal to engine/light.
 
+#include <array>
 #include <vector>
 
 #include "light/chunk_grid.h"
@@ -16,10 +17,28 @@ constexpr int opposite(int direction) { return direction ^ 1; }  // West<->East,
 // Where a cell's data lives.
 struct Cell {
   Chunk* chunk;
+  NibbleArray* layer;     // the propagating channel's light of the cell's section
+  const Section* blocks;  // the cell's section
   int section;
   int index;   // Section::index of the cell
   int column;  // z * 16 + x within the chunk
 };
+
+// Section::index and column steps per Direction, and whether a cell at local (x, y, z) has its
+// neighbour in that direction inside the same section.
+inline constexpr int kIndexStep[6] = {-1, 1, -256, 256, -16, 16};
+inline constexpr int kColumnStep[6] = {-1, 1, 0, 0, -16, 16};
+// Bit d set: the neighbour in Direction d is in the same section. Bit 6: the cell is inside (on no face).
+inline const std::array<std::uint8_t, Section::kVolume> kInSection = [] {
+  std::array<std::uint8_t, Section::kVolume> masks{};
+  for (int i = 0; i < Section::kVolume; ++i) {
+    const int x = i & 15, y = i >> 8, z = (i >> 4) & 15;
+    const int m = (x != 0) | (x != 15) << 1 | (y != 0) << 2 | (y != 15) << 3 | (z != 0) << 4 | (z != 15) << 5;
+    masks[static_cast<std::size_t>(i)] = static_cast<std::uint8_t>(m | (m == 0x3F) << 6);
+  }
+  return masks;
+}();
+inline bool staysInSection(int index, int direction) { return kInSection[static_cast<std::size_t>(index)] >> direction & 1; }
 
 class Propagator {
  public:
@@ -31,14 +50,34 @@ class Propagator {
     if (y < kMinY || y >= kMaxY) return false;
     Chunk* chunk = grid_.at(x, z);
     if (!chunk) return false;
-    cell = {chunk, (y - kMinY) >> 4, Section::index(x & 15, y & 15, z & 15), (z & 15) * 16 + (x & 15)};
+    const int section = (y - kMinY) >> 4;
+    cell = {chunk, &layerOf(chunk, section), &chunk->section(section), section,
+            Section::index(x & 15, y & 15, z & 15), (z & 15) * 16 + (x & 15)};
     return true;
   }
-  std::uint8_t light(const Cell& c) const { return layer(c).get(c.index); }
-  void setLight(const Cell& c, int x, int y, int z, std::uint8_t level);
+  // The neighbour of `c` (at x, y, z) in `direction`; most steps stay in the section and need no lookup.
+  bool neighbour(const Cell& c, int direction, int x, int y, int z, Cell& n) const {
+    if (staysInSection(c.index, direction)) {
+      n = c;
+      n.index += kIndexStep[direction];
+      n.column += kColumnStep[direction];
+      return true;
+    }
+    return locate(x, y, z, n);
+  }
+  std::uint8_t light(const Cell& c) const { return c.layer->get(c.index); }
+  void setLight(const Cell& c, int x, int y, int z, std::uint8_t level) {
+    c.layer->set(c.index, level);
+    ++stats_.lightWrites;
+    if (kInSection[static_cast<std::size_t>(c.index)] & 0x40) {
+      marks_[static_cast<std::size_t>((((z >> 4) - grid_.minZ() + 1) * marksWidth_ + (x >> 4) - grid_.minX() + 1) * kSectionCount + c.section)] = 1;
+    } else {
+      markChanged(c, x, y, z);
+    }
+  }
   std::uint8_t opacity(const Cell& c) {
     ++stats_.blockReads;
-    return opacity_[c.chunk->section(c.section).at(c.index)];
+    return opacity_[c.blocks->at(c.index)];
   }
   // The level a cell has by itself: its emission (block light) or 15 in the open sky column (sky light).
   std::uint8_t source(const Cell& c, int y);
@@ -53,14 +92,15 @@ class Propagator {
   void run();
 
  private:
-  NibbleArray& layer(const Cell& c) const {
-    auto& light = c.chunk->light();
-    return channel_ == LightChannel::Block ? light.block[static_cast<std::size_t>(c.section)]
-                                           : light.sky[static_cast<std::size_t>(c.section)];
+  NibbleArray& layerOf(Chunk* chunk, int section) const {
+    auto& light = chunk->light();
+    return channel_ == LightChannel::Block ? light.block[static_cast<std::size_t>(section)]
+                                           : light.sky[static_cast<std::size_t>(section)];
   }
   void runDecrease();
   void runIncrease();
   void markChanged(const Cell& c, int x, int y, int z);
+  void flushChanged();
 
   const ChunkGrid& grid_;
   LightChannel channel_;
@@ -70,7 +110,10 @@ class Propagator {
   std::vector<LightEngine::Entry>& increase_;
   LightStats& stats_;
   std::unordered_set<std::uint64_t>& changed_;
-  std::uint64_t lastChanged_ = ~0ull;
+  // One flag per section of the grid plus a one-chunk margin (halos reach into the next chunk), so
+  // marking a change on the hot path is a byte store; flushChanged() turns them into keys.
+  int marksWidth_, marksDepth_;
+  std::vector<std::uint8_t> marks_;
 };
 
 // Key of a section in LightEngine's changed set: 27 bits each of chunk x and z (the world border is

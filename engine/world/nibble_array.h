@@ -14,51 +14,75 @@ class NibbleArray {
   static constexpr int kBytes = 2048;
   using Bytes = std::array<std::uint8_t, kBytes>;
 
-  explicit NibbleArray(std::uint8_t uniform = 0) : uniform_(uniform) {}
+  explicit NibbleArray(std::uint8_t uniform = 0) : read_(uniformBytes(uniform)), uniform_(uniform) {}
   NibbleArray(const NibbleArray& other)
-      : data_(other.data_ ? std::make_unique<Bytes>(*other.data_) : nullptr), uniform_(other.uniform_) {}
+      : owned_(other.owned_ ? std::make_unique<Bytes>(*other.owned_) : nullptr),
+        read_(owned_ ? owned_->data() : other.read_),
+        uniform_(other.uniform_) {}
   NibbleArray& operator=(const NibbleArray& other) {
     if (this != &other) *this = NibbleArray(other);
     return *this;
   }
-  NibbleArray(NibbleArray&&) noexcept = default;
-  NibbleArray& operator=(NibbleArray&&) noexcept = default;
+  NibbleArray(NibbleArray&& other) noexcept
+      : owned_(std::move(other.owned_)), read_(other.read_), uniform_(other.uniform_) {
+    other.fill(0);
+  }
+  NibbleArray& operator=(NibbleArray&& other) noexcept {
+    owned_ = std::move(other.owned_);
+    read_ = other.read_;
+    uniform_ = other.uniform_;
+    other.fill(0);
+    return *this;
+  }
 
+  // Branch-free: a uniform array reads from a shared constant buffer of its level.
   std::uint8_t get(int index) const {
-    if (!data_) return uniform_;
-    return static_cast<std::uint8_t>(((*data_)[static_cast<std::size_t>(index >> 1)] >> ((index & 1) * 4)) & 15);
+    return static_cast<std::uint8_t>((read_[index >> 1] >> ((index & 1) * 4)) & 15);
   }
   void set(int index, std::uint8_t level) {
-    if (!data_) {
+    if (!owned_) {
       if (level == uniform_) return;
-      data_ = std::make_unique<Bytes>();
-      data_->fill(static_cast<std::uint8_t>(uniform_ * 0x11));
+      owned_ = std::make_unique<Bytes>();
+      owned_->fill(static_cast<std::uint8_t>(uniform_ * 0x11));
+      read_ = owned_->data();
     }
-    std::uint8_t& byte = (*data_)[static_cast<std::size_t>(index >> 1)];
+    std::uint8_t& byte = (*owned_)[static_cast<std::size_t>(index >> 1)];
     const int shift = (index & 1) * 4;
     byte = static_cast<std::uint8_t>((byte & ~(15 << shift)) | (level << shift));
   }
   void fill(std::uint8_t level) {
-    data_.reset();
+    owned_.reset();
     uniform_ = level;
+    read_ = uniformBytes(level);
   }
   // Frees the bytes when every level is the same.
   void compact() {
-    if (!data_) return;
-    const std::uint8_t first = (*data_)[0];
+    if (!owned_) return;
+    const std::uint8_t first = (*owned_)[0];
     if ((first & 15) != (first >> 4)) return;
-    for (std::uint8_t b : *data_) {
+    for (std::uint8_t b : *owned_) {
       if (b != first) return;
     }
     fill(first & 15);
   }
 
-  bool isUniform() const { return !data_; }
+  bool isUniform() const { return !owned_; }
   std::uint8_t uniformLevel() const { return uniform_; }  // meaningful when isUniform()
-  std::size_t memoryBytes() const { return data_ ? kBytes : 0; }
+  std::size_t memoryBytes() const { return owned_ ? kBytes : 0; }
 
  private:
-  std::unique_ptr<Bytes> data_;
+  // 16 shared read-only buffers, one per level: 32 KiB for the whole process.
+  static const std::uint8_t* uniformBytes(std::uint8_t level) {
+    static const auto buffers = [] {
+      std::array<Bytes, 16> all;
+      for (int l = 0; l < 16; ++l) all[static_cast<std::size_t>(l)].fill(static_cast<std::uint8_t>(l * 0x11));
+      return all;
+    }();
+    return buffers[level & 15].data();
+  }
+
+  std::unique_ptr<Bytes> owned_;
+  const std::uint8_t* read_;  // owned_ bytes, or the uniform level's shared buffer
   std::uint8_t uniform_ = 0;
 };
 

@@ -204,6 +204,25 @@ TEST(Light, ReportsChangedSectionsIncludingNeighboursWhoseHaloChanged) {
   EXPECT_TRUE(w.light.takeChangedSections().empty());
 }
 
+TEST(Light, RelightingASectionRepairsItAndChangesNothingCorrect) {
+  LitWorld w("terrain");
+  w.loadArea(-1, -1, 1, 1);
+  w.set({3, 100, 3}, "glowstone");
+  const int surface = w.gen->surfaceHeight(8, 8);
+  const SectionPos section{0, sectionOf(surface), 0};
+  w.light.relightSection(section);
+  EXPECT_EQ(compareWithReference(w.world), "") << "relighting correct light must not change it";
+  // Scramble the section's light, then relight it.
+  ChunkLight& light = w.world.chunk({0, 0})->light();
+  for (int i = 0; i < Section::kVolume; i += 7) {
+    light.block[static_cast<std::size_t>(section.section)].set(i, static_cast<std::uint8_t>(i % 16));
+    light.sky[static_cast<std::size_t>(section.section)].set(i, static_cast<std::uint8_t>((i / 7) % 16));
+  }
+  EXPECT_NE(compareWithReference(w.world), "");
+  w.light.relightSection(section);
+  EXPECT_EQ(compareWithReference(w.world), "");
+}
+
 // 100 000 random edits, many on section and chunk borders, with chunks loading and unloading in
 // random order; after every batch the incremental light equals a recompute from scratch.
 TEST(Light, IncrementalUpdatesMatchAFullRecompute) {
