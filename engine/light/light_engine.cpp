@@ -7,17 +7,13 @@
 namespace terrasol {
 
 using light::Cell;
-using light::ChunkGrid;
 using light::kAllDirections;
 using light::Propagator;
 
 namespace {
 
-constexpr int kReach = 2;  // chunks an update can reach beyond its seeds (see chunk_grid.h)
-
-ChunkGrid gridAround(World& world, ChunkPos center, int radius, const Chunk* excluded = nullptr) {
-  return ChunkGrid(world, {center.x - radius, center.z - radius}, {center.x + radius, center.z + radius}, excluded);
-}
+constexpr int kReach = 2;  // chunks an update can reach beyond its seeds (see light_frame.h)
+constexpr int kHorizontal[4] = {0, 1, 4, 5};  // West, East, North, South
 
 // Highest block with opacity >= 1 in each column; uniform sections are skipped whole.
 void computeSkyTops(const Chunk& chunk, const std::uint8_t* opacity, ChunkLight& light) {
@@ -28,16 +24,16 @@ void computeSkyTops(const Chunk& chunk, const std::uint8_t* opacity, ChunkLight&
     const Section& section = chunk.section(s);
     if (section.isUniform()) {
       if (opacity[section.uniformBlock()] == 0) continue;
-      for (int i = 0; i < 256; ++i) {
-        if (!done[static_cast<std::size_t>(i)]) light.skyTop[static_cast<std::size_t>(i)] = static_cast<std::int16_t>(kMinY + s * 16 + 15);
+      for (std::size_t i = 0; i < 256; ++i) {
+        if (!done[i]) light.skyTop[i] = static_cast<std::int16_t>(kMinY + s * 16 + 15);
       }
       break;
     }
     for (int ly = 15; ly >= 0; --ly)
-      for (int i = 0; i < 256; ++i) {
-        if (done[static_cast<std::size_t>(i)] || opacity[section.at(ly * 256 + i)] == 0) continue;
-        done[static_cast<std::size_t>(i)] = true;
-        light.skyTop[static_cast<std::size_t>(i)] = static_cast<std::int16_t>(kMinY + s * 16 + ly);
+      for (std::size_t i = 0; i < 256; ++i) {
+        if (done[i] || opacity[section.at(ly * 256 + static_cast<int>(i))] == 0) continue;
+        done[i] = true;
+        light.skyTop[i] = static_cast<std::int16_t>(kMinY + s * 16 + ly);
         --remaining;
       }
   }
@@ -49,23 +45,52 @@ void fillOpenSky(ChunkLight& light) {
   for (int s = 0; s < kSectionCount; ++s) {
     const int bottom = kMinY + s * 16;
     NibbleArray& sky = light.sky[static_cast<std::size_t>(s)];
-    if (bottom > *highest) {
-      sky.fill(15);
-    } else if (bottom + 15 <= *lowest) {
-      sky.fill(0);
-    } else {
-      sky.fill(0);
-      for (int ly = 0; ly < 16; ++ly)
-        for (int i = 0; i < 256; ++i) {
-          if (bottom + ly > light.skyTop[static_cast<std::size_t>(i)]) sky.set(ly * 256 + i, 15);
-        }
-    }
+    sky.fill(bottom > *highest ? 15 : 0);
+    if (bottom > *highest || bottom + 15 <= *lowest) continue;
+    for (int ly = 0; ly < 16; ++ly)
+      for (std::size_t i = 0; i < 256; ++i) {
+        if (bottom + ly > light.skyTop[i]) sky.set(ly * 256 + static_cast<int>(i), 15);
+      }
   }
 }
 
-int skyTopAt(const ChunkGrid& grid, int x, int z) {
-  const Chunk* c = grid.at(x, z);
-  return c ? c->light().skyTop[static_cast<std::size_t>((z & 15) * 16 + (x & 15))] : kMaxY;  // unloaded: opaque
+// For each column of a chunk: the highest sky top among its four horizontal neighbours (in this
+// chunk or the next; unlit neighbours do not count, they take no light), at least its own top + 1.
+// Open-sky cells up to that height border a darker cell, so sky light spreads from them.
+std::array<int, 256> spreadTops(const World& world, const Chunk& chunk) {
+  const ChunkPos pos = chunk.pos();
+  const Chunk* around[4];
+  for (int k = 0; k < 4; ++k) {
+    const BlockPos& o = kDirectionOffsets[kHorizontal[k]];
+    const Chunk* c = world.chunk({pos.x + o.x, pos.z + o.z});
+    around[k] = c && c->light().lit ? c : nullptr;
+  }
+  std::array<int, 256> tops;
+  for (int lz = 0; lz < 16; ++lz)
+    for (int lx = 0; lx < 16; ++lx) {
+      int highest = chunk.light().skyTop[static_cast<std::size_t>(lz * 16 + lx)] + 1;
+      for (int k = 0; k < 4; ++k) {
+        const BlockPos& o = kDirectionOffsets[kHorizontal[k]];
+        const int nx = lx + o.x, nz = lz + o.z;
+        const bool outside = nx < 0 || nx > 15 || nz < 0 || nz > 15;
+        const Chunk* c = outside ? around[k] : &chunk;
+        if (c) highest = std::max<int>(highest, c->light().skyTop[static_cast<std::size_t>((nz & 15) * 16 + (nx & 15))]);
+      }
+      tops[static_cast<std::size_t>(lz * 16 + lx)] = highest;
+    }
+  return tops;
+}
+
+const NibbleArray& layerOf(const ChunkLight& light, LightChannel channel, int section) {
+  return channel == LightChannel::Block ? light.block[static_cast<std::size_t>(section)]
+                                        : light.sky[static_cast<std::size_t>(section)];
+}
+
+// The cell of a chunk's face in direction `d`, at position (a, y) along the face.
+BlockPos faceCell(ChunkPos pos, int d, int a, int y, int beyond) {
+  const int x = d == 0 ? -beyond : d == 1 ? 15 + beyond : a;
+  const int z = d == 4 ? -beyond : d == 5 ? 15 + beyond : a;
+  return {pos.minBlockX() + x, y, pos.minBlockZ() + z};
 }
 
 }  // namespace
@@ -78,9 +103,7 @@ std::uint8_t LightEngine::lightAt(const BlockPos& pos, LightChannel channel) con
   if (pos.y < kMinY) return 0;
   const Chunk* c = world_.chunk(ChunkPos::of(pos));
   if (!c || !c->light().lit) return 0;
-  const auto s = static_cast<std::size_t>(sectionOf(pos.y));
-  const int index = Section::index(localOf(pos.x), localOf(pos.y), localOf(pos.z));
-  return channel == LightChannel::Block ? c->light().block[s].get(index) : c->light().sky[s].get(index);
+  return layerOf(c->light(), channel, sectionOf(pos.y)).get(Section::index(localOf(pos.x), localOf(pos.y), localOf(pos.z)));
 }
 
 std::vector<SectionPos> LightEngine::takeChangedSections() {
@@ -99,14 +122,13 @@ void LightEngine::chunkLoaded(ChunkPos pos) {
   for (auto& block : light.block) block.fill(0);
   fillOpenSky(light);
   light.lit = true;
-  for (int s = 0; s < kSectionCount; ++s) {
-    changed_.insert(light::sectionKey(pos.x, s, pos.z));
-  }
+  for (int s = 0; s < kSectionCount; ++s) changed_.insert(light::sectionKey(pos.x, s, pos.z));
 
-  const ChunkGrid grid = gridAround(world_, pos, 1 + kReach);
+  const light::ChunkWindow window(world_, {pos.x - 1 - kReach, pos.z - 1 - kReach},
+                                  {pos.x + 1 + kReach, pos.z + 1 + kReach});
   const int x0 = pos.minBlockX(), z0 = pos.minBlockZ();
   for (const LightChannel channel : {LightChannel::Block, LightChannel::Sky}) {
-    Propagator p(grid, channel, opacity_, emission_, decrease_, increase_, stats_, changed_);
+    Propagator p(window, channel, opacity_, emission_, decrease_, increase_, stats_, changed_);
     Cell cell;
     if (channel == LightChannel::Block) {
       // Every emitter starts at its emission.
@@ -120,48 +142,39 @@ void LightEngine::chunkLoaded(ChunkPos pos) {
           ++light.emitters[static_cast<std::size_t>(s)];
           const int x = x0 + (i & 15), y = kMinY + s * 16 + (i >> 8), z = z0 + ((i >> 4) & 15);
           p.locate(x, y, z, cell);
-          p.setLight(cell, x, y, z, e);
+          p.setLight(cell, e);
           p.increase(x, y, z, e, kAllDirections);
         }
       }
     } else {
-      // Open-sky cells that border a cell outside the open sky spread from there: the cell just above
-      // each column's top, and those beside a taller neighbouring column.
-      for (int lz = 0; lz < 16; ++lz)
-        for (int lx = 0; lx < 16; ++lx) {
-          const int x = x0 + lx, z = z0 + lz;
-          const int top = light.skyTop[static_cast<std::size_t>(lz * 16 + lx)];
-          int highest = top + 1;
-          for (const int d : {0, 1, 4, 5}) {
-            const BlockPos& o = kDirectionOffsets[d];
-            if (grid.at(x + o.x, z + o.z)) highest = std::max(highest, skyTopAt(grid, x + o.x, z + o.z));
-          }
-          for (int y = top + 1; y <= std::min(highest, kMaxY - 1); ++y) p.increase(x, y, z, 15, kAllDirections);
-          if (top == kMaxY - 1 && p.locate(x, top, z, cell)) {  // a block in the top layer, lit from above
-            const std::uint8_t level = p.source(cell, top);
-            p.setLight(cell, x, top, z, level);
-            p.increase(x, top, z, level, kAllDirections);
-          }
+      // Open-sky cells next to a darker cell spread sky light from there.
+      const auto tops = spreadTops(world_, *chunk);
+      for (int i = 0; i < 256; ++i) {
+        const int x = x0 + (i & 15), z = z0 + (i >> 4), top = light.skyTop[static_cast<std::size_t>(i)];
+        for (int y = top + 1; y <= std::min(tops[static_cast<std::size_t>(i)], kMaxY - 1); ++y) {
+          p.increase(x, y, z, 15, kAllDirections);
         }
+        if (top == kMaxY - 1 && p.locate(x, top, z, cell)) {  // a block in the top layer, lit from above
+          const std::uint8_t level = p.source(cell);
+          p.setLight(cell, level);
+          p.increase(x, top, z, level, kAllDirections);
+        }
+      }
     }
     // Light already in the neighbours flows in across the borders.
-    for (const int d : {0, 1, 4, 5}) {
+    for (const int d : kHorizontal) {
       const BlockPos& o = kDirectionOffsets[d];
-      const Chunk* neighbour = grid.at(x0 + o.x * 16, z0 + o.z * 16);
-      if (!neighbour) continue;
-      const int toward = light::opposite(d);
+      const Chunk* neighbour = world_.chunk({pos.x + o.x, pos.z + o.z});
+      if (!neighbour || !neighbour->light().lit) continue;
+      const auto toward = static_cast<std::uint8_t>(1 << light::opposite(d));
       for (int s = 0; s < kSectionCount; ++s) {
-        const NibbleArray& layer = channel == LightChannel::Block ? neighbour->light().block[static_cast<std::size_t>(s)]
-                                                                  : neighbour->light().sky[static_cast<std::size_t>(s)];
+        const NibbleArray& layer = layerOf(neighbour->light(), channel, s);
         if (layer.isUniform() && layer.uniformLevel() <= 1) continue;
         for (int ly = 0; ly < 16; ++ly)
-          for (int k = 0; k < 16; ++k) {
-            // The neighbour's cell facing this chunk.
-            const int x = d == 0 ? x0 - 1 : d == 1 ? x0 + 16 : x0 + k;
-            const int z = d == 4 ? z0 - 1 : d == 5 ? z0 + 16 : z0 + k;
-            const int y = kMinY + s * 16 + ly;
-            const std::uint8_t level = layer.get(Section::index(x & 15, ly, z & 15));
-            if (level > 1) p.increase(x, y, z, level, static_cast<std::uint8_t>(1 << toward));
+          for (int a = 0; a < 16; ++a) {
+            const BlockPos c = faceCell(pos, d, a, kMinY + s * 16 + ly, 1);
+            const std::uint8_t level = layer.get(Section::index(c.x & 15, ly, c.z & 15));
+            if (level > 1) p.increase(c.x, c.y, c.z, level, toward);
           }
       }
     }
@@ -174,22 +187,22 @@ void LightEngine::chunkUnloading(ChunkPos pos) {
   if (!chunk || !chunk->light().lit) return;
   // Propagate as if the chunk were already gone: every light level on its faces is removed from the
   // neighbours, which then refill from their own sources.
-  const ChunkGrid grid = gridAround(world_, pos, 1 + kReach, chunk);
-  const int x0 = pos.minBlockX(), z0 = pos.minBlockZ();
+  const light::ChunkWindow window(world_, {pos.x - 1 - kReach, pos.z - 1 - kReach},
+                                  {pos.x + 1 + kReach, pos.z + 1 + kReach}, chunk);
   for (const LightChannel channel : {LightChannel::Block, LightChannel::Sky}) {
-    Propagator p(grid, channel, opacity_, emission_, decrease_, increase_, stats_, changed_);
-    for (const int d : {0, 1, 4, 5}) {
+    Propagator p(window, channel, opacity_, emission_, decrease_, increase_, stats_, changed_);
+    for (const int d : kHorizontal) {
       const BlockPos& o = kDirectionOffsets[d];
-      if (!grid.at(x0 + o.x * 16, z0 + o.z * 16)) continue;
+      const Chunk* neighbour = world_.chunk({pos.x + o.x, pos.z + o.z});
+      if (!neighbour || !neighbour->light().lit) continue;
       for (int s = 0; s < kSectionCount; ++s) {
-        const NibbleArray& layer = channel == LightChannel::Block ? chunk->light().block[static_cast<std::size_t>(s)]
-                                                                  : chunk->light().sky[static_cast<std::size_t>(s)];
+        const NibbleArray& layer = layerOf(chunk->light(), channel, s);
         if (layer.isUniform() && layer.uniformLevel() == 0) continue;
         for (int ly = 0; ly < 16; ++ly)
-          for (int k = 0; k < 16; ++k) {
-            const int lx = d == 0 ? 0 : d == 1 ? 15 : k, lz = d == 4 ? 0 : d == 5 ? 15 : k;
-            const std::uint8_t level = layer.get(Section::index(lx, ly, lz));
-            if (level > 0) p.decrease(x0 + lx, kMinY + s * 16 + ly, z0 + lz, level, static_cast<std::uint8_t>(1 << d));
+          for (int a = 0; a < 16; ++a) {
+            const BlockPos c = faceCell(pos, d, a, kMinY + s * 16 + ly, 0);
+            const std::uint8_t level = layer.get(Section::index(c.x & 15, ly, c.z & 15));
+            if (level > 0) p.decrease(c.x, c.y, c.z, level, static_cast<std::uint8_t>(1 << d));
           }
       }
     }
@@ -205,7 +218,6 @@ void LightEngine::blockChanged(const BlockChange& change) {
   Chunk* chunk = world_.chunk(ChunkPos::of(at));
   if (sameLight || !chunk || !chunk->light().lit) return;
 
-  const ChunkGrid grid = gridAround(world_, ChunkPos::of(at), kReach);
   ChunkLight& light = chunk->light();
   const auto column = static_cast<std::size_t>(localOf(at.z) * 16 + localOf(at.x));
   const int oldTop = light.skyTop[column];
@@ -224,34 +236,36 @@ void LightEngine::blockChanged(const BlockChange& change) {
   auto& emitters = light.emitters[static_cast<std::size_t>(sectionOf(at.y))];
   emitters = static_cast<std::uint16_t>(emitters - (emission_[change.before] > 0) + (emission_[change.after] > 0));
 
+  const ChunkPos here = ChunkPos::of(at);
+  const light::ChunkWindow window(world_, {here.x - kReach, here.z - kReach}, {here.x + kReach, here.z + kReach});
   for (const LightChannel channel : {LightChannel::Block, LightChannel::Sky}) {
-    Propagator p(grid, channel, opacity_, emission_, decrease_, increase_, stats_, changed_);
+    Propagator p(window, channel, opacity_, emission_, decrease_, increase_, stats_, changed_);
     Cell cell;
     p.locate(at.x, at.y, at.z, cell);
-    const std::uint8_t before = p.light(cell), own = p.source(cell, at.y);
-    if (own != before) p.setLight(cell, at.x, at.y, at.z, own);
+    const std::uint8_t before = p.light(cell), own = p.source(cell);
+    if (own != before) p.setLight(cell, own);
     if (before > own) p.decrease(at.x, at.y, at.z, before, kAllDirections);
     if (own > 0) p.increase(at.x, at.y, at.z, own, kAllDirections);
     // The cell may now let more light in: its neighbours offer theirs.
     for (int d = 0; d < 6; ++d) {
-      const BlockPos& o = kDirectionOffsets[d];
-      Cell n;
-      if (!p.locate(at.x + o.x, at.y + o.y, at.z + o.z, n)) continue;
-      const std::uint8_t level = p.light(n);
-      if (level > 1) p.increase(at.x + o.x, at.y + o.y, at.z + o.z, level, static_cast<std::uint8_t>(1 << light::opposite(d)));
+      const BlockPos n = at.offset(kDirectionOffsets[d].x, kDirectionOffsets[d].y, kDirectionOffsets[d].z);
+      Cell near;
+      if (!p.locate(n.x, n.y, n.z, near)) continue;
+      const std::uint8_t level = p.light(near);
+      if (level > 1) p.increase(n.x, n.y, n.z, level, static_cast<std::uint8_t>(1 << light::opposite(d)));
     }
     if (channel == LightChannel::Sky) {
-      // The open sky column got shorter (its cells lose their own 15) or longer (they gain it).
+      // The open sky column got longer (its cells gain their own 15) or shorter (they lose it).
       for (int y = newTop + 1; y <= oldTop && y < kMaxY; ++y) {
         if (y == at.y || !p.locate(at.x, y, at.z, cell)) continue;
-        p.setLight(cell, at.x, y, at.z, 15);
+        p.setLight(cell, 15);
         p.increase(at.x, y, at.z, 15, kAllDirections);
       }
       for (int y = oldTop + 1; y <= newTop; ++y) {
         if (y == at.y || !p.locate(at.x, y, at.z, cell)) continue;
         const std::uint8_t level = p.light(cell);
         if (level == 0) continue;
-        p.setLight(cell, at.x, y, at.z, 0);
+        p.setLight(cell, 0);
         p.decrease(at.x, y, at.z, level, kAllDirections);
       }
     }
@@ -262,35 +276,25 @@ void LightEngine::blockChanged(const BlockChange& change) {
 void LightEngine::relightSection(const SectionPos& s) {
   Chunk* chunk = world_.chunk({s.x, s.z});
   if (!chunk || !chunk->light().lit || s.section < 0 || s.section >= kSectionCount) return;
-  const ChunkGrid grid = gridAround(world_, {s.x, s.z}, kReach);
   const ChunkLight& light = chunk->light();
   const auto index = static_cast<std::size_t>(s.section);
   const int x0 = s.x * 16, y0 = kMinY + s.section * 16, z0 = s.z * 16;
-  // Open-sky cells only seed the fill where a darker cell can be beside them: at most as high as the
-  // tallest neighbouring column, or right above their own column's top.
-  std::array<int, 256> seedTop;
-  for (int i = 0; i < 256; ++i) {
-    const int x = x0 + (i & 15), z = z0 + (i >> 4);
-    int highest = light.skyTop[static_cast<std::size_t>(i)] + 1;
-    for (const int d : {0, 1, 4, 5}) highest = std::max(highest, skyTopAt(grid, x + kDirectionOffsets[d].x, z + kDirectionOffsets[d].z));
-    seedTop[static_cast<std::size_t>(i)] = highest;
-  }
+  const auto tops = spreadTops(world_, *chunk);
+  const light::ChunkWindow window(world_, {s.x - kReach, s.z - kReach}, {s.x + kReach, s.z + kReach});
   for (const LightChannel channel : {LightChannel::Block, LightChannel::Sky}) {
-    const NibbleArray& layer = channel == LightChannel::Block ? light.block[index] : light.sky[index];
+    const NibbleArray& layer = layerOf(light, channel, s.section);
     const bool noSources = channel == LightChannel::Block && light.emitters[index] == 0;
     if (noSources && layer.isUniform() && layer.uniformLevel() == 0) continue;  // dark and stays dark
-    Propagator p(grid, channel, opacity_, emission_, decrease_, increase_, stats_, changed_);
+    Propagator p(window, channel, opacity_, emission_, decrease_, increase_, stats_, changed_);
     Cell cell;
-    p.locate(x0, y0, z0, cell);  // every cell of the section shares the rest of its Cell
     // Each cell gets its own level; light above it is removed, from here and from what it lit.
     for (int i = 0; i < Section::kVolume; ++i) {
       const std::uint8_t level = layer.get(i);
       if (noSources && level == 0) continue;
       const int x = x0 + (i & 15), y = y0 + (i >> 8), z = z0 + ((i >> 4) & 15);
-      cell.index = i;
-      cell.column = i & 255;
-      const std::uint8_t own = noSources ? 0 : p.source(cell, y);
-      if (level != own) p.setLight(cell, x, y, z, own);
+      p.locate(x, y, z, cell);
+      const std::uint8_t own = noSources ? 0 : p.source(cell);
+      if (level != own) p.setLight(cell, own);
       if (level > own) p.decrease(x, y, z, level, kAllDirections);
     }
     // Then every lit cell offers its light again, so cells that were too dark fill up. Open-sky cells
@@ -298,11 +302,13 @@ void LightEngine::relightSection(const SectionPos& s) {
     for (int i = 0; i < Section::kVolume; ++i) {
       const std::uint8_t level = layer.get(i);
       const int y = y0 + (i >> 8);
-      if (level <= 1 || (channel == LightChannel::Sky && level == 15 && y > seedTop[static_cast<std::size_t>(i & 255)])) continue;
+      if (level <= 1 || (channel == LightChannel::Sky && level == 15 && y > tops[static_cast<std::size_t>(i & 255)])) {
+        continue;
+      }
       p.increase(x0 + (i & 15), y, z0 + ((i >> 4) & 15), level, kAllDirections);
     }
     // And so does the light just outside each face.
-    for (int d = 0; d < 6; ++d) {
+    for (int d = 0; d < 6; ++d)
       for (int a = 0; a < 16; ++a)
         for (int b = 0; b < 16; ++b) {
           const int lx = d == 0 ? -1 : d == 1 ? 16 : a, ly = d == 2 ? -1 : d == 3 ? 16 : (d < 2 ? a : b);
@@ -312,7 +318,6 @@ void LightEngine::relightSection(const SectionPos& s) {
           const std::uint8_t level = p.light(outside);
           if (level > 1) p.increase(x0 + lx, y0 + ly, z0 + lz, level, static_cast<std::uint8_t>(1 << light::opposite(d)));
         }
-    }
     p.run();
   }
 }

@@ -50,7 +50,7 @@ class LightEngine {
   void resetStats() { stats_ = {}; }
 
   struct Entry {
-    std::int32_t x, y, z;
+    std::uint32_t pos;        // frame position (light_frame.h)
     std::uint8_t level;
     std::uint8_t directions;  // bit d set: still to visit Direction d
   };

@@ -1,14 +1,15 @@
 #include "light/propagator.h"
 
+#include <algorithm>
 #include <bit>
 
 namespace terrasol::light {
 
-Propagator::Propagator(const ChunkGrid& grid, LightChannel channel, const std::uint8_t* opacity,
+Propagator::Propagator(const ChunkWindow& window, LightChannel channel, const std::uint8_t* opacity,
                        const std::uint8_t* emission, std::vector<LightEngine::Entry>& decrease,
                        std::vector<LightEngine::Entry>& increase, LightStats& stats,
                        std::unordered_set<std::uint64_t>& changed)
-    : grid_(grid),
+    : frame_(window, channel),
       channel_(channel),
       opacity_(opacity),
       emission_(emission),
@@ -16,46 +17,51 @@ Propagator::Propagator(const ChunkGrid& grid, LightChannel channel, const std::u
       increase_(increase),
       stats_(stats),
       changed_(changed),
-      marksWidth_(grid.width() + 2),
-      marksDepth_(grid.depth() + 2),
-      marks_(static_cast<std::size_t>(marksWidth_ * marksDepth_ * kSectionCount), 0) {
+      marks_(static_cast<std::size_t>((frame_.width() + 2) * (frame_.depth() + 2) * kSectionCount), 0) {
   decrease_.clear();
   increase_.clear();
 }
 
-std::uint8_t Propagator::source(const Cell& c, int y) {
+Propagator::~Propagator() {
+  stats_.blockReads += blockReads_;
+  stats_.lightWrites += lightWrites_;
+}
+
+std::uint8_t Propagator::source(const SectionRef& r, int index, std::uint32_t pos) {
   if (channel_ == LightChannel::Block) {
-    ++stats_.blockReads;
-    return emission_[c.blocks->at(c.index)];
+    ++blockReads_;
+    return emission_[r.blocks ? r.blocks[index] : r.uniform];
   }
-  if (y > c.chunk->light().skyTop[static_cast<std::size_t>(c.column)]) return 15;
+  const int y = LightFrame::worldY(pos);
+  if (y > r.skyTop[index & 255]) return 15;
   // The top layer of the world is lit from the sky above it, through its own opacity.
-  if (y == kMaxY - 1) return static_cast<std::uint8_t>(15 - std::max<int>(1, opacity(c)));
+  if (y == kMaxY - 1) return static_cast<std::uint8_t>(15 - std::max<int>(1, opacity(r, index)));
   return 0;
 }
 
-// Marks the cell's section and, for a cell on a section face, the sections whose one-block halo holds it.
-void Propagator::markChanged(const Cell& c, int x, int y, int z) {
-  const int gx = (x >> 4) - grid_.minX() + 1, gz = (z >> 4) - grid_.minZ() + 1;  // inside the margin
-  const int lx = x & 15, ly = y & 15, lz = z & 15;
+// A cell on a section face also changes the halo of the sections beside it.
+void Propagator::markFaces(int index, std::uint32_t pos) {
+  const int lx = index & 15, ly = index >> 8, lz = (index >> 4) & 15;
+  const int section = static_cast<int>(pos >> 20);
   const int x0 = lx == 0 ? -1 : 0, x1 = lx == 15 ? 1 : 0;
-  const int y0 = ly == 0 && c.section > 0 ? -1 : 0, y1 = ly == 15 && c.section < kSectionCount - 1 ? 1 : 0;
+  const int y0 = ly == 0 && section > 0 ? -1 : 0, y1 = ly == 15 && section < kSectionCount - 1 ? 1 : 0;
   const int z0 = lz == 0 ? -1 : 0, z1 = lz == 15 ? 1 : 0;
   for (int dz = z0; dz <= z1; ++dz)
     for (int dx = x0; dx <= x1; ++dx) {
-      std::uint8_t* column = &marks_[static_cast<std::size_t>(((gz + dz) * marksWidth_ + gx + dx) * kSectionCount)];
-      for (int dy = y0; dy <= y1; ++dy) column[c.section + dy] = 1;
+      std::uint8_t* column = &marks_[markIndex(pos, dx, dz)];
+      for (int dy = y0; dy <= y1; ++dy) column[section + dy] = 1;
     }
 }
 
 void Propagator::flushChanged() {
-  for (int gz = 0; gz < marksDepth_; ++gz)
-    for (int gx = 0; gx < marksWidth_; ++gx)
+  const int width = frame_.width() + 2, depth = frame_.depth() + 2;
+  for (int gz = 0; gz < depth; ++gz)
+    for (int gx = 0; gx < width; ++gx)
       for (int s = 0; s < kSectionCount; ++s) {
-        std::uint8_t& mark = marks_[static_cast<std::size_t>((gz * marksWidth_ + gx) * kSectionCount + s)];
+        std::uint8_t& mark = marks_[static_cast<std::size_t>((gz * width + gx) * kSectionCount + s)];
         if (!mark) continue;
         mark = 0;
-        changed_.insert(sectionKey(grid_.minX() - 1 + gx, s, grid_.minZ() - 1 + gz));
+        changed_.insert(sectionKey(frame_.minX() - 1 + gx, s, frame_.minZ() - 1 + gz));
       }
 }
 
@@ -68,29 +74,31 @@ void Propagator::run() {
 void Propagator::runDecrease() {
   for (std::size_t head = 0; head < decrease_.size(); ++head) {
     const LightEngine::Entry e = decrease_[head];
-    Cell c;
-    // The cell itself may be gone (a chunk unloading): then every step needs a lookup.
-    const bool here = locate(e.x, e.y, e.z, c);
+    // The cell itself may be in a chunk being unloaded: its position still leads to its neighbours.
+    Cell c{&frame_.ref(frame_.refIndex(e.pos)), LightFrame::local(e.pos), e.pos};
+    const std::uint8_t inside = frame_.insideMask(e.pos);
+    const bool here = c.ref->layer != nullptr;
     for (unsigned dirs = e.directions; dirs != 0; dirs &= dirs - 1) {
       const int d = std::countr_zero(dirs);
-      const BlockPos& o = kDirectionOffsets[d];
-      const int x = e.x + o.x, y = e.y + o.y, z = e.z + o.z;
       Cell n;
-      if (!(here ? neighbour(c, d, x, y, z, n) : locate(x, y, z, n))) continue;
+      if (here ? !step(c, inside, d, n)
+               : (!(inside >> d & 1) || !locate(e.pos + static_cast<std::uint32_t>(kPosStep[d]), n))) {
+        continue;
+      }
       const std::uint8_t level = light(n);
       if (level == 0) continue;
       if (level < e.level) {
-        const std::uint8_t own = source(n, y);
+        const std::uint8_t own = source(n);
         if (own < level) {
           // Its light may have come through the removed cell: clear it and keep removing from it.
-          setLight(n, x, y, z, own);
-          decrease(x, y, z, level, allBut(opposite(d)));
-          if (own > 0) increase(x, y, z, own, kAllDirections);
+          setLight(n, own);
+          decrease_.push_back({n.pos, level, allBut(opposite(d))});
+          if (own > 0) increase_.push_back({n.pos, own, kAllDirections});
           continue;
         }
       }
       // Light of its own or from elsewhere: it refills the cleared cells afterwards.
-      increase(x, y, z, level, kAllDirections);
+      increase_.push_back({n.pos, level, kAllDirections});
     }
   }
 }
@@ -99,19 +107,18 @@ void Propagator::runIncrease() {
   for (std::size_t head = 0; head < increase_.size(); ++head) {
     const LightEngine::Entry e = increase_[head];
     Cell c;
-    if (!locate(e.x, e.y, e.z, c) || light(c) != e.level) continue;  // superseded since it was queued
+    if (!locate(e.pos, c) || light(c) != e.level) continue;  // superseded since it was queued
+    const std::uint8_t inside = frame_.insideMask(e.pos);
     for (unsigned dirs = e.directions; dirs != 0; dirs &= dirs - 1) {
       const int d = std::countr_zero(dirs);
-      const BlockPos& o = kDirectionOffsets[d];
-      const int x = e.x + o.x, y = e.y + o.y, z = e.z + o.z;
       Cell n;
-      if (!neighbour(c, d, x, y, z, n)) continue;
+      if (!step(c, inside, d, n)) continue;
       const std::uint8_t current = light(n);
       if (current + 1 >= e.level) continue;  // cannot improve even through air: no block read needed
-      const int level = e.level - std::max<int>(1, opacity(n));
+      const int level = e.level - std::max<int>(1, opacity(*n.ref, n.index));
       if (level <= current) continue;
-      setLight(n, x, y, z, static_cast<std::uint8_t>(level));
-      if (level > 1) increase(x, y, z, static_cast<std::uint8_t>(level), allBut(opposite(d)));
+      setLight(n, static_cast<std::uint8_t>(level));
+      if (level > 1) increase_.push_back({n.pos, static_cast<std::uint8_t>(level), allBut(opposite(d))});
     }
   }
 }

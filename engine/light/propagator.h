@@ -5,8 +5,7 @@
 #include <array>
 #include <vector>
 
-#include "light/chunk_grid.h"
-#include "light/light_engine.h"
+#include "light/light_frame.h"
 
 namespace terrasol::light {
 
@@ -14,21 +13,12 @@ inline constexpr std::uint8_t kAllDirections = 0x3F;
 constexpr std::uint8_t allBut(int direction) { return static_cast<std::uint8_t>(kAllDirections & ~(1 << direction)); }
 constexpr int opposite(int direction) { return direction ^ 1; }  // West<->East, Down<->Up, North<->South
 
-// Where a cell's data lives.
-struct Cell {
-  Chunk* chunk;
-  NibbleArray* layer;     // the propagating channel's light of the cell's section
-  const Section* blocks;  // the cell's section
-  int section;
-  int index;   // Section::index of the cell
-  int column;  // z * 16 + x within the chunk
-};
-
-// Section::index and column steps per Direction, and whether a cell at local (x, y, z) has its
-// neighbour in that direction inside the same section.
+// Steps per Direction: of a frame position, and of Section::index within a section.
+inline constexpr std::int32_t kPosStep[6] = {-1, 1, -(1 << 16), 1 << 16, -(1 << 8), 1 << 8};
 inline constexpr int kIndexStep[6] = {-1, 1, -256, 256, -16, 16};
-inline constexpr int kColumnStep[6] = {-1, 1, 0, 0, -16, 16};
-// Bit d set: the neighbour in Direction d is in the same section. Bit 6: the cell is inside (on no face).
+
+// Per Section::index: bit d set when the neighbour in Direction d is in the same section; bit 6 when
+// the cell is on no face of the section.
 inline const std::array<std::uint8_t, Section::kVolume> kInSection = [] {
   std::array<std::uint8_t, Section::kVolume> masks{};
   for (int i = 0; i < Section::kVolume; ++i) {
@@ -38,81 +28,96 @@ inline const std::array<std::uint8_t, Section::kVolume> kInSection = [] {
   }
   return masks;
 }();
-inline bool staysInSection(int index, int direction) { return kInSection[static_cast<std::size_t>(index)] >> direction & 1; }
+
+// A cell of the frame: its section and its index there.
+struct Cell {
+  SectionRef* ref = nullptr;
+  int index = 0;
+  std::uint32_t pos = 0;
+};
 
 class Propagator {
  public:
-  Propagator(const ChunkGrid& grid, LightChannel channel, const std::uint8_t* opacity, const std::uint8_t* emission,
-             std::vector<LightEngine::Entry>& decrease, std::vector<LightEngine::Entry>& increase, LightStats& stats,
-             std::unordered_set<std::uint64_t>& changed);
+  Propagator(const ChunkWindow& window, LightChannel channel, const std::uint8_t* opacity,
+             const std::uint8_t* emission, std::vector<LightEngine::Entry>& decrease,
+             std::vector<LightEngine::Entry>& increase, LightStats& stats, std::unordered_set<std::uint64_t>& changed);
+  ~Propagator();  // adds the counters to the engine's stats
 
-  bool locate(int x, int y, int z, Cell& cell) const {
-    if (y < kMinY || y >= kMaxY) return false;
-    Chunk* chunk = grid_.at(x, z);
-    if (!chunk) return false;
-    const int section = (y - kMinY) >> 4;
-    cell = {chunk, &layerOf(chunk, section), &chunk->section(section), section,
-            Section::index(x & 15, y & 15, z & 15), (z & 15) * 16 + (x & 15)};
-    return true;
+  // False outside the frame or in a chunk that is not loaded.
+  bool locate(int x, int y, int z, Cell& cell) {
+    std::uint32_t pos;
+    if (!frame_.toFrame(x, y, z, pos)) return false;
+    return locate(pos, cell);
   }
-  // The neighbour of `c` (at x, y, z) in `direction`; most steps stay in the section and need no lookup.
-  bool neighbour(const Cell& c, int direction, int x, int y, int z, Cell& n) const {
-    if (staysInSection(c.index, direction)) {
-      n = c;
-      n.index += kIndexStep[direction];
-      n.column += kColumnStep[direction];
-      return true;
-    }
-    return locate(x, y, z, n);
+  bool locate(std::uint32_t pos, Cell& cell) {
+    cell = {&frame_.ref(frame_.refIndex(pos)), LightFrame::local(pos), pos};
+    return cell.ref->layer != nullptr;
   }
-  std::uint8_t light(const Cell& c) const { return c.layer->get(c.index); }
-  void setLight(const Cell& c, int x, int y, int z, std::uint8_t level) {
-    c.layer->set(c.index, level);
-    ++stats_.lightWrites;
-    if (kInSection[static_cast<std::size_t>(c.index)] & 0x40) {
-      marks_[static_cast<std::size_t>((((z >> 4) - grid_.minZ() + 1) * marksWidth_ + (x >> 4) - grid_.minX() + 1) * kSectionCount + c.section)] = 1;
-    } else {
-      markChanged(c, x, y, z);
-    }
+  static std::uint8_t light(const SectionRef& r, int index) {
+    return static_cast<std::uint8_t>((r.light[index >> 1] >> ((index & 1) * 4)) & 15);
   }
-  std::uint8_t opacity(const Cell& c) {
-    ++stats_.blockReads;
-    return opacity_[c.blocks->at(c.index)];
+  std::uint8_t light(const Cell& c) const { return light(*c.ref, c.index); }
+  std::uint8_t opacity(const SectionRef& r, int index) {
+    ++blockReads_;
+    return opacity_[r.blocks ? r.blocks[index] : r.uniform];
   }
+  void setLight(const Cell& c, std::uint8_t level) { setLight(*c.ref, c.index, c.pos, level); }
   // The level a cell has by itself: its emission (block light) or 15 in the open sky column (sky light).
-  std::uint8_t source(const Cell& c, int y);
+  std::uint8_t source(const Cell& c) { return source(*c.ref, c.index, c.pos); }
 
   void decrease(int x, int y, int z, std::uint8_t level, std::uint8_t directions) {
-    decrease_.push_back({x, y, z, level, directions});
+    std::uint32_t pos;
+    if (frame_.toFrame(x, y, z, pos)) decrease_.push_back({pos, level, directions});
   }
   void increase(int x, int y, int z, std::uint8_t level, std::uint8_t directions) {
-    increase_.push_back({x, y, z, level, directions});
+    std::uint32_t pos;
+    if (frame_.toFrame(x, y, z, pos)) increase_.push_back({pos, level, directions});
   }
   // Runs the decrease queue, then the increase queue (which the decreases add to), to the end.
   void run();
 
  private:
-  NibbleArray& layerOf(Chunk* chunk, int section) const {
-    auto& light = chunk->light();
-    return channel_ == LightChannel::Block ? light.block[static_cast<std::size_t>(section)]
-                                           : light.sky[static_cast<std::size_t>(section)];
+  void setLight(SectionRef& r, int index, std::uint32_t pos, std::uint8_t level) {
+    r.layer->set(index, level);
+    r.light = r.layer->bytes();  // the first write to a uniform array allocates it
+    ++lightWrites_;
+    if (kInSection[static_cast<std::size_t>(index)] & 0x40) {
+      marks_[markIndex(pos, 0, 0) + static_cast<std::size_t>(pos >> 20)] = 1;
+    } else {
+      markFaces(index, pos);
+    }
   }
+  std::uint8_t source(const SectionRef& r, int index, std::uint32_t pos);
+  // Where the neighbour of `pos` in `direction` is; false outside the frame or the loaded chunks.
+  bool step(const Cell& c, std::uint8_t inside, int direction, Cell& n) {
+    n.pos = c.pos + static_cast<std::uint32_t>(kPosStep[direction]);
+    if (kInSection[static_cast<std::size_t>(c.index)] >> direction & 1) {
+      n.ref = c.ref;
+      n.index = c.index + kIndexStep[direction];
+      return true;
+    }
+    if (!(inside >> direction & 1)) return false;
+    return locate(n.pos, n);
+  }
+  std::size_t markIndex(std::uint32_t pos, int dx, int dz) const {
+    const int cx = static_cast<int>((pos >> 4) & 15) + 1 + dx, cz = static_cast<int>((pos >> 12) & 15) + 1 + dz;
+    return static_cast<std::size_t>((cz * (frame_.width() + 2) + cx) * kSectionCount);
+  }
+  void markFaces(int index, std::uint32_t pos);
+  void flushChanged();
   void runDecrease();
   void runIncrease();
-  void markChanged(const Cell& c, int x, int y, int z);
-  void flushChanged();
 
-  const ChunkGrid& grid_;
+  LightFrame frame_;
   LightChannel channel_;
   const std::uint8_t* opacity_;
   const std::uint8_t* emission_;
   std::vector<LightEngine::Entry>& decrease_;
   std::vector<LightEngine::Entry>& increase_;
   LightStats& stats_;
+  std::uint64_t blockReads_ = 0, lightWrites_ = 0;
   std::unordered_set<std::uint64_t>& changed_;
-  // One flag per section of the grid plus a one-chunk margin (halos reach into the next chunk), so
-  // marking a change on the hot path is a byte store; flushChanged() turns them into keys.
-  int marksWidth_, marksDepth_;
+  // One flag per section of the frame plus a one-chunk margin (halos reach into the next chunk).
   std::vector<std::uint8_t> marks_;
 };
 
@@ -124,7 +129,9 @@ constexpr std::uint64_t sectionKey(int chunkX, int section, int chunkZ) {
          static_cast<std::uint64_t>(section & 31);
 }
 constexpr SectionPos sectionFromKey(std::uint64_t key) {
-  auto signExtend27 = [](std::uint64_t v) { return static_cast<int>(static_cast<std::int32_t>(static_cast<std::uint32_t>(v << 5)) >> 5); };
+  auto signExtend27 = [](std::uint64_t v) {
+    return static_cast<int>(static_cast<std::int32_t>(static_cast<std::uint32_t>(v << 5)) >> 5);
+  };
   return {signExtend27((key >> 32) & 0x7FFFFFF), static_cast<int>(key & 31), signExtend27((key >> 5) & 0x7FFFFFF)};
 }
 static_assert(sectionFromKey(sectionKey(-1'875'000, 23, 1'875'000)) == SectionPos{-1'875'000, 23, 1'875'000});

@@ -66,6 +66,9 @@ class NibbleArray {
     fill(first & 15);
   }
 
+  // The bytes get() reads (the shared buffer while uniform); valid until the next set() or fill().
+  const std::uint8_t* bytes() const { return read_; }
+
   bool isUniform() const { return !owned_; }
   std::uint8_t uniformLevel() const { return uniform_; }  // meaningful when isUniform()
   std::size_t memoryBytes() const { return owned_ ? kBytes : 0; }
