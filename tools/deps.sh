@@ -14,6 +14,8 @@ packages=(
   libglm-dev libopenimageio-dev libtinygltf-dev nlohmann-json3-dev libstb-dev
   # saves: chunk compression and checksums
   libzstd-dev libxxhash-dev
+  # resource packs shipped as .zip
+  libzip-dev
   # tests and benchmarks
   libgtest-dev libgmock-dev libbenchmark-dev
   # a virtual display for windowed smoke tests

@@ -2,6 +2,7 @@
 
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
@@ -11,8 +12,6 @@
 
 namespace terrasol {
 namespace {
-
-constexpr int kMaxSide = 32768;  // larger headers are corrupt or hostile; refuse before allocating
 
 OIIO::ImageBuf wrap(const Image& image) {
   OIIO::ImageSpec spec(image.width, image.height, 4, OIIO::TypeDesc::UINT8);
@@ -39,25 +38,44 @@ void expandToRgba(const std::vector<std::uint8_t>& src, int channels, Image& out
 
 }  // namespace
 
-Image loadImage(const std::filesystem::path& file) {
-  auto in = OIIO::ImageInput::open(file.string());
-  if (!in) throw Error(locate(file, 0, "cannot read image: " + OIIO::geterror()));
-  const OIIO::ImageSpec& spec = in->spec();
-  if (spec.width <= 0 || spec.height <= 0 || spec.width > kMaxSide || spec.height > kMaxSide ||
-      spec.nchannels <= 0) {
-    throw Error(locate(file, 0,
-                       "unsupported image size " + std::to_string(spec.width) + "x" +
-                           std::to_string(spec.height) + " with " + std::to_string(spec.nchannels) +
-                           " channels"));
+namespace {
+
+Image readAll(OIIO::ImageInput& in, const std::string& name, const ImageLimits& limits) {
+  const OIIO::ImageSpec& spec = in.spec();
+  const std::int64_t pixels = static_cast<std::int64_t>(spec.width) * spec.height;
+  if (spec.width <= 0 || spec.height <= 0 || spec.width > limits.maxSide || spec.height > limits.maxSide ||
+      pixels > limits.maxPixels || spec.nchannels <= 0) {
+    throw Error(name + ": unsupported image size " + std::to_string(spec.width) + "x" + std::to_string(spec.height) +
+                " with " + std::to_string(spec.nchannels) + " channels");
   }
   const int channels = std::min(spec.nchannels, 4);
-  std::vector<std::uint8_t> raw(static_cast<std::size_t>(spec.width) * spec.height * channels);
-  if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::UINT8, raw.data())) {
-    throw Error(locate(file, 0, "corrupt or truncated image: " + in->geterror()));
+  std::vector<std::uint8_t> raw(static_cast<std::size_t>(pixels) * static_cast<std::size_t>(channels));
+  if (!in.read_image(0, 0, 0, channels, OIIO::TypeDesc::UINT8, raw.data())) {
+    throw Error(name + ": corrupt or truncated image: " + in.geterror());
   }
   Image image(spec.width, spec.height);
   expandToRgba(raw, channels, image);
   return image;
+}
+
+}  // namespace
+
+Image loadImage(const std::filesystem::path& file, const ImageLimits& limits) {
+  std::error_code ec;
+  if (std::filesystem::is_regular_file(file, ec) && std::filesystem::file_size(file, ec) == 0) {
+    throw Error(locate(file, 0, "empty file"));
+  }
+  auto in = OIIO::ImageInput::open(file.string());
+  if (!in) throw Error(locate(file, 0, "cannot read image: " + OIIO::geterror()));
+  return readAll(*in, file.string(), limits);
+}
+
+Image decodeImage(const std::vector<std::uint8_t>& bytes, const std::string& name, const ImageLimits& limits) {
+  if (bytes.empty()) throw Error(name + ": empty file");
+  OIIO::Filesystem::IOMemReader reader(const_cast<std::uint8_t*>(bytes.data()), bytes.size());
+  auto in = OIIO::ImageInput::open(name, nullptr, &reader);
+  if (!in) throw Error(name + ": cannot read image: " + OIIO::geterror());
+  return readAll(*in, name, limits);
 }
 
 void saveImage(const std::filesystem::path& file, const Image& image) {

@@ -3,6 +3,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <string>
 #include <vector>
 
 namespace terrasol {
@@ -18,9 +19,17 @@ struct Image {
   const std::uint8_t* pixel(int x, int y) const { return &rgba[(static_cast<std::size_t>(y) * width + x) * 4]; }
 };
 
-// Reads any format OpenImageIO knows; grey, grey+alpha and RGB become RGBA. Throws Error naming the
-// file and the problem (missing, corrupt, truncated, absurd size).
-Image loadImage(const std::filesystem::path& file);
+// Largest image accepted; checked against the header before any pixel memory is allocated.
+struct ImageLimits {
+  int maxSide = 32768;
+  std::int64_t maxPixels = std::int64_t{1} << 28;
+};
+
+// Reads any format OpenImageIO knows; grey, grey+alpha, RGB, palette and 16-bit images become 8-bit
+// RGBA. Throws Error naming the file and the problem (missing, empty, corrupt, truncated, too large).
+Image loadImage(const std::filesystem::path& file, const ImageLimits& limits = {});
+// The same from bytes in memory; `name` (with its extension) names the format and the errors.
+Image decodeImage(const std::vector<std::uint8_t>& bytes, const std::string& name, const ImageLimits& limits = {});
 // Writes by extension (.png, .exr, ...); throws Error naming the file on failure.
 void saveImage(const std::filesystem::path& file, const Image& image);
 
