@@ -1,0 +1,128 @@
+// terrasol-pack: checks resource packs and builds their atlases, for pack authors.
+//   terrasol-pack inspect PACK...             one line per problem, then a summary; exit 1 on errors
+//   terrasol-pack atlas PACK... --out DIR     albedo/normal/specular atlases and their mip levels as PNG
+// Packs are stacked bottom to top in the order given; the default pack is not added implicitly.
+
+#include <chrono>
+#include <cstdio>
+#include <exception>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "assets/atlas.h"
+#include "core/error.h"
+#include "core/paths.h"
+#include "world/block_registry.h"
+
+namespace terrasol {
+namespace {
+
+int usage() {
+  std::fputs("usage: terrasol-pack inspect PACK...\n"
+             "       terrasol-pack atlas PACK... --out DIR\n", stderr);
+  return 2;
+}
+
+std::string companionBase(const std::string& file) {
+  for (const char* suffix : {"_n.png", "_s.png"}) {
+    if (file.size() > 6 && file.ends_with(suffix)) return file.substr(0, file.size() - 6);
+  }
+  return "";
+}
+
+int inspect(const PackStack& packs) {
+  std::vector<PackProblem> problems;
+  int textures = 0, normals = 0, speculars = 0, animations = 0;
+  // Every base texture of every pack, as the game would load it through the whole stack.
+  std::set<std::string> names;
+  for (const auto& pack : packs.packs()) {
+    for (const auto& file : pack->blockTextureFiles()) {
+      const std::string base = companionBase(file);
+      if (!base.empty()) {
+        if (!pack->blockTexture(base + ".png")) {
+          problems.push_back({PackProblem::Severity::Warning,
+                              pack->files().displayName(*pack->blockTexture(file)) + ": no base texture " + base + ".png"});
+        }
+        continue;
+      }
+      names.insert(file.substr(0, file.size() - 4));
+    }
+  }
+  for (const auto& name : names) {
+    const LoadedTexture t = loadBlockTexture(packs, {name}, problems);
+    ++textures;
+    normals += t.hasNormalMap;
+    speculars += t.hasSpecularMap;
+    animations += t.animation.has_value();
+  }
+  int errors = 0, warnings = 0;
+  for (const auto& p : problems) {
+    const bool error = p.severity == PackProblem::Severity::Error;
+    errors += error;
+    warnings += !error;
+    std::printf("%s: %s\n", error ? "error" : "warning", p.message.c_str());
+  }
+  std::printf("%d textures, %d with _n, %d with _s, %d animated; %d warnings, %d errors\n", textures, normals,
+              speculars, animations, warnings, errors);
+  return errors > 0 ? 1 : 0;
+}
+
+int atlas(const PackStack& packs, const std::filesystem::path& out) {
+  const BlockRegistry blocks = BlockRegistry::fromFile(resourcePackDir() / "default" / "blocks.json");
+  std::set<std::vector<std::string>> wanted;
+  for (BlockId id = 0; id < blocks.size(); ++id) {
+    for (const auto& face : blocks[id].textures) {
+      if (!face.empty()) wanted.insert(face);
+    }
+  }
+  const auto start = std::chrono::steady_clock::now();
+  std::vector<PackProblem> problems;
+  std::vector<LoadedTexture> textures;
+  for (const auto& candidates : wanted) textures.push_back(loadBlockTexture(packs, candidates, problems));
+  const Atlas built = buildAtlas(textures);
+  const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  for (const auto& p : problems) std::printf("%s: %s\n", p.severity == PackProblem::Severity::Error ? "error" : "warning", p.message.c_str());
+  std::filesystem::create_directories(out);
+  for (int level = 0; level < built.levels(); ++level) {
+    const std::string suffix = level == 0 ? "" : "_mip" + std::to_string(level);
+    saveImage(out / ("albedo" + suffix + ".png"), built.albedo[static_cast<std::size_t>(level)]);
+    saveImage(out / ("normal" + suffix + ".png"), built.normal[static_cast<std::size_t>(level)]);
+    saveImage(out / ("specular" + suffix + ".png"), built.specular[static_cast<std::size_t>(level)]);
+  }
+  std::printf("%zu textures in %d tiles of %dx%d, %d mip levels, %dx%d atlas, built in %.1f ms; written to %s\n",
+              built.textures.size(), built.columns * built.rows, built.tileSize, built.tileSize, built.levels(),
+              built.albedo[0].width, built.albedo[0].height, ms, out.string().c_str());
+  return 0;
+}
+
+int run(int argc, char** argv) {
+  if (argc < 3) return usage();
+  const std::string command = argv[1];
+  PackStack packs;
+  std::filesystem::path out;
+  for (int i = 2; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg == "--out" && i + 1 < argc) {
+      out = argv[++i];
+    } else {
+      packs.push(ResourcePack::open(arg));
+    }
+  }
+  if (packs.packs().empty()) return usage();
+  if (command == "inspect") return inspect(packs);
+  if (command == "atlas" && !out.empty()) return atlas(packs, out);
+  return usage();
+}
+
+}  // namespace
+}  // namespace terrasol
+
+int main(int argc, char** argv) {
+  try {
+    return terrasol::run(argc, argv);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "terrasol-pack: error: %s\n", e.what());
+    return 1;
+  }
+}

@@ -1,0 +1,374 @@
+#include "packgen.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <functional>
+
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
+
+#include "assets/labpbr.h"
+#include "world/noise.h"
+
+namespace terrasol::packgen {
+namespace {
+
+constexpr int kSize = 16;
+
+// Everything a recipe paints, per texel: colour, height (0 deep .. 1 surface) and LabPBR specular.
+struct Texel {
+  glm::vec3 color{0.5f};  // sRGB 0..1
+  float alpha = 1.0f;
+  float height = 1.0f;
+  int smoothness = 40;    // _s R
+  int f0 = 10;            // _s G: 0..229 dielectric F0 (10 ~ 0.04), 230..237 metals
+  int porosity = 0;       // _s B
+  int emission = 255;     // _s A: 255 = none
+};
+using Canvas = std::vector<Texel>;  // kSize x (kSize * frames), row-major
+
+float hash01(std::uint64_t seed, int x, int y, int z = 0) { return static_cast<float>(unitFloat(hashCoords(seed, x, y, z))); }
+
+// Tileable value noise over a 16-texel period, `cells` cells per period.
+float tileNoise(std::uint64_t seed, float x, float y, int cells, int frame = 0) {
+  const float cx = x * cells / kSize, cy = y * cells / kSize;
+  const int x0 = static_cast<int>(std::floor(cx)), y0 = static_cast<int>(std::floor(cy));
+  const float fx = cx - x0, fy = cy - y0;
+  auto at = [&](int i, int j) { return hash01(seed, ((i % cells) + cells) % cells, ((j % cells) + cells) % cells, frame); };
+  auto smooth = [](float t) { return t * t * (3.0f - 2.0f * t); };
+  const float a = at(x0, y0) + (at(x0 + 1, y0) - at(x0, y0)) * smooth(fx);
+  const float b = at(x0, y0 + 1) + (at(x0 + 1, y0 + 1) - at(x0, y0 + 1)) * smooth(fx);
+  return a + (b - a) * smooth(fy);
+}
+
+float fbm(std::uint64_t seed, float x, float y, int frame = 0) {
+  return 0.5f * tileNoise(seed, x, y, 2, frame) + 0.3f * tileNoise(seed + 1, x, y, 4, frame) +
+         0.2f * tileNoise(seed + 2, x, y, 8, frame);
+}
+
+// Distance to the nearest and second-nearest of `count` wrapping feature points, and the nearest's id.
+struct Cells {
+  float d1, d2;
+  int id;
+};
+Cells voronoi(std::uint64_t seed, int x, int y, int count) {
+  Cells c{1e9f, 1e9f, 0};
+  for (int i = 0; i < count; ++i) {
+    const float px = hash01(seed, i, 0) * kSize, py = hash01(seed, i, 1) * kSize;
+    for (int oy = -1; oy <= 1; ++oy)
+      for (int ox = -1; ox <= 1; ++ox) {
+        const float dx = x + 0.5f - (px + ox * kSize), dy = y + 0.5f - (py + oy * kSize);
+        const float d = std::sqrt(dx * dx + dy * dy);
+        if (d < c.d1) c.d2 = c.d1, c.d1 = d, c.id = i;
+        else if (d < c.d2) c.d2 = d;
+      }
+  }
+  return c;
+}
+
+glm::vec3 rgb(int r, int g, int b) { return glm::vec3(r, g, b) / 255.0f; }
+
+Canvas paint(int frames, const std::function<Texel(int x, int y, int frame)>& f) {
+  Canvas canvas(static_cast<std::size_t>(kSize * kSize * frames));
+  for (int fr = 0; fr < frames; ++fr)
+    for (int y = 0; y < kSize; ++y)
+      for (int x = 0; x < kSize; ++x) canvas[static_cast<std::size_t>((fr * kSize + y) * kSize + x)] = f(x, y, fr);
+  return canvas;
+}
+
+// --- recipes -------------------------------------------------------------------------------------
+
+Texel rock(std::uint64_t seed, int x, int y, glm::vec3 base, float contrast) {
+  const float n = fbm(seed, static_cast<float>(x), static_cast<float>(y));
+  Texel t;
+  t.color = base * (1.0f - contrast + 2.0f * contrast * n);
+  t.height = 0.55f + 0.45f * n;
+  t.smoothness = 35 + static_cast<int>(30 * n);
+  t.porosity = 20;
+  return t;
+}
+
+Texel stone(int x, int y) { return rock(11, x, y, rgb(125, 125, 125), 0.18f); }
+
+Texel cobblestone(int x, int y) {
+  const Cells c = voronoi(21, x, y, 7);
+  const float edge = std::clamp((c.d2 - c.d1) / 2.0f, 0.0f, 1.0f);
+  Texel t = rock(22, x, y, rgb(120, 120, 120) * (0.8f + 0.35f * hash01(23, c.id, 0)), 0.12f);
+  t.color *= 0.45f + 0.55f * edge;
+  t.height = 0.2f + 0.8f * edge;
+  t.smoothness = 30;
+  return t;
+}
+
+Texel dirt(int x, int y) {
+  Texel t = rock(31, x, y, rgb(134, 96, 67), 0.2f);
+  if (hash01(32, x, y) > 0.9f) t.color = rgb(110, 80, 60), t.height = 0.95f;
+  t.porosity = 45;
+  t.smoothness = 20;
+  return t;
+}
+
+Texel ore(int x, int y, std::uint64_t seed, glm::vec3 speck, int specular) {
+  Texel t = stone(x, y);
+  const Cells c = voronoi(seed, x, y, 4);
+  if (c.d1 < 1.6f + 0.8f * hash01(seed, c.id, 3)) {
+    t.color = speck * (0.8f + 0.4f * hash01(seed, x, y));
+    t.height = 1.0f;
+    t.f0 = specular;
+    t.smoothness = specular >= 230 ? 150 : 70;
+    t.porosity = 0;
+  }
+  return t;
+}
+
+Texel metalBlock(int x, int y, glm::vec3 base, int metal, int smoothness) {
+  Texel t;
+  const bool rim = x == 0 || y == 0 || x == kSize - 1 || y == kSize - 1;
+  const bool bevel = x == 1 || y == 1 || x == kSize - 2 || y == kSize - 2;
+  const float scratch = fbm(41 + static_cast<std::uint64_t>(metal), x * 0.5f, static_cast<float>(y));
+  t.color = base * (rim ? 0.7f : bevel ? 1.12f : 0.95f + 0.1f * scratch);
+  t.height = rim ? 0.7f : bevel ? 0.9f : 1.0f;
+  t.f0 = metal;
+  t.smoothness = rim ? smoothness - 60 : smoothness - static_cast<int>(30 * scratch);
+  return t;
+}
+
+Texel planks(int x, int y) {
+  const int board = y / 4;
+  const float grain = tileNoise(51 + static_cast<std::uint64_t>(board), static_cast<float>(x), y * 4.0f, 8);
+  Texel t;
+  t.color = rgb(162, 130, 78) * (0.82f + 0.25f * grain) * (board % 2 ? 0.95f : 1.0f);
+  const bool seam = y % 4 == 3 || (x == (board * 7 + 3) % kSize);
+  if (seam) t.color *= 0.6f;
+  t.height = seam ? 0.5f : 0.85f + 0.15f * grain;
+  t.smoothness = 90;
+  return t;
+}
+
+Texel logSide(int x, int y) {
+  const float stripe = tileNoise(61, x * 1.0f, y * 0.25f, 8);
+  Texel t;
+  t.color = rgb(109, 85, 50) * (0.65f + 0.45f * stripe);
+  t.height = 0.4f + 0.6f * stripe;
+  t.smoothness = 25;
+  t.porosity = 30;
+  return t;
+}
+
+Texel logTop(int x, int y) {
+  const float dx = x - 7.5f, dy = y - 7.5f, r = std::sqrt(dx * dx + dy * dy);
+  Texel t;
+  if (std::max(std::abs(dx), std::abs(dy)) > 6.5f) return logSide(x, y);
+  const float ring = 0.5f + 0.5f * std::cos(r * 2.2f);
+  t.color = rgb(176, 143, 88) * (0.8f + 0.2f * ring);
+  t.height = 0.85f + 0.15f * ring;
+  t.smoothness = 60;
+  return t;
+}
+
+Texel leaves(int x, int y) {
+  const float n = fbm(71, static_cast<float>(x), static_cast<float>(y));
+  Texel t;
+  t.color = glm::vec3(0.55f + 0.35f * n);  // grey: tinted by the foliage colour
+  t.alpha = hash01(72, x, y) < 0.28f ? 0.0f : 1.0f;
+  t.height = 0.5f + 0.5f * n;
+  t.smoothness = 70;
+  t.porosity = 180;  // B above 64: subsurface scattering
+  return t;
+}
+
+Texel glass(int x, int y) {
+  Texel t;
+  const bool frame = x == 0 || y == 0 || x == kSize - 1 || y == kSize - 1;
+  const bool streak = (x + y == 6 || x + y == 7 || x + y == 20) && x > 1 && y > 1 && x < 14 && y < 14;
+  t.color = frame ? rgb(200, 220, 225) : rgb(230, 245, 250);
+  t.alpha = frame || streak ? 1.0f : 0.0f;
+  t.smoothness = 250;
+  t.f0 = 10;
+  return t;
+}
+
+Texel plant(int x, int y, std::uint64_t seed, glm::vec3 flower) {
+  Texel t;
+  t.alpha = 0.0f;
+  t.smoothness = 60;
+  t.porosity = 150;
+  const bool stem = std::abs(x - 7) <= 0 && y > 6;
+  const bool leaf = (y == 11 && (x == 6 || x == 8)) || (y == 10 && (x == 5 || x == 9));
+  if (flower.r >= 0.0f) {
+    const float dx = x - 7.0f, dy = y - 4.5f;
+    if (dx * dx + dy * dy < 7.0f) t.color = flower * (0.85f + 0.3f * hash01(seed, x, y)), t.alpha = 1.0f;
+    else if (stem || leaf) t.color = rgb(70, 130, 40), t.alpha = 1.0f;
+    return t;
+  }
+  // Grass blades: grey, tinted by the grass colour.
+  const float blade = hash01(seed, x, 0);
+  if (y > 16 - 4 - static_cast<int>(blade * 11) && blade > 0.35f) t.color = glm::vec3(0.55f + 0.4f * blade), t.alpha = 1.0f;
+  return t;
+}
+
+Texel glowstone(int x, int y) {
+  const Cells c = voronoi(81, x, y, 9);
+  const float centre = std::clamp(1.0f - c.d1 / 3.0f, 0.0f, 1.0f);
+  Texel t;
+  t.color = glm::mix(rgb(140, 100, 50), rgb(255, 236, 160), centre);
+  t.height = 0.4f + 0.6f * centre;
+  t.smoothness = 100;
+  t.emission = static_cast<int>(100 + 154 * centre);
+  return t;
+}
+
+Texel liquid(int x, int y, int frame, bool lava, bool flowing) {
+  const float shift = flowing ? static_cast<float>(frame) * 2.0f : 0.0f;
+  const float n = fbm(lava ? 91 : 92, static_cast<float>(x), y - shift, flowing ? 0 : frame);
+  Texel t;
+  t.height = 0.6f + 0.4f * n;
+  if (lava) {
+    t.color = glm::mix(rgb(200, 60, 10), rgb(255, 200, 60), n);
+    t.emission = 254;
+    t.smoothness = 120;
+  } else {
+    t.color = glm::vec3(0.62f + 0.25f * n);  // grey: tinted by the water colour
+    t.alpha = 0.72f;
+    t.smoothness = 240;
+    t.f0 = 5;  // water: F0 0.02
+  }
+  return t;
+}
+
+Texel torch(int x, int y) {
+  Texel t;
+  t.alpha = 0.0f;
+  if ((x == 7 || x == 8) && y >= 6 && y <= 15) t.color = rgb(110, 80, 45) * (x == 7 ? 1.0f : 0.8f), t.alpha = 1.0f;
+  if ((x == 7 || x == 8) && y >= 3 && y <= 5) {
+    t.color = y == 3 ? rgb(255, 240, 170) : rgb(255, 170, 50);
+    t.alpha = 1.0f;
+    t.emission = 254;
+    t.smoothness = 10;
+  }
+  return t;
+}
+
+// --- encoding ------------------------------------------------------------------------------------
+
+std::uint8_t byte(float v) { return static_cast<std::uint8_t>(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f)); }
+
+GeneratedTexture encode(const std::string& name, const Canvas& c, int frames, int frametime) {
+  const int h = kSize * frames;
+  GeneratedTexture g{name, Image(kSize, h), Image(kSize, h), Image(kSize, h), ""};
+  auto at = [&](int x, int y) -> const Texel& {
+    const int frame = y / kSize, ly = ((y % kSize) + kSize) % kSize, lx = ((x % kSize) + kSize) % kSize;
+    return c[static_cast<std::size_t>((frame * kSize + ly) * kSize + lx)];
+  };
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < kSize; ++x) {
+      const Texel& t = at(x, y);
+      const int fy = y / kSize * kSize, ly = y % kSize;  // wrap within the frame
+      auto height = [&](int dx, int dy) { return at(x + dx, fy + (ly + dy + kSize) % kSize).height; };
+      // Normal from the height field (+y up the texture, rows run down), 3 texels per unit height.
+      const glm::vec3 n(-(height(1, 0) - height(-1, 0)) * 1.5f, (height(0, 1) - height(0, -1)) * 1.5f, 1.0f);
+      const float around = 0.25f * (height(1, 0) + height(-1, 0) + height(0, 1) + height(0, -1));
+      const float ao = std::clamp(1.0f - 2.0f * std::max(0.0f, around - t.height), 0.3f, 1.0f);
+      std::uint8_t* a = g.albedo.pixel(x, y);
+      a[0] = byte(t.color.r), a[1] = byte(t.color.g), a[2] = byte(t.color.b), a[3] = byte(t.alpha);
+      labpbr::encodeNormal(glm::normalize(n), ao, 0.25f * (1.0f - std::max(t.height, 1.0f / 255.0f)), g.normal.pixel(x, y));
+      std::uint8_t* s = g.specular.pixel(x, y);
+      s[0] = static_cast<std::uint8_t>(std::clamp(t.smoothness, 0, 255));
+      s[1] = static_cast<std::uint8_t>(std::clamp(t.f0, 0, 255));
+      s[2] = static_cast<std::uint8_t>(std::clamp(t.porosity, 0, 255));
+      s[3] = static_cast<std::uint8_t>(std::clamp(t.emission, 0, 255));
+    }
+  if (frames > 1) {
+    g.mcmeta = "{\n  \"animation\": {\n    \"frametime\": " + std::to_string(frametime) + ",\n    \"interpolate\": true\n  }\n}\n";
+  }
+  return g;
+}
+
+GeneratedTexture still(const std::string& name, Texel (*f)(int, int)) {
+  return encode(name, paint(1, [f](int x, int y, int) { return f(x, y); }), 1, 1);
+}
+
+}  // namespace
+
+std::vector<GeneratedTexture> generateDefaultTextures() {
+  std::vector<GeneratedTexture> out;
+  out.push_back(still("stone", stone));
+  out.push_back(still("cobblestone", cobblestone));
+  out.push_back(still("dirt", dirt));
+  out.push_back(still("sand", [](int x, int y) {
+    Texel t = rock(101, x, y, rgb(219, 207, 163), 0.06f);
+    t.porosity = 35;
+    t.smoothness = 25;
+    return t;
+  }));
+  out.push_back(still("gravel", [](int x, int y) {
+    const Cells c = voronoi(111, x, y, 12);
+    Texel t = rock(112, x, y, rgb(136, 126, 126) * (0.7f + 0.5f * hash01(113, c.id, 0)), 0.1f);
+    t.height = std::clamp(1.0f - c.d1 / 4.0f, 0.2f, 1.0f);
+    return t;
+  }));
+  out.push_back(still("bedrock", [](int x, int y) { return rock(121, x, y, rgb(85, 85, 85), 0.5f); }));
+  out.push_back(still("grass_block_top", [](int x, int y) {
+    Texel t = rock(131, x, y, glm::vec3(0.62f), 0.15f);  // grey: tinted by the grass colour
+    t.porosity = 60;
+    return t;
+  }));
+  out.push_back(still("grass_block_side", [](int x, int y) {
+    const int fringe = 3 + static_cast<int>(hash01(141, x, 0) * 3);
+    if (y < fringe) {
+      Texel t = rock(142, x, y, rgb(95, 159, 53), 0.15f);
+      t.height = 1.0f;
+      return t;
+    }
+    return dirt(x, y);
+  }));
+  out.push_back(still("ice", [](int x, int y) {
+    Texel t = rock(151, x, y, rgb(160, 190, 240), 0.08f);
+    t.alpha = 0.78f;
+    t.smoothness = 235;
+    t.f0 = 5;
+    t.porosity = 0;
+    return t;
+  }));
+  out.push_back(still("snow", [](int x, int y) {
+    Texel t = rock(161, x, y, rgb(245, 250, 250), 0.03f);
+    t.smoothness = 70;
+    t.porosity = 160;  // subsurface scattering
+    return t;
+  }));
+  out.push_back(still("oak_log", logSide));
+  out.push_back(still("oak_log_top", logTop));
+  out.push_back(still("oak_leaves", leaves));
+  out.push_back(still("oak_planks", planks));
+  out.push_back(still("glass", glass));
+  out.push_back(still("short_grass", [](int x, int y) { return plant(x, y, 171, glm::vec3(-1.0f)); }));
+  out.push_back(still("dandelion", [](int x, int y) { return plant(x, y, 172, rgb(250, 215, 40)); }));
+  out.push_back(still("poppy", [](int x, int y) { return plant(x, y, 173, rgb(215, 30, 30)); }));
+  out.push_back(still("coal_ore", [](int x, int y) { return ore(x, y, 181, rgb(45, 45, 45), 12); }));
+  out.push_back(still("iron_ore", [](int x, int y) { return ore(x, y, 182, rgb(216, 175, 147), 230); }));
+  out.push_back(still("gold_ore", [](int x, int y) { return ore(x, y, 183, rgb(250, 220, 80), 231); }));
+  out.push_back(still("iron_block", [](int x, int y) { return metalBlock(x, y, rgb(220, 220, 220), 230, 210); }));
+  out.push_back(still("gold_block", [](int x, int y) { return metalBlock(x, y, rgb(250, 210, 60), 231, 230); }));
+  out.push_back(still("copper_block", [](int x, int y) { return metalBlock(x, y, rgb(192, 107, 79), 234, 190); }));
+  out.push_back(still("glowstone", glowstone));
+  out.push_back(still("torch", torch));
+  out.push_back(encode("water_still", paint(8, [](int x, int y, int f) { return liquid(x, y, f, false, false); }), 8, 3));
+  out.push_back(encode("water_flow", paint(8, [](int x, int y, int f) { return liquid(x, y, f, false, true); }), 8, 2));
+  out.push_back(encode("lava_still", paint(8, [](int x, int y, int f) { return liquid(x, y, f, true, false); }), 8, 4));
+  out.push_back(encode("lava_flow", paint(8, [](int x, int y, int f) { return liquid(x, y, f, true, true); }), 8, 3));
+  return out;
+}
+
+void writeDefaultPack(const std::filesystem::path& dir) {
+  const auto blockDir = dir / "assets" / "minecraft" / "textures" / "block";
+  std::filesystem::create_directories(blockDir);
+  for (const auto& t : generateDefaultTextures()) {
+    saveImage(blockDir / (t.name + ".png"), t.albedo);
+    saveImage(blockDir / (t.name + "_n.png"), t.normal);
+    saveImage(blockDir / (t.name + "_s.png"), t.specular);
+    if (!t.mcmeta.empty()) std::ofstream(blockDir / (t.name + ".png.mcmeta")) << t.mcmeta;
+  }
+}
+
+}  // namespace terrasol::packgen
