@@ -102,7 +102,7 @@ Atlas buildAtlas(const std::vector<LoadedTexture>& textures) {
   for (int i = 0; i < tiles; ++i) {
     if (!cutoutTiles[static_cast<std::size_t>(i)]) continue;
     const int sx = (i % atlas.columns) * atlas.slotSize, sy = (i / atlas.columns) * atlas.slotSize;
-    coverage[static_cast<std::size_t>(i)] = mip::coverage(albedo, sx + pad0, sy + pad0, atlas.tileSize, atlas.tileSize);
+    coverage[static_cast<std::size_t>(i)] = mip::coverage(albedo, {sx + pad0, sy + pad0, atlas.tileSize, atlas.tileSize});
   }
 
   atlas.albedo.push_back(std::move(albedo));
@@ -113,7 +113,8 @@ Atlas buildAtlas(const std::vector<LoadedTexture>& textures) {
     for (int i = 0; i < tiles; ++i) {
       if (!cutoutTiles[static_cast<std::size_t>(i)]) continue;
       const int sx = (i % atlas.columns) * slot, sy = (i / atlas.columns) * slot;
-      mip::preserveCoverage(a, sx, sy, slot, slot, coverage[static_cast<std::size_t>(i)]);
+      mip::preserveCoverage(a, {sx + size / 2, sy + size / 2, size, size}, {sx, sy, slot, slot},
+                            coverage[static_cast<std::size_t>(i)]);
     }
     atlas.albedo.push_back(std::move(a));
     atlas.normal.push_back(mip::halveNormal(atlas.normal.back()));

@@ -40,6 +40,14 @@ void expandToRgba(const std::vector<std::uint8_t>& src, int channels, Image& out
 
 namespace {
 
+// Alpha is data (LabPBR keeps height and emission there, and RGB under alpha 0 matters): OpenImageIO
+// must neither premultiply on read nor divide on write.
+OIIO::ImageSpec straightAlpha() {
+  OIIO::ImageSpec spec;
+  spec.attribute("oiio:UnassociatedAlpha", 1);
+  return spec;
+}
+
 Image readAll(OIIO::ImageInput& in, const std::string& name, const ImageLimits& limits) {
   const OIIO::ImageSpec& spec = in.spec();
   const std::int64_t pixels = static_cast<std::int64_t>(spec.width) * spec.height;
@@ -65,7 +73,8 @@ Image loadImage(const std::filesystem::path& file, const ImageLimits& limits) {
   if (std::filesystem::is_regular_file(file, ec) && std::filesystem::file_size(file, ec) == 0) {
     throw Error(locate(file, 0, "empty file"));
   }
-  auto in = OIIO::ImageInput::open(file.string());
+  const OIIO::ImageSpec config = straightAlpha();
+  auto in = OIIO::ImageInput::open(file.string(), &config);
   if (!in) throw Error(locate(file, 0, "cannot read image: " + OIIO::geterror()));
   return readAll(*in, file.string(), limits);
 }
@@ -73,7 +82,10 @@ Image loadImage(const std::filesystem::path& file, const ImageLimits& limits) {
 Image decodeImage(const std::vector<std::uint8_t>& bytes, const std::string& name, const ImageLimits& limits) {
   if (bytes.empty()) throw Error(name + ": empty file");
   OIIO::Filesystem::IOMemReader reader(const_cast<std::uint8_t*>(bytes.data()), bytes.size());
-  auto in = OIIO::ImageInput::open(name, nullptr, &reader);
+  OIIO::ImageSpec config = straightAlpha();
+  void* proxy = &reader;  // given a config, OpenImageIO 2.4 takes the proxy from it, not from the argument
+  config.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy);
+  auto in = OIIO::ImageInput::open(name, &config, &reader);
   if (!in) throw Error(name + ": cannot read image: " + OIIO::geterror());
   return readAll(*in, name, limits);
 }
@@ -82,6 +94,7 @@ void saveImage(const std::filesystem::path& file, const Image& image) {
   auto out = OIIO::ImageOutput::create(file.string());
   if (!out) throw Error(locate(file, 0, "cannot write image: " + OIIO::geterror()));
   OIIO::ImageSpec spec(image.width, image.height, 4, OIIO::TypeDesc::UINT8);
+  spec.attribute("oiio:UnassociatedAlpha", 1);
   if (!out->open(file.string(), spec) ||
       !out->write_image(OIIO::TypeDesc::UINT8, image.rgba.data()) || !out->close()) {
     throw Error(locate(file, 0, "cannot write image: " + out->geterror()));

@@ -113,20 +113,20 @@ Image halveSpecular(const Image& src) {
   });
 }
 
-double coverage(const Image& image, int x, int y, int w, int h) {
+double coverage(const Image& image, const Rect& r) {
   int passed = 0;
-  for (int j = y; j < y + h; ++j)
-    for (int i = x; i < x + w; ++i) passed += image.pixel(i, j)[3] >= 128;
-  return static_cast<double>(passed) / (static_cast<double>(w) * h);
+  for (int j = r.y; j < r.y + r.h; ++j)
+    for (int i = r.x; i < r.x + r.w; ++i) passed += image.pixel(i, j)[3] >= 128;
+  return static_cast<double>(passed) / (static_cast<double>(r.w) * r.h);
 }
 
-void preserveCoverage(Image& image, int x, int y, int w, int h, double target) {
+void preserveCoverage(Image& image, const Rect& measure, const Rect& apply, double target) {
   // Binary search on a scale of alpha: coverage only grows with the scale.
   auto coverageWith = [&](double scale) {
     int passed = 0;
-    for (int j = y; j < y + h; ++j)
-      for (int i = x; i < x + w; ++i) passed += image.pixel(i, j)[3] * scale >= 127.5;
-    return static_cast<double>(passed) / (static_cast<double>(w) * h);
+    for (int j = measure.y; j < measure.y + measure.h; ++j)
+      for (int i = measure.x; i < measure.x + measure.w; ++i) passed += image.pixel(i, j)[3] * scale >= 127.5;
+    return static_cast<double>(passed) / (static_cast<double>(measure.w) * measure.h);
   };
   double lo = 0.0, hi = 8.0;
   for (int step = 0; step < 20; ++step) {
@@ -134,8 +134,8 @@ void preserveCoverage(Image& image, int x, int y, int w, int h, double target) {
     (coverageWith(mid) < target ? lo : hi) = mid;
   }
   const double scale = std::abs(coverageWith(lo) - target) < std::abs(coverageWith(hi) - target) ? lo : hi;
-  for (int j = y; j < y + h; ++j)
-    for (int i = x; i < x + w; ++i) {
+  for (int j = apply.y; j < apply.y + apply.h; ++j)
+    for (int i = apply.x; i < apply.x + apply.w; ++i) {
       std::uint8_t& alpha = image.pixel(i, j)[3];
       alpha = static_cast<std::uint8_t>(std::min(255.0, std::round(alpha * scale)));
     }

@@ -16,9 +16,13 @@ Image halveAlbedo(const Image& src);
 Image halveNormal(const Image& src);
 Image halveSpecular(const Image& src);
 
-// Share of texels in `rect` (x, y, w, h) with alpha >= 128.
-double coverage(const Image& image, int x, int y, int w, int h);
-// Scales the alpha of `rect` in `image` so its coverage comes as close as possible to `target`.
-void preserveCoverage(Image& image, int x, int y, int w, int h, double target);
+struct Rect {
+  int x, y, w, h;
+};
+
+// Share of texels in `rect` with alpha >= 128.
+double coverage(const Image& image, const Rect& rect);
+// Scales alpha over `apply` so that the coverage of `measure` comes as close as possible to `target`.
+void preserveCoverage(Image& image, const Rect& measure, const Rect& apply, double target);
 
 }  // namespace terrasol::mip

@@ -17,7 +17,7 @@ Image gradient(int w, int h) {
       p[0] = static_cast<std::uint8_t>(x * 255 / w);
       p[1] = static_cast<std::uint8_t>(y * 255 / h);
       p[2] = 128;
-      p[3] = 255;
+      p[3] = static_cast<std::uint8_t>((x * 7 + y * 13) % 256);  // alpha is data: every value, 0 included
     }
   return image;
 }

@@ -1,0 +1,307 @@
+#include <gtest/gtest.h>
+#include <zip.h>
+
+#include <OpenImageIO/imageio.h>
+
+#include <fstream>
+
+#include "assets/texture_loader.h"
+#include "core/error.h"
+#include "core/paths.h"
+#include "packgen.h"
+#include "support/pack_builder.h"
+#include "support/world_support.h"
+
+namespace terrasol {
+namespace {
+
+using testing::PackBuilder;
+using testing::solidImage;
+
+const std::filesystem::path kPixelPerfection = std::filesystem::path(TERRASOL_SOURCE_DIR) / ".." / "shared" /
+                                              "testdata" / "packs" / "pixel_perfection_ce";
+
+PackStack stackOf(std::initializer_list<std::filesystem::path> dirs) {
+  PackStack stack;
+  for (const auto& d : dirs) stack.push(ResourcePack::open(d));
+  return stack;
+}
+
+std::string problemsText(const std::vector<PackProblem>& problems) {
+  std::string text;
+  for (const auto& p : problems) text += p.message + "\n";
+  return text;
+}
+
+LoadedTexture load(const PackStack& stack, std::vector<std::string> names, std::vector<PackProblem>& problems) {
+  return loadBlockTexture(stack, names, problems);
+}
+
+TEST(ResourcePack, LaterPacksOverrideEarlierOnesAndCompanionsComeFromTheSamePack) {
+  PackBuilder low("pack_low");
+  low.image("stone.png", solidImage(16, 16, 100, 100, 100)).image("stone_s.png", solidImage(16, 16, 200, 230, 0, 255));
+  low.image("dirt.png", solidImage(16, 16, 120, 80, 40));
+  PackBuilder high("pack_high", "blocks");  // the pre-1.13 folder name
+  high.image("stone.png", solidImage(16, 16, 50, 50, 50));
+  const PackStack stack = stackOf({low.dir(), high.dir()});
+  std::vector<PackProblem> problems;
+  const auto stone = load(stack, {"stone"}, problems);
+  EXPECT_EQ(stone.albedo[0].pixel(0, 0)[0], 50);
+  EXPECT_FALSE(stone.hasSpecularMap) << "the lower pack's _s belongs to the lower pack's art";
+  EXPECT_EQ(stone.specular[0].pixel(0, 0)[1], 0);
+  EXPECT_EQ(stone.normal[0].pixel(3, 3)[2], 255) << "absent _n reads as (127, 127, 255, 255)";
+  const auto dirt = load(stack, {"dirt"}, problems);
+  EXPECT_EQ(dirt.albedo[0].pixel(0, 0)[0], 120);
+  EXPECT_TRUE(problems.empty()) << problemsText(problems);
+}
+
+TEST(ResourcePack, AMissingTextureIsTheCheckerboardWithOneWarningNamingIt) {
+  PackBuilder pack("pack_missing");
+  const PackStack stack = stackOf({pack.dir()});
+  std::vector<PackProblem> problems;
+  const auto t = load(stack, {"short_grass", "grass"}, problems);
+  EXPECT_TRUE(t.missing);
+  EXPECT_EQ(t.albedo[0].pixel(0, 0)[0], 248);
+  EXPECT_EQ(t.albedo[0].pixel(8, 0)[0], 0);
+  ASSERT_EQ(problems.size(), 1u);
+  EXPECT_NE(problems[0].message.find("short_grass"), std::string::npos);
+  EXPECT_NE(problems[0].message.find("grass.png"), std::string::npos);
+  // The fallback name is used when the first is absent.
+  pack.image("grass.png", solidImage(16, 16, 1, 2, 3));
+  problems.clear();
+  EXPECT_FALSE(load(stackOf({pack.dir()}), {"short_grass", "grass"}, problems).missing);
+}
+
+TEST(ResourcePack, CompanionsAreResampledToTheBaseSize) {
+  PackBuilder pack("pack_resample");
+  pack.image("iron_block.png", solidImage(16, 16, 200, 200, 200));
+  pack.image("iron_block_n.png", solidImage(32, 32, 127, 127, 255, 255));
+  pack.image("iron_block_s.png", solidImage(8, 8, 220, 230, 0, 0));
+  std::vector<PackProblem> problems;
+  const auto t = load(stackOf({pack.dir()}), {"iron_block"}, problems);
+  EXPECT_TRUE(problems.empty()) << problemsText(problems);
+  EXPECT_EQ(t.normal[0].width, 16);
+  EXPECT_EQ(t.specular[0].width, 16);
+  EXPECT_EQ(t.specular[0].pixel(15, 15)[1], 230) << "specular is resampled without blending ids";
+  EXPECT_EQ(t.specular[0].pixel(15, 15)[3], 0) << "alpha 0 is kept";
+}
+
+TEST(ResourcePack, AnimationsSplitIntoFramesWithTheirTiming) {
+  PackBuilder pack("pack_anim");
+  Image strip(16, 64);
+  for (int y = 0; y < 64; ++y)
+    for (int x = 0; x < 16; ++x) {
+      std::uint8_t* p = strip.pixel(x, y);
+      p[0] = static_cast<std::uint8_t>(y / 16 * 60), p[1] = 0, p[2] = 0, p[3] = 255;
+    }
+  pack.image("lava_still.png", strip);
+  pack.text("lava_still.png.mcmeta", R"({"animation": {"frametime": 3, "interpolate": true, "frames": [0, 2, {"index": 3, "time": 7}]}})");
+  pack.image("lava_still_n.png", solidImage(16, 16, 127, 127, 255));  // one frame for all
+  std::vector<PackProblem> problems;
+  const auto t = load(stackOf({pack.dir()}), {"lava_still"}, problems);
+  EXPECT_TRUE(problems.empty()) << problemsText(problems);
+  ASSERT_TRUE(t.animation);
+  EXPECT_EQ(t.albedo.size(), 4u);
+  EXPECT_EQ(t.normal.size(), 4u);
+  EXPECT_EQ(t.albedo[2].pixel(0, 0)[0], 120);
+  EXPECT_TRUE(t.animation->interpolate);
+  ASSERT_EQ(t.animation->sequence.size(), 3u);
+  EXPECT_EQ(t.animation->sequence[1].index, 2);
+  EXPECT_EQ(t.animation->sequence[1].ticks, 3);
+  EXPECT_EQ(t.animation->sequence[2].ticks, 7);
+  EXPECT_EQ(t.animation->totalTicks(), 13);
+}
+
+// Each bad file gives one error naming it, and the texture falls back to "missing"; nothing crashes.
+TEST(ResourcePack, BadInputGivesClearErrorsNamingTheFile) {
+  PackBuilder pack("pack_bad");
+  pack.text("empty.png", "");
+  pack.text("garbage.png", "\x89PNG\r\n\x1a\nthis is not a png");
+  // A valid PNG declaring 100 000 x 100 000 pixels (40 GB): refused from its header, before allocating.
+  const unsigned char huge[] = {0x89, 0x50, 0x4e, 0x47, 0xd, 0xa, 0x1a, 0xa, 0x0, 0x0, 0x0, 0xd, 0x49, 0x48,
+      0x44, 0x52, 0x0, 0x1, 0x86, 0xa0, 0x0, 0x1, 0x86, 0xa0, 0x8, 0x6, 0x0, 0x0, 0x0, 0xa8, 0x52, 0xb, 0xc8,
+      0x0, 0x0, 0x0, 0x9, 0x49, 0x44, 0x41, 0x54, 0x78, 0x9c, 0x63, 0x0, 0x0, 0x0, 0x1, 0x0, 0x1, 0x5e, 0xff,
+      0x7d, 0xf9, 0x0, 0x0, 0x0, 0x0, 0x49, 0x45, 0x4e, 0x44, 0xae, 0x42, 0x60, 0x82};
+  pack.text("huge.png", std::string(reinterpret_cast<const char*>(huge), sizeof huge));
+  pack.image("strip.png", solidImage(16, 40, 1, 1, 1));
+  pack.text("strip.png.mcmeta", R"({"animation": {}})");
+  pack.image("oblong.png", solidImage(16, 40, 1, 1, 1));
+  pack.image("meta.png", solidImage(16, 32, 1, 1, 1));
+  pack.text("meta.png.mcmeta", R"({"animation": {"frametime": )");
+  pack.image("frames.png", solidImage(16, 32, 1, 1, 1));
+  pack.text("frames.png.mcmeta", R"({"animation": {"frames": [0, 5]}})");
+  // A real PNG cut in half.
+  saveImage(pack.file("whole.png"), solidImage(64, 64, 9, 9, 9));
+  std::ifstream in(pack.file("whole.png"), std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), {});
+  pack.text("truncated.png", bytes.substr(0, bytes.size() / 2));
+
+  const PackStack stack = stackOf({pack.dir()});
+  const std::pair<const char*, const char*> cases[] = {
+      {"empty", "empty file"},        {"garbage", "garbage.png"},   {"huge", "100000x100000"},
+      {"strip", "not a stack of 16x16 frames"}, {"oblong", "not square and has no .mcmeta"},
+      {"meta", "meta.png.mcmeta: invalid JSON"}, {"frames", "frames[1] is frame 5, but the strip has 2"},
+      {"truncated", "truncated.png"},
+  };
+  for (const auto& [name, expected] : cases) {
+    std::vector<PackProblem> problems;
+    const auto t = load(stack, {name}, problems);
+    EXPECT_TRUE(t.missing) << name;
+    ASSERT_EQ(problems.size(), 1u) << name << ": " << problemsText(problems);
+    EXPECT_EQ(problems[0].severity, PackProblem::Severity::Error) << name;
+    EXPECT_NE(problems[0].message.find(expected), std::string::npos) << name << ": " << problems[0].message;
+  }
+}
+
+TEST(ResourcePack, SixteenBitGreyAndPaletteImagesAreConverted) {
+  PackBuilder pack("pack_formats");
+  {  // 16-bit grey + alpha, written through OpenImageIO's PNG writer
+    std::vector<std::uint16_t> pixels(16 * 16 * 2, 0xFFFF);
+    pixels[0] = 0x8000;
+    auto out = OIIO::ImageOutput::create("png");
+    ASSERT_TRUE(out);
+    ASSERT_TRUE(out->open(pack.file("deep.png").string(), OIIO::ImageSpec(16, 16, 2, OIIO::TypeDesc::UINT16)));
+    ASSERT_TRUE(out->write_image(OIIO::TypeDesc::UINT16, pixels.data()));
+    ASSERT_TRUE(out->close());
+  }
+  std::vector<PackProblem> deepProblems;
+  const auto deep = load(stackOf({pack.dir()}), {"deep"}, deepProblems);
+  EXPECT_TRUE(deepProblems.empty()) << problemsText(deepProblems);
+  EXPECT_EQ(deep.albedo[0].pixel(0, 0)[0], 128);
+  EXPECT_EQ(deep.albedo[0].pixel(0, 0)[2], 128) << "grey fills all three colour channels";
+  EXPECT_EQ(deep.albedo[0].pixel(1, 0)[3], 255);
+  Image grey(16, 16);
+  for (auto& v : grey.rgba) v = 77;
+  saveImage(pack.file("grey.png"), grey);
+  std::vector<PackProblem> problems;
+  EXPECT_FALSE(load(stackOf({pack.dir()}), {"grey"}, problems).missing);
+  // Palette PNGs (8-, 4-, 2-bit with tRNS) come from the real pack below.
+  EXPECT_TRUE(problems.empty()) << problemsText(problems);
+}
+
+void writeZip(const std::filesystem::path& file, const std::vector<std::pair<std::string, std::string>>& entries) {
+  std::filesystem::remove(file);
+  int error = 0;
+  zip_t* z = zip_open(file.c_str(), ZIP_CREATE | ZIP_TRUNCATE, &error);
+  ASSERT_NE(z, nullptr);
+  std::vector<std::string> keep;  // libzip reads the buffers at zip_close
+  keep.reserve(entries.size());
+  for (const auto& [name, data] : entries) {
+    keep.push_back(data);
+    zip_source_t* src = zip_source_buffer(z, keep.back().data(), keep.back().size(), 0);
+    ASSERT_GE(zip_file_add(z, name.c_str(), src, ZIP_FL_OVERWRITE), 0) << name;
+  }
+  ASSERT_EQ(zip_close(z), 0);
+}
+
+std::string pngBytes(const Image& image) {
+  const auto file = testing::scratchDir("png_bytes") / "x.png";
+  saveImage(file, image);
+  std::ifstream in(file, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), {}};
+}
+
+TEST(ResourcePack, ZipPacksLoadAndUnsafeEntriesAreRefused) {
+  const auto dir = testing::scratchDir("zips");
+  const std::string mcmeta = R"({"pack": {"pack_format": 15, "description": "zipped"}})";
+  writeZip(dir / "good.zip", {{"MyPack/pack.mcmeta", mcmeta},
+                              {"MyPack/assets/minecraft/textures/block/stone.png", pngBytes(solidImage(16, 16, 42, 42, 42))}});
+  std::vector<PackProblem> problems;
+  const auto stone = load(stackOf({dir / "good.zip"}), {"stone"}, problems);
+  EXPECT_FALSE(stone.missing) << problemsText(problems);
+  EXPECT_EQ(stone.albedo[0].pixel(0, 0)[0], 42);
+  EXPECT_NE(stone.source.find("good.zip!MyPack/assets"), std::string::npos) << stone.source;
+
+  for (const char* evil : {"../evil.png", "/etc/evil.png", "assets/../../evil.png"}) {
+    writeZip(dir / "evil.zip", {{"pack.mcmeta", mcmeta}, {evil, "x"}});
+    try {
+      ResourcePack::open(dir / "evil.zip");
+      ADD_FAILURE() << evil << " was accepted";
+    } catch (const Error& e) {
+      EXPECT_NE(std::string(e.what()).find("evil.zip"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("leaves the pack"), std::string::npos) << e.what();
+    }
+  }
+  std::ofstream(dir / "notazip.zip") << "hello";
+  EXPECT_THROW(ResourcePack::open(dir / "notazip.zip"), Error);
+}
+
+TEST(ResourcePack, MalformedPackMcmetaIsNamed) {
+  for (const auto& [text, expected] : std::vector<std::pair<std::string, std::string>>{
+           {"{", "invalid JSON"},
+           {R"({"pack": {"description": "x"}})", "pack_format must be an integer"},
+           {R"({"pack": {"pack_format": 15}, "terrasol": {"normal_map_convention": "up"}})", "normal_map_convention"}}) {
+    PackBuilder pack("pack_mcmeta", "block", text);
+    try {
+      ResourcePack::open(pack.dir());
+      ADD_FAILURE() << text;
+    } catch (const Error& e) {
+      EXPECT_NE(std::string(e.what()).find("pack.mcmeta"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
+    }
+  }
+  PackBuilder gl("pack_gl", "block", R"({"pack": {"pack_format": 15, "description": {"text": "fancy"}},
+                                         "terrasol": {"normal_map_convention": "opengl"}})");
+  EXPECT_TRUE(ResourcePack::open(gl.dir()).info().openGlNormals);
+  EXPECT_THROW(ResourcePack::open(testing::scratchDir("no_pack")), Error);
+}
+
+// The real third-party pack: palette PNGs of several bit depths with tRNS, animations, colormaps.
+TEST(ResourcePack, PixelPerfectionLoadsWithoutErrorsOverTheDefaultPack) {
+  const PackStack stack = stackOf({resourcePackDir() / "default", kPixelPerfection});
+  std::vector<PackProblem> problems;
+  int animated = 0, loaded = 0;
+  for (const auto& pack : stack.packs())
+    for (const auto& file : pack->blockTextureFiles()) {
+      if (file.ends_with("_n.png") || file.ends_with("_s.png")) continue;
+      const auto t = load(stack, {file.substr(0, file.size() - 4)}, problems);
+      animated += t.animation.has_value();
+      loaded += !t.missing;
+    }
+  std::size_t errors = 0;
+  for (const auto& p : problems) errors += p.severity == PackProblem::Severity::Error;
+  EXPECT_EQ(errors, 0u) << problemsText(problems);
+  EXPECT_GT(loaded, 900);
+  EXPECT_GT(animated, 50);
+  const auto water = load(stack, {"water_still"}, problems);
+  EXPECT_EQ(water.source.find("pixel_perfection_ce") != std::string::npos, true) << water.source;
+  EXPECT_EQ(water.albedo.size(), 16u);  // a 16 x 256 strip
+}
+
+// resourcepacks/default is what tools/packgen writes: the generator and the committed files agree.
+TEST(DefaultPack, IsExactlyWhatTheGeneratorMakes) {
+  const auto dir = resourcePackDir() / "default" / "assets" / "minecraft" / "textures" / "block";
+  const auto textures = packgen::generateDefaultTextures();
+  EXPECT_GE(textures.size(), 30u);
+  for (const auto& t : textures) {
+    EXPECT_EQ(loadImage(dir / (t.name + ".png")).rgba, t.albedo.rgba) << t.name;
+    EXPECT_EQ(loadImage(dir / (t.name + "_n.png")).rgba, t.normal.rgba) << t.name;
+    EXPECT_EQ(loadImage(dir / (t.name + "_s.png")).rgba, t.specular.rgba) << t.name;
+  }
+}
+
+TEST(DefaultPack, CoversEveryBlockWithNormalAndSpecularMaps) {
+  const PackStack stack = stackOf({resourcePackDir() / "default"});
+  const BlockRegistry& blocks = testing::defaultBlocks();
+  std::vector<PackProblem> problems;
+  for (BlockId id = 1; id < blocks.size(); ++id)
+    for (const auto& face : blocks[id].textures) {
+      const auto t = load(stack, face, problems);
+      EXPECT_FALSE(t.missing) << blocks[id].name;
+      EXPECT_TRUE(t.hasNormalMap && t.hasSpecularMap) << blocks[id].name;
+    }
+  EXPECT_TRUE(problems.empty()) << problemsText(problems);
+  // The promised materials: metals by id, emissive glowstone, lava and torch.
+  auto specular = [&](const char* name, int x, int y) { return load(stack, {name}, problems).specular[0].pixel(x, y); };
+  EXPECT_EQ(specular("iron_block", 8, 8)[1], 230);
+  EXPECT_EQ(specular("gold_block", 8, 8)[1], 231);
+  EXPECT_EQ(specular("copper_block", 8, 8)[1], 234);
+  EXPECT_LT(specular("lava_still", 8, 8)[3], 255);
+  EXPECT_LT(specular("torch", 7, 3)[3], 255);
+  int glowing = 0;
+  for (int i = 0; i < 256; ++i) glowing += specular("glowstone", i % 16, i / 16)[3] < 255;
+  EXPECT_EQ(glowing, 256);
+}
+
+}  // namespace
+}  // namespace terrasol
