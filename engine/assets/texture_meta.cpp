@@ -1,5 +1,6 @@
 #include "assets/texture_meta.h"
 
+#include <algorithm>
 #include <nlohmann/json.hpp>
 
 #include "core/error.h"
@@ -24,6 +25,21 @@ int Animation::totalTicks() const {
   int total = 0;
   for (const auto& f : sequence) total += f.ticks;
   return total;
+}
+
+FrameBlend frameAt(const Animation& animation, std::int64_t ticks, float partialTick) {
+  const auto& seq = animation.sequence;
+  if (seq.empty()) return {};
+  const std::int64_t period = animation.totalTicks();
+  std::int64_t t = ((ticks % period) + period) % period;  // integer arithmetic: no drift however long
+  std::size_t i = 0;
+  while (t >= seq[i].ticks) t -= seq[i++].ticks;
+  FrameBlend out{seq[i].index, seq[(i + 1) % seq.size()].index, 0.0f};
+  if (animation.interpolate) {
+    out.blend = std::clamp((static_cast<float>(t) + std::clamp(partialTick, 0.0f, 1.0f)) / static_cast<float>(seq[i].ticks),
+                           0.0f, 1.0f);
+  }
+  return out;
 }
 
 bool isSquare(int width, int height) { return width == height; }

@@ -5,6 +5,7 @@
 // Frames are stacked vertically; each is `width` wide and `height` tall (both default to the image
 // width, i.e. square frames).
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -23,6 +24,14 @@ struct Animation {
   std::vector<AnimationFrame> sequence;  // the order they play in
   int totalTicks() const;
 };
+
+// The frame to show after `ticks` game ticks (20 a second): `frame` blends towards `next` by `blend`
+// (0..1) when the animation interpolates, otherwise blend is 0. Exact for any tick count, 10^12 too.
+struct FrameBlend {
+  int frame = 0, next = 0;
+  float blend = 0.0f;
+};
+FrameBlend frameAt(const Animation& animation, std::int64_t ticks, float partialTick = 0.0f);
 
 // Parses `json` (the .mcmeta text) for an image of `width` x `height`. Returns nothing when it has no
 // "animation" section. Throws Error naming `file` and the key for malformed JSON, a strip height that
