@@ -1,0 +1,58 @@
+// Resource pack benchmarks: loading the block textures and building the three atlases with mipmaps.
+
+#include <benchmark/benchmark.h>
+
+#include <set>
+
+#include "assets/atlas.h"
+#include "core/paths.h"
+#include "world/block_registry.h"
+
+namespace terrasol {
+namespace {
+
+// The texture names the game asks for: every face of every block in the registry.
+std::vector<std::vector<std::string>> blockTextureNames() {
+  const BlockRegistry blocks = BlockRegistry::fromFile(resourcePackDir() / "default" / "blocks.json");
+  std::set<std::vector<std::string>> names;
+  for (BlockId id = 1; id < blocks.size(); ++id)
+    for (const auto& face : blocks[id].textures) names.insert(face);
+  return {names.begin(), names.end()};
+}
+
+PackStack stack(bool withPixelPerfection) {
+  PackStack packs;
+  packs.push(ResourcePack::open(resourcePackDir() / "default"));
+  if (withPixelPerfection) {
+    packs.push(ResourcePack::open(dataRoot() / ".." / "shared" / "testdata" / "packs" / "pixel_perfection_ce"));
+  }
+  return packs;
+}
+
+std::vector<LoadedTexture> load(const PackStack& packs) {
+  std::vector<PackProblem> problems;
+  std::vector<LoadedTexture> textures;
+  for (const auto& names : blockTextureNames()) textures.push_back(loadBlockTexture(packs, names, problems));
+  return textures;
+}
+
+// Decoding every block texture and its companions (arg 1: pixel_perfection_ce over the default pack).
+void BM_PackLoadTextures(benchmark::State& state) {
+  const PackStack packs = stack(state.range(0) == 1);
+  for (auto _ : state) benchmark::DoNotOptimize(load(packs));
+}
+BENCHMARK(BM_PackLoadTextures)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+
+// Laying out and building the albedo, normal and specular atlases with all mip levels.
+void BM_AtlasBuild(benchmark::State& state) {
+  const auto textures = load(stack(state.range(0) == 1));
+  Atlas atlas;
+  for (auto _ : state) benchmark::DoNotOptimize(atlas = buildAtlas(textures));
+  state.counters["tiles"] = atlas.columns * atlas.rows;
+  state.counters["tile_size"] = atlas.tileSize;
+  state.counters["atlas_side"] = atlas.albedo[0].width;
+}
+BENCHMARK(BM_AtlasBuild)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+}  // namespace terrasol
