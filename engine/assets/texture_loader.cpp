@@ -60,7 +60,15 @@ Companion loadCompanion(const ResourcePack& pack, const std::string& file, const
     const int frames = static_cast<int>(base.albedo.size());
     const int fw = base.albedo[0].width, fh = base.albedo[0].height;
     std::vector<Image> split;
-    if (frames > 1 && image.height % frames == 0 && image.height / frames * fw == image.width * fh) {
+    std::optional<Animation> own;
+    if (const auto meta = pack.blockTexture(file + ".mcmeta")) {
+      own = parseAnimation(text(*pack.files().read(*meta)), image.width, image.height, pack.files().displayName(*meta));
+    }
+    if (own) {
+      // Its own strip layout; frame i of the texture uses frame i of the map when the counts match.
+      split = splitFrames(image, own->frameHeight);
+      if (static_cast<int>(split.size()) != frames) split.resize(1);
+    } else if (frames > 1 && image.height % frames == 0 && image.height / frames * fw == image.width * fh) {
       split = splitFrames(image, image.height / frames);
     } else {
       split.push_back(image);

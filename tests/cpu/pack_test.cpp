@@ -111,6 +111,27 @@ TEST(ResourcePack, AnimationsSplitIntoFramesWithTheirTiming) {
   EXPECT_EQ(t.animation->sequence[1].ticks, 3);
   EXPECT_EQ(t.animation->sequence[2].ticks, 7);
   EXPECT_EQ(t.animation->totalTicks(), 13);
+
+  // A companion with its own .png.mcmeta: split by its own layout (here 4 frames of 8 x 8).
+  Image normals(8, 32);
+  for (int y = 0; y < 32; ++y)
+    for (int x = 0; x < 8; ++x) {
+      std::uint8_t* p = normals.pixel(x, y);
+      p[0] = static_cast<std::uint8_t>(100 + y / 8), p[1] = 127, p[2] = 255, p[3] = 255;
+    }
+  pack.image("lava_still_n.png", normals);
+  pack.text("lava_still_n.png.mcmeta", R"({"animation": {}})");
+  problems.clear();
+  const auto withOwn = load(stackOf({pack.dir()}), {"lava_still"}, problems);
+  EXPECT_TRUE(problems.empty()) << problemsText(problems);
+  ASSERT_EQ(withOwn.normal.size(), 4u);
+  EXPECT_EQ(withOwn.normal[0].width, 16) << "resampled to the texture's frame size";
+  EXPECT_EQ(withOwn.normal[2].pixel(5, 5)[0], 102);
+  pack.text("lava_still_n.png.mcmeta", R"({"animation": {"height": 5}})");
+  problems.clear();
+  load(stackOf({pack.dir()}), {"lava_still"}, problems);
+  ASSERT_EQ(problems.size(), 1u);
+  EXPECT_NE(problems[0].message.find("lava_still_n.png.mcmeta"), std::string::npos) << problems[0].message;
 }
 
 TEST(Animation, FramesFollowGameTimeExactlyForever) {
