@@ -3,6 +3,7 @@
 
 #include <OpenImageIO/imageio.h>
 
+#include <array>
 #include <fstream>
 
 #include "assets/texture_loader.h"
@@ -357,7 +358,11 @@ TEST(DefaultPack, CoversEveryBlockWithNormalAndSpecularMaps) {
     }
   EXPECT_TRUE(problems.empty()) << problemsText(problems);
   // The promised materials: metals by id, emissive glowstone, lava and torch.
-  auto specular = [&](const char* name, int x, int y) { return load(stack, {name}, problems).specular[0].pixel(x, y); };
+  auto specular = [&](const char* name, int x, int y) {
+    const LoadedTexture t = load(stack, {name}, problems);
+    const std::uint8_t* p = t.specular[0].pixel(x, y);
+    return std::array<std::uint8_t, 4>{p[0], p[1], p[2], p[3]};
+  };
   EXPECT_EQ(specular("iron_block", 8, 8)[1], 230);
   EXPECT_EQ(specular("gold_block", 8, 8)[1], 231);
   EXPECT_EQ(specular("copper_block", 8, 8)[1], 234);
