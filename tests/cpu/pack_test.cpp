@@ -20,8 +20,12 @@ namespace {
 using testing::PackBuilder;
 using testing::solidImage;
 
-const std::filesystem::path kPixelPerfection = std::filesystem::path(TERRASOL_SOURCE_DIR) / ".." / "shared" /
-                                              "testdata" / "packs" / "pixel_perfection_ce";
+// ../shared/testdata sits beside the repository root on every developer machine and in CI.
+const std::filesystem::path kPixelPerfection = [] {
+  const auto dir = std::filesystem::path(TERRASOL_SOURCE_DIR) / ".." / "shared" / "testdata" / "packs" / "pixel_perfection_ce";
+  if (!std::filesystem::is_directory(dir)) ADD_FAILURE() << "test data missing: " << dir << " (../shared beside the repository)";
+  return dir;
+}();
 
 PackStack stackOf(std::initializer_list<std::filesystem::path> dirs) {
   PackStack stack;
