@@ -12,6 +12,7 @@
 
 #include "assets/image.h"
 #include "core/error.h"
+#include "core/tool_main.h"
 #include "core/paths.h"
 #include "world/generator.h"
 
@@ -126,10 +127,5 @@ int run(int argc, char** argv) {
 }  // namespace terrasol
 
 int main(int argc, char** argv) {
-  try {
-    return terrasol::run(argc, argv);
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "terrasol-map: %s\n", e.what());
-    return 1;
-  }
+  return terrasol::guardedMain("terrasol-map", [&] { return terrasol::run(argc, argv); });
 }

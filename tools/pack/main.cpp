@@ -12,6 +12,7 @@
 
 #include "assets/atlas.h"
 #include "core/error.h"
+#include "core/tool_main.h"
 #include "core/paths.h"
 #include "world/block_registry.h"
 
@@ -119,10 +120,5 @@ int run(int argc, char** argv) {
 }  // namespace terrasol
 
 int main(int argc, char** argv) {
-  try {
-    return terrasol::run(argc, argv);
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "terrasol-pack: error: %s\n", e.what());
-    return 1;
-  }
+  return terrasol::guardedMain("terrasol-pack", [&] { return terrasol::run(argc, argv); });
 }
