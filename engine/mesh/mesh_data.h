@@ -1,0 +1,61 @@
+#pragma once
+// What the mesher produces: plain vertex arrays per render layer, ready to upload.
+//
+// Every face is a quad of 4 vertices; the renderer draws quads with one shared index pattern
+// (0 1 2, 0 2 3), so the vertex order also picks the quad's diagonal.
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "world/coords.h"
+
+namespace terrasol {
+
+// One vertex in 16 bytes:
+//   position: x | y << 10 | z << 20, in 1/32 block from the section's minimum corner (0..512 each)
+//   material: texture id (16 bits) | face (4 bits) << 16 | tint (2 bits) << 20
+//             face 0..5 = Direction (normal along an axis), 6..9 = the diagonal planes of cross plants
+//   light:    block light x4 (6 bits) | sky light x4 (6 bits) << 6 | ambient occlusion 0..3 (2 bits) << 12
+//             (smooth light averages four cells, so quarter levels are kept: 0..60)
+//   uv:       u | v << 5, in 1/16 of the texture (0..16), v = 0 at the texture's top row
+struct PackedVertex {
+  std::uint32_t position;
+  std::uint32_t material;
+  std::uint32_t light;
+  std::uint32_t uv;
+
+  static constexpr std::uint32_t packPosition(int x32, int y32, int z32) {
+    return static_cast<std::uint32_t>(x32) | static_cast<std::uint32_t>(y32) << 10 |
+           static_cast<std::uint32_t>(z32) << 20;
+  }
+  int x32() const { return static_cast<int>(position & 1023); }
+  int y32() const { return static_cast<int>((position >> 10) & 1023); }
+  int z32() const { return static_cast<int>((position >> 20) & 1023); }
+  int texture() const { return static_cast<int>(material & 0xFFFF); }
+  int face() const { return static_cast<int>((material >> 16) & 15); }
+  int tint() const { return static_cast<int>((material >> 20) & 3); }
+  int blockLight4() const { return static_cast<int>(light & 63); }
+  int skyLight4() const { return static_cast<int>((light >> 6) & 63); }
+  int ao() const { return static_cast<int>((light >> 12) & 3); }
+  int u() const { return static_cast<int>(uv & 31); }
+  int v() const { return static_cast<int>((uv >> 5) & 31); }
+};
+static_assert(sizeof(PackedVertex) == 16, "the G-buffer pass expects 16-byte vertices");
+
+enum class MeshLayer : std::uint8_t { Opaque, Cutout, Translucent };
+inline constexpr int kMeshLayers = 3;
+
+struct MeshData {
+  std::vector<PackedVertex> vertices;  // 4 per quad
+  std::size_t quads() const { return vertices.size() / 4; }
+};
+
+struct SectionMesh {
+  SectionPos pos;
+  std::array<MeshData, kMeshLayers> layers;
+  std::size_t quads() const { return layers[0].quads() + layers[1].quads() + layers[2].quads(); }
+  bool empty() const { return quads() == 0; }
+};
+
+}  // namespace terrasol

@@ -1,0 +1,33 @@
+#pragma once
+// A copy of one 16³ section and the one-block halo around it (18³ cells): blocks and both light
+// channels, everything the mesher reads. Taken on the main thread from the World; meshed on any
+// thread. Cells outside the world or in unloaded chunks read as air with no light (they are drawn
+// against later, when their chunk loads and the section is remeshed).
+
+#include <array>
+#include <cstdint>
+#include <optional>
+
+#include "world/world.h"
+
+namespace terrasol {
+
+class SectionSnapshot {
+ public:
+  static constexpr int kSide = 18;
+  // Index of local cell (x, y, z), each -1..16.
+  static constexpr int index(int x, int y, int z) { return ((y + 1) * kSide + (z + 1)) * kSide + (x + 1); }
+
+  SectionPos pos;
+  std::array<BlockId, kSide * kSide * kSide> blocks;
+  std::array<std::uint8_t, kSide * kSide * kSide> blockLight, skyLight;
+};
+
+enum class CaptureResult { Captured, Empty, Buried };
+
+// Fills `out` for section `pos`, unless the section can have no visible face: all air (Empty), or one
+// opaque cube block throughout with every neighbouring cell across its six faces opaque too (Buried).
+// Those two are decided from section uniformity and the six facing layers, without a per-block loop.
+CaptureResult captureSection(const World& world, SectionPos pos, SectionSnapshot& out);
+
+}  // namespace terrasol

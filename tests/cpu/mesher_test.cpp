@@ -1,0 +1,228 @@
+#include <gtest/gtest.h>
+
+#include <cstring>
+
+#include "light/light_engine.h"
+#include "mesh/mesher.h"
+#include "support/world_support.h"
+#include "world/generator.h"
+
+namespace terrasol {
+namespace {
+
+using testing::defaultBlocks;
+
+// A lit world of 3 x 3 chunks to build shapes in; textures are numbered block * 6 + face.
+struct MeshWorld {
+  explicit MeshWorld(const std::string& generator = "void")
+      : world(defaultBlocks()),
+        light(world),
+        table(defaultBlocks(), [](BlockId id, int face) { return static_cast<std::uint16_t>(id * 6 + face); }) {
+    gen = makeGenerator({generator, 3, {}}, defaultBlocks());
+    for (int z = -1; z <= 1; ++z)
+      for (int x = -1; x <= 1; ++x) {
+        auto c = std::make_unique<Chunk>(ChunkPos{x, z});
+        gen->generate(*c);
+        world.insertChunk(std::move(c));
+        light.chunkLoaded({x, z});
+      }
+  }
+  void set(const BlockPos& p, const char* name) {
+    if (auto change = world.setBlock(p, defaultBlocks().id(name))) light.blockChanged(*change);
+  }
+  SectionMesh mesh(SectionPos s = {0, sectionOf(64), 0}) {
+    SectionSnapshot snapshot;
+    if (captureSection(world, s, snapshot) != CaptureResult::Captured) return SectionMesh{s, {}};
+    return meshSection(snapshot, table);
+  }
+  std::size_t quads(MeshLayer layer, SectionPos s = {0, sectionOf(64), 0}) {
+    return mesh(s).layers[static_cast<std::size_t>(layer)].quads();
+  }
+
+  World world;
+  LightEngine light;
+  BlockMeshTable table;
+  std::unique_ptr<ChunkGenerator> gen;
+};
+
+// Vertices of the face of `mesh` with texture `texture` (the first such quad).
+std::vector<PackedVertex> quadWithTexture(const MeshData& mesh, int texture) {
+  for (std::size_t i = 0; i < mesh.vertices.size(); i += 4) {
+    if (mesh.vertices[i].texture() == texture) return {mesh.vertices.begin() + i, mesh.vertices.begin() + i + 4};
+  }
+  return {};
+}
+
+TEST(Mesher, VertexIs16Bytes) { EXPECT_EQ(sizeof(PackedVertex), 16u); }
+
+TEST(Mesher, FaceCountsForKnownShapes) {
+  MeshWorld w;
+  w.set({3, 70, 3}, "stone");
+  EXPECT_EQ(w.quads(MeshLayer::Opaque), 6u);
+  w.set({4, 70, 3}, "stone");
+  EXPECT_EQ(w.quads(MeshLayer::Opaque), 10u);
+  for (int y = 70; y <= 71; ++y)
+    for (int z = 3; z <= 4; ++z)
+      for (int x = 3; x <= 4; ++x) w.set({x, y, z}, "stone");
+  EXPECT_EQ(w.quads(MeshLayer::Opaque), 24u) << "a 2x2x2 cube shows 4 faces per side";
+}
+
+TEST(Mesher, CullingRulesForGlassLeavesAndWater) {
+  MeshWorld w;
+  w.set({3, 70, 3}, "glass");
+  w.set({4, 70, 3}, "glass");
+  EXPECT_EQ(w.quads(MeshLayer::Cutout), 10u) << "glass hides glass";
+  w.set({3, 72, 3}, "oak_leaves");
+  w.set({4, 72, 3}, "oak_leaves");
+  EXPECT_EQ(w.quads(MeshLayer::Cutout), 22u) << "leaves show their inner faces";
+  w.set({8, 70, 8}, "stone");
+  w.set({9, 70, 8}, "ice");
+  EXPECT_EQ(w.quads(MeshLayer::Opaque), 6u) << "stone shows its face to ice (not opaque)";
+  EXPECT_EQ(w.quads(MeshLayer::Translucent), 5u) << "ice hides its face against stone";
+}
+
+TEST(Mesher, WaterSurfacesSitLowerUnlessWaterIsAbove) {
+  MeshWorld w;
+  w.set({3, 70, 3}, "water");
+  w.set({4, 70, 3}, "water");
+  auto mesh = w.mesh();
+  const auto& water = mesh.layers[static_cast<std::size_t>(MeshLayer::Translucent)];
+  EXPECT_EQ(water.quads(), 10u) << "water hides water";
+  int highest = 0;
+  for (const auto& v : water.vertices) highest = std::max(highest, v.y32());
+  EXPECT_EQ(highest, (70 & 15) * 32 + 28) << "2/16 below the block top";
+  w.set({3, 71, 3}, "water");
+  mesh = w.mesh();
+  int top = 0;
+  for (const auto& v : mesh.layers[static_cast<std::size_t>(MeshLayer::Translucent)].vertices) top = std::max(top, v.y32());
+  EXPECT_EQ(top, (71 & 15) * 32 + 28);
+  const int lowerTop = defaultBlocks().id("water") * 6 + 3;
+  int fullHeightLower = 0;
+  for (const auto& v : mesh.layers[2].vertices)
+    if (v.texture() == lowerTop && v.z32() >= 3 * 32 && v.z32() <= 4 * 32 && v.x32() <= 4 * 32 && v.y32() == (70 & 15) * 32 + 32) ++fullHeightLower;
+  EXPECT_EQ(fullHeightLower, 0) << "the covered water has no top face";
+}
+
+TEST(Mesher, PlantsTorchesAndTints) {
+  MeshWorld w;
+  w.set({3, 69, 3}, "grass_block");
+  w.set({3, 70, 3}, "short_grass");
+  w.set({6, 70, 6}, "torch");
+  w.set({8, 70, 8}, "oak_leaves");
+  const auto mesh = w.mesh();
+  const auto& cutout = mesh.layers[static_cast<std::size_t>(MeshLayer::Cutout)];
+  EXPECT_EQ(cutout.quads(), 4u + 5u + 6u) << "cross: 2 double-sided planes; torch: 4 sides and a top";
+  for (const auto& v : cutout.vertices) {
+    const BlockId id = static_cast<BlockId>(v.texture() / 6);
+    const int expected = id == defaultBlocks().id("short_grass") ? 1 : id == defaultBlocks().id("oak_leaves") ? 2 : 0;
+    EXPECT_EQ(v.tint(), expected) << defaultBlocks()[id].name;
+  }
+  const auto below = w.mesh({0, sectionOf(69), 0});
+  for (const auto& v : below.layers[0].vertices) {
+    EXPECT_EQ(v.tint(), v.face() == static_cast<int>(Direction::Up) ? 1 : 0) << "grass blocks tint only the top";
+  }
+}
+
+// Up face of a floor block with walls beside the cell in front of it.
+std::vector<PackedVertex> floorTop(MeshWorld& w) {
+  const auto mesh = w.mesh();
+  return quadWithTexture(mesh.layers[0], defaultBlocks().id("stone") * 6 + 3);
+}
+
+TEST(Mesher, AmbientOcclusionAtCornersAndTheDiagonalFlip) {
+  MeshWorld w;
+  w.set({4, 70, 4}, "stone");  // the floor block; its top face looks at (4, 71, 4)
+  auto q = floorTop(w);
+  ASSERT_EQ(q.size(), 4u);
+  for (const auto& v : q) EXPECT_EQ(v.ao(), 3);
+  // Up face frame: t = +x, b = -z; corners (-,-) (+,-) (+,+) (-,+).
+  w.set({5, 71, 4}, "stone");  // beside corners 1 and 2
+  q = floorTop(w);
+  EXPECT_EQ(q[0].ao(), 3);
+  EXPECT_EQ(q[1].ao(), 2);
+  EXPECT_EQ(q[2].ao(), 2);
+  EXPECT_EQ(q[3].ao(), 3);
+  w.set({5, 71, 4}, "air");
+  w.set({3, 71, 4}, "stone");  // side 1 of corner 0
+  w.set({4, 71, 5}, "stone");  // side 2 of corner 0: both sides -> 0
+  q = floorTop(w);
+  // AO was 0, 2, 3, 2: the 0-2 diagonal (0 + 3) is darker than 1-3 (2 + 2), so the quad starts at
+  // corner 1 and is split along 1-3.
+  EXPECT_EQ(q[0].ao(), 2);
+  EXPECT_EQ(q[1].ao(), 3);
+  EXPECT_EQ(q[2].ao(), 2);
+  EXPECT_EQ(q[3].ao(), 0);
+}
+
+TEST(Mesher, SmoothLightAveragesTheFourCellsInFront) {
+  MeshWorld w;
+  w.set({4, 70, 4}, "stone");
+  w.set({4, 71, 4}, "torch");  // in the cell in front of the floor's top face: 14 there, 13 beside, 12 diagonal
+  const auto mesh = w.mesh();
+  const auto q = quadWithTexture(mesh.layers[0], defaultBlocks().id("stone") * 6 + 3);
+  ASSERT_EQ(q.size(), 4u);
+  for (const auto& v : q) {
+    EXPECT_EQ(v.blockLight4(), 4 * (14 + 13 + 13 + 12) / 4);
+    EXPECT_EQ(v.skyLight4(), 60) << "open sky";
+  }
+  // An opaque cell beside the corner is left out of the average (and so is the diagonal behind two).
+  w.set({5, 71, 4}, "stone");
+  const auto q2 = quadWithTexture(w.mesh().layers[0], defaultBlocks().id("stone") * 6 + 3);
+  EXPECT_EQ(q2[1].blockLight4(), (4 * (14 + 13 + 12) + 1) / 3);
+}
+
+TEST(Mesher, FacesAgainstNeighboursAcrossSectionAndChunkBorders) {
+  MeshWorld w;
+  const SectionPos s{0, sectionOf(64), 0};
+  w.set({15, 64, 5}, "stone");  // on the chunk's east edge, the section's bottom layer
+  EXPECT_EQ(w.quads(MeshLayer::Opaque, s), 6u);
+  w.set({16, 64, 5}, "stone");  // in the next chunk
+  EXPECT_EQ(w.quads(MeshLayer::Opaque, s), 5u);
+  w.set({15, 63, 5}, "stone");  // in the section below
+  EXPECT_EQ(w.quads(MeshLayer::Opaque, s), 4u);
+  w.light.chunkUnloading({1, 0});
+  w.world.removeChunk({1, 0});
+  EXPECT_EQ(w.quads(MeshLayer::Opaque, s), 5u) << "an unloaded neighbour shows the face until it loads";
+}
+
+TEST(Mesher, EmptyAndBuriedSectionsAreSkippedBeforeCopying) {
+  MeshWorld w("flat");
+  SectionSnapshot snapshot;
+  EXPECT_EQ(captureSection(w.world, {0, sectionOf(200), 0}, snapshot), CaptureResult::Empty);
+  EXPECT_EQ(captureSection(w.world, {0, sectionOf(20), 0}, snapshot), CaptureResult::Buried) << "stone from y 1 to 59";
+  EXPECT_EQ(captureSection(w.world, {0, sectionOf(60), 0}, snapshot), CaptureResult::Captured);
+  w.set({3, 40, 3}, "air");  // a hole in the section above makes the stone below visible
+  EXPECT_EQ(captureSection(w.world, {0, sectionOf(20), 0}, snapshot), CaptureResult::Buried);
+  w.set({3, 32, 3}, "air");  // the bottom layer of the section above: now the top of y 16..31 is exposed
+  EXPECT_EQ(captureSection(w.world, {0, sectionOf(20), 0}, snapshot), CaptureResult::Captured);
+  EXPECT_EQ(captureSection(w.world, {7, 0, 7}, snapshot), CaptureResult::Empty) << "no chunk there";
+}
+
+TEST(Mesher, EditsAndRevertsGiveTheSameMeshAsFresh) {
+  MeshWorld w("terrain");
+  const int surface = w.gen->surfaceHeight(8, 8);
+  const SectionPos s{0, sectionOf(surface), 0};
+  const auto fresh = w.mesh(s);
+  ASSERT_GT(fresh.quads(), 50u);
+  std::vector<std::pair<BlockPos, BlockId>> undo;
+  const char* placed[] = {"torch", "stone", "air", "glowstone", "water", "glass"};
+  for (int i = 0; i < 30; ++i) {
+    const BlockPos p{(i * 7) % 16, surface - 3 + i % 7, (i * 5) % 16};
+    undo.emplace_back(p, w.world.getBlock(p));
+    w.set(p, placed[i % 6]);
+  }
+  EXPECT_NE(w.mesh(s).quads(), fresh.quads());
+  for (auto it = undo.rbegin(); it != undo.rend(); ++it) {
+    if (auto change = w.world.setBlock(it->first, it->second)) w.light.blockChanged(*change);
+  }
+  const auto again = w.mesh(s);
+  for (int l = 0; l < kMeshLayers; ++l) {
+    const auto& a = fresh.layers[static_cast<std::size_t>(l)].vertices;
+    const auto& b = again.layers[static_cast<std::size_t>(l)].vertices;
+    ASSERT_EQ(a.size(), b.size()) << "layer " << l;
+    EXPECT_EQ(0, std::memcmp(a.data(), b.data(), a.size() * sizeof(PackedVertex))) << "layer " << l;
+  }
+}
+
+}  // namespace
+}  // namespace terrasol
