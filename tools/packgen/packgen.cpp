@@ -237,12 +237,13 @@ Texel liquid(int x, int y, int frame, bool lava, bool flowing) {
   return t;
 }
 
+// Minecraft's torch layout: the model shows columns 7..8, the flame in rows 6..8 and the stick below.
 Texel torch(int x, int y) {
   Texel t;
   t.alpha = 0.0f;
-  if ((x == 7 || x == 8) && y >= 6 && y <= 15) t.color = rgb(110, 80, 45) * (x == 7 ? 1.0f : 0.8f), t.alpha = 1.0f;
-  if ((x == 7 || x == 8) && y >= 3 && y <= 5) {
-    t.color = y == 3 ? rgb(255, 240, 170) : rgb(255, 170, 50);
+  if ((x == 7 || x == 8) && y >= 9 && y <= 15) t.color = rgb(110, 80, 45) * (x == 7 ? 1.0f : 0.8f), t.alpha = 1.0f;
+  if ((x == 7 || x == 8) && y >= 6 && y <= 8) {
+    t.color = y == 6 ? rgb(255, 240, 170) : rgb(255, 170, 50);
     t.alpha = 1.0f;
     t.emission = 254;
     t.smoothness = 10;
