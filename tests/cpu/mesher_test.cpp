@@ -3,7 +3,11 @@
 #include <cstring>
 
 #include "light/light_engine.h"
+#include "mesh/mesh_scheduler.h"
 #include "mesh/mesher.h"
+
+#include <chrono>
+#include <thread>
 #include "support/world_support.h"
 #include "world/generator.h"
 
@@ -222,6 +226,39 @@ TEST(Mesher, EditsAndRevertsGiveTheSameMeshAsFresh) {
     ASSERT_EQ(a.size(), b.size()) << "layer " << l;
     EXPECT_EQ(0, std::memcmp(a.data(), b.data(), a.size() * sizeof(PackedVertex))) << "layer " << l;
   }
+}
+
+// Edits go through light, then only the touched sections are remeshed on workers, and what comes
+// back equals meshing those sections directly.
+TEST(MeshScheduler, RemeshesExactlyTheSectionsAnEditTouches) {
+  MeshWorld w("flat");
+  MeshScheduler scheduler(w.table, 2);
+  w.light.takeChangedSections();
+  const BlockPos edits[] = {{15, 64, 0}, {4, 64, 4}};  // a chunk corner on a section bottom; a plain spot
+  for (const auto& p : edits) {
+    w.set(p, "glowstone");
+    scheduler.markBlockChanged(p);
+  }
+  for (const auto& s : w.light.takeChangedSections()) scheduler.markDirty(s);
+  EXPECT_GT(scheduler.dirty(), 4u);
+  std::vector<SectionMesh> results;
+  for (int i = 0; i < 10000 && (scheduler.dirty() > 0 || scheduler.inFlight() > 0); ++i) {
+    for (auto& m : scheduler.update(w.world)) results.push_back(std::move(m));
+    std::this_thread::sleep_for(std::chrono::microseconds(200));
+  }
+  ASSERT_FALSE(results.empty());
+  bool sawEdited = false;
+  for (const auto& m : results) {
+    EXPECT_LE(std::abs(m.pos.x), 1);
+    EXPECT_LE(std::abs(m.pos.section - sectionOf(64)), 1) << "light 15 reaches one section up or down at most";
+    const auto direct = w.mesh(m.pos);
+    for (int l = 0; l < kMeshLayers; ++l) {
+      ASSERT_EQ(m.layers[static_cast<std::size_t>(l)].vertices.size(), direct.layers[static_cast<std::size_t>(l)].vertices.size());
+    }
+    sawEdited = sawEdited || (m.pos == SectionPos{0, sectionOf(64), 0} && m.quads() > 0);
+  }
+  EXPECT_TRUE(sawEdited);
+  for (const auto& m : results) EXPECT_NE(m.pos, (SectionPos{0, sectionOf(200), 0})) << "untouched sections stay";
 }
 
 }  // namespace
