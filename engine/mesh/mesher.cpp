@@ -23,9 +23,45 @@ constexpr FaceFrame kFaces[6] = {
 };
 constexpr int kCornerSigns[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
 
+constexpr int offset(int dx, int dy, int dz) {
+  return dx + dz * SectionSnapshot::kSide + dy * SectionSnapshot::kSide * SectionSnapshot::kSide;
+}
+
+// Rounded average x4 of `count` (1..4) light levels summing to `sum`: a table, not two divisions per corner.
+constexpr auto kAverage4 = [] {
+  std::array<std::array<std::uint8_t, 61>, 5> table{};
+  for (int count = 1; count <= 4; ++count)
+    for (int sum = 0; sum <= 60; ++sum) table[count][sum] = static_cast<std::uint8_t>((sum * 4 + count / 2) / count);
+  return table;
+}();
+
+// Per face and corner: snapshot index offsets (from the cell in front of the face) of the two cells
+// beside the corner and the diagonal one, the corner's position within its block (1/32) and its UV.
+struct CornerCells {
+  int side1, side2, diagonal;
+  int x32, y32, z32;
+  std::uint32_t uv;
+};
+constexpr auto kCorners = [] {
+  std::array<std::array<CornerCells, 4>, 6> table{};
+  for (int d = 0; d < 6; ++d)
+    for (int c = 0; c < 4; ++c) {
+      const FaceFrame& f = kFaces[d];
+      const int su = kCornerSigns[c][0], sv = kCornerSigns[c][1];
+      const Vec a{su * f.t.x, su * f.t.y, su * f.t.z}, b{sv * f.b.x, sv * f.b.y, sv * f.b.z};
+      table[d][c] = {offset(a.x, a.y, a.z), offset(b.x, b.y, b.z), offset(a.x + b.x, a.y + b.y, a.z + b.z),
+                     16 + 16 * (f.n.x + a.x + b.x), 16 + 16 * (f.n.y + a.y + b.y), 16 + 16 * (f.n.z + a.z + b.z),
+                     static_cast<std::uint32_t>(su > 0 ? 16 : 0) | static_cast<std::uint32_t>(sv > 0 ? 0 : 16) << 5};
+    }
+  return table;
+}();
+
 class Mesher {
  public:
-  Mesher(const SectionSnapshot& s, const BlockMeshTable& table) : s_(s), table_(table) { mesh_.pos = s.pos; }
+  Mesher(const SectionSnapshot& s, const BlockMeshTable& table) : s_(s), table_(table) {
+    mesh_.pos = s.pos;
+    for (auto& v : scratch_) v.clear();
+  }
 
   SectionMesh run() {
     for (int y = 0; y < 16; ++y)
@@ -42,12 +78,17 @@ class Mesher {
             case BlockShape::None: break;
           }
         }
+    // One exact-size copy per layer: the scratch buffers keep their capacity between sections.
+    for (int l = 0; l < kMeshLayers; ++l) {
+      mesh_.layers[static_cast<std::size_t>(l)].vertices.assign(scratch_[static_cast<std::size_t>(l)].begin(),
+                                                                 scratch_[static_cast<std::size_t>(l)].end());
+    }
     return std::move(mesh_);
   }
 
  private:
   BlockId block(int x, int y, int z) const { return s_.blocks[static_cast<std::size_t>(SectionSnapshot::index(x, y, z))]; }
-  bool opaque(int x, int y, int z) const { return table_[block(x, y, z)].opaque; }
+  bool opaqueAt(int i) const { return s_.opaque[static_cast<std::size_t>(i)] != 0; }
   int blockLight(int x, int y, int z) const { return s_.blockLight[static_cast<std::size_t>(SectionSnapshot::index(x, y, z))]; }
   int skyLight(int x, int y, int z) const { return s_.skyLight[static_cast<std::size_t>(SectionSnapshot::index(x, y, z))]; }
 
@@ -63,24 +104,22 @@ class Mesher {
     return static_cast<std::uint32_t>(block4) | static_cast<std::uint32_t>(sky4) << 6 | static_cast<std::uint32_t>(ao) << 12;
   }
   static std::uint32_t uv(int u, int v) { return static_cast<std::uint32_t>(u) | static_cast<std::uint32_t>(v) << 5; }
-  MeshData& layer(const BlockMeshTable::Entry& e) { return mesh_.layers[static_cast<std::size_t>(e.layer)]; }
+  std::vector<PackedVertex>& layer(const BlockMeshTable::Entry& e) { return scratch_[static_cast<std::size_t>(e.layer)]; }
 
-  bool faceVisible(BlockId id, const BlockMeshTable::Entry& e, BlockId neighbour) const {
-    const auto& n = table_[neighbour];
-    if (n.opaque) return false;
-    if (neighbour == id && e.cullSame) return false;
-    return true;
+  bool faceVisible(BlockId id, const BlockMeshTable::Entry& e, int neighbourIndex) const {
+    if (opaqueAt(neighbourIndex)) return false;
+    return !(e.cullSame && s_.blocks[static_cast<std::size_t>(neighbourIndex)] == id);
   }
 
   void cube(int x, int y, int z, BlockId id, const BlockMeshTable::Entry& e) {
     const bool liquid = e.shape == BlockShape::Liquid;
     // A liquid's surface sits 2/16 lower unless more of the same liquid is above it.
     const int top32 = liquid && block(x, y + 1, z) != id ? 28 : 32;
+    const int here = SectionSnapshot::index(x, y, z);
     for (int d = 0; d < 6; ++d) {
       const Vec& n = kFaces[d].n;
-      const BlockId neighbour = block(x + n.x, y + n.y, z + n.z);
       const bool loweredTop = d == static_cast<int>(Direction::Up) && top32 < 32;
-      if (!faceVisible(id, e, neighbour) && !loweredTop) continue;
+      if (!faceVisible(id, e, here + offset(n.x, n.y, n.z)) && !loweredTop) continue;
       face(x, y, z, d, e, top32);
     }
   }
@@ -88,41 +127,37 @@ class Mesher {
   // One full-block face with smooth light and ambient occlusion at each corner.
   void face(int x, int y, int z, int d, const BlockMeshTable::Entry& e, int top32) {
     const FaceFrame& f = kFaces[d];
-    const int fx = x + f.n.x, fy = y + f.n.y, fz = z + f.n.z;  // the cell in front of the face
+    const int front = SectionSnapshot::index(x + f.n.x, y + f.n.y, z + f.n.z);
+    const auto& bl = s_.blockLight;
+    const auto& sl = s_.skyLight;
+    const std::uint32_t mat = material(e, e.texture[static_cast<std::size_t>(d)], d);
     PackedVertex v[4];
     int ao[4];
     for (int c = 0; c < 4; ++c) {
-      const int su = kCornerSigns[c][0], sv = kCornerSigns[c][1];
-      const Vec a{su * f.t.x, su * f.t.y, su * f.t.z}, b{sv * f.b.x, sv * f.b.y, sv * f.b.z};
-      const bool side1 = opaque(fx + a.x, fy + a.y, fz + a.z), side2 = opaque(fx + b.x, fy + b.y, fz + b.z);
-      const bool corner = (side1 && side2) || opaque(fx + a.x + b.x, fy + a.y + b.y, fz + a.z + b.z);
+      const CornerCells& k = kCorners[d][c];
+      const int i1 = front + k.side1, i2 = front + k.side2, i3 = front + k.diagonal;
+      const bool side1 = opaqueAt(i1), side2 = opaqueAt(i2);
+      const bool corner = (side1 && side2) || opaqueAt(i3);
       ao[c] = side1 && side2 ? 0 : 3 - (side1 + side2 + corner);
       // Smooth light: the front cell always counts (the face is visible, so it is not opaque).
-      int blockSum = blockLight(fx, fy, fz), skySum = skyLight(fx, fy, fz), count = 1;
-      if (!side1) blockSum += blockLight(fx + a.x, fy + a.y, fz + a.z), skySum += skyLight(fx + a.x, fy + a.y, fz + a.z), ++count;
-      if (!side2) blockSum += blockLight(fx + b.x, fy + b.y, fz + b.z), skySum += skyLight(fx + b.x, fy + b.y, fz + b.z), ++count;
-      if (!corner) {
-        blockSum += blockLight(fx + a.x + b.x, fy + a.y + b.y, fz + a.z + b.z);
-        skySum += skyLight(fx + a.x + b.x, fy + a.y + b.y, fz + a.z + b.z);
-        ++count;
-      }
-      // Corner position in 1/32 block: centre + n/2 + t/2 + b/2.
-      const int px = x * 32 + 16 + 16 * (f.n.x + a.x + b.x), pz = z * 32 + 16 + 16 * (f.n.z + a.z + b.z);
-      int py = y * 32 + 16 + 16 * (f.n.y + a.y + b.y);
-      if (py == y * 32 + 32) py = y * 32 + top32;  // a lowered liquid surface
-      v[c] = {PackedVertex::packPosition(px, py, pz), material(e, e.texture[static_cast<std::size_t>(d)], d),
-              light4((blockSum * 4 + count / 2) / count, (skySum * 4 + count / 2) / count, ao[c]),
-              uv(su > 0 ? 16 : 0, sv > 0 ? 0 : 16)};
+      int blockSum = bl[static_cast<std::size_t>(front)], skySum = sl[static_cast<std::size_t>(front)], count = 1;
+      if (!side1) blockSum += bl[static_cast<std::size_t>(i1)], skySum += sl[static_cast<std::size_t>(i1)], ++count;
+      if (!side2) blockSum += bl[static_cast<std::size_t>(i2)], skySum += sl[static_cast<std::size_t>(i2)], ++count;
+      if (!corner) blockSum += bl[static_cast<std::size_t>(i3)], skySum += sl[static_cast<std::size_t>(i3)], ++count;
+      int py = y * 32 + k.y32;
+      if (k.y32 == 32) py = y * 32 + top32;  // a lowered liquid surface
+      v[c] = {PackedVertex::packPosition(x * 32 + k.x32, py, z * 32 + k.z32), mat,
+              light4(kAverage4[count][blockSum], kAverage4[count][skySum], ao[c]), k.uv};
     }
     emit(layer(e), v, ao[0] + ao[2] < ao[1] + ao[3]);
   }
 
   // Appends a quad; `flip` splits it along corners 1-3 instead of 0-2.
-  static void emit(MeshData& out, const PackedVertex v[4], bool flip) {
-    for (int i = 0; i < 4; ++i) out.vertices.push_back(v[(i + (flip ? 1 : 0)) % 4]);
+  static void emit(std::vector<PackedVertex>& out, const PackedVertex v[4], bool flip) {
+    for (int i = 0; i < 4; ++i) out.push_back(v[(i + (flip ? 1 : 0)) % 4]);
   }
 
-  void flatQuad(MeshData& out, const std::array<Vec, 4>& corners32, const BlockMeshTable::Entry& e, int face,
+  void flatQuad(std::vector<PackedVertex>& out, const std::array<Vec, 4>& corners32, const BlockMeshTable::Entry& e, int face,
                 const std::array<std::array<int, 2>, 4>& uvs, std::uint32_t light) {
     PackedVertex v[4];
     for (int c = 0; c < 4; ++c) {
@@ -140,7 +175,7 @@ class Mesher {
     const std::uint32_t light = ownLight(x, y, z);
     const std::array<std::array<int, 2>, 4> uvs = {{{0, 16}, {16, 16}, {16, 0}, {0, 0}}};
     const std::array<std::array<int, 2>, 4> back = {{{16, 16}, {0, 16}, {0, 0}, {16, 0}}};
-    MeshData& out = layer(e);
+    auto& out = layer(e);
     flatQuad(out, {{{x0, y0, z0}, {x1, y0, z1}, {x1, y1, z1}, {x0, y1, z0}}}, e, 6, uvs, light);
     flatQuad(out, {{{x1, y0, z1}, {x0, y0, z0}, {x0, y1, z0}, {x1, y1, z1}}}, e, 7, back, light);
     flatQuad(out, {{{x0, y0, z1}, {x1, y0, z0}, {x1, y1, z0}, {x0, y1, z1}}}, e, 8, uvs, light);
@@ -153,7 +188,7 @@ class Mesher {
     const std::uint32_t light = ownLight(x, y, z);
     const std::array<std::array<int, 2>, 4> side = {{{7, 16}, {9, 16}, {9, 6}, {7, 6}}};
     const std::array<std::array<int, 2>, 4> top = {{{7, 8}, {9, 8}, {9, 6}, {7, 6}}};
-    MeshData& out = layer(e);
+    auto& out = layer(e);
     flatQuad(out, {{{x0, y0, z1}, {x0, y0, z0}, {x0, y1, z0}, {x0, y1, z1}}}, e, 0, side, light);  // West
     flatQuad(out, {{{x1, y0, z0}, {x1, y0, z1}, {x1, y1, z1}, {x1, y1, z0}}}, e, 1, side, light);  // East
     flatQuad(out, {{{x1, y0, z0}, {x0, y0, z0}, {x0, y1, z0}, {x1, y1, z0}}}, e, 4, side, light);  // North
@@ -164,7 +199,11 @@ class Mesher {
   const SectionSnapshot& s_;
   const BlockMeshTable& table_;
   SectionMesh mesh_;
+  // Per thread, reused: meshing allocates only the final vertex arrays.
+  static thread_local std::array<std::vector<PackedVertex>, kMeshLayers> scratch_;
 };
+
+thread_local std::array<std::vector<PackedVertex>, kMeshLayers> Mesher::scratch_;
 
 MeshLayer layerOf(RenderLayer layer) {
   switch (layer) {

@@ -50,6 +50,7 @@ CaptureResult captureSection(const World& world, SectionPos pos, SectionSnapshot
       columns[dz + 1][dx + 1] = c;
     }
   const int y0 = kMinY + pos.section * 16;
+  const std::uint8_t* opaqueCube = world.blocks().opaqueCubes().data();
   for (int ly = -1; ly <= 16; ++ly) {
     const int y = y0 + ly;
     for (int lz = -1; lz <= 16; ++lz)
@@ -58,12 +59,15 @@ CaptureResult captureSection(const World& world, SectionPos pos, SectionSnapshot
         const Chunk* c = columns[(lz + 16) / 16][(lx + 16) / 16];
         if (!c || !inWorldHeight(y)) {
           out.blocks[static_cast<std::size_t>(i)] = kAir;
+          out.opaque[static_cast<std::size_t>(i)] = 0;
           out.blockLight[static_cast<std::size_t>(i)] = 0;
           out.skyLight[static_cast<std::size_t>(i)] = y >= kMaxY ? 15 : 0;
           continue;
         }
         const int cx = lx & 15, cz = lz & 15;
-        out.blocks[static_cast<std::size_t>(i)] = c->get(cx, y, cz);
+        const BlockId id = c->get(cx, y, cz);
+        out.blocks[static_cast<std::size_t>(i)] = id;
+        out.opaque[static_cast<std::size_t>(i)] = opaqueCube[id];
         const ChunkLight& light = c->light();
         const int s = sectionOf(y), cell = Section::index(cx, y & 15, cz);
         out.blockLight[static_cast<std::size_t>(i)] = light.lit ? light.block[static_cast<std::size_t>(s)].get(cell) : 0;

@@ -21,6 +21,7 @@ class SectionSnapshot {
   SectionPos pos;
   std::array<BlockId, kSide * kSide * kSide> blocks;
   std::array<std::uint8_t, kSide * kSide * kSide> blockLight, skyLight;
+  std::array<std::uint8_t, kSide * kSide * kSide> opaque;  // 1: an opaque cube (BlockRegistry::opaqueCubes)
 };
 
 enum class CaptureResult { Captured, Empty, Buried };

@@ -128,6 +128,7 @@ BlockRegistry BlockRegistry::fromJson(std::string_view text, const std::string& 
       }
       registry.opacity_.push_back(type.opacity);
       registry.emission_.push_back(type.emission);
+      registry.opaqueCube_.push_back(type.isOpaqueCube() ? 1 : 0);
       registry.types_.push_back(std::move(type));
     }
     if (registry.types_.empty()) throw Error("\"blocks\" is empty (air must come first)");

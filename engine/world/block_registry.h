@@ -27,12 +27,15 @@ class BlockRegistry {
   // Per-id tables for hot loops (light, meshing): one byte each, indexed by BlockId.
   const std::vector<std::uint8_t>& opacities() const { return opacity_; }
   const std::vector<std::uint8_t>& emissions() const { return emission_; }
+  // 1 where the block is an opaque cube (hides neighbouring faces, darkens corners).
+  const std::vector<std::uint8_t>& opaqueCubes() const { return opaqueCube_; }
 
  private:
   std::vector<BlockType> types_;
   std::unordered_map<std::string, BlockId> byName_;
   std::vector<std::uint8_t> opacity_;
   std::vector<std::uint8_t> emission_;
+  std::vector<std::uint8_t> opaqueCube_;
 };
 
 }  // namespace terrasol

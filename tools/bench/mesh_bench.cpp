@@ -1,0 +1,104 @@
+// Meshing benchmarks, single thread, per section: taking the snapshot plus meshing it. Counters:
+// ns_per_quad (time / quads produced) and bytes_per_vertex.
+
+#include <benchmark/benchmark.h>
+
+#include "core/paths.h"
+#include "light/light_engine.h"
+#include "mesh/mesher.h"
+#include "world/generator.h"
+#include "world/terrain_generator.h"
+
+namespace terrasol {
+namespace {
+
+const BlockRegistry& blocks() {
+  static const BlockRegistry registry = BlockRegistry::fromFile(resourcePackDir() / "default" / "blocks.json");
+  return registry;
+}
+
+// A lit 3 x 3 chunk terrain world around the origin.
+struct Terrain {
+  Terrain() : world(blocks()), light(world), table(blocks(), [](BlockId id, int f) { return static_cast<std::uint16_t>(id * 6 + f); }) {
+    gen = makeGenerator({"terrain", 1, {}}, blocks());
+    for (int z = -1; z <= 1; ++z)
+      for (int x = -1; x <= 1; ++x) {
+        auto c = std::make_unique<Chunk>(ChunkPos{x, z});
+        gen->generate(*c);
+        world.insertChunk(std::move(c));
+        light.chunkLoaded({x, z});
+      }
+  }
+  World world;
+  LightEngine light;
+  BlockMeshTable table;
+  std::unique_ptr<ChunkGenerator> gen;
+};
+
+void meshBenchmark(benchmark::State& state, Terrain& t, SectionPos section, CaptureResult expected) {
+  SectionSnapshot snapshot;
+  std::size_t quads = 0;
+  for (auto _ : state) {
+    const CaptureResult r = captureSection(t.world, section, snapshot);
+    if (r != expected) {
+      state.SkipWithError("the section is not the kind this benchmark wants");
+      return;
+    }
+    if (r == CaptureResult::Captured) {
+      const SectionMesh mesh = meshSection(snapshot, t.table);
+      quads = mesh.quads();
+      benchmark::DoNotOptimize(mesh);
+    }
+  }
+  state.counters["quads"] = static_cast<double>(quads);
+  if (quads > 0) {
+    state.counters["ns_per_quad"] = benchmark::Counter(static_cast<double>(quads) * static_cast<double>(state.iterations()),
+                                                       benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  }
+  state.counters["bytes_per_vertex"] = sizeof(PackedVertex);
+}
+
+// The section holding the ground at the centre of a chunk, on land.
+void BM_MeshSurface(benchmark::State& state) {
+  Terrain t;
+  meshBenchmark(state, t, {0, sectionOf(t.gen->surfaceHeight(8, 8)), 0}, CaptureResult::Captured);
+}
+BENCHMARK(BM_MeshSurface)->Unit(benchmark::kMicrosecond);
+
+// The most cave-riddled underground section of the centre chunk (the most faces).
+void BM_MeshCave(benchmark::State& state) {
+  Terrain t;
+  int best = 0;
+  std::size_t most = 0;
+  for (int s = 1; s < sectionOf(t.gen->surfaceHeight(8, 8)) - 1; ++s) {
+    SectionSnapshot snapshot;
+    if (captureSection(t.world, {0, s, 0}, snapshot) != CaptureResult::Captured) continue;
+    const std::size_t quads = meshSection(snapshot, t.table).quads();
+    if (quads > most) most = quads, best = s;
+  }
+  meshBenchmark(state, t, {0, best, 0}, CaptureResult::Captured);
+}
+BENCHMARK(BM_MeshCave)->Unit(benchmark::kMicrosecond);
+
+void BM_MeshEmpty(benchmark::State& state) {
+  Terrain t;
+  meshBenchmark(state, t, {0, kSectionCount - 1, 0}, CaptureResult::Empty);
+}
+BENCHMARK(BM_MeshEmpty)->Unit(benchmark::kMicrosecond);
+
+// Solid stone with stone all around (a flat world's deep layers).
+void BM_MeshBuried(benchmark::State& state) {
+  Terrain t;
+  const auto flat = makeGenerator({"flat", 0, parseFlatLayers("bedrock,100*stone", blocks())}, blocks());
+  for (int z = -1; z <= 1; ++z)
+    for (int x = -1; x <= 1; ++x) {
+      auto c = std::make_unique<Chunk>(ChunkPos{x + 10, z});
+      flat->generate(*c);
+      t.world.insertChunk(std::move(c));
+    }
+  meshBenchmark(state, t, {10, sectionOf(48), 0}, CaptureResult::Buried);
+}
+BENCHMARK(BM_MeshBuried)->Unit(benchmark::kMicrosecond);
+
+}  // namespace
+}  // namespace terrasol
