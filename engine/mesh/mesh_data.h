@@ -40,6 +40,7 @@ struct PackedVertex {
   int ao() const { return static_cast<int>((light >> 12) & 3); }
   int u() const { return static_cast<int>(uv & 31); }
   int v() const { return static_cast<int>((uv >> 5) & 31); }
+  friend bool operator==(const PackedVertex&, const PackedVertex&) = default;
 };
 static_assert(sizeof(PackedVertex) == 16, "the G-buffer pass expects 16-byte vertices");
 
