@@ -1,5 +1,7 @@
 #include "mesh/mesher.h"
 
+#include <bit>
+
 namespace terrasol {
 namespace {
 
@@ -64,9 +66,24 @@ class Mesher {
   }
 
   SectionMesh run() {
+    buildOpaqueRows();
     for (int y = 0; y < 16; ++y)
-      for (int z = 0; z < 16; ++z)
-        for (int x = 0; x < 16; ++x) {
+      for (int z = 0; z < 16; ++z) {
+        // Opaque cubes by bit arithmetic on the row masks: a face shows where the neighbour is not opaque.
+        const std::uint32_t self = row(y, z) >> 1 & 0xFFFF;
+        const std::uint32_t visible[6] = {
+            self & ~(row(y, z) & 0xFFFF),       self & ~(row(y, z) >> 2 & 0xFFFF),
+            self & ~(row(y - 1, z) >> 1 & 0xFFFF), self & ~(row(y + 1, z) >> 1 & 0xFFFF),
+            self & ~(row(y, z - 1) >> 1 & 0xFFFF), self & ~(row(y, z + 1) >> 1 & 0xFFFF),
+        };
+        for (int d = 0; d < 6; ++d)
+          for (std::uint32_t bits = visible[d]; bits != 0; bits &= bits - 1) {
+            const int x = std::countr_zero(bits);
+            face(x, y, z, d, table_[block(x, y, z)], 32);
+          }
+        // Everything else that is not air, cell by cell.
+        for (std::uint32_t bits = ~self & 0xFFFF; bits != 0; bits &= bits - 1) {
+          const int x = std::countr_zero(bits);
           const BlockId id = block(x, y, z);
           if (id == kAir) continue;
           const auto& e = table_[id];
@@ -78,6 +95,7 @@ class Mesher {
             case BlockShape::None: break;
           }
         }
+      }
     // One exact-size copy per layer: the scratch buffers keep their capacity between sections.
     for (int l = 0; l < kMeshLayers; ++l) {
       mesh_.layers[static_cast<std::size_t>(l)].vertices.assign(scratch_[static_cast<std::size_t>(l)].begin(),
@@ -87,6 +105,18 @@ class Mesher {
   }
 
  private:
+  // Row masks of opaque cells, bit x + 1 for x in -1..16, for y and z in -1..16.
+  void buildOpaqueRows() {
+    for (int y = -1; y <= 16; ++y)
+      for (int z = -1; z <= 16; ++z) {
+        const std::uint8_t* cells = &s_.opaque[static_cast<std::size_t>(SectionSnapshot::index(-1, y, z))];
+        std::uint32_t mask = 0;
+        for (int i = 0; i < SectionSnapshot::kSide; ++i) mask |= static_cast<std::uint32_t>(cells[i]) << i;
+        rows_[static_cast<std::size_t>((y + 1) * SectionSnapshot::kSide + z + 1)] = mask;
+      }
+  }
+  std::uint32_t row(int y, int z) const { return rows_[static_cast<std::size_t>((y + 1) * SectionSnapshot::kSide + z + 1)]; }
+
   BlockId block(int x, int y, int z) const { return s_.blocks[static_cast<std::size_t>(SectionSnapshot::index(x, y, z))]; }
   bool opaqueAt(int i) const { return s_.opaque[static_cast<std::size_t>(i)] != 0; }
   int blockLight(int x, int y, int z) const { return s_.blockLight[static_cast<std::size_t>(SectionSnapshot::index(x, y, z))]; }
@@ -199,6 +229,7 @@ class Mesher {
   const SectionSnapshot& s_;
   const BlockMeshTable& table_;
   SectionMesh mesh_;
+  std::array<std::uint32_t, SectionSnapshot::kSide * SectionSnapshot::kSide> rows_;
   // Per thread, reused: meshing allocates only the final vertex arrays.
   static thread_local std::array<std::vector<PackedVertex>, kMeshLayers> scratch_;
 };

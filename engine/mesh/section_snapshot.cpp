@@ -1,5 +1,7 @@
 #include "mesh/section_snapshot.h"
 
+#include <algorithm>
+
 namespace terrasol {
 namespace {
 
@@ -31,6 +33,40 @@ bool buried(const World& world, const Chunk& chunk, SectionPos pos) {
   return true;
 }
 
+// Copies `count` cells along x, from local (x0, y, z) of `chunk`, to `out` starting at index `dst`.
+// Outside the world or without a chunk: air, no light (sky 15 above the world).
+void copyRun(const Chunk* chunk, int y, int z, int x0, int count, const std::uint8_t* opaqueCube,
+             SectionSnapshot& out, int dst) {
+  const auto d = static_cast<std::size_t>(dst);
+  if (!chunk || !inWorldHeight(y)) {
+    std::fill_n(&out.blocks[d], count, kAir);
+    std::fill_n(&out.opaque[d], count, std::uint8_t{0});
+    std::fill_n(&out.blockLight[d], count, std::uint8_t{0});
+    std::fill_n(&out.skyLight[d], count, static_cast<std::uint8_t>(y >= kMaxY ? 15 : 0));
+    return;
+  }
+  const int s = sectionOf(y), first = Section::index(x0, y & 15, z);
+  const Section& section = chunk->section(s);
+  if (const auto* dense = section.blocks()) {
+    std::copy_n(dense->data() + first, count, &out.blocks[d]);
+  } else {
+    std::fill_n(&out.blocks[d], count, section.uniformBlock());
+  }
+  for (int i = 0; i < count; ++i) out.opaque[d + static_cast<std::size_t>(i)] = opaqueCube[out.blocks[d + static_cast<std::size_t>(i)]];
+  const ChunkLight& light = chunk->light();
+  if (!light.lit) {
+    std::fill_n(&out.blockLight[d], count, std::uint8_t{0});
+    std::fill_n(&out.skyLight[d], count, std::uint8_t{0});
+    return;
+  }
+  const NibbleArray& block = light.block[static_cast<std::size_t>(s)];
+  const NibbleArray& sky = light.sky[static_cast<std::size_t>(s)];
+  for (int i = 0; i < count; ++i) {
+    out.blockLight[d + static_cast<std::size_t>(i)] = block.get(first + i);
+    out.skyLight[d + static_cast<std::size_t>(i)] = sky.get(first + i);
+  }
+}
+
 }  // namespace
 
 CaptureResult captureSection(const World& world, SectionPos pos, SectionSnapshot& out) {
@@ -45,34 +81,18 @@ CaptureResult captureSection(const World& world, SectionPos pos, SectionSnapshot
   out.pos = pos;
   const Chunk* columns[3][3];
   for (int dz = -1; dz <= 1; ++dz)
-    for (int dx = -1; dx <= 1; ++dx) {
-      const Chunk* c = world.chunk({pos.x + dx, pos.z + dz});
-      columns[dz + 1][dx + 1] = c;
-    }
-  const int y0 = kMinY + pos.section * 16;
+    for (int dx = -1; dx <= 1; ++dx) columns[dz + 1][dx + 1] = world.chunk({pos.x + dx, pos.z + dz});
   const std::uint8_t* opaqueCube = world.blocks().opaqueCubes().data();
+  const int y0 = kMinY + pos.section * 16;
   for (int ly = -1; ly <= 16; ++ly) {
     const int y = y0 + ly;
-    for (int lz = -1; lz <= 16; ++lz)
-      for (int lx = -1; lx <= 16; ++lx) {
-        const int i = SectionSnapshot::index(lx, ly, lz);
-        const Chunk* c = columns[(lz + 16) / 16][(lx + 16) / 16];
-        if (!c || !inWorldHeight(y)) {
-          out.blocks[static_cast<std::size_t>(i)] = kAir;
-          out.opaque[static_cast<std::size_t>(i)] = 0;
-          out.blockLight[static_cast<std::size_t>(i)] = 0;
-          out.skyLight[static_cast<std::size_t>(i)] = y >= kMaxY ? 15 : 0;
-          continue;
-        }
-        const int cx = lx & 15, cz = lz & 15;
-        const BlockId id = c->get(cx, y, cz);
-        out.blocks[static_cast<std::size_t>(i)] = id;
-        out.opaque[static_cast<std::size_t>(i)] = opaqueCube[id];
-        const ChunkLight& light = c->light();
-        const int s = sectionOf(y), cell = Section::index(cx, y & 15, cz);
-        out.blockLight[static_cast<std::size_t>(i)] = light.lit ? light.block[static_cast<std::size_t>(s)].get(cell) : 0;
-        out.skyLight[static_cast<std::size_t>(i)] = light.lit ? light.sky[static_cast<std::size_t>(s)].get(cell) : 0;
-      }
+    for (int lz = -1; lz <= 16; ++lz) {
+      // Each row is three runs: one cell from the west chunk, 16 from this column, one from the east.
+      const int row = SectionSnapshot::index(-1, ly, lz);
+      copyRun(columns[(lz + 16) / 16][0], y, lz & 15, 15, 1, opaqueCube, out, row);
+      copyRun(columns[(lz + 16) / 16][1], y, lz & 15, 0, 16, opaqueCube, out, row + 1);
+      copyRun(columns[(lz + 16) / 16][2], y, lz & 15, 0, 1, opaqueCube, out, row + 17);
+    }
   }
   return CaptureResult::Captured;
 }
