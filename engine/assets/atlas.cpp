@@ -88,7 +88,11 @@ Atlas buildAtlas(const std::vector<LoadedTexture>& textures) {
       const Image a = scaleTo(t.albedo[f], atlas.tileSize);
       entry.cutout = entry.cutout || isCutout(a);
       placeTile(albedo, sx, sy, a);
-      placeTile(normal, sx, sy, scaleTo(t.normal[f], atlas.tileSize));
+      Image n = scaleTo(t.normal[f], atlas.tileSize);
+      if (t.openGlNormals) {  // the atlas holds LabPBR's DirectX convention: green points down
+        for (std::size_t i = 1; i < n.rgba.size(); i += 4) n.rgba[i] = static_cast<std::uint8_t>(255 - n.rgba[i]);
+      }
+      placeTile(normal, sx, sy, n);
       placeTile(specular, sx, sy, scaleTo(t.specular[f], atlas.tileSize));
     }
     for (int f = 0; f < entry.frames; ++f) cutoutTiles.push_back(entry.cutout);

@@ -134,6 +134,10 @@ class ZipSource final : public PackSource {
 
 }  // namespace
 
+void PackSource::throwMissing(const std::string& path) const {
+  throw Error(displayName(path) + ": cannot be read (missing, or a name that leaves the pack)");
+}
+
 std::unique_ptr<PackSource> PackSource::open(const std::filesystem::path& path) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec)) return std::make_unique<FolderSource>(path);

@@ -24,6 +24,13 @@ class PackSource {
   // The file's bytes, or nothing when the pack has no such file. Throws Error when it exists but
   // cannot be read or is too large.
   virtual std::optional<std::vector<std::uint8_t>> read(const std::string& path) const = 0;
+  // The file's bytes; throws Error naming it when it is missing or unreadable.
+  std::vector<std::uint8_t> require(const std::string& path) const {
+    auto bytes = read(path);
+    if (!bytes) throwMissing(path);
+    return std::move(*bytes);
+  }
+
   // Names of the files directly inside `dir` (no trailing '/'), sorted.
   virtual std::vector<std::string> list(const std::string& dir) const = 0;
 
@@ -32,6 +39,7 @@ class PackSource {
   virtual std::string displayName(const std::string& path) const = 0;
 
  protected:
+  [[noreturn]] void throwMissing(const std::string& path) const;
   explicit PackSource(std::filesystem::path location) : location_(std::move(location)) {}
 
  private:

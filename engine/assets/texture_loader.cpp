@@ -56,13 +56,13 @@ Companion loadCompanion(const ResourcePack& pack, const std::string& file, const
   if (!path) return c;
   const std::string shown = pack.files().displayName(*path);
   try {
-    const Image image = decodeImage(*pack.files().read(*path), shown, kTextureLimits);
+    const Image image = decodeImage(pack.files().require(*path), shown, kTextureLimits);
     const int frames = static_cast<int>(base.albedo.size());
     const int fw = base.albedo[0].width, fh = base.albedo[0].height;
     std::vector<Image> split;
     std::optional<Animation> own;
     if (const auto meta = pack.blockTexture(file + ".mcmeta")) {
-      own = parseAnimation(text(*pack.files().read(*meta)), image.width, image.height, pack.files().displayName(*meta));
+      own = parseAnimation(text(pack.files().require(*meta)), image.width, image.height, pack.files().displayName(*meta));
     }
     if (own) {
       // Its own strip layout; frame i of the texture uses frame i of the map when the counts match.
@@ -119,9 +119,9 @@ LoadedTexture loadBlockTexture(const PackStack& packs, const std::vector<std::st
     t.source = pack.files().displayName(found->path);
     t.openGlNormals = pack.info().openGlNormals;
     try {
-      const Image image = decodeImage(*pack.files().read(found->path), t.source, kTextureLimits);
+      const Image image = decodeImage(pack.files().require(found->path), t.source, kTextureLimits);
       if (const auto meta = pack.blockTexture(used + ".png.mcmeta")) {
-        t.animation = parseAnimation(text(*pack.files().read(*meta)), image.width, image.height,
+        t.animation = parseAnimation(text(pack.files().require(*meta)), image.width, image.height,
                                      pack.files().displayName(*meta));
       }
       if (t.animation) {

@@ -21,8 +21,8 @@ int positiveInt(const json& object, const char* key, int fallback, const std::st
 
 }  // namespace
 
-int Animation::totalTicks() const {
-  int total = 0;
+std::int64_t Animation::totalTicks() const {
+  std::int64_t total = 0;
   for (const auto& f : sequence) total += f.ticks;
   return total;
 }
@@ -92,8 +92,10 @@ std::optional<Animation> parseAnimation(const std::string& text, int width, int 
       anim.sequence.push_back(frame);
     }
   } else {
+    if (anim.stripFrames > 65536) throw Error(where + ": more than 65536 frames");
     for (int i = 0; i < anim.stripFrames; ++i) anim.sequence.push_back({i, frametime});
   }
+  if (anim.sequence.size() > 65536) throw Error(where + ".frames has more than 65536 entries");
   return anim;
 }
 

@@ -22,7 +22,7 @@ struct Animation {
   int stripFrames = 0;  // frames in the strip
   bool interpolate = false;
   std::vector<AnimationFrame> sequence;  // the order they play in
-  int totalTicks() const;
+  std::int64_t totalTicks() const;
 };
 
 // The frame to show after `ticks` game ticks (20 a second): `frame` blends towards `next` by `blend`

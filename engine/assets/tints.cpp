@@ -19,11 +19,11 @@ BiomeTints loadTints(const PackStack& packs, std::vector<PackProblem>& problems,
   BiomeTints tints{kDefaultGrass, kDefaultFoliage, kDefaultWater};
   auto fromMap = [&](const char* name, glm::vec3& out) {
     const std::string path = std::string("assets/minecraft/textures/colormap/") + name;
-    const auto found = packs.find(path);
-    if (!found) return;
-    const std::string shown = found->pack->files().displayName(path);
     try {
-      out = sampleColormap(decodeImage(*found->pack->files().read(path), shown, kTextureLimits), temperature, downfall);
+      const auto found = packs.find(path);
+      if (!found) return;
+      const std::string shown = found->pack->files().displayName(path);
+      out = sampleColormap(decodeImage(found->pack->files().require(path), shown, kTextureLimits), temperature, downfall);
     } catch (const Error& e) {
       problems.push_back({PackProblem::Severity::Error, e.what()});
     }

@@ -1,6 +1,10 @@
 #include "mesh/mesh_scheduler.h"
 
 #include <algorithm>
+#include <exception>
+#include <string>
+
+#include "core/log.h"
 
 namespace terrasol {
 
@@ -89,7 +93,12 @@ void MeshScheduler::work() {
       jobs_.pop_front();
       ++working_;
     }
-    Done done{meshSection(job->snapshot, table_), job->generation};
+    Done done{SectionMesh{job->snapshot.pos, {}}, job->generation};
+    try {
+      done.mesh = meshSection(job->snapshot, table_);
+    } catch (const std::exception& e) {  // out of memory: an empty mesh, and the game goes on
+      logError(std::string("meshing failed: ") + e.what());
+    }
     std::lock_guard lock(mutex_);
     done_.push_back(std::move(done));
     --working_;

@@ -79,7 +79,8 @@ class Mesher {
         for (int d = 0; d < 6; ++d)
           for (std::uint32_t bits = visible[d]; bits != 0; bits &= bits - 1) {
             const int x = std::countr_zero(bits);
-            face(x, y, z, d, table_[block(x, y, z)], 32);
+            const Vec& n = kFaces[d].n;
+            face(x, y, z, d, table_[block(x, y, z)], 32, SectionSnapshot::index(x + n.x, y + n.y, z + n.z));
           }
         // Everything else that is not air, cell by cell.
         for (std::uint32_t bits = ~self & 0xFFFF; bits != 0; bits &= bits - 1) {
@@ -149,15 +150,16 @@ class Mesher {
     for (int d = 0; d < 6; ++d) {
       const Vec& n = kFaces[d].n;
       const bool loweredTop = d == static_cast<int>(Direction::Up) && top32 < 32;
-      if (!faceVisible(id, e, here + offset(n.x, n.y, n.z)) && !loweredTop) continue;
-      face(x, y, z, d, e, top32);
+      const bool visible = faceVisible(id, e, here + offset(n.x, n.y, n.z));
+      if (!visible && !loweredTop) continue;
+      // A lowered surface under an opaque block is lit from the liquid's own cell, not the dark block.
+      face(x, y, z, d, e, top32, visible ? here + offset(n.x, n.y, n.z) : here);
     }
   }
 
   // One full-block face with smooth light and ambient occlusion at each corner.
-  void face(int x, int y, int z, int d, const BlockMeshTable::Entry& e, int top32) {
-    const FaceFrame& f = kFaces[d];
-    const int front = SectionSnapshot::index(x + f.n.x, y + f.n.y, z + f.n.z);
+  // `front`: the snapshot cell the face looks into, whose surroundings light its corners.
+  void face(int x, int y, int z, int d, const BlockMeshTable::Entry& e, int top32, int front) {
     const auto& bl = s_.blockLight;
     const auto& sl = s_.skyLight;
     const std::uint32_t mat = material(e, e.texture[static_cast<std::size_t>(d)], d);

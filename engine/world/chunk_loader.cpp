@@ -52,6 +52,11 @@ std::vector<std::unique_ptr<Chunk>> ChunkLoader::takeFinished() {
   return std::exchange(finished_, {});
 }
 
+std::vector<ChunkPos> ChunkLoader::takeFailed() {
+  std::lock_guard lock(mutex_);
+  return std::exchange(failed_, {});
+}
+
 std::size_t ChunkLoader::pending() const {
   std::lock_guard lock(mutex_);
   return queue_.size() + inProgress_;
@@ -74,17 +79,24 @@ void ChunkLoader::work() {
       ++inProgress_;
     }
     std::unique_ptr<Chunk> chunk;
+    bool failed = false;
     try {
       if (storage_) chunk = storage_->load(pos);
+      if (!chunk) {
+        chunk = std::make_unique<Chunk>(pos);
+        generator_.generate(*chunk);
+      }
     } catch (const std::exception& e) {
-      logError(e.what());  // unreadable region: play on with the generated chunk
-    }
-    if (!chunk) {
-      chunk = std::make_unique<Chunk>(pos);
-      generator_.generate(*chunk);
+      // Never generate in place of a chunk whose save could not be read: a later edit would bury it.
+      logError(e.what());
+      failed = true;
     }
     std::lock_guard lock(mutex_);
-    finished_.push_back(std::move(chunk));
+    if (failed) {
+      failed_.push_back(pos);
+    } else {
+      finished_.push_back(std::move(chunk));
+    }
     --inProgress_;
   }
 }

@@ -32,6 +32,8 @@ class ChunkLoader {
   void cancelIf(const std::function<bool(ChunkPos)>& drop);
   // Chunks finished since the last call, in completion order.
   std::vector<std::unique_ptr<Chunk>> takeFinished();
+  // Chunks that could not be loaded (their region is unreadable) since the last call; ask again later.
+  std::vector<ChunkPos> takeFailed();
   // Requests queued or in progress.
   std::size_t pending() const;
 
@@ -44,6 +46,7 @@ class ChunkLoader {
   std::condition_variable wake_;
   std::vector<ChunkPos> queue_;
   std::vector<std::unique_ptr<Chunk>> finished_;
+  std::vector<ChunkPos> failed_;
   ChunkPos center_;
   std::size_t inProgress_ = 0;
   bool stop_ = false;

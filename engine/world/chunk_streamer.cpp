@@ -1,6 +1,10 @@
 #include "world/chunk_streamer.h"
 
+#include "core/log.h"
+
 #include <cstdlib>
+#include <exception>
+#include <string>
 #include <utility>
 
 namespace terrasol {
@@ -22,8 +26,12 @@ std::vector<ChunkPos> ChunkStreamer::update(ChunkPos center) {
     requested_.erase(pos);
     if (chebyshev(pos, center) > radius_ + 1 || world_.isLoaded(pos)) continue;  // no longer wanted
     world_.insertChunk(std::move(chunk));
+    if (loaded_) loaded_(pos);
     added.push_back(pos);
   }
+
+  // Unreadable chunks are asked for again on a later update (the region may come back).
+  for (ChunkPos pos : loader_.takeFailed()) requested_.erase(pos);
 
   // Unload what is out of range; edited chunks are saved first.
   std::vector<ChunkPos> far;
@@ -31,8 +39,18 @@ std::vector<ChunkPos> ChunkStreamer::update(ChunkPos center) {
     if (chebyshev(c.pos(), center) > radius_ + 1) far.push_back(c.pos());
   });
   for (ChunkPos pos : far) {
-    auto chunk = world_.removeChunk(pos);
-    if (storage_ && chunk->modified()) storage_->save(*chunk);
+    Chunk* chunk = world_.chunk(pos);
+    if (storage_ && chunk->modified()) {
+      try {
+        storage_->save(*chunk);  // before removing: a failed save must not lose the edits
+        chunk->setModified(false);
+      } catch (const std::exception& e) {
+        logError(std::string("keeping an unsaved chunk loaded: ") + e.what());
+        continue;
+      }
+    }
+    if (unloading_) unloading_(pos);
+    world_.removeChunk(pos);
   }
   loader_.cancelIf([&](ChunkPos pos) {
     const bool drop = chebyshev(pos, center) > radius_ + 1;

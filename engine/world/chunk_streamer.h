@@ -3,6 +3,7 @@
 // ones to the World, and saves (when edited) and unloads those that fall out of range, so memory
 // stays bounded however far the player travels. Main thread only.
 
+#include <functional>
 #include <unordered_set>
 #include <vector>
 
@@ -17,7 +18,15 @@ class ChunkStreamer {
   // are unloaded (the margin keeps a player walking along a border from reloading chunks).
   ChunkStreamer(World& world, const ChunkGenerator& generator, WorldStorage* storage, int threads, int radius);
 
-  // Call once a frame. Never blocks on generation. Returns the chunks added to the world.
+  // Called right after a chunk is added to the World, and right before one is removed (e.g. the
+  // light engine's chunkLoaded / chunkUnloading, the mesher's dirty marks).
+  void setHooks(std::function<void(ChunkPos)> loaded, std::function<void(ChunkPos)> unloading) {
+    loaded_ = std::move(loaded);
+    unloading_ = std::move(unloading);
+  }
+
+  // Call once a frame. Never blocks on generation. Returns the chunks added to the world. An edited
+  // chunk whose save fails stays loaded (the error is logged) and is tried again next time.
   std::vector<ChunkPos> update(ChunkPos center);
   // Saves every edited chunk (e.g. before quitting).
   void saveAll();
@@ -28,6 +37,7 @@ class ChunkStreamer {
  private:
   World& world_;
   WorldStorage* storage_;
+  std::function<void(ChunkPos)> loaded_, unloading_;
   int radius_;
   std::unordered_set<ChunkPos> requested_;
   ChunkLoader loader_;  // last: its workers stop before the rest is destroyed

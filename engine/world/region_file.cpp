@@ -235,7 +235,8 @@ bool RegionFile::compactIfWasteful() {
   if (size_ < (1u << 20) || liveBytes_ * 2 > size_) return false;
   // Copy live records into a new file, make it durable, then atomically put it in place.
   const std::filesystem::path tmp = path_.string() + ".tmp";
-  const int out = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  // Read-write: after the rename this descriptor is the region file, with no reopen that could fail.
+  const int out = ::open(tmp.c_str(), O_RDWR | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   if (out < 0) throw Error(locate(tmp, 0, "cannot create: " + errnoText()));
   std::unordered_map<int, Entry> moved;
   std::uint64_t offset = kHeaderSize;
@@ -254,13 +255,16 @@ bool RegionFile::compactIfWasteful() {
     std::filesystem::remove(tmp);
     throw Error(locate(tmp, 0, std::string("cannot compact: ") + e.what()));
   }
-  ::close(out);
-  std::filesystem::rename(tmp, path_);
+  std::error_code ec;
+  std::filesystem::rename(tmp, path_, ec);
+  if (ec) {
+    ::close(out);
+    std::filesystem::remove(tmp);
+    throw Error(locate(path_, 0, "cannot replace with the compacted file: " + ec.message()));
+  }
   syncDirectory(path_.parent_path());
-  const int newFd = ::open(path_.c_str(), O_RDWR | O_CLOEXEC);
-  if (newFd < 0) throw Error(locate(path_, 0, "cannot reopen after compaction: " + errnoText()));
   ::close(fd_);
-  fd_ = newFd;
+  fd_ = out;
   index_ = std::move(moved);
   size_ = liveBytes_ = offset;
   liveBytes_ -= kHeaderSize;

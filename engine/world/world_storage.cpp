@@ -15,6 +15,16 @@ WorldStorage::WorldStorage(std::filesystem::path dir, const BlockRegistry& block
 }
 
 RegionFile& WorldStorage::region(RegionPos pos) {
+  lastUse_[{pos.x, pos.z}] = ++useClock_;
+  if (!regions_.contains({pos.x, pos.z}) && regions_.size() >= kMaxOpenRegions) {
+    auto oldest = regions_.begin();
+    for (auto it = regions_.begin(); it != regions_.end(); ++it) {
+      if (lastUse_[it->first] < lastUse_[oldest->first]) oldest = it;
+    }
+    oldest->second->sync();
+    lastUse_.erase(oldest->first);
+    regions_.erase(oldest);
+  }
   auto& slot = regions_[{pos.x, pos.z}];
   if (!slot) {
     const auto path = dir_ / "region" / ("r." + std::to_string(pos.x) + "." + std::to_string(pos.z) + ".tsr");
@@ -42,10 +52,13 @@ std::unique_ptr<Chunk> WorldStorage::load(ChunkPos pos) {
     // Kept aside: a later save of this chunk would otherwise let compaction drop these bytes.
     const auto aside = std::filesystem::path(file.path().string() + ".corrupt") /
                        ("chunk_" + std::to_string(pos.x) + "_" + std::to_string(pos.z) + "_undecodable.bin");
-    std::filesystem::create_directories(aside.parent_path());
-    std::ofstream(aside, std::ios::binary)
-        .write(reinterpret_cast<const char*>(payload->data()), static_cast<std::streamsize>(payload->size()));
-    problems_.push_back(where + ": cannot decode (" + e.what() + "); bytes kept in " + aside.string());
+    std::error_code ec;
+    std::filesystem::create_directories(aside.parent_path(), ec);
+    std::ofstream out(aside, std::ios::binary);
+    out.write(reinterpret_cast<const char*>(payload->data()), static_cast<std::streamsize>(payload->size()));
+    const bool kept = !ec && out.good();
+    problems_.push_back(where + ": cannot decode (" + e.what() + ")" +
+                        (kept ? "; bytes kept in " + aside.string() : "; could not keep its bytes aside"));
     return nullptr;
   }
 }

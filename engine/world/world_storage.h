@@ -37,6 +37,11 @@ class WorldStorage {
 
  private:
   RegionFile& region(RegionPos pos);  // caller holds mutex_
+  // Open region files beyond this are closed, least recently used first (file descriptors and indexes
+  // stay bounded however far the player travels).
+  static constexpr std::size_t kMaxOpenRegions = 32;
+  std::uint64_t useClock_ = 0;
+  std::map<std::pair<int, int>, std::uint64_t> lastUse_;
 
   std::filesystem::path dir_;
   const BlockRegistry* blocks_;

@@ -55,6 +55,15 @@ TEST(Atlas, ThreeAlignedAtlasesWithMipsDownToOneTexelAndNoBleeding) {
   EXPECT_FLOAT_EQ((r.z - r.x) * static_cast<float>(a.albedo[0].width), 16.0f);
 }
 
+TEST(Atlas, OpenGlConventionNormalMapsAreFlippedToLabPbrs) {
+  LoadedTexture gl = texture("gl", solidImage(16, 16, 1, 1, 1), solidImage(16, 16, 127, 0, 255), solidImage(16, 16, 0, 0, 0, 0));
+  gl.openGlNormals = true;
+  LoadedTexture dx = texture("dx", solidImage(16, 16, 1, 1, 1), solidImage(16, 16, 127, 0, 255), solidImage(16, 16, 0, 0, 0, 0));
+  const Atlas a = buildAtlas({gl, dx});
+  EXPECT_EQ(a.normal[0].pixel(16, 16)[1], 255) << "OpenGL green up becomes DirectX green down";
+  EXPECT_EQ(a.normal[0].pixel(48, 16)[1], 0);
+}
+
 TEST(Atlas, PaddingRepeatsTheOppositeEdge) {
   Image gradient(16, 16);
   for (int y = 0; y < 16; ++y)

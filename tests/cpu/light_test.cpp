@@ -4,6 +4,11 @@
 #include <random>
 
 #include "light/light_engine.h"
+
+#include <chrono>
+#include <thread>
+
+#include "world/chunk_streamer.h"
 #include "support/reference_light.h"
 #include "support/world_support.h"
 #include "world/generator.h"
@@ -221,6 +226,28 @@ TEST(Light, RelightingASectionRepairsItAndChangesNothingCorrect) {
   EXPECT_NE(compareWithReference(w.world), "");
   w.light.relightSection(section);
   EXPECT_EQ(compareWithReference(w.world), "");
+}
+
+// The streamer tells the light engine before it removes a chunk and after it adds one, so light stays
+// exactly right while the player walks away and back.
+TEST(Light, StaysCorrectWhileChunksStreamInAndOut) {
+  World world(defaultBlocks());
+  LightEngine light(world);
+  const auto gen = makeGenerator({"terrain", 5, {}}, defaultBlocks());
+  ChunkStreamer streamer(world, *gen, nullptr, 2, 1);
+  streamer.setHooks([&](ChunkPos p) { light.chunkLoaded(p); }, [&](ChunkPos p) { light.chunkUnloading(p); });
+  auto settle = [&](ChunkPos center) {
+    for (int i = 0; i < 20000 && (streamer.update(center), streamer.pending() > 0); ++i) {
+      std::this_thread::sleep_for(std::chrono::microseconds(200));
+    }
+    streamer.update(center);
+  };
+  settle({0, 0});
+  if (auto change = world.setBlock({8, 120, 8}, defaultBlocks().id("glowstone"))) light.blockChanged(*change);
+  for (const ChunkPos c : {ChunkPos{2, 0}, ChunkPos{4, 1}, ChunkPos{1, 1}, ChunkPos{0, 0}}) {
+    settle(c);
+    ASSERT_EQ(compareWithReference(world), "") << "centre " << c.x << "," << c.z;
+  }
 }
 
 // 100 000 random edits, many on section and chunk borders, with chunks loading and unloading in

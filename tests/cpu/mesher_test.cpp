@@ -105,6 +105,20 @@ TEST(Mesher, WaterSurfacesSitLowerUnlessWaterIsAbove) {
   EXPECT_EQ(fullHeightLower, 0) << "the covered water has no top face";
 }
 
+TEST(Mesher, WaterUnderAStoneCeilingIsLitFromItself) {
+  MeshWorld w;
+  w.set({3, 70, 3}, "water");
+  w.set({3, 71, 3}, "stone");
+  const auto mesh = w.mesh();
+  const auto top = quadWithTexture(mesh.layers[static_cast<std::size_t>(MeshLayer::Translucent)],
+                                   defaultBlocks().id("water") * 6 + 3);
+  ASSERT_EQ(top.size(), 4u) << "the surface 2/16 below the stone still shows";
+  for (const auto& v : top) {
+    EXPECT_GT(v.skyLight4(), 0) << "not lit from the opaque block above";
+    EXPECT_GT(v.ao(), 0);
+  }
+}
+
 TEST(Mesher, PlantsTorchesAndTints) {
   MeshWorld w;
   w.set({3, 69, 3}, "grass_block");
