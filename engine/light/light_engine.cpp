@@ -126,59 +126,76 @@ void LightEngine::chunkLoaded(ChunkPos pos) {
 
   const light::ChunkWindow window(world_, {pos.x - 1 - kReach, pos.z - 1 - kReach},
                                   {pos.x + 1 + kReach, pos.z + 1 + kReach});
-  const int x0 = pos.minBlockX(), z0 = pos.minBlockZ();
   for (const LightChannel channel : {LightChannel::Block, LightChannel::Sky}) {
     Propagator p(window, channel, opacity_, emission_, decrease_, increase_, stats_, changed_);
-    Cell cell;
     if (channel == LightChannel::Block) {
-      // Every emitter starts at its emission.
-      for (int s = 0; s < kSectionCount; ++s) {
-        const Section& section = chunk->section(s);
-        light.emitters[static_cast<std::size_t>(s)] = 0;
-        if (section.isUniform() && emission_[section.uniformBlock()] == 0) continue;
-        for (int i = 0; i < Section::kVolume; ++i) {
-          const std::uint8_t e = emission_[section.at(i)];
-          if (e == 0) continue;
-          ++light.emitters[static_cast<std::size_t>(s)];
-          const int x = x0 + (i & 15), y = kMinY + s * 16 + (i >> 8), z = z0 + ((i >> 4) & 15);
-          p.locate(x, y, z, cell);
-          p.setLight(cell, e);
-          p.increase(x, y, z, e, kAllDirections);
-        }
-      }
+      seedEmitters(p, *chunk);
     } else {
-      // Open-sky cells next to a darker cell spread sky light from there.
-      const auto tops = spreadTops(world_, *chunk);
-      for (int i = 0; i < 256; ++i) {
-        const int x = x0 + (i & 15), z = z0 + (i >> 4), top = light.skyTop[static_cast<std::size_t>(i)];
-        for (int y = top + 1; y <= std::min(tops[static_cast<std::size_t>(i)], kMaxY - 1); ++y) {
-          p.increase(x, y, z, 15, kAllDirections);
-        }
-        if (top == kMaxY - 1 && p.locate(x, top, z, cell)) {  // a block in the top layer, lit from above
-          const std::uint8_t level = p.source(cell);
-          p.setLight(cell, level);
-          p.increase(x, top, z, level, kAllDirections);
-        }
-      }
+      seedOpenSky(p, *chunk);
     }
-    // Light already in the neighbours flows in across the borders.
-    for (const int d : kHorizontal) {
-      const BlockPos& o = kDirectionOffsets[d];
-      const Chunk* neighbour = world_.chunk({pos.x + o.x, pos.z + o.z});
-      if (!neighbour || !neighbour->light().lit) continue;
-      const auto toward = static_cast<std::uint8_t>(1 << light::opposite(d));
-      for (int s = 0; s < kSectionCount; ++s) {
-        const NibbleArray& layer = layerOf(neighbour->light(), channel, s);
-        if (layer.isUniform() && layer.uniformLevel() <= 1) continue;
-        for (int ly = 0; ly < 16; ++ly)
-          for (int a = 0; a < 16; ++a) {
-            const BlockPos c = faceCell(pos, d, a, kMinY + s * 16 + ly, 1);
-            const std::uint8_t level = layer.get(Section::index(c.x & 15, ly, c.z & 15));
-            if (level > 1) p.increase(c.x, c.y, c.z, level, toward);
-          }
-      }
-    }
+    seedFromNeighbours(p, pos, channel);
     p.run();
+  }
+}
+
+// Every emitter starts at its emission; the per-section emitter counts are rebuilt on the way.
+void LightEngine::seedEmitters(light::Propagator& p, Chunk& chunk) {
+  ChunkLight& light = chunk.light();
+  const int x0 = chunk.pos().minBlockX(), z0 = chunk.pos().minBlockZ();
+  Cell cell;
+  for (int s = 0; s < kSectionCount; ++s) {
+    const Section& section = chunk.section(s);
+    light.emitters[static_cast<std::size_t>(s)] = 0;
+    if (section.isUniform() && emission_[section.uniformBlock()] == 0) continue;
+    for (int i = 0; i < Section::kVolume; ++i) {
+      const std::uint8_t e = emission_[section.at(i)];
+      if (e == 0) continue;
+      ++light.emitters[static_cast<std::size_t>(s)];
+      const int x = x0 + (i & 15), y = kMinY + s * 16 + (i >> 8), z = z0 + ((i >> 4) & 15);
+      p.locate(x, y, z, cell);
+      p.setLight(cell, e);
+      p.increase(x, y, z, e, kAllDirections);
+    }
+  }
+}
+
+// Open-sky cells next to a darker cell spread sky light from there; a block in the top layer of the
+// world is lit from the sky above it.
+void LightEngine::seedOpenSky(light::Propagator& p, const Chunk& chunk) {
+  const ChunkLight& light = chunk.light();
+  const int x0 = chunk.pos().minBlockX(), z0 = chunk.pos().minBlockZ();
+  const auto tops = spreadTops(world_, chunk);
+  Cell cell;
+  for (int i = 0; i < 256; ++i) {
+    const int x = x0 + (i & 15), z = z0 + (i >> 4), top = light.skyTop[static_cast<std::size_t>(i)];
+    for (int y = top + 1; y <= std::min(tops[static_cast<std::size_t>(i)], kMaxY - 1); ++y) {
+      p.increase(x, y, z, 15, kAllDirections);
+    }
+    if (top == kMaxY - 1 && p.locate(x, top, z, cell)) {
+      const std::uint8_t level = p.source(cell);
+      p.setLight(cell, level);
+      p.increase(x, top, z, level, kAllDirections);
+    }
+  }
+}
+
+// Light already in the four neighbours flows in across the chunk's borders.
+void LightEngine::seedFromNeighbours(light::Propagator& p, ChunkPos pos, LightChannel channel) {
+  for (const int d : kHorizontal) {
+    const BlockPos& o = kDirectionOffsets[d];
+    const Chunk* neighbour = world_.chunk({pos.x + o.x, pos.z + o.z});
+    if (!neighbour || !neighbour->light().lit) continue;
+    const auto toward = static_cast<std::uint8_t>(1 << light::opposite(d));
+    for (int s = 0; s < kSectionCount; ++s) {
+      const NibbleArray& layer = layerOf(neighbour->light(), channel, s);
+      if (layer.isUniform() && layer.uniformLevel() <= 1) continue;
+      for (int ly = 0; ly < 16; ++ly)
+        for (int a = 0; a < 16; ++a) {
+          const BlockPos c = faceCell(pos, d, a, kMinY + s * 16 + ly, 1);
+          const std::uint8_t level = layer.get(Section::index(c.x & 15, ly, c.z & 15));
+          if (level > 1) p.increase(c.x, c.y, c.z, level, toward);
+        }
+    }
   }
 }
 
@@ -219,20 +236,8 @@ void LightEngine::blockChanged(const BlockChange& change) {
   if (sameLight || !chunk || !chunk->light().lit) return;
 
   ChunkLight& light = chunk->light();
-  const auto column = static_cast<std::size_t>(localOf(at.z) * 16 + localOf(at.x));
-  const int oldTop = light.skyTop[column];
-  int newTop = oldTop;
-  if (opacity_[change.after] > 0 && at.y > oldTop) newTop = at.y;
-  if (opacity_[change.after] == 0 && at.y == oldTop) {
-    newTop = kMinY - 1;
-    for (int y = at.y - 1; y >= kMinY; --y) {
-      if (opacity_[chunk->get(localOf(at.x), y, localOf(at.z))] > 0) {
-        newTop = y;
-        break;
-      }
-    }
-  }
-  light.skyTop[column] = static_cast<std::int16_t>(newTop);
+  const int oldTop = light.skyTop[static_cast<std::size_t>(localOf(at.z) * 16 + localOf(at.x))];
+  const int newTop = updateSkyTop(*chunk, change);
   auto& emitters = light.emitters[static_cast<std::size_t>(sectionOf(at.y))];
   emitters = static_cast<std::uint16_t>(emitters - (emission_[change.before] > 0) + (emission_[change.after] > 0));
 
@@ -240,36 +245,63 @@ void LightEngine::blockChanged(const BlockChange& change) {
   const light::ChunkWindow window(world_, {here.x - kReach, here.z - kReach}, {here.x + kReach, here.z + kReach});
   for (const LightChannel channel : {LightChannel::Block, LightChannel::Sky}) {
     Propagator p(window, channel, opacity_, emission_, decrease_, increase_, stats_, changed_);
-    Cell cell;
-    p.locate(at.x, at.y, at.z, cell);
-    const std::uint8_t before = p.light(cell), own = p.source(cell);
-    if (own != before) p.setLight(cell, own);
-    if (before > own) p.decrease(at.x, at.y, at.z, before, kAllDirections);
-    if (own > 0) p.increase(at.x, at.y, at.z, own, kAllDirections);
-    // The cell may now let more light in: its neighbours offer theirs.
-    for (int d = 0; d < 6; ++d) {
-      const BlockPos n = at.offset(kDirectionOffsets[d].x, kDirectionOffsets[d].y, kDirectionOffsets[d].z);
-      Cell near;
-      if (!p.locate(n.x, n.y, n.z, near)) continue;
-      const std::uint8_t level = p.light(near);
-      if (level > 1) p.increase(n.x, n.y, n.z, level, static_cast<std::uint8_t>(1 << light::opposite(d)));
-    }
-    if (channel == LightChannel::Sky) {
-      // The open sky column got longer (its cells gain their own 15) or shorter (they lose it).
-      for (int y = newTop + 1; y <= oldTop && y < kMaxY; ++y) {
-        if (y == at.y || !p.locate(at.x, y, at.z, cell)) continue;
-        p.setLight(cell, 15);
-        p.increase(at.x, y, at.z, 15, kAllDirections);
-      }
-      for (int y = oldTop + 1; y <= newTop; ++y) {
-        if (y == at.y || !p.locate(at.x, y, at.z, cell)) continue;
-        const std::uint8_t level = p.light(cell);
-        if (level == 0) continue;
-        p.setLight(cell, 0);
-        p.decrease(at.x, y, at.z, level, kAllDirections);
-      }
-    }
+    seedChangedCell(p, at);
+    if (channel == LightChannel::Sky) seedSkyColumn(p, at, oldTop, newTop);
     p.run();
+  }
+}
+
+// The column's highest block with opacity after the change (ChunkLight::skyTop), stored and returned.
+int LightEngine::updateSkyTop(Chunk& chunk, const BlockChange& change) {
+  const BlockPos& at = change.pos;
+  auto& top = chunk.light().skyTop[static_cast<std::size_t>(localOf(at.z) * 16 + localOf(at.x))];
+  int newTop = top;
+  if (opacity_[change.after] > 0 && at.y > top) newTop = at.y;
+  if (opacity_[change.after] == 0 && at.y == top) {
+    newTop = kMinY - 1;
+    for (int y = at.y - 1; y >= kMinY; --y) {
+      if (opacity_[chunk.get(localOf(at.x), y, localOf(at.z))] > 0) {
+        newTop = y;
+        break;
+      }
+    }
+  }
+  top = static_cast<std::int16_t>(newTop);
+  return newTop;
+}
+
+// The changed cell takes its own new level (removing light it can no longer hold), and its neighbours
+// offer theirs, since it may now let more light in.
+void LightEngine::seedChangedCell(light::Propagator& p, const BlockPos& at) {
+  Cell cell;
+  p.locate(at.x, at.y, at.z, cell);
+  const std::uint8_t before = p.light(cell), own = p.source(cell);
+  if (own != before) p.setLight(cell, own);
+  if (before > own) p.decrease(at.x, at.y, at.z, before, kAllDirections);
+  if (own > 0) p.increase(at.x, at.y, at.z, own, kAllDirections);
+  for (int d = 0; d < 6; ++d) {
+    const BlockPos n = at.offset(kDirectionOffsets[d].x, kDirectionOffsets[d].y, kDirectionOffsets[d].z);
+    Cell near;
+    if (!p.locate(n.x, n.y, n.z, near)) continue;
+    const std::uint8_t level = p.light(near);
+    if (level > 1) p.increase(n.x, n.y, n.z, level, static_cast<std::uint8_t>(1 << light::opposite(d)));
+  }
+}
+
+// The open sky column got longer (its cells gain their own 15) or shorter (they lose it).
+void LightEngine::seedSkyColumn(light::Propagator& p, const BlockPos& at, int oldTop, int newTop) {
+  Cell cell;
+  for (int y = newTop + 1; y <= oldTop && y < kMaxY; ++y) {
+    if (y == at.y || !p.locate(at.x, y, at.z, cell)) continue;
+    p.setLight(cell, 15);
+    p.increase(at.x, y, at.z, 15, kAllDirections);
+  }
+  for (int y = oldTop + 1; y <= newTop; ++y) {
+    if (y == at.y || !p.locate(at.x, y, at.z, cell)) continue;
+    const std::uint8_t level = p.light(cell);
+    if (level == 0) continue;
+    p.setLight(cell, 0);
+    p.decrease(at.x, y, at.z, level, kAllDirections);
   }
 }
 

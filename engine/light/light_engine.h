@@ -18,6 +18,10 @@
 
 namespace terrasol {
 
+namespace light {
+class Propagator;
+}
+
 enum class LightChannel : std::uint8_t { Block, Sky };
 
 struct LightStats {
@@ -56,6 +60,13 @@ class LightEngine {
   };
 
  private:
+  void seedEmitters(light::Propagator& p, Chunk& chunk);
+  void seedOpenSky(light::Propagator& p, const Chunk& chunk);
+  void seedFromNeighbours(light::Propagator& p, ChunkPos pos, LightChannel channel);
+  int updateSkyTop(Chunk& chunk, const BlockChange& change);
+  void seedChangedCell(light::Propagator& p, const BlockPos& at);
+  void seedSkyColumn(light::Propagator& p, const BlockPos& at, int oldTop, int newTop);
+
   World& world_;
   const std::uint8_t* opacity_;
   const std::uint8_t* emission_;
