@@ -90,6 +90,21 @@ std::uint64_t findMagic(const std::vector<std::uint8_t>& bytes, std::uint64_t fr
 
 }  // namespace
 
+RegionFile::RecordView RegionFile::viewRecord(const std::vector<std::uint8_t>& bytes, std::uint64_t offset) {
+  RecordView r;
+  const std::uint64_t left = bytes.size() - offset;
+  const std::uint8_t* h = &bytes[offset];
+  r.magicOk = left >= 4 && std::memcmp(h, kRecordMagic, 4) == 0;
+  const bool coordsKnown = r.magicOk && left >= 12;
+  if (coordsKnown) r.chunk = {static_cast<int>(get32(h + 4)), static_cast<int>(get32(h + 8))};
+  r.size = left >= kRecordHeaderSize ? get32(h + 12) : 0;
+  r.name = coordsKnown ? "chunk (" + std::to_string(r.chunk.x) + ", " + std::to_string(r.chunk.z) + ")"
+                       : "a chunk (its coordinates were not written)";
+  r.label = coordsKnown ? "chunk_" + std::to_string(r.chunk.x) + "_" + std::to_string(r.chunk.z) : "unknown_chunk";
+  r.whole = r.magicOk && left >= kRecordHeaderSize && r.size <= kMaxPayload && kRecordHeaderSize + r.size <= left;
+  return r;
+}
+
 RegionFile::RegionFile(std::filesystem::path path, RegionPos region) : path_(std::move(path)), region_(region) {
   fd_ = ::open(path_.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
   if (fd_ < 0) throw Error(locate(path_, 0, "cannot open region file: " + errnoText()));
@@ -135,63 +150,59 @@ void RegionFile::scan() {
   if (bytes.size() < kHeaderSize || std::memcmp(bytes.data(), kFileMagic, kHeaderSize) != 0) {
     report(0, "not a Terrasol region file header; scanning for records anyway");
   }
-  std::uint64_t offset = std::min<std::uint64_t>(kHeaderSize, bytes.size());
   size_ = bytes.size();
-  while (offset < bytes.size()) {
-    const std::uint64_t left = bytes.size() - offset;
-    const std::uint8_t* h = &bytes[offset];
-    const bool magicOk = left >= 4 && std::memcmp(h, kRecordMagic, 4) == 0;
-    const bool coordsKnown = magicOk && left >= 12;
-    const ChunkPos chunk{coordsKnown ? static_cast<int>(get32(h + 4)) : 0, coordsKnown ? static_cast<int>(get32(h + 8)) : 0};
-    const std::uint32_t size = left >= kRecordHeaderSize ? get32(h + 12) : 0;
-    const std::string name = coordsKnown ? "chunk (" + std::to_string(chunk.x) + ", " + std::to_string(chunk.z) + ")"
-                                         : "a chunk (its coordinates were not written)";
-    const std::string label =
-        coordsKnown ? "chunk_" + std::to_string(chunk.x) + "_" + std::to_string(chunk.z) : "unknown_chunk";
-    const bool whole = magicOk && left >= kRecordHeaderSize && size <= kMaxPayload && kRecordHeaderSize + size <= left;
-    if (!whole) {
-      const std::uint64_t next = findMagic(bytes, offset + 1);
-      if (next == bytes.size()) {
-        // What a kill during a save leaves. Cut it off so new records follow valid ones.
-        report(offset, "torn record at the end of the file (an interrupted save); " + name +
-                           " keeps its previous save");
-        keepAside(bytes, offset, left, label + "_torn");
-        size_ = offset;
-        if (::ftruncate(fd_, static_cast<off_t>(size_)) != 0) {
-          throw Error(locate(path_, 0, "cannot cut off a torn record: " + errnoText()));
-        }
-        break;
-      }
-      report(offset, magicOk ? "record header of " + name + " is corrupt" : "unreadable bytes up to the next record");
-      keepAside(bytes, offset, next - offset, magicOk ? label : "garbage");
-      offset = next;
-      continue;
-    }
-    const std::uint64_t length = kRecordHeaderSize + size;
-    const bool intact = get64(h + 24) == recordChecksum(h, h + kRecordHeaderSize, size);
-    if (!intact || RegionPos::of(chunk) != region_) {
-      // The size field may be the corrupt part, so resynchronise on the next magic rather than
-      // trusting it: valid records after this one still load.
-      report(offset, name + (intact ? " does not belong in this region" : " fails its checksum") +
-                         "; it is not loaded and other chunks are");
-      const std::uint64_t next = findMagic(bytes, offset + 1);
-      keepAside(bytes, offset, next - offset, label);
-      offset = next;
-      continue;
-    }
-    {
-      const std::uint64_t sequence = get64(h + 16);
-      auto [it, inserted] = index_.try_emplace(localIndex(chunk), Entry{offset, size, sequence});
-      if (!inserted && sequence >= it->second.sequence) {
-        liveBytes_ -= kRecordHeaderSize + it->second.size;
-        it->second = Entry{offset, size, sequence};
-        inserted = true;
-      }
-      if (inserted) liveBytes_ += length;
-      nextSequence_ = std::max(nextSequence_, sequence + 1);
-    }
-    offset += length;
+  for (std::uint64_t offset = std::min<std::uint64_t>(kHeaderSize, bytes.size()); offset < bytes.size();) {
+    offset = scanRecord(bytes, offset);
   }
+}
+
+std::uint64_t RegionFile::scanRecord(const std::vector<std::uint8_t>& bytes, std::uint64_t offset) {
+  const RecordView r = viewRecord(bytes, offset);
+  if (!r.whole) {
+    const std::uint64_t next = findMagic(bytes, offset + 1);
+    if (next == bytes.size()) {
+      cutTornTail(bytes, offset, r);
+      return bytes.size();
+    }
+    report(offset, r.magicOk ? "record header of " + r.name + " is corrupt" : "unreadable bytes up to the next record");
+    keepAside(bytes, offset, next - offset, r.magicOk ? r.label : "garbage");
+    return next;
+  }
+  const std::uint8_t* h = &bytes[offset];
+  const bool intact = get64(h + 24) == recordChecksum(h, h + kRecordHeaderSize, r.size);
+  if (!intact || RegionPos::of(r.chunk) != region_) {
+    // The size field may be the corrupt part, so resynchronise on the next magic rather than
+    // trusting it: valid records after this one still load.
+    report(offset, r.name + (intact ? " does not belong in this region" : " fails its checksum") +
+                       "; it is not loaded and other chunks are");
+    const std::uint64_t next = findMagic(bytes, offset + 1);
+    keepAside(bytes, offset, next - offset, r.label);
+    return next;
+  }
+  indexRecord(r.chunk, Entry{offset, r.size, get64(h + 16)});
+  return offset + kRecordHeaderSize + r.size;
+}
+
+// What a kill during a save leaves: reported, kept aside, and cut off so new records follow valid ones.
+void RegionFile::cutTornTail(const std::vector<std::uint8_t>& bytes, std::uint64_t offset, const RecordView& r) {
+  report(offset, "torn record at the end of the file (an interrupted save); " + r.name + " keeps its previous save");
+  keepAside(bytes, offset, bytes.size() - offset, r.label + "_torn");
+  size_ = offset;
+  if (::ftruncate(fd_, static_cast<off_t>(size_)) != 0) {
+    throw Error(locate(path_, 0, "cannot cut off a torn record: " + errnoText()));
+  }
+}
+
+// The newest record of a chunk (highest sequence number) is the one that counts.
+void RegionFile::indexRecord(ChunkPos chunk, const Entry& entry) {
+  auto [it, inserted] = index_.try_emplace(localIndex(chunk), entry);
+  if (!inserted && entry.sequence >= it->second.sequence) {
+    liveBytes_ -= kRecordHeaderSize + it->second.size;
+    it->second = entry;
+    inserted = true;
+  }
+  if (inserted) liveBytes_ += kRecordHeaderSize + entry.size;
+  nextSequence_ = std::max(nextSequence_, entry.sequence + 1);
 }
 
 std::optional<std::vector<std::uint8_t>> RegionFile::read(ChunkPos chunk) const {

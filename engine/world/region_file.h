@@ -68,7 +68,19 @@ class RegionFile {
     std::uint64_t sequence;
   };
 
+  // What a record's header says, as far as the bytes go.
+  struct RecordView {
+    bool magicOk = false, whole = false;
+    ChunkPos chunk;
+    std::uint32_t size = 0;
+    std::string name, label;  // for messages, and for the names of kept-aside files
+  };
+  static RecordView viewRecord(const std::vector<std::uint8_t>& bytes, std::uint64_t offset);
+
   void scan();
+  std::uint64_t scanRecord(const std::vector<std::uint8_t>& bytes, std::uint64_t offset);
+  void cutTornTail(const std::vector<std::uint8_t>& bytes, std::uint64_t offset, const RecordView& r);
+  void indexRecord(ChunkPos chunk, const Entry& entry);
   void keepAside(const std::vector<std::uint8_t>& bytes, std::uint64_t offset, std::uint64_t length,
                  const std::string& label);
   void report(std::uint64_t offset, const std::string& what);
