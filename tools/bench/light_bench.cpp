@@ -5,6 +5,7 @@
 
 #include <chrono>
 
+#include "bench_support.h"
 #include "core/paths.h"
 #include "light/light_engine.h"
 #include "world/generator.h"
@@ -12,29 +13,11 @@
 namespace terrasol {
 namespace {
 
-const BlockRegistry& blocks() {
-  static const BlockRegistry registry = BlockRegistry::fromFile(resourcePackDir() / "default" / "blocks.json");
-  return registry;
-}
+using bench::blocks;
 
 // 5 x 5 lit chunks around the origin.
-struct Scene {
-  explicit Scene(const std::string& generator) : world(blocks()), light(world) {
-    gen = makeGenerator({generator, 1, {}}, blocks());
-    for (int z = -2; z <= 2; ++z)
-      for (int x = -2; x <= 2; ++x) {
-        auto c = std::make_unique<Chunk>(ChunkPos{x, z});
-        gen->generate(*c);
-        world.insertChunk(std::move(c));
-        light.chunkLoaded({x, z});
-      }
-  }
-  void set(const BlockPos& p, BlockId id) {
-    if (const auto change = world.setBlock(p, id)) light.blockChanged(*change);
-  }
-  World world;
-  LightEngine light;
-  std::unique_ptr<ChunkGenerator> gen;
+struct Scene : bench::LitArea {
+  explicit Scene(const std::string& generator) : LitArea(generator, 2) {}
 };
 
 void report(benchmark::State& state, const LightStats& stats) {

@@ -3,6 +3,7 @@
 
 #include <benchmark/benchmark.h>
 
+#include "bench_support.h"
 #include "core/paths.h"
 #include "light/light_engine.h"
 #include "mesh/mesher.h"
@@ -12,27 +13,12 @@
 namespace terrasol {
 namespace {
 
-const BlockRegistry& blocks() {
-  static const BlockRegistry registry = BlockRegistry::fromFile(resourcePackDir() / "default" / "blocks.json");
-  return registry;
-}
+using bench::blocks;
 
-// A lit 3 x 3 chunk terrain world around the origin.
-struct Terrain {
-  Terrain() : world(blocks()), light(world), table(blocks(), [](BlockId id, int f) { return static_cast<std::uint16_t>(id * 6 + f); }) {
-    gen = makeGenerator({"terrain", 1, {}}, blocks());
-    for (int z = -1; z <= 1; ++z)
-      for (int x = -1; x <= 1; ++x) {
-        auto c = std::make_unique<Chunk>(ChunkPos{x, z});
-        gen->generate(*c);
-        world.insertChunk(std::move(c));
-        light.chunkLoaded({x, z});
-      }
-  }
-  World world;
-  LightEngine light;
+// A lit 3 x 3 chunk terrain world around the origin, with textures numbered block * 6 + face.
+struct Terrain : bench::LitArea {
+  Terrain() : LitArea("terrain", 1), table(blocks(), [](BlockId id, int f) { return static_cast<std::uint16_t>(id * 6 + f); }) {}
   BlockMeshTable table;
-  std::unique_ptr<ChunkGenerator> gen;
 };
 
 void meshBenchmark(benchmark::State& state, Terrain& t, SectionPos section, CaptureResult expected) {

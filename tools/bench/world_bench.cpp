@@ -4,6 +4,7 @@
 
 #include <filesystem>
 
+#include "bench_support.h"
 #include "core/paths.h"
 #include "world/chunk_codec.h"
 #include "world/generator.h"
@@ -13,10 +14,7 @@
 namespace terrasol {
 namespace {
 
-const BlockRegistry& blocks() {
-  static const BlockRegistry registry = BlockRegistry::fromFile(resourcePackDir() / "default" / "blocks.json");
-  return registry;
-}
+using bench::blocks;
 
 // One 16 x 384 x 16 column of the terrain generator on one thread (goal: <= 2 ms). Positions walk
 // across the world so caches and noise lattices are not reused between iterations.
