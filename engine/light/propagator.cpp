@@ -76,15 +76,13 @@ void Propagator::runDecrease() {
     const LightEngine::Entry e = decrease_[head];
     // The cell itself may be in a chunk being unloaded: its position still leads to its neighbours.
     Cell c{&frame_.ref(frame_.refIndex(e.pos)), LightFrame::local(e.pos), e.pos};
-    const std::uint8_t inside = frame_.insideMask(e.pos);
     const bool here = c.ref->layer != nullptr;
+    // A cell of a chunk being unloaded: no in-section shortcut, every step is looked up.
+    const std::uint8_t inSection = here ? kInSection[static_cast<std::size_t>(c.index)] : 0;
     for (unsigned dirs = e.directions; dirs != 0; dirs &= dirs - 1) {
       const int d = std::countr_zero(dirs);
       Cell n;
-      if (here ? !step(c, inside, d, n)
-               : (!(inside >> d & 1) || !locate(e.pos + static_cast<std::uint32_t>(kPosStep[d]), n))) {
-        continue;
-      }
+      if (!step(c, inSection, d, n)) continue;
       const std::uint8_t level = light(n);
       if (level == 0) continue;
       if (level < e.level) {
@@ -108,11 +106,11 @@ void Propagator::runIncrease() {
     const LightEngine::Entry e = increase_[head];
     Cell c;
     if (!locate(e.pos, c) || light(c) != e.level) continue;  // superseded since it was queued
-    const std::uint8_t inside = frame_.insideMask(e.pos);
+    const std::uint8_t inSection = kInSection[static_cast<std::size_t>(c.index)];
     for (unsigned dirs = e.directions; dirs != 0; dirs &= dirs - 1) {
       const int d = std::countr_zero(dirs);
       Cell n;
-      if (!step(c, inside, d, n)) continue;
+      if (!step(c, inSection, d, n)) continue;
       const std::uint8_t current = light(n);
       if (current + 1 >= e.level) continue;  // cannot improve even through air: no block read needed
       const int level = e.level - std::max<int>(1, opacity(*n.ref, n.index));

@@ -88,15 +88,16 @@ class Propagator {
     }
   }
   std::uint8_t source(const SectionRef& r, int index, std::uint32_t pos);
-  // Where the neighbour of `pos` in `direction` is; false outside the frame or the loaded chunks.
-  bool step(const Cell& c, std::uint8_t inside, int direction, Cell& n) {
+  // Where the neighbour of `c` in `direction` is; false outside the frame or the loaded chunks.
+  // `inSection` is kInSection[c.index], looked up once per queue entry.
+  bool step(const Cell& c, std::uint8_t inSection, int direction, Cell& n) {
     n.pos = c.pos + static_cast<std::uint32_t>(kPosStep[direction]);
-    if (kInSection[static_cast<std::size_t>(c.index)] >> direction & 1) {
+    if (inSection >> direction & 1) {
       n.ref = c.ref;
       n.index = c.index + kIndexStep[direction];
       return true;
     }
-    if (!(inside >> direction & 1)) return false;
+    if (!(frame_.insideMask(c.pos) >> direction & 1)) return false;  // only on section faces
     return locate(n.pos, n);
   }
   std::size_t markIndex(std::uint32_t pos, int dx, int dz) const {
