@@ -62,7 +62,10 @@ class Mesher {
  public:
   Mesher(const SectionSnapshot& s, const BlockMeshTable& table) : s_(s), table_(table) {
     mesh_.pos = s.pos;
-    for (auto& v : scratch_) v.clear();
+    // Sections near each other look alike: reserving what the last one needed avoids regrowing.
+    for (int l = 0; l < kMeshLayers; ++l) {
+      mesh_.layers[static_cast<std::size_t>(l)].vertices.reserve(lastSize_[static_cast<std::size_t>(l)] * 5 / 4 + 64);
+    }
   }
 
   SectionMesh run() {
@@ -97,10 +100,8 @@ class Mesher {
           }
         }
       }
-    // One exact-size copy per layer: the scratch buffers keep their capacity between sections.
     for (int l = 0; l < kMeshLayers; ++l) {
-      mesh_.layers[static_cast<std::size_t>(l)].vertices.assign(scratch_[static_cast<std::size_t>(l)].begin(),
-                                                                 scratch_[static_cast<std::size_t>(l)].end());
+      lastSize_[static_cast<std::size_t>(l)] = mesh_.layers[static_cast<std::size_t>(l)].vertices.size();
     }
     return std::move(mesh_);
   }
@@ -135,7 +136,9 @@ class Mesher {
     return static_cast<std::uint32_t>(block4) | static_cast<std::uint32_t>(sky4) << 6 | static_cast<std::uint32_t>(ao) << 12;
   }
   static std::uint32_t uv(int u, int v) { return static_cast<std::uint32_t>(u) | static_cast<std::uint32_t>(v) << 5; }
-  std::vector<PackedVertex>& layer(const BlockMeshTable::Entry& e) { return scratch_[static_cast<std::size_t>(e.layer)]; }
+  std::vector<PackedVertex>& layer(const BlockMeshTable::Entry& e) {
+    return mesh_.layers[static_cast<std::size_t>(e.layer)].vertices;
+  }
 
   bool faceVisible(BlockId id, const BlockMeshTable::Entry& e, int neighbourIndex) const {
     if (opaqueAt(neighbourIndex)) return false;
@@ -232,11 +235,11 @@ class Mesher {
   const BlockMeshTable& table_;
   SectionMesh mesh_;
   std::array<std::uint32_t, SectionSnapshot::kSide * SectionSnapshot::kSide> rows_;
-  // Per thread, reused: meshing allocates only the final vertex arrays.
-  static thread_local std::array<std::vector<PackedVertex>, kMeshLayers> scratch_;
+  // Per thread: vertices per layer in the last section meshed.
+  static thread_local std::array<std::size_t, kMeshLayers> lastSize_;
 };
 
-thread_local std::array<std::vector<PackedVertex>, kMeshLayers> Mesher::scratch_;
+thread_local std::array<std::size_t, kMeshLayers> Mesher::lastSize_{};
 
 MeshLayer layerOf(RenderLayer layer) {
   switch (layer) {
