@@ -21,11 +21,9 @@ using testing::PackBuilder;
 using testing::solidImage;
 
 // ../shared/testdata sits beside the repository root on every developer machine and in CI.
-const std::filesystem::path kPixelPerfection = [] {
-  const auto dir = std::filesystem::path(TERRASOL_SOURCE_DIR) / ".." / "shared" / "testdata" / "packs" / "pixel_perfection_ce";
-  if (!std::filesystem::is_directory(dir)) ADD_FAILURE() << "test data missing: " << dir << " (../shared beside the repository)";
-  return dir;
-}();
+std::filesystem::path pixelPerfection() {
+  return std::filesystem::path(TERRASOL_SOURCE_DIR) / ".." / "shared" / "testdata" / "packs" / "pixel_perfection_ce";
+}
 
 PackStack stackOf(std::initializer_list<std::filesystem::path> dirs) {
   PackStack stack;
@@ -176,7 +174,8 @@ TEST(Tints, ColormapsAreSampledLikeMinecraftAndDefaultsFillIn) {
   const BiomeTints none = loadTints(stackOf({pack.dir()}), problems);
   EXPECT_EQ(none.grass, kDefaultGrass);
   EXPECT_EQ(none.water, kDefaultWater);
-  const BiomeTints real = loadTints(stackOf({pack.dir(), kPixelPerfection}), problems);
+  ASSERT_TRUE(std::filesystem::is_directory(pixelPerfection())) << "test data missing: " << pixelPerfection();
+  const BiomeTints real = loadTints(stackOf({pack.dir(), pixelPerfection()}), problems);
   EXPECT_TRUE(problems.empty()) << problemsText(problems);
   EXPECT_NE(real.grass, kDefaultGrass) << "pixel_perfection_ce's grass colormap is used";
   EXPECT_GT(real.grass.g, real.grass.b) << "and it is green";
@@ -318,7 +317,8 @@ TEST(ResourcePack, MalformedPackMcmetaIsNamed) {
 
 // The real third-party pack: palette PNGs of several bit depths with tRNS, animations, colormaps.
 TEST(ResourcePack, PixelPerfectionLoadsWithoutErrorsOverTheDefaultPack) {
-  const PackStack stack = stackOf({resourcePackDir() / "default", kPixelPerfection});
+  ASSERT_TRUE(std::filesystem::is_directory(pixelPerfection())) << "test data missing: " << pixelPerfection();
+  const PackStack stack = stackOf({resourcePackDir() / "default", pixelPerfection()});
   std::vector<PackProblem> problems;
   int animated = 0, loaded = 0;
   for (const auto& pack : stack.packs())
