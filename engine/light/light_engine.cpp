@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "light/light_frame.h"
 #include "light/propagator.h"
 
 namespace terrasol {
@@ -96,7 +97,12 @@ BlockPos faceCell(ChunkPos pos, int d, int a, int y, int beyond) {
 }  // namespace
 
 LightEngine::LightEngine(World& world)
-    : world_(world), opacity_(world.blocks().opacities().data()), emission_(world.blocks().emissions().data()) {}
+    : world_(world),
+      opacity_(world.blocks().opacities().data()),
+      emission_(world.blocks().emissions().data()),
+      frame_(std::make_unique<light::LightFrame>()) {}
+
+LightEngine::~LightEngine() = default;
 
 std::uint8_t LightEngine::lightAt(const BlockPos& pos, LightChannel channel) const {
   if (pos.y >= kMaxY) return channel == LightChannel::Sky ? 15 : 0;
@@ -127,7 +133,7 @@ void LightEngine::chunkLoaded(ChunkPos pos) {
   const light::ChunkWindow window(world_, {pos.x - 1 - kReach, pos.z - 1 - kReach},
                                   {pos.x + 1 + kReach, pos.z + 1 + kReach});
   for (const LightChannel channel : {LightChannel::Block, LightChannel::Sky}) {
-    Propagator p(window, channel, opacity_, emission_, decrease_, increase_, stats_, changed_);
+    Propagator p(*frame_, window, channel, opacity_, emission_, decrease_, increase_, stats_, changed_);
     if (channel == LightChannel::Block) {
       seedEmitters(p, *chunk);
     } else {
@@ -207,7 +213,7 @@ void LightEngine::chunkUnloading(ChunkPos pos) {
   const light::ChunkWindow window(world_, {pos.x - 1 - kReach, pos.z - 1 - kReach},
                                   {pos.x + 1 + kReach, pos.z + 1 + kReach}, chunk);
   for (const LightChannel channel : {LightChannel::Block, LightChannel::Sky}) {
-    Propagator p(window, channel, opacity_, emission_, decrease_, increase_, stats_, changed_);
+    Propagator p(*frame_, window, channel, opacity_, emission_, decrease_, increase_, stats_, changed_);
     for (const int d : kHorizontal) {
       const BlockPos& o = kDirectionOffsets[d];
       const Chunk* neighbour = world_.chunk({pos.x + o.x, pos.z + o.z});
@@ -243,8 +249,11 @@ void LightEngine::blockChanged(const BlockChange& change) {
 
   const ChunkPos here = ChunkPos::of(at);
   const light::ChunkWindow window(world_, {here.x - kReach, here.z - kReach}, {here.x + kReach, here.z + kReach});
+  // Sky light only sees opacity: a new or removed emitter leaves it alone.
+  const bool skyToo = opacity_[change.before] != opacity_[change.after];
   for (const LightChannel channel : {LightChannel::Block, LightChannel::Sky}) {
-    Propagator p(window, channel, opacity_, emission_, decrease_, increase_, stats_, changed_);
+    if (channel == LightChannel::Sky && !skyToo) continue;
+    Propagator p(*frame_, window, channel, opacity_, emission_, decrease_, increase_, stats_, changed_);
     seedChangedCell(p, at);
     if (channel == LightChannel::Sky) seedSkyColumn(p, at, oldTop, newTop);
     p.run();
@@ -317,7 +326,7 @@ void LightEngine::relightSection(const SectionPos& s) {
     const NibbleArray& layer = layerOf(light, channel, s.section);
     const bool noSources = channel == LightChannel::Block && light.emitters[index] == 0;
     if (noSources && layer.isUniform() && layer.uniformLevel() == 0) continue;  // dark and stays dark
-    Propagator p(window, channel, opacity_, emission_, decrease_, increase_, stats_, changed_);
+    Propagator p(*frame_, window, channel, opacity_, emission_, decrease_, increase_, stats_, changed_);
     Cell cell;
     // Each cell gets its own level; light above it is removed, from here and from what it lit.
     for (int i = 0; i < Section::kVolume; ++i) {

@@ -11,6 +11,7 @@
 // the World it lights.
 
 #include <cstdint>
+#include <memory>
 #include <unordered_set>
 #include <vector>
 
@@ -19,8 +20,9 @@
 namespace terrasol {
 
 namespace light {
+class LightFrame;
 class Propagator;
-}
+}  // namespace light
 
 enum class LightChannel : std::uint8_t { Block, Sky };
 
@@ -32,6 +34,9 @@ struct LightStats {
 class LightEngine {
  public:
   explicit LightEngine(World& world);
+  ~LightEngine();
+  LightEngine(const LightEngine&) = delete;
+  LightEngine& operator=(const LightEngine&) = delete;
 
   // Call after World::insertChunk: lights the chunk and lets light flow across its borders.
   void chunkLoaded(ChunkPos pos);
@@ -72,6 +77,7 @@ class LightEngine {
   const std::uint8_t* emission_;
   LightStats stats_;
   std::vector<Entry> decrease_, increase_;  // reused between updates
+  std::unique_ptr<light::LightFrame> frame_;  // likewise
   std::unordered_set<std::uint64_t> changed_;
 };
 

@@ -1,5 +1,6 @@
 #include "light/light_frame.h"
 
+#include <algorithm>
 #include <cassert>
 
 namespace terrasol::light {
@@ -15,29 +16,40 @@ ChunkWindow::ChunkWindow(World& world, ChunkPos lo, ChunkPos hi, const Chunk* ex
     }
 }
 
-LightFrame::LightFrame(const ChunkWindow& window, LightChannel channel)
-    : window_(window),
-      channel_(channel),
-      minX_(window.min.x),
-      minZ_(window.min.z),
-      width_(window.width),
-      depth_(window.depth),
-      refs_(static_cast<std::size_t>(width_ * depth_ * kSectionCount)),
-      resolved_(static_cast<std::size_t>(width_ * depth_), false) {}
+void LightFrame::reset(const ChunkWindow& window, LightChannel channel) {
+  window_ = &window;
+  channel_ = channel;
+  minX_ = window.min.x;
+  minZ_ = window.min.z;
+  width_ = window.width;
+  depth_ = window.depth;
+  const auto chunks = static_cast<std::size_t>(width_ * depth_);
+  if (refs_.size() < chunks * kSectionCount) refs_.resize(chunks * kSectionCount);
+  resolved_.assign(chunks, 0);
+  resolvedList_.clear();
+}
 
 void LightFrame::resolve(int index) {
-  resolved_[static_cast<std::size_t>(index)] = true;
-  Chunk* chunk = window_.chunks[static_cast<std::size_t>(index)];
-  if (!chunk) return;  // refs stay empty: not loaded
+  resolved_[static_cast<std::size_t>(index)] = 1;
+  resolvedList_.push_back(index);
+  Chunk* chunk = window_->chunks[static_cast<std::size_t>(index)];
+  SectionRef* refs = chunkRefs(index);
+  if (!chunk) {
+    std::fill(refs, refs + kSectionCount, SectionRef{});  // not loaded
+    return;
+  }
   ChunkLight& light = chunk->light();
   for (int s = 0; s < kSectionCount; ++s) {
-    SectionRef& r = refs_[static_cast<std::size_t>(index * kSectionCount + s)];
+    SectionRef& r = refs[s];
     r.layer = channel_ == LightChannel::Block ? &light.block[static_cast<std::size_t>(s)]
                                               : &light.sky[static_cast<std::size_t>(s)];
     r.light = r.layer->bytes();
+    r.write = nullptr;
     const Section& section = chunk->section(s);
-    r.blocks = section.blocks() ? section.blocks()->data() : nullptr;
     r.uniform = section.uniformBlock();
+    r.blocks = section.blocks() ? section.blocks()->data() : &r.uniform;
+    r.blockMask = section.blocks() ? Section::kVolume - 1 : 0;
+    r.marks = 0;
     r.skyTop = light.skyTop.data();
   }
 }

@@ -17,12 +17,26 @@ namespace terrasol::light {
 inline constexpr int kMaxFrameChunks = 16;  // x and z get 8 bits each
 
 struct SectionRef {
-  NibbleArray* layer = nullptr;  // null: the chunk is not loaded (acts opaque)
-  const std::uint8_t* light = nullptr;  // layer->bytes(), refreshed after each write
-  const BlockId* blocks = nullptr;      // null for a uniform section
+  NibbleArray* layer = nullptr;         // null: the chunk is not loaded (acts opaque)
+  const std::uint8_t* light = nullptr;  // layer->bytes()
+  std::uint8_t* write = nullptr;        // layer->writableBytes() once written, null before
+  const BlockId* blocks = nullptr;      // blocks[index & blockMask]: the dense array, or &uniform
+  int blockMask = 0;
   BlockId uniform = kAir;
+  std::uint8_t marks = 0;  // kFaceMarks of the cells written: whose halos changed
   const std::int16_t* skyTop = nullptr;  // the chunk's heightmap
 };
+
+// Per Section::index: bit d set when the cell lies on the section's face in Direction d, bit 7 always.
+inline const std::array<std::uint8_t, Section::kVolume> kFaceMarks = [] {
+  std::array<std::uint8_t, Section::kVolume> marks{};
+  for (int i = 0; i < Section::kVolume; ++i) {
+    const int x = i & 15, y = i >> 8, z = (i >> 4) & 15;
+    marks[static_cast<std::size_t>(i)] = static_cast<std::uint8_t>(
+        0x80 | (x == 0) | (x == 15) << 1 | (y == 0) << 2 | (y == 15) << 3 | (z == 0) << 4 | (z == 15) << 5);
+  }
+  return marks;
+}();
 
 // The chunks of a frame, looked up once per update and shared by both channels' frames.
 struct ChunkWindow {
@@ -35,8 +49,9 @@ struct ChunkWindow {
 
 class LightFrame {
  public:
-  // Sections reference the `channel`'s light; they are filled in per chunk on first use.
-  LightFrame(const ChunkWindow& window, LightChannel channel);
+  // Sections reference the `channel`'s light; they are filled in per chunk on first use. Reset for
+  // each update, so the arrays are allocated once.
+  void reset(const ChunkWindow& window, LightChannel channel);
 
   // Frame position of a world cell; false outside the frame or the world height.
   bool toFrame(int x, int y, int z, std::uint32_t& pos) const {
@@ -66,6 +81,9 @@ class LightFrame {
     if (!resolved_[static_cast<std::size_t>(chunk)]) resolve(chunk);
     return refs_[static_cast<std::size_t>(index)];
   }
+  // Chunk indices (z * width + x) resolved so far, and their sections' refs.
+  const std::vector<int>& resolvedChunks() const { return resolvedList_; }
+  SectionRef* chunkRefs(int chunk) { return &refs_[static_cast<std::size_t>(chunk * kSectionCount)]; }
 
   // Bit d set: the neighbour in Direction d is inside the frame.
   std::uint8_t insideMask(std::uint32_t pos) const {
@@ -83,11 +101,12 @@ class LightFrame {
  private:
   void resolve(int chunk);
 
-  const ChunkWindow& window_;
-  LightChannel channel_;
-  int minX_, minZ_, width_, depth_;
+  const ChunkWindow* window_ = nullptr;
+  LightChannel channel_ = LightChannel::Block;
+  int minX_ = 0, minZ_ = 0, width_ = 0, depth_ = 0;
   std::vector<SectionRef> refs_;
-  std::vector<bool> resolved_;
+  std::vector<std::uint8_t> resolved_;
+  std::vector<int> resolvedList_;
 };
 
 }  // namespace terrasol::light

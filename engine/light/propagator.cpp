@@ -5,19 +5,19 @@
 
 namespace terrasol::light {
 
-Propagator::Propagator(const ChunkWindow& window, LightChannel channel, const std::uint8_t* opacity,
+Propagator::Propagator(LightFrame& frame, const ChunkWindow& window, LightChannel channel, const std::uint8_t* opacity,
                        const std::uint8_t* emission, std::vector<LightEngine::Entry>& decrease,
                        std::vector<LightEngine::Entry>& increase, LightStats& stats,
                        std::unordered_set<std::uint64_t>& changed)
-    : frame_(window, channel),
+    : frame_(frame),
       channel_(channel),
       opacity_(opacity),
       emission_(emission),
       decrease_(decrease),
       increase_(increase),
       stats_(stats),
-      changed_(changed),
-      marks_(static_cast<std::size_t>((frame_.width() + 2) * (frame_.depth() + 2) * kSectionCount), 0) {
+      changed_(changed) {
+  frame_.reset(window, channel);
   decrease_.clear();
   increase_.clear();
 }
@@ -30,7 +30,7 @@ Propagator::~Propagator() {
 std::uint8_t Propagator::source(const SectionRef& r, int index, std::uint32_t pos) {
   if (channel_ == LightChannel::Block) {
     ++blockReads_;
-    return emission_[r.blocks ? r.blocks[index] : r.uniform];
+    return emission_[r.blocks[index & r.blockMask]];
   }
   const int y = LightFrame::worldY(pos);
   if (y > r.skyTop[index & 255]) return 15;
@@ -39,30 +39,21 @@ std::uint8_t Propagator::source(const SectionRef& r, int index, std::uint32_t po
   return 0;
 }
 
-// A cell on a section face also changes the halo of the sections beside it.
-void Propagator::markFaces(int index, std::uint32_t pos) {
-  const int lx = index & 15, ly = index >> 8, lz = (index >> 4) & 15;
-  const int section = static_cast<int>(pos >> 20);
-  const int x0 = lx == 0 ? -1 : 0, x1 = lx == 15 ? 1 : 0;
-  const int y0 = ly == 0 && section > 0 ? -1 : 0, y1 = ly == 15 && section < kSectionCount - 1 ? 1 : 0;
-  const int z0 = lz == 0 ? -1 : 0, z1 = lz == 15 ? 1 : 0;
-  for (int dz = z0; dz <= z1; ++dz)
-    for (int dx = x0; dx <= x1; ++dx) {
-      std::uint8_t* column = &marks_[markIndex(pos, dx, dz)];
-      for (int dy = y0; dy <= y1; ++dy) column[section + dy] = 1;
-    }
-}
-
+// A written cell changes its own section's mesh and, on a face, the halo of the sections beside it.
 void Propagator::flushChanged() {
-  const int width = frame_.width() + 2, depth = frame_.depth() + 2;
-  for (int gz = 0; gz < depth; ++gz)
-    for (int gx = 0; gx < width; ++gx)
-      for (int s = 0; s < kSectionCount; ++s) {
-        std::uint8_t& mark = marks_[static_cast<std::size_t>((gz * width + gx) * kSectionCount + s)];
-        if (!mark) continue;
-        mark = 0;
-        changed_.insert(sectionKey(frame_.minX() - 1 + gx, s, frame_.minZ() - 1 + gz));
-      }
+  for (const int chunk : frame_.resolvedChunks()) {
+    SectionRef* refs = frame_.chunkRefs(chunk);
+    const int cx = frame_.minX() + chunk % frame_.width(), cz = frame_.minZ() + chunk / frame_.width();
+    for (int s = 0; s < kSectionCount; ++s) {
+      const std::uint8_t m = refs[s].marks;
+      if (!m) continue;
+      refs[s].marks = 0;
+      const int y0 = (m & 4) && s > 0 ? -1 : 0, y1 = (m & 8) && s < kSectionCount - 1 ? 1 : 0;
+      for (int dz = -(m >> 4 & 1); dz <= (m >> 5 & 1); ++dz)
+        for (int dx = -(m & 1); dx <= (m >> 1 & 1); ++dx)
+          for (int dy = y0; dy <= y1; ++dy) changed_.insert(sectionKey(cx + dx, s + dy, cz + dz));
+    }
+  }
 }
 
 void Propagator::run() {

@@ -38,7 +38,8 @@ struct Cell {
 
 class Propagator {
  public:
-  Propagator(const ChunkWindow& window, LightChannel channel, const std::uint8_t* opacity,
+  // Resets `frame` to the window and channel.
+  Propagator(LightFrame& frame, const ChunkWindow& window, LightChannel channel, const std::uint8_t* opacity,
              const std::uint8_t* emission, std::vector<LightEngine::Entry>& decrease,
              std::vector<LightEngine::Entry>& increase, LightStats& stats, std::unordered_set<std::uint64_t>& changed);
   ~Propagator();  // adds the counters to the engine's stats
@@ -59,9 +60,9 @@ class Propagator {
   std::uint8_t light(const Cell& c) const { return light(*c.ref, c.index); }
   std::uint8_t opacity(const SectionRef& r, int index) {
     ++blockReads_;
-    return opacity_[r.blocks ? r.blocks[index] : r.uniform];
+    return opacity_[r.blocks[index & r.blockMask]];
   }
-  void setLight(const Cell& c, std::uint8_t level) { setLight(*c.ref, c.index, c.pos, level); }
+  void setLight(const Cell& c, std::uint8_t level) { setLight(*c.ref, c.index, level); }
   // The level a cell has by itself: its emission (block light) or 15 in the open sky column (sky light).
   std::uint8_t source(const Cell& c) { return source(*c.ref, c.index, c.pos); }
 
@@ -77,15 +78,11 @@ class Propagator {
   void run();
 
  private:
-  void setLight(SectionRef& r, int index, std::uint32_t pos, std::uint8_t level) {
-    r.layer->set(index, level);
-    r.light = r.layer->bytes();  // the first write to a uniform array allocates it
+  void setLight(SectionRef& r, int index, std::uint8_t level) {
+    if (!r.write) r.light = r.write = r.layer->writableBytes();  // once per section and update
+    NibbleArray::set(r.write, index, level);
+    r.marks |= kFaceMarks[static_cast<std::size_t>(index)];
     ++lightWrites_;
-    if (kInSection[static_cast<std::size_t>(index)] & 0x40) {
-      marks_[markIndex(pos, 0, 0) + static_cast<std::size_t>(pos >> 20)] = 1;
-    } else {
-      markFaces(index, pos);
-    }
   }
   std::uint8_t source(const SectionRef& r, int index, std::uint32_t pos);
   // Where the neighbour of `c` in `direction` is; false outside the frame or the loaded chunks.
@@ -100,16 +97,11 @@ class Propagator {
     if (!(frame_.insideMask(c.pos) >> direction & 1)) return false;  // only on section faces
     return locate(n.pos, n);
   }
-  std::size_t markIndex(std::uint32_t pos, int dx, int dz) const {
-    const int cx = static_cast<int>((pos >> 4) & 15) + 1 + dx, cz = static_cast<int>((pos >> 12) & 15) + 1 + dz;
-    return static_cast<std::size_t>((cz * (frame_.width() + 2) + cx) * kSectionCount);
-  }
-  void markFaces(int index, std::uint32_t pos);
   void flushChanged();
   void runDecrease();
   void runIncrease();
 
-  LightFrame frame_;
+  LightFrame& frame_;
   LightChannel channel_;
   const std::uint8_t* opacity_;
   const std::uint8_t* emission_;
@@ -118,8 +110,6 @@ class Propagator {
   LightStats& stats_;
   std::uint64_t blockReads_ = 0, lightWrites_ = 0;
   std::unordered_set<std::uint64_t>& changed_;
-  // One flag per section of the frame plus a one-chunk margin (halos reach into the next chunk).
-  std::vector<std::uint8_t> marks_;
 };
 
 // Key of a section in LightEngine's changed set: 27 bits each of chunk x and z (the world border is

@@ -40,15 +40,24 @@ class NibbleArray {
     return static_cast<std::uint8_t>((read_[index >> 1] >> ((index & 1) * 4)) & 15);
   }
   void set(int index, std::uint8_t level) {
+    if (!owned_ && level == uniform_) return;
+    set(writableBytes(), index, level);
+  }
+  // Sets a level in bytes from writableBytes(): for loops that write many levels.
+  static void set(std::uint8_t* bytes, int index, std::uint8_t level) {
+    std::uint8_t& byte = bytes[index >> 1];
+    const int shift = (index & 1) * 4;
+    byte = static_cast<std::uint8_t>((byte & ~(15 << shift)) | (level << shift));
+  }
+  // The bytes to write through, allocated (holding the uniform level) on first use; valid until the
+  // next fill().
+  std::uint8_t* writableBytes() {
     if (!owned_) {
-      if (level == uniform_) return;
       owned_ = std::make_unique<Bytes>();
       owned_->fill(static_cast<std::uint8_t>(uniform_ * 0x11));
       read_ = owned_->data();
     }
-    std::uint8_t& byte = (*owned_)[static_cast<std::size_t>(index >> 1)];
-    const int shift = (index & 1) * 4;
-    byte = static_cast<std::uint8_t>((byte & ~(15 << shift)) | (level << shift));
+    return owned_->data();
   }
   void fill(std::uint8_t level) {
     owned_.reset();
