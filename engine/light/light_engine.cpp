@@ -10,6 +10,7 @@ namespace terrasol {
 using light::Cell;
 using light::kAllDirections;
 using light::Propagator;
+using light::SectionRef;
 
 namespace {
 
@@ -327,38 +328,47 @@ void LightEngine::relightSection(const SectionPos& s) {
     const bool noSources = channel == LightChannel::Block && light.emitters[index] == 0;
     if (noSources && layer.isUniform() && layer.uniformLevel() == 0) continue;  // dark and stays dark
     Propagator p(*frame_, window, channel, opacity_, emission_, decrease_, increase_, stats_, changed_);
-    Cell cell;
+    Cell origin;
+    p.locate(x0, y0, z0, origin);
+    SectionRef& r = *origin.ref;
     // Each cell gets its own level; light above it is removed, from here and from what it lit.
     for (int i = 0; i < Section::kVolume; ++i) {
-      const std::uint8_t level = layer.get(i);
+      const std::uint8_t level = Propagator::light(r, i);
       if (noSources && level == 0) continue;
-      const int x = x0 + (i & 15), y = y0 + (i >> 8), z = z0 + ((i >> 4) & 15);
-      p.locate(x, y, z, cell);
-      const std::uint8_t own = noSources ? 0 : p.source(cell);
-      if (level != own) p.setLight(cell, own);
-      if (level > own) p.decrease(x, y, z, level, kAllDirections);
+      const std::uint32_t pos = Propagator::posOf(origin.pos, i);
+      const std::uint8_t own = noSources ? 0 : p.source(r, i, pos);
+      if (level == own) continue;
+      p.setLight(r, i, own);
+      if (level > own) p.decrease(pos, level, kAllDirections);
     }
-    // Then every lit cell offers its light again, so cells that were too dark fill up. Open-sky cells
+    // Then every source offers its light again, so cells that were too dark fill up. Open-sky cells
     // above the neighbouring columns only have 15s around them and are left out.
-    for (int i = 0; i < Section::kVolume; ++i) {
-      const std::uint8_t level = layer.get(i);
-      const int y = y0 + (i >> 8);
-      if (level <= 1 || (channel == LightChannel::Sky && level == 15 && y > tops[static_cast<std::size_t>(i & 255)])) {
-        continue;
+    if (!noSources) {
+      for (int i = 0; i < Section::kVolume; ++i) {
+        const std::uint8_t level = Propagator::light(r, i);
+        if (level <= 1 || (channel == LightChannel::Sky && level == 15 && y0 + (i >> 8) > tops[static_cast<std::size_t>(i & 255)])) {
+          continue;
+        }
+        p.increase(Propagator::posOf(origin.pos, i), level, kAllDirections);
       }
-      p.increase(x0 + (i & 15), y, z0 + ((i >> 4) & 15), level, kAllDirections);
     }
     // And so does the light just outside each face.
-    for (int d = 0; d < 6; ++d)
+    for (int d = 0; d < 6; ++d) {
+      const BlockPos& o = kDirectionOffsets[d];
+      Cell beyond;  // the neighbouring section's cell 0
+      if (!p.locate(x0 + o.x * 16, y0 + o.y * 16, z0 + o.z * 16, beyond)) continue;
+      const SectionRef& n = *beyond.ref;
+      const auto toward = static_cast<std::uint8_t>(1 << light::opposite(d));
       for (int a = 0; a < 16; ++a)
         for (int b = 0; b < 16; ++b) {
-          const int lx = d == 0 ? -1 : d == 1 ? 16 : a, ly = d == 2 ? -1 : d == 3 ? 16 : (d < 2 ? a : b);
-          const int lz = d == 4 ? -1 : d == 5 ? 16 : b;
-          Cell outside;
-          if (!p.locate(x0 + lx, y0 + ly, z0 + lz, outside)) continue;
-          const std::uint8_t level = p.light(outside);
-          if (level > 1) p.increase(x0 + lx, y0 + ly, z0 + lz, level, static_cast<std::uint8_t>(1 << light::opposite(d)));
+          // The face cell next to ours: the far layer of the neighbour along the axis of d.
+          const int lx = d == 0 ? 15 : d == 1 ? 0 : a, ly = d == 2 ? 15 : d == 3 ? 0 : (d < 2 ? a : b);
+          const int lz = d == 4 ? 15 : d == 5 ? 0 : b;
+          const int index = Section::index(lx, ly, lz);
+          const std::uint8_t level = Propagator::light(n, index);
+          if (level > 1) p.increase(Propagator::posOf(beyond.pos, index), level, toward);
         }
+    }
     p.run();
   }
 }

@@ -74,10 +74,12 @@ class Propagator {
     std::uint32_t pos;
     if (frame_.toFrame(x, y, z, pos)) increase_.push_back({pos, level, directions});
   }
-  // Runs the decrease queue, then the increase queue (which the decreases add to), to the end.
-  void run();
-
- private:
+  void decrease(std::uint32_t pos, std::uint8_t level, std::uint8_t directions) {
+    decrease_.push_back({pos, level, directions});
+  }
+  void increase(std::uint32_t pos, std::uint8_t level, std::uint8_t directions) {
+    increase_.push_back({pos, level, directions});
+  }
   void setLight(SectionRef& r, int index, std::uint8_t level) {
     if (!r.write) r.light = r.write = r.layer->writableBytes();  // once per section and update
     NibbleArray::set(r.write, index, level);
@@ -85,6 +87,16 @@ class Propagator {
     ++lightWrites_;
   }
   std::uint8_t source(const SectionRef& r, int index, std::uint32_t pos);
+  // Frame position of Section::index `index` in the section whose cell 0 is at `origin`.
+  static std::uint32_t posOf(std::uint32_t origin, int index) {
+    return origin + static_cast<std::uint32_t>((index & 15) | ((index >> 4) & 15) << 8 | (index >> 8) << 16);
+  }
+
+
+  // Runs the decrease queue, then the increase queue (which the decreases add to), to the end.
+  void run();
+
+ private:
   // Where the neighbour of `c` in `direction` is; false outside the frame or the loaded chunks.
   // `inSection` is kInSection[c.index], looked up once per queue entry.
   bool step(const Cell& c, std::uint8_t inSection, int direction, Cell& n) {
