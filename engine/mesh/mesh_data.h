@@ -44,6 +44,28 @@ struct PackedVertex {
 };
 static_assert(sizeof(PackedVertex) == 16, "the G-buffer pass expects 16-byte vertices");
 
+// Per face id (0..5 Direction order, 6..9 the cross planes): the outward normal, the tangent (the
+// direction u grows in) and "up" (the direction v shrinks in: texture up), so the normal map's
+// tangent space is mat3(tangent, up, normal). normal = tangent x up, except on the back faces of the
+// cross planes (7, 9): like vanilla they show the front's texture mirrored. The renderer builds its
+// TBN from this table (injected into GLSL); a mesher test checks every emitted quad against it.
+struct FaceBasis {
+  float normal[3], tangent[3], up[3];
+};
+inline constexpr float kHalfSqrt2 = 0.70710678f;
+inline constexpr FaceBasis kFaceBases[10] = {
+    {{-1, 0, 0}, {0, 0, 1}, {0, 1, 0}},   // West
+    {{1, 0, 0}, {0, 0, -1}, {0, 1, 0}},   // East
+    {{0, -1, 0}, {1, 0, 0}, {0, 0, 1}},   // Down
+    {{0, 1, 0}, {1, 0, 0}, {0, 0, -1}},   // Up
+    {{0, 0, -1}, {-1, 0, 0}, {0, 1, 0}},  // North
+    {{0, 0, 1}, {1, 0, 0}, {0, 1, 0}},    // South
+    {{-kHalfSqrt2, 0, kHalfSqrt2}, {kHalfSqrt2, 0, kHalfSqrt2}, {0, 1, 0}},     // cross plane x=z, front
+    {{kHalfSqrt2, 0, -kHalfSqrt2}, {kHalfSqrt2, 0, kHalfSqrt2}, {0, 1, 0}},     // and its back
+    {{kHalfSqrt2, 0, kHalfSqrt2}, {kHalfSqrt2, 0, -kHalfSqrt2}, {0, 1, 0}},     // cross plane x=-z, front
+    {{-kHalfSqrt2, 0, -kHalfSqrt2}, {kHalfSqrt2, 0, -kHalfSqrt2}, {0, 1, 0}},   // and its back
+};
+
 enum class MeshLayer : std::uint8_t { Opaque, Cutout, Translucent };
 inline constexpr int kMeshLayers = 3;
 

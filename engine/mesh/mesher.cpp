@@ -224,8 +224,8 @@ class Mesher {
     const std::array<std::array<int, 2>, 4> side = {{{7, 16}, {9, 16}, {9, 6}, {7, 6}}};
     const std::array<std::array<int, 2>, 4> top = {{{7, 8}, {9, 8}, {9, 6}, {7, 6}}};
     auto& out = layer(e);
-    flatQuad(out, {{{x0, y0, z1}, {x0, y0, z0}, {x0, y1, z0}, {x0, y1, z1}}}, e, 0, side, light);  // West
-    flatQuad(out, {{{x1, y0, z0}, {x1, y0, z1}, {x1, y1, z1}, {x1, y1, z0}}}, e, 1, side, light);  // East
+    flatQuad(out, {{{x0, y0, z0}, {x0, y0, z1}, {x0, y1, z1}, {x0, y1, z0}}}, e, 0, side, light);  // West
+    flatQuad(out, {{{x1, y0, z1}, {x1, y0, z0}, {x1, y1, z0}, {x1, y1, z1}}}, e, 1, side, light);  // East
     flatQuad(out, {{{x1, y0, z0}, {x0, y0, z0}, {x0, y1, z0}, {x1, y1, z0}}}, e, 4, side, light);  // North
     flatQuad(out, {{{x0, y0, z1}, {x1, y0, z1}, {x1, y1, z1}, {x0, y1, z1}}}, e, 5, side, light);  // South
     flatQuad(out, {{{x0, y1, z1}, {x1, y1, z1}, {x1, y1, z0}, {x0, y1, z0}}}, e, 3, top, light);   // Up

@@ -5,6 +5,8 @@
 #include "mesh/mesher.h"
 
 #include <chrono>
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
 #include <thread>
 #include "support/world_support.h"
 #include "world/generator.h"
@@ -137,6 +139,42 @@ TEST(Mesher, PlantsTorchesAndTints) {
   for (const auto& v : below.layers[0].vertices) {
     EXPECT_EQ(v.tint(), v.face() == static_cast<int>(Direction::Up) ? 1 : 0) << "grass blocks tint only the top";
   }
+}
+
+// The renderer's TBN comes from kFaceBases: every quad's corners must agree with its face's basis
+// (counter-clockwise seen from the normal's side, u growing along the tangent, v shrinking along up).
+// It found the torch's west and east sides wound inside out.
+TEST(Mesher, QuadsAgreeWithTheFaceBases) {
+  MeshWorld w;
+  w.set({3, 69, 3}, "stone");
+  w.set({3, 70, 3}, "short_grass");
+  w.set({6, 70, 6}, "torch");
+  w.set({9, 70, 9}, "water");
+  int checked = 0;
+  for (const auto& layer : w.mesh().layers)
+    for (std::size_t q = 0; q < layer.vertices.size(); q += 4) {
+      const PackedVertex* v = &layer.vertices[q];
+      auto pos = [&](int i) { return glm::vec3(v[i].x32(), v[i].y32(), v[i].z32()); };
+      const FaceBasis& b = kFaceBases[v[0].face()];
+      const glm::vec3 n(b.normal[0], b.normal[1], b.normal[2]), t(b.tangent[0], b.tangent[1], b.tangent[2]),
+          up(b.up[0], b.up[1], b.up[2]);
+      const bool mirrored = v[0].face() == 7 || v[0].face() == 9;
+      EXPECT_NEAR(glm::dot(glm::cross(t, up), n), mirrored ? -1.0f : 1.0f, 1e-5f);
+      const glm::vec3 geometric = glm::normalize(glm::cross(pos(1) - pos(0), pos(2) - pos(0)));
+      EXPECT_GT(glm::dot(geometric, n), 0.99f) << "face " << v[0].face();
+      for (int i = 1; i < 4; ++i) {
+        const glm::vec3 d = pos(i) - pos(0);
+        const float du = static_cast<float>(v[i].u() - v[0].u()), dv = static_cast<float>(v[i].v() - v[0].v());
+        if (du != 0.0f) {
+          EXPECT_GT(glm::dot(d, t) * du, 0.0f) << "face " << v[0].face();
+        }
+        if (dv != 0.0f) {
+          EXPECT_LT(glm::dot(d, up) * dv, 0.0f) << "face " << v[0].face();
+        }
+      }
+      ++checked;
+    }
+  EXPECT_GT(checked, 6 + 8 + 5 + 1);
 }
 
 // Up face of a floor block with walls beside the cell in front of it.
