@@ -10,7 +10,13 @@ std::vector<ShaderDefine> slotDefines() {
       define("ATTRIB_POSITION", slots::kAttribPosition),
       define("ATTRIB_NORMAL", slots::kAttribNormal),
       define("ATTRIB_COLOR", slots::kAttribColor),
+      define("ATTRIB_PACKED", slots::kAttribPacked),
       define("OUT_COLOR", slots::kOutColor),
+      define("UNIT_ATLAS_ALBEDO", slots::kUnitAtlasAlbedo),
+      define("UNIT_ATLAS_NORMAL", slots::kUnitAtlasNormal),
+      define("UNIT_ATLAS_SPECULAR", slots::kUnitAtlasSpecular),
+      define("UNIT_LIGHTMAP", slots::kUnitLightmap),
+      define("STORAGE_TILES", slots::kStorageTiles),
   };
 }
 

@@ -13,8 +13,20 @@ inline constexpr int kAttribPosition = 0;
 inline constexpr int kAttribNormal = 1;
 inline constexpr int kAttribColor = 2;
 
-// Fragment outputs of the forward test-scene pass.
+// The block vertex (mesh/mesh_data.h PackedVertex) as one uvec4.
+inline constexpr int kAttribPacked = 3;
+
+// Fragment outputs of the forward passes.
 inline constexpr int kOutColor = 0;
+
+// Texture units of the block passes (the G-buffer targets use units 0..4 in the passes that read them).
+inline constexpr int kUnitAtlasAlbedo = 0;
+inline constexpr int kUnitAtlasNormal = 1;
+inline constexpr int kUnitAtlasSpecular = 2;
+inline constexpr int kUnitLightmap = 5;
+
+// Shader storage buffers.
+inline constexpr int kStorageTiles = 0;  // atlas tile of each texture id for the current frame
 
 }  // namespace terrasol::slots
 

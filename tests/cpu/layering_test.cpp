@@ -19,6 +19,7 @@ const std::map<std::string, std::set<std::string>> kAllowed = {
     {"assets", {"core", "assets"}},
     {"render", {"core", "assets", "mesh", "render"}},
     {"platform", {"core", "platform"}},
+    {"scene", {"core", "world", "light", "mesh", "assets", "scene"}},
 };
 
 TEST(Layering, EngineFoldersIncludeOnlyWhatTheyMayDependOn) {

@@ -1,0 +1,268 @@
+#include "render/deferred_renderer.h"
+
+#include <algorithm>
+#include <chrono>
+
+#include <glm/gtc/matrix_inverse.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include "core/camera.h"
+#include "core/day_cycle.h"
+#include "core/lightmap.h"
+#include "render/gl/program.h"
+#include "render/gl_slots.h"
+#include "render/shader_defines.h"
+
+namespace terrasol {
+namespace {
+
+// Scales the scene's radiance (noon sun ~3, full sky light 1) into the tone curve's range, so a
+// sunlit surface shows about its texture colour, as in vanilla.
+constexpr float kExposure = 0.3f;
+
+gl::Program build(const ShaderPreprocessor& shaders, const char* vertex, const char* fragment,
+                  std::vector<ShaderDefine> extra = {}) {
+  std::vector<ShaderDefine> defines = rendererDefines();
+  for (auto& d : extra) defines.push_back(std::move(d));
+  return buildProgram(shaders, {{GL_VERTEX_SHADER, vertex}, {GL_FRAGMENT_SHADER, fragment}}, defines);
+}
+
+void setVec3(GLuint program, const char* name, glm::vec3 v) {
+  glProgramUniform3fv(program, glGetUniformLocation(program, name), 1, glm::value_ptr(v));
+}
+void setMat4(GLuint program, const char* name, const glm::mat4& m) {
+  glProgramUniformMatrix4fv(program, glGetUniformLocation(program, name), 1, GL_FALSE, glm::value_ptr(m));
+}
+
+// Sky light's colour: the zenith's hue at a fixed brightness (the lightmap carries the brightness).
+glm::vec3 ambientTint(glm::vec3 zenith) {
+  const float luminance = glm::dot(zenith, glm::vec3(0.2126f, 0.7152f, 0.0722f));
+  const glm::vec3 hue = luminance > 1e-5f ? zenith / luminance : glm::vec3(1.0f);
+  return glm::mix(glm::vec3(1.0f), glm::clamp(hue, 0.0f, 4.0f), 0.4f);
+}
+
+// Ends a pass: with timings on, waits for the GPU and records the pass's wall time.
+class PassClock {
+ public:
+  explicit PassClock(std::vector<PassTiming>* timings) : timings_(timings) { restart(); }
+  void lap(const char* pass) {
+    if (!timings_) return;
+    glFinish();
+    const auto now = std::chrono::steady_clock::now();
+    timings_->push_back({pass, std::chrono::duration<double, std::milli>(now - start_).count()});
+    start_ = now;
+  }
+
+ private:
+  void restart() {
+    if (!timings_) return;
+    glFinish();
+    start_ = std::chrono::steady_clock::now();
+  }
+  std::vector<PassTiming>* timings_;
+  std::chrono::steady_clock::time_point start_;
+};
+
+}  // namespace
+
+struct DeferredRenderer::View {
+  glm::dvec3 camera;
+  glm::mat4 viewProjection;  // camera-relative
+  glm::mat4 inverseViewProjection;
+  glm::vec2 nearFar;
+  glm::vec2 fogRange;
+  DayState day;
+  bool materialAo;
+};
+
+DeferredRenderer::DeferredRenderer(const ShaderPreprocessor& shaders, const Atlas& atlas, const BiomeTints& tints)
+    : geometry_(build(shaders, "gbuffer.vert", "gbuffer.frag")),
+      cutout_(build(shaders, "gbuffer.vert", "gbuffer.frag", {{"CUTOUT", "1"}})),
+      lighting_(build(shaders, "fullscreen.vert", "lighting.frag")),
+      translucent_(build(shaders, "gbuffer.vert", "translucent.frag")),
+      final_(build(shaders, "fullscreen.vert", "final.frag")),
+      debug_(build(shaders, "fullscreen.vert", "debug_view.frag")),
+      textures_(atlas, tints),
+      lightmap_(gl::Texture::create(GL_TEXTURE_2D)),
+      empty_(gl::VertexArray::create()) {
+  glTextureStorage2D(lightmap_.id(), 1, GL_RGBA16F, Lightmap::kSize, Lightmap::kSize);
+  glTextureParameteri(lightmap_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTextureParameteri(lightmap_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTextureParameteri(lightmap_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTextureParameteri(lightmap_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+}
+
+void DeferredRenderer::render(const FrameInputs& frame, const SectionMeshes& meshes, GLuint framebuffer,
+                              glm::ivec2 size, std::vector<PassTiming>* timings) {
+  if (size.x <= 0 || size.y <= 0) return;  // a minimised window: nothing to draw
+  if (!gbuffer_ || gbuffer_->size() != size) gbuffer_.emplace(size);
+
+  View view;
+  view.camera = frame.cameraPosition;
+  Camera camera;  // at the origin: everything is drawn relative to the camera
+  const glm::dvec3 forward = frame.cameraLookAt - frame.cameraPosition;
+  camera.lookAt = glm::vec3(forward);
+  camera.fovDegrees = frame.fovDegrees;
+  camera.farPlane = std::max(2.0f * frame.viewDistance, 256.0f);
+  const glm::mat4 projection = camera.projection(static_cast<float>(size.x) / static_cast<float>(size.y));
+  view.viewProjection = projection * camera.view();
+  view.inverseViewProjection = glm::inverse(view.viewProjection);
+  view.nearFar = {camera.nearPlane, camera.farPlane};
+  view.fogRange = {0.8f * frame.viewDistance, frame.viewDistance};
+  view.day = dayStateAt(frame.ticks, frame.sunPathRotation);
+  view.materialAo = frame.materialAo;
+
+  const Lightmap lightmap = buildLightmap(view.day, frame.ticks);
+  glTextureSubImage2D(lightmap_.id(), 0, 0, 0, Lightmap::kSize, Lightmap::kSize, GL_RGB, GL_FLOAT,
+                      lightmap.texels.data());
+  textures_.update(frame.ticks);
+
+  PassClock clock(timings);
+  geometryPass(view, meshes);
+  clock.lap("geometry");
+  if (frame.debugView != DebugView::None) {
+    glProgramUniform1i(debug_.id(), glGetUniformLocation(debug_.id(), "u_view"), static_cast<int>(frame.debugView));
+    debugPass(view, framebuffer, size);
+    clock.lap("debug_view");
+    return;
+  }
+  lightingPass(view);
+  clock.lap("lighting");
+  if (meshes.quads(MeshLayer::Translucent) > 0) {
+    translucentPass(view, meshes);
+    clock.lap("translucent");
+  }
+  finalPass(framebuffer, size);
+  clock.lap("final");
+}
+
+void DeferredRenderer::geometryPass(const View& view, const SectionMeshes& meshes) {
+  const GLuint fbo = gbuffer_->geometryFramebuffer();
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+  glViewport(0, 0, gbuffer_->size().x, gbuffer_->size().y);
+  const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+  const float farDepth = 1.0f;
+  for (int i = 0; i < gbuffer::kTargets; ++i) glClearNamedFramebufferfv(fbo, GL_COLOR, i, zero);
+  glClearNamedFramebufferfv(fbo, GL_DEPTH, 0, &farDepth);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDepthMask(GL_TRUE);
+  glEnable(GL_CULL_FACE);
+  glDisable(GL_BLEND);
+  glEnable(GL_FRAMEBUFFER_SRGB);  // the albedo target stores linear light sRGB-encoded
+  drawLayer(geometry_.id(), view, meshes, MeshLayer::Opaque, false);
+  drawLayer(cutout_.id(), view, meshes, MeshLayer::Cutout, false);
+  glDisable(GL_FRAMEBUFFER_SRGB);
+}
+
+void DeferredRenderer::drawLayer(GLuint program, const View& view, const SectionMeshes& meshes, MeshLayer layer,
+                                 bool backToFront) {
+  struct Draw {
+    const SectionMeshes::Layer* layer;
+    glm::vec3 offset;
+    float distance;
+  };
+  std::vector<Draw> draws;
+  for (const auto& [pos, section] : meshes.sections()) {
+    const auto& l = section.layers[static_cast<std::size_t>(layer)];
+    if (l.quads == 0) continue;
+    // In double: far from the origin a float cannot hold both the section and the small offset.
+    const glm::dvec3 corner(pos.x * 16.0, kMinY + pos.section * 16.0, pos.z * 16.0);
+    const glm::vec3 offset(corner - view.camera);
+    draws.push_back({&l, offset, glm::length(offset + glm::vec3(8.0f))});
+  }
+  if (draws.empty()) return;
+  if (backToFront) std::stable_sort(draws.begin(), draws.end(), [](const Draw& a, const Draw& b) { return a.distance > b.distance; });
+
+  glUseProgram(program);
+  textures_.bind(program);
+  setMat4(program, "u_viewProjection", view.viewProjection);
+  const GLint offsetLocation = glGetUniformLocation(program, "u_sectionOffset");
+  glBindVertexArray(meshes.vertexArray());
+  for (const Draw& d : draws) {
+    meshes.bindLayer(*d.layer);
+    glProgramUniform3fv(program, offsetLocation, 1, glm::value_ptr(d.offset));
+    glDrawElements(GL_TRIANGLES, d.layer->quads * 6, GL_UNSIGNED_INT, nullptr);
+  }
+  glBindVertexArray(0);
+}
+
+void DeferredRenderer::setLightingUniforms(GLuint program, const View& view) const {
+  const DayState& day = view.day;
+  setVec3(program, "u_toLight", day.toShadowLight);
+  setVec3(program, "u_lightColor", day.lightColor);
+  setVec3(program, "u_ambientTint", ambientTint(day.skyZenith));
+  glProgramUniform1i(program, glGetUniformLocation(program, "u_materialAo"), view.materialAo ? 1 : 0);
+  glBindTextureUnit(slots::kUnitLightmap, lightmap_.id());
+}
+
+void DeferredRenderer::lightingPass(const View& view) {
+  const GLuint program = lighting_.id();
+  const DayState& day = view.day;
+  setLightingUniforms(program, view);
+  setVec3(program, "u_skyZenith", day.skyZenith);
+  setVec3(program, "u_skyHorizon", day.skyHorizon);
+  setVec3(program, "u_toSun", day.toSun);
+  setVec3(program, "u_toMoon", day.toMoon);
+  setVec3(program, "u_sunColor", day.sunColor);
+  setVec3(program, "u_moonColor", day.moonColor);
+  glProgramUniform1f(program, glGetUniformLocation(program, "u_starVisibility"), day.starVisibility);
+  setMat4(program, "u_inverseViewProjection", view.inverseViewProjection);
+  glProgramUniform2fv(program, glGetUniformLocation(program, "u_fogRange"), 1, glm::value_ptr(view.fogRange));
+
+  glBindFramebuffer(GL_FRAMEBUFFER, gbuffer_->lightingFramebuffer());
+  glViewport(0, 0, gbuffer_->size().x, gbuffer_->size().y);
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_CULL_FACE);
+  glDisable(GL_BLEND);
+  gbuffer_->bindForReading();
+  glUseProgram(program);
+  glBindVertexArray(empty_.id());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindVertexArray(0);
+}
+
+void DeferredRenderer::translucentPass(const View& view, const SectionMeshes& meshes) {
+  setLightingUniforms(translucent_.id(), view);
+  glBindFramebuffer(GL_FRAMEBUFFER, gbuffer_->translucentFramebuffer());
+  glViewport(0, 0, gbuffer_->size().x, gbuffer_->size().y);
+  glEnable(GL_DEPTH_TEST);
+  glDepthMask(GL_FALSE);  // tested against the opaque scene, never hiding each other
+  glEnable(GL_CULL_FACE);
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);  // premultiplied
+  drawLayer(translucent_.id(), view, meshes, MeshLayer::Translucent, true);
+  glDisable(GL_BLEND);
+  glDepthMask(GL_TRUE);
+  glDisable(GL_DEPTH_TEST);
+}
+
+void DeferredRenderer::finalPass(GLuint framebuffer, glm::ivec2 size) {
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+  glViewport(0, 0, size.x, size.y);
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_CULL_FACE);
+  glBindTextureUnit(0, gbuffer_->scene());
+  glProgramUniform1f(final_.id(), glGetUniformLocation(final_.id(), "u_exposure"), kExposure);
+  glUseProgram(final_.id());
+  glBindVertexArray(empty_.id());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindVertexArray(0);
+  glUseProgram(0);
+}
+
+void DeferredRenderer::debugPass(const View& view, GLuint framebuffer, glm::ivec2 size) {
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+  glViewport(0, 0, size.x, size.y);
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_CULL_FACE);
+  gbuffer_->bindForReading();
+  glProgramUniform2fv(debug_.id(), glGetUniformLocation(debug_.id(), "u_nearFar"), 1, glm::value_ptr(view.nearFar));
+  glUseProgram(debug_.id());
+  glBindVertexArray(empty_.id());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindVertexArray(0);
+  glUseProgram(0);
+}
+
+}  // namespace terrasol

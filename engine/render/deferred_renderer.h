@@ -1,0 +1,75 @@
+#pragma once
+// The deferred pipeline, one frame at a time:
+//   geometry (opaque, then alpha-tested cutout) -> G-buffer
+//   lighting (full screen: LabPBR direct + ambient + block light + emission; sky where nothing was drawn)
+//   translucent (water, glass: lit forward, blended; left out when none is loaded)
+//   final (exposure, tone map, sRGB) -> the target framebuffer
+// A debug view replaces lighting, translucent and final with one pass showing a G-buffer channel.
+// Consumes meshes and the atlas; never sees the world. GL thread only.
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include "assets/shader_source.h"
+#include "render/block_textures.h"
+#include "render/gbuffer.h"
+#include "render/section_meshes.h"
+
+namespace terrasol {
+
+// G-buffer channels the debug views show, in this order ("none" = the lit image).
+enum class DebugView { None, Albedo, Normal, VertexNormal, Specular, Lightmap, Depth, Ao, Emission };
+inline constexpr const char* kDebugViewNames[] = {"none",     "albedo", "normal", "vertex_normal", "specular",
+                                                  "lightmap", "depth",  "ao",     "emission"};
+
+struct FrameInputs {
+  glm::dvec3 cameraPosition{0.0};
+  glm::dvec3 cameraLookAt{0.0, 0.0, -1.0};
+  float fovDegrees = 70.0f;
+  std::int64_t ticks = 6000;      // world time
+  float sunPathRotation = 0.0f;   // degrees
+  float viewDistance = 64.0f;     // blocks: fog ends here
+  DebugView debugView = DebugView::None;
+  bool materialAo = true;         // LabPBR _n blue darkens ambient light
+};
+
+struct PassTiming {
+  std::string pass;
+  double ms;
+};
+
+class DeferredRenderer {
+ public:
+  DeferredRenderer(const ShaderPreprocessor& shaders, const Atlas& atlas, const BiomeTints& tints);
+
+  // Draws a frame into `framebuffer` (0 for a window) of `size`. With `timings`, every pass ends
+  // with glFinish and its wall time is appended (llvmpipe has no useful timer queries).
+  void render(const FrameInputs& frame, const SectionMeshes& meshes, GLuint framebuffer, glm::ivec2 size,
+              std::vector<PassTiming>* timings = nullptr);
+
+  // The targets of the last frame (for tests and reports), null before the first.
+  const GBuffer* gbuffer() const { return gbuffer_ ? &*gbuffer_ : nullptr; }
+
+ private:
+  struct View;
+  void geometryPass(const View& view, const SectionMeshes& meshes);
+  void lightingPass(const View& view);
+  void translucentPass(const View& view, const SectionMeshes& meshes);
+  void finalPass(GLuint framebuffer, glm::ivec2 size);
+  void debugPass(const View& view, GLuint framebuffer, glm::ivec2 size);
+  void drawLayer(GLuint program, const View& view, const SectionMeshes& meshes, MeshLayer layer, bool backToFront);
+  void setLightingUniforms(GLuint program, const View& view) const;
+
+  gl::Program geometry_, cutout_, lighting_, translucent_, final_, debug_;
+  BlockTextures textures_;
+  gl::Texture lightmap_;
+  gl::VertexArray empty_;  // full-screen passes make their vertices from gl_VertexID
+  std::optional<GBuffer> gbuffer_;
+};
+
+}  // namespace terrasol

@@ -1,0 +1,65 @@
+#include "render/gbuffer.h"
+
+#include <string>
+
+#include "core/error.h"
+
+namespace terrasol {
+namespace {
+
+gl::Texture makeTarget(GLenum format, glm::ivec2 size) {
+  gl::Texture texture = gl::Texture::create(GL_TEXTURE_2D);
+  glTextureStorage2D(texture.id(), 1, format, size.x, size.y);
+  glTextureParameteri(texture.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTextureParameteri(texture.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glTextureParameteri(texture.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTextureParameteri(texture.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  return texture;
+}
+
+void checkComplete(GLuint framebuffer, const char* name) {
+  const GLenum status = glCheckNamedFramebufferStatus(framebuffer, GL_FRAMEBUFFER);
+  if (status != GL_FRAMEBUFFER_COMPLETE) {
+    std::string message = name;
+    message += " framebuffer incomplete, status ";
+    message += std::to_string(status);
+    throw Error(message);
+  }
+}
+
+}  // namespace
+
+GBuffer::GBuffer(glm::ivec2 size)
+    : size_(size),
+      geometry_(gl::Framebuffer::create()),
+      lighting_(gl::Framebuffer::create()),
+      translucent_(gl::Framebuffer::create()) {
+  if (size.x <= 0 || size.y <= 0) {
+    std::string message = "G-buffer size must be positive, got ";
+    message += std::to_string(size.x) + "x" + std::to_string(size.y);
+    throw Error(message);
+  }
+  std::array<GLenum, gbuffer::kTargets> drawBuffers{};
+  for (int i = 0; i < gbuffer::kTargets; ++i) {
+    targets_[static_cast<std::size_t>(i)] = makeTarget(gbuffer::kFormats[static_cast<std::size_t>(i)], size);
+    glNamedFramebufferTexture(geometry_.id(), GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(i), target(i), 0);
+    drawBuffers[static_cast<std::size_t>(i)] = GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(i);
+  }
+  depth_ = makeTarget(gbuffer::kDepthFormat, size);
+  scene_ = makeTarget(GL_RGBA16F, size);
+  glNamedFramebufferTexture(geometry_.id(), GL_DEPTH_ATTACHMENT, depth_.id(), 0);
+  glNamedFramebufferDrawBuffers(geometry_.id(), gbuffer::kTargets, drawBuffers.data());
+  glNamedFramebufferTexture(lighting_.id(), GL_COLOR_ATTACHMENT0, scene_.id(), 0);
+  glNamedFramebufferTexture(translucent_.id(), GL_COLOR_ATTACHMENT0, scene_.id(), 0);
+  glNamedFramebufferTexture(translucent_.id(), GL_DEPTH_ATTACHMENT, depth_.id(), 0);
+  checkComplete(geometry_.id(), "G-buffer");
+  checkComplete(lighting_.id(), "lighting");
+  checkComplete(translucent_.id(), "translucent");
+}
+
+void GBuffer::bindForReading() const {
+  for (int i = 0; i < gbuffer::kTargets; ++i) glBindTextureUnit(static_cast<GLuint>(i), target(i));
+  glBindTextureUnit(gbuffer::kDepthUnit, depth_.id());
+}
+
+}  // namespace terrasol

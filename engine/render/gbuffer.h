@@ -1,0 +1,38 @@
+#pragma once
+// The G-buffer targets (layout in gbuffer_layout.h) and the HDR scene target the lighting and
+// translucent passes write, sized together. GL thread only.
+
+#include <array>
+
+#include <glm/vec2.hpp>
+
+#include "render/gbuffer_layout.h"
+#include "render/gl/object.h"
+
+namespace terrasol {
+
+class GBuffer {
+ public:
+  // Throws Error for a non-positive size or an incomplete framebuffer.
+  explicit GBuffer(glm::ivec2 size);
+
+  glm::ivec2 size() const { return size_; }
+  GLuint target(int index) const { return targets_[static_cast<std::size_t>(index)].id(); }
+  GLuint depth() const { return depth_.id(); }
+  GLuint scene() const { return scene_.id(); }  // RGBA16F, linear HDR
+
+  GLuint geometryFramebuffer() const { return geometry_.id(); }  // every target + depth
+  GLuint lightingFramebuffer() const { return lighting_.id(); }  // scene only: the lighting pass samples depth
+  GLuint translucentFramebuffer() const { return translucent_.id(); }  // scene + depth, tested not written
+
+  // Binds the targets and depth to the texture units gbuffer_layout.h names.
+  void bindForReading() const;
+
+ private:
+  glm::ivec2 size_;
+  std::array<gl::Texture, gbuffer::kTargets> targets_;
+  gl::Texture depth_, scene_;
+  gl::Framebuffer geometry_, lighting_, translucent_;
+};
+
+}  // namespace terrasol

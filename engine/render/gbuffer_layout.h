@@ -1,0 +1,42 @@
+#pragma once
+// The G-buffer, declared once. C++ allocates it from these constants and GLSL sees them only as
+// injected #defines (gbufferDefines()), so the two can never disagree.
+//
+//   target  format          r                 g                 b                 a
+//   0       SRGB8_ALPHA8    albedo x vertex AO, linear light (stored sRGB-encoded)  material AO (_n blue)
+//   1       RGBA16F         surface normal, octahedral xy       vertex normal, octahedral xy
+//   2       RGBA8           raw LabPBR specular (_s): smoothness, F0/metal id, porosity/SSS, emission
+//   3       RGBA8           block light 0..1      sky light 0..1    vertex AO 0..1   unused
+//   depth   DEPTH32F        hardware depth (1 = nothing drawn: sky)
+//
+// Normals are in world space (y up). Light levels are the mesher's smooth (quarter-step) levels / 15.
+
+#include <array>
+#include <vector>
+
+#include <epoxy/gl.h>
+
+#include "assets/shader_source.h"
+
+namespace terrasol::gbuffer {
+
+inline constexpr int kAlbedo = 0;
+inline constexpr int kNormals = 1;
+inline constexpr int kSpecular = 2;
+inline constexpr int kLight = 3;
+inline constexpr int kTargets = 4;
+
+inline constexpr std::array<GLenum, kTargets> kFormats = {GL_SRGB8_ALPHA8, GL_RGBA16F, GL_RGBA8, GL_RGBA8};
+inline constexpr GLenum kDepthFormat = GL_DEPTH_COMPONENT32F;
+
+// Texture units the lighting and debug passes read the targets from (depth after the colour targets).
+inline constexpr int kDepthUnit = kTargets;
+
+}  // namespace terrasol::gbuffer
+
+namespace terrasol {
+
+// GB_ALBEDO, GB_NORMALS, GB_SPECULAR, GB_LIGHT (output locations and texture units), GB_DEPTH_UNIT.
+std::vector<ShaderDefine> gbufferDefines();
+
+}  // namespace terrasol

@@ -1,0 +1,48 @@
+#pragma once
+// Section meshes on the GPU: one immutable vertex buffer per section and layer, replaced whole when
+// the section is remeshed (no holes, no flicker), drawn as quads through one shared index buffer.
+// GL thread only.
+
+#include <array>
+#include <map>
+
+#include "mesh/mesh_data.h"
+#include "render/gl/object.h"
+
+namespace terrasol {
+
+class SectionMeshes {
+ public:
+  SectionMeshes();
+
+  // Replaces the section's mesh; an empty mesh removes it.
+  void upload(const SectionMesh& mesh);
+  void remove(SectionPos pos);
+  void clear() { sections_.clear(); }
+
+  struct Layer {
+    gl::Buffer vertices;
+    GLsizei quads = 0;
+  };
+  struct Section {
+    std::array<Layer, kMeshLayers> layers;
+  };
+  // In a fixed order, so frames are reproducible.
+  const std::map<SectionPos, Section>& sections() const { return sections_; }
+  std::size_t quads(MeshLayer layer) const;
+
+  // The vertex array: attribute ATTRIB_PACKED from binding 0, and the quad index buffer. Point
+  // binding 0 at a layer's buffer with bindLayer() before drawing it.
+  GLuint vertexArray() const { return layout_.id(); }
+  void bindLayer(const Layer& layer) const;
+
+ private:
+  void ensureIndices(GLsizei quads);
+
+  std::map<SectionPos, Section> sections_;
+  gl::VertexArray layout_;
+  gl::Buffer indices_;
+  GLsizei indexQuads_ = 0;
+};
+
+}  // namespace terrasol

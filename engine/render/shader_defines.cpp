@@ -1,0 +1,59 @@
+#include "render/shader_defines.h"
+
+#include <sstream>
+
+#include "assets/labpbr.h"
+#include "mesh/mesh_data.h"
+#include "render/gbuffer_layout.h"
+#include "render/gl_slots.h"
+
+namespace terrasol {
+namespace {
+
+std::string vec3Literal(float x, float y, float z) {
+  std::ostringstream out;
+  out.precision(9);
+  out << "vec3(" << x << ", " << y << ", " << z << ")";
+  return out.str();
+}
+
+// "vec3[N](vec3(...), ...)" from N vectors picked out of the face table.
+template <class Pick>
+std::string faceArray(Pick pick) {
+  std::string text = "vec3[10](";
+  for (int f = 0; f < 10; ++f) {
+    const float* v = pick(kFaceBases[f]);
+    text += (f ? ", " : "") + vec3Literal(v[0], v[1], v[2]);
+  }
+  return text + ")";
+}
+
+std::string metalArray() {
+  std::string text = "vec3[8](";
+  for (int id = 230; id <= 237; ++id) {
+    const glm::vec3 f0 = labpbr::metalF0(id);
+    text += (id > 230 ? ", " : "") + vec3Literal(f0.x, f0.y, f0.z);
+  }
+  return text + ")";
+}
+
+}  // namespace
+
+std::vector<ShaderDefine> gbufferDefines() {
+  auto define = [](const char* name, int value) { return ShaderDefine{name, std::to_string(value)}; };
+  return {define("GB_ALBEDO", gbuffer::kAlbedo), define("GB_NORMALS", gbuffer::kNormals),
+          define("GB_SPECULAR", gbuffer::kSpecular), define("GB_LIGHT", gbuffer::kLight),
+          define("GB_DEPTH_UNIT", gbuffer::kDepthUnit)};
+}
+
+std::vector<ShaderDefine> rendererDefines() {
+  std::vector<ShaderDefine> defines = slotDefines();
+  for (auto& d : gbufferDefines()) defines.push_back(std::move(d));
+  defines.push_back({"FACE_NORMALS", faceArray([](const FaceBasis& b) { return b.normal; })});
+  defines.push_back({"FACE_TANGENTS", faceArray([](const FaceBasis& b) { return b.tangent; })});
+  defines.push_back({"FACE_UPS", faceArray([](const FaceBasis& b) { return b.up; })});
+  defines.push_back({"LABPBR_METAL_F0", metalArray()});
+  return defines;
+}
+
+}  // namespace terrasol

@@ -1,0 +1,316 @@
+#include "scene/scene_file.h"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/common.hpp>
+#include <initializer_list>
+#include <limits>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <span>
+#include <sstream>
+
+#include "core/error.h"
+#include "core/paths.h"
+
+namespace terrasol {
+namespace {
+
+using nlohmann::json;
+using std::filesystem::path;
+
+constexpr std::array<std::string_view, 3> kGenerators = {"void", "flat", "terrain"};
+constexpr std::int64_t kMaxInt64 = std::numeric_limits<std::int64_t>::max();
+constexpr std::int64_t kMinInt32 = std::numeric_limits<std::int32_t>::min();
+constexpr std::int64_t kMaxInt32 = std::numeric_limits<std::int32_t>::max();
+
+// Appends, never `"literal" + std::string` chains (gcc 12 warns wrongly about those under -Werror).
+std::string join(std::initializer_list<std::string_view> parts) {
+  std::string out;
+  for (std::string_view part : parts) out += part;
+  return out;
+}
+
+std::string member(const std::string& parent, std::string_view name) {
+  return parent.empty() ? std::string(name) : join({parent, ".", name});
+}
+
+std::string element(const std::string& parent, std::size_t index) {
+  return join({parent, "[", std::to_string(index), "]"});
+}
+
+// `key` is the full key path ("render.width", "packs[0]"); empty for the top level.
+[[noreturn]] void fail(const std::string& key, std::string_view what) {
+  throw Error(key.empty() ? std::string(what) : join({key, ": ", what}));
+}
+
+std::string describe(const json& value) {
+  if (value.is_object()) return "an object";
+  if (value.is_array()) return join({"an array of ", std::to_string(value.size())});
+  std::string text = value.dump();
+  if (text.size() > 40) {
+    text.resize(37);
+    text += "...";
+  }
+  return text;
+}
+
+[[noreturn]] void expected(const std::string& key, std::string_view what, const json& value) {
+  fail(key, join({"expected ", what, ", got ", describe(value)}));
+}
+
+std::string quotedList(std::span<const std::string_view> names) {
+  std::string list;
+  for (std::string_view name : names) list += join({list.empty() ? "" : ", ", "\"", name, "\""});
+  return list;
+}
+
+// Checks that `value` is an object and that every key in it is one of `known` (catches typos).
+void checkObject(const json& value, const std::string& key, std::initializer_list<std::string_view> known) {
+  if (!value.is_object()) expected(key, "an object", value);
+  for (const auto& [name, unused] : value.items()) {
+    if (std::find(known.begin(), known.end(), name) == known.end()) {
+      fail(member(key, name), join({"unknown key; expected one of ", quotedList(known)}));
+    }
+  }
+}
+
+// The member `name` of an object already checked, or null when absent.
+const json* field(const json& object, std::string_view name) {
+  const auto it = object.find(name);
+  return it == object.end() ? nullptr : &*it;
+}
+
+// Integers and floats with no fraction (1e9 is a float to nlohmann) that fit in int64.
+std::optional<std::int64_t> asWhole(const json& value) {
+  if (value.is_number_unsigned()) {
+    const std::uint64_t u = value.get<std::uint64_t>();
+    if (u > static_cast<std::uint64_t>(kMaxInt64)) return std::nullopt;
+    return static_cast<std::int64_t>(u);
+  }
+  if (value.is_number_integer()) return value.get<std::int64_t>();
+  if (!value.is_number_float()) return std::nullopt;
+  const double d = value.get<double>();
+  if (std::trunc(d) != d || std::abs(d) >= 0x1p63) return std::nullopt;
+  return static_cast<std::int64_t>(d);
+}
+
+std::int64_t wholeNumber(const json& value, const std::string& key, std::int64_t lo, std::int64_t hi) {
+  const std::optional<std::int64_t> n = asWhole(value);
+  if (n && *n >= lo && *n <= hi) return *n;
+  const std::string range = hi == kMaxInt64
+                                ? join({" >= ", std::to_string(lo)})
+                                : join({" from ", std::to_string(lo), " to ", std::to_string(hi)});
+  expected(key, join({"a whole number", range}), value);
+}
+
+std::uint64_t seedNumber(const json& value, const std::string& key) {
+  if (value.is_number_unsigned()) return value.get<std::uint64_t>();
+  const double d = value.is_number_float() ? value.get<double>() : -1.0;
+  if (std::trunc(d) == d && d >= 0.0 && d < 0x1p64) return static_cast<std::uint64_t>(d);
+  expected(key, "a whole number from 0 to 18446744073709551615", value);
+}
+
+double finiteNumber(const json& value, const std::string& key) {
+  if (!value.is_number()) expected(key, "a number", value);
+  const double d = value.get<double>();
+  if (!std::isfinite(d)) expected(key, "a finite number", value);
+  return d;
+}
+
+std::string formatNumber(double d) {
+  std::ostringstream out;
+  out << d;
+  return out.str();
+}
+
+// Within [lo, hi], or (lo, hi) when `open`.
+float numberIn(const json& value, const std::string& key, double lo, double hi, bool open) {
+  const double d = finiteNumber(value, key);
+  const bool inside = open ? d > lo && d < hi : d >= lo && d <= hi;
+  if (inside) return static_cast<float>(d);
+  const std::string range =
+      open ? join({"greater than ", formatNumber(lo), " and less than ", formatNumber(hi)})
+           : join({"from ", formatNumber(lo), " to ", formatNumber(hi)});
+  expected(key, join({"a number ", range}), value);
+}
+
+std::string nonEmptyString(const json& value, const std::string& key) {
+  if (!value.is_string() || value.get_ref<const std::string&>().empty())
+    expected(key, "a non-empty string", value);
+  return value.get<std::string>();
+}
+
+std::string oneOf(const json& value, const std::string& key, std::span<const std::string_view> names) {
+  const bool known =
+      value.is_string() && std::find(names.begin(), names.end(), value.get<std::string>()) != names.end();
+  if (!known) expected(key, join({"one of ", quotedList(names)}), value);
+  return value.get<std::string>();
+}
+
+glm::dvec3 vec3(const json& value, const std::string& key) {
+  if (!value.is_array() || value.size() != 3) expected(key, "an array of 3 numbers", value);
+  glm::dvec3 v;
+  for (glm::length_t i = 0; i < 3; ++i) {
+    v[i] = finiteNumber(value[static_cast<std::size_t>(i)], element(key, static_cast<std::size_t>(i)));
+  }
+  return v;
+}
+
+template <std::size_t N>
+std::array<int, N> cells(const json& value, const std::string& key) {
+  if (!value.is_array() || value.size() != N) {
+    expected(key, join({"an array of ", std::to_string(N), " whole numbers"}), value);
+  }
+  std::array<int, N> out{};
+  for (std::size_t i = 0; i < N; ++i) {
+    out[i] = static_cast<int>(wholeNumber(value[i], element(key, i), kMinInt32, kMaxInt32));
+  }
+  return out;
+}
+
+SceneEdit parseEdit(const json& value, const std::string& key) {
+  checkObject(value, key, {"fill", "set", "block"});
+  const json* fill = field(value, "fill");
+  const json* set = field(value, "set");
+  if (fill && set) fail(key, "has both \"fill\" and \"set\"; give one");
+  if (!fill && !set) fail(key, "needs \"fill\" (a box) or \"set\" (one block)");
+  const json* block = field(value, "block");
+  if (!block) fail(key, "needs \"block\"");
+  SceneEdit edit;
+  edit.key = key;
+  edit.block = nonEmptyString(*block, member(key, "block"));
+  if (fill) {
+    const auto c = cells<6>(*fill, member(key, "fill"));
+    edit.kind = SceneEdit::Kind::Fill;
+    edit.from = glm::min(glm::ivec3(c[0], c[1], c[2]), glm::ivec3(c[3], c[4], c[5]));
+    edit.to = glm::max(glm::ivec3(c[0], c[1], c[2]), glm::ivec3(c[3], c[4], c[5]));
+  } else {
+    const auto c = cells<3>(*set, member(key, "set"));
+    edit.from = edit.to = glm::ivec3(c[0], c[1], c[2]);
+  }
+  return edit;
+}
+
+std::vector<SceneEdit> parseEdits(const json& value, const std::string& key) {
+  if (!value.is_array()) expected(key, "an array of edits", value);
+  std::vector<SceneEdit> edits;
+  for (std::size_t i = 0; i < value.size(); ++i) edits.push_back(parseEdit(value[i], element(key, i)));
+  return edits;
+}
+
+void parseWorld(const json& world, SceneFile& scene) {
+  checkObject(world, "world", {"generator", "seed", "edits"});
+  if (const json* v = field(world, "generator")) scene.generator = oneOf(*v, "world.generator", kGenerators);
+  if (const json* v = field(world, "seed")) scene.seed = seedNumber(*v, "world.seed");
+  if (const json* v = field(world, "edits")) scene.edits = parseEdits(*v, "world.edits");
+}
+
+path resolvePack(const std::string& name, const path& sceneDir) {
+  if (name == "default") return resourcePackDir() / "default";
+  const path pack(name);
+  return pack.is_absolute() ? pack : (sceneDir / pack).lexically_normal();
+}
+
+std::vector<path> parsePacks(const json& value, const path& sceneDir) {
+  if (!value.is_array() || value.empty()) expected("packs", "a non-empty array of pack paths", value);
+  std::vector<path> packs;
+  for (std::size_t i = 0; i < value.size(); ++i) {
+    packs.push_back(resolvePack(nonEmptyString(value[i], element("packs", i)), sceneDir));
+  }
+  return packs;
+}
+
+void parseRender(const json& render, SceneFile& scene) {
+  checkObject(render, "render", {"width", "height", "view_distance", "debug_view"});
+  if (const json* v = field(render, "width")) {
+    scene.width = static_cast<int>(wholeNumber(*v, "render.width", 1, 8192));
+  }
+  if (const json* v = field(render, "height")) {
+    scene.height = static_cast<int>(wholeNumber(*v, "render.height", 1, 8192));
+  }
+  if (const json* v = field(render, "view_distance")) {
+    scene.viewDistance = static_cast<int>(wholeNumber(*v, "render.view_distance", 0, 32));
+  }
+  if (const json* v = field(render, "debug_view")) {
+    scene.debugView = oneOf(*v, "render.debug_view", kDebugViews);
+  }
+}
+
+void parseCamera(const json& camera, SceneFile& scene) {
+  checkObject(camera, "camera", {"position", "look_at", "fov"});
+  if (const json* v = field(camera, "position")) scene.cameraPosition = vec3(*v, "camera.position");
+  if (const json* v = field(camera, "look_at")) scene.cameraLookAt = vec3(*v, "camera.look_at");
+  if (const json* v = field(camera, "fov")) scene.fov = numberIn(*v, "camera.fov", 0.0, 180.0, true);
+}
+
+SceneFile parseRoot(const json& root, const path& file) {
+  checkObject(root, "", {"world", "packs", "time", "sun_path_rotation", "render", "camera"});
+  SceneFile scene;
+  scene.file = file;
+  if (const json* v = field(root, "world")) parseWorld(*v, scene);
+  const json* packs = field(root, "packs");
+  scene.packs =
+      packs ? parsePacks(*packs, file.parent_path()) : std::vector<path>{resourcePackDir() / "default"};
+  if (const json* v = field(root, "time")) scene.time = wholeNumber(*v, "time", 0, kMaxInt64);
+  if (const json* v = field(root, "sun_path_rotation")) {
+    scene.sunPathRotation = numberIn(*v, "sun_path_rotation", -90.0, 90.0, false);
+  }
+  if (const json* v = field(root, "render")) parseRender(*v, scene);
+  if (const json* v = field(root, "camera")) parseCamera(*v, scene);
+  return scene;
+}
+
+std::string withFile(const path& file, std::string_view what) {
+  return file.empty() ? std::string(what) : locate(file, 0, what);
+}
+
+// nlohmann's message without its "[json.exception.parse_error.101] parse error at line 1, column 2: " prefix.
+std::string jsonDetail(const json::exception& e) {
+  std::string_view what = e.what();
+  const std::size_t bracket = what.find("] ");
+  if (bracket != std::string_view::npos) what.remove_prefix(bracket + 2);
+  const std::size_t column = what.find("column ");
+  const std::size_t colon = what.find(": ", column == std::string_view::npos ? 0 : column);
+  if (what.starts_with("parse error") && colon != std::string_view::npos) what.remove_prefix(colon + 2);
+  return std::string(what);
+}
+
+// "FILE:LINE:COLUMN" (or "line L, column C" with no file) from nlohmann's 1-based byte index of the last
+// character it read.
+std::string syntaxPlace(const path& file, std::string_view text, std::size_t byte) {
+  const std::string_view before = text.substr(0, std::min(byte == 0 ? 0 : byte - 1, text.size()));
+  const std::size_t lastNewline = before.rfind('\n');
+  const std::size_t column = lastNewline == std::string_view::npos ? byte : byte - lastNewline - 1;
+  const std::string line = std::to_string(std::count(before.begin(), before.end(), '\n') + 1);
+  if (file.empty()) return join({"line ", line, ", column ", std::to_string(column)});
+  return join({file.string(), ":", line, ":", std::to_string(column)});
+}
+
+json parseJson(std::string_view text, const path& file) {
+  try {
+    return json::parse(text, nullptr, true, /*ignore_comments=*/true);
+  } catch (const json::parse_error& e) {
+    throw Error(join({syntaxPlace(file, text, e.byte), ": invalid JSON: ", jsonDetail(e)}));
+  } catch (const json::exception& e) {  // e.g. number overflow in 1e999, which has no position
+    throw Error(withFile(file, join({"invalid JSON: ", jsonDetail(e)})));
+  }
+}
+
+}  // namespace
+
+SceneFile parseScene(std::string_view json, const std::filesystem::path& file) {
+  const nlohmann::json root = parseJson(json, file);
+  try {
+    return parseRoot(root, file);
+  } catch (const Error& e) {
+    throw Error(withFile(file, e.what()));
+  }
+}
+
+SceneFile loadScene(const std::filesystem::path& file) {
+  if (std::filesystem::is_directory(file)) throw Error(locate(file, 0, "is a directory, not a scene file"));
+  return parseScene(readTextFile(file), file);
+}
+
+}  // namespace terrasol

@@ -1,0 +1,54 @@
+#pragma once
+// Scene files for `terrasol-render`: a world, packs, time, render settings and a camera, read from JSON.
+// The format, every key with its default, is documented in README.md ("Scene files"). Parsing checks
+// shapes, types and ranges only; block names and pack contents are resolved later by their users.
+
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <glm/vec3.hpp>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace terrasol {
+
+struct SceneEdit {
+  enum class Kind { Fill, Set } kind = Kind::Set;
+  glm::ivec3 from{0},
+      to{0};          // inclusive; for Set both are the cell. Fill corners are normalised so from <= to.
+  std::string block;  // block name, resolved later against the block registry
+  std::string key;    // where it came from, e.g. "world.edits[2]", for later error messages
+};
+
+struct SceneFile {
+  std::filesystem::path file;         // the scene file itself ("" when parsed from memory with no name)
+  std::string generator = "terrain";  // "void" | "flat" | "terrain"
+  std::uint64_t seed = 1;
+  std::vector<SceneEdit> edits;  // in file order: later edits overwrite earlier ones
+  // Bottom to top. "default" becomes resourcePackDir()/"default"; relative paths are resolved against
+  // the scene file's directory. When the key is absent: just the default pack.
+  std::vector<std::filesystem::path> packs;
+  std::int64_t time = 6000;        // ticks, >= 0: 0 sunrise, 6000 noon, 12000 sunset, 18000 midnight
+  float sunPathRotation = 0.0f;    // degrees in [-90, 90], tilts the sun and moon path
+  int width = 320, height = 180;   // pixels, 1..8192 each
+  int viewDistance = 4;            // chunks, 0..32
+  std::string debugView = "none";  // "render.debug_view": one of kDebugViews
+  glm::dvec3 cameraPosition{0.0, 80.0, 0.0};
+  glm::dvec3 cameraLookAt{0.0, 80.0, -1.0};
+  float fov = 70.0f;  // vertical degrees, in (0, 180)
+};
+
+// Debug views of the G-buffer, "none" first.
+inline constexpr std::array<std::string_view, 9> kDebugViews = {
+    "none", "albedo", "normal", "vertex_normal", "specular", "lightmap", "depth", "ao", "emission"};
+
+// Throws Error "<file>: <key>: <what is wrong>", e.g. "scenes/a.json: camera.position: expected an array
+// of 3 numbers"; JSON syntax errors as "<file>:<line>:<column>: invalid JSON: ...". `file` names the scene
+// in messages and is the base for relative pack paths (may be empty: then messages start with the key).
+SceneFile parseScene(std::string_view json, const std::filesystem::path& file);
+
+// Reads the file (Error naming it if missing or unreadable), then parseScene.
+SceneFile loadScene(const std::filesystem::path& file);
+
+}  // namespace terrasol

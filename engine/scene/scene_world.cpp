@@ -1,0 +1,89 @@
+#include "scene/scene_world.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/error.h"
+
+namespace terrasol {
+namespace {
+
+// "FILE: KEY: what" like the scene parser's own errors.
+[[noreturn]] void fail(const SceneFile& scene, const std::string& key, const std::string& what) {
+  std::string message = scene.file.string();
+  message += ": ";
+  message += key;
+  message += ": ";
+  message += what;
+  throw Error(message);
+}
+
+ChunkPos cameraChunk(const SceneFile& scene) {
+  // Clamped so a camera far outside the world border still names a valid chunk.
+  const double limit = 30'000'000.0;
+  const auto block = [&](double v) { return static_cast<int>(std::floor(std::clamp(v, -limit, limit))); };
+  return ChunkPos::of({block(scene.cameraPosition.x), 0, block(scene.cameraPosition.z)});
+}
+
+GeneratorSettings generatorSettings(const SceneFile& scene) {
+  GeneratorSettings settings;
+  settings.type = scene.generator;
+  settings.seed = scene.seed;
+  return settings;
+}
+
+}  // namespace
+
+SceneWorld::SceneWorld(const SceneFile& scene, const BlockRegistry& blocks)
+    : world_(blocks), light_(world_), centre_(cameraChunk(scene)), viewDistance_(scene.viewDistance) {
+  try {
+    generator_ = makeGenerator(generatorSettings(scene), blocks);
+  } catch (const Error& e) {
+    fail(scene, "world.generator", e.what());
+  }
+  const int load = viewDistance_ + 1;
+  for (int dz = -load; dz <= load; ++dz)
+    for (int dx = -load; dx <= load; ++dx) {
+      auto chunk = std::make_unique<Chunk>(ChunkPos{centre_.x + dx, centre_.z + dz});
+      generator_->generate(*chunk);
+      world_.insertChunk(std::move(chunk));
+    }
+  for (const SceneEdit& edit : scene.edits) {
+    bool found = false;
+    const BlockId block = blocks.find(edit.block, &found);
+    if (!found) fail(scene, edit.key + ".block", "unknown block \"" + edit.block + "\"");
+    applyEdit(edit, block, load);
+  }
+  // Light after the edits: one propagation instead of one per edited block.
+  for (int dz = -load; dz <= load; ++dz)
+    for (int dx = -load; dx <= load; ++dx) light_.chunkLoaded({centre_.x + dx, centre_.z + dz});
+  light_.takeChangedSections();  // everything is meshed fresh anyway
+}
+
+// Only the part of the box inside the loaded chunks and the world's height is visited, so a huge box
+// costs no more than the loaded area.
+void SceneWorld::applyEdit(const SceneEdit& edit, BlockId block, int loadRadius) {
+  const glm::ivec3 lo(std::max(edit.from.x, (centre_.x - loadRadius) * 16), std::max(edit.from.y, kMinY),
+                      std::max(edit.from.z, (centre_.z - loadRadius) * 16));
+  const glm::ivec3 hi(std::min(edit.to.x, (centre_.x + loadRadius) * 16 + 15), std::min(edit.to.y, kMaxY - 1),
+                      std::min(edit.to.z, (centre_.z + loadRadius) * 16 + 15));
+  for (int z = lo.z; z <= hi.z; ++z)
+    for (int y = lo.y; y <= hi.y; ++y)
+      for (int x = lo.x; x <= hi.x; ++x) world_.setBlock({x, y, z}, block);
+}
+
+std::vector<SectionMesh> SceneWorld::meshVisible(const BlockMeshTable& table) const {
+  std::vector<SectionMesh> meshes;
+  SectionSnapshot snapshot;
+  for (int dz = -viewDistance_; dz <= viewDistance_; ++dz)
+    for (int dx = -viewDistance_; dx <= viewDistance_; ++dx)
+      for (int s = 0; s < kSectionCount; ++s) {
+        const SectionPos pos{centre_.x + dx, s, centre_.z + dz};
+        if (captureSection(world_, pos, snapshot) != CaptureResult::Captured) continue;
+        SectionMesh mesh = meshSection(snapshot, table);
+        if (!mesh.empty()) meshes.push_back(std::move(mesh));
+      }
+  return meshes;
+}
+
+}  // namespace terrasol

@@ -1,0 +1,21 @@
+#version 450 core
+// G-buffer pass: opaque and (with CUTOUT) alpha-tested blocks. Layout: engine/render/gbuffer_layout.h.
+
+#include "lib/block_surface.glsl"
+
+layout(location = GB_ALBEDO) out vec4 o_albedo;
+layout(location = GB_NORMALS) out vec4 o_normals;
+layout(location = GB_SPECULAR) out vec4 o_specular;
+layout(location = GB_LIGHT) out vec4 o_light;
+
+void main() {
+  vec4 albedo = texture(u_atlasAlbedo, v_uv);
+#ifdef CUTOUT
+  if (albedo.a < 0.5) discard;
+#endif
+  vec4 normalTexel = texture(u_atlasNormal, v_uv);
+  o_albedo = vec4(albedo.rgb * v_tint * vertexAo(), normalTexel.b);
+  o_normals = vec4(octEncode(mappedNormal(normalTexel)), octEncode(vertexNormal()));
+  o_specular = texture(u_atlasSpecular, v_uv);
+  o_light = vec4(v_light, 1.0);
+}

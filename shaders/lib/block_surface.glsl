@@ -1,0 +1,36 @@
+// What the G-buffer and translucent passes share: a block fragment's albedo, normals and material.
+
+#include "lib/octahedral.glsl"
+#include "lib/labpbr.glsl"
+
+layout(binding = UNIT_ATLAS_ALBEDO) uniform sampler2D u_atlasAlbedo;    // sRGB: reads linear
+layout(binding = UNIT_ATLAS_NORMAL) uniform sampler2D u_atlasNormal;    // LabPBR _n
+layout(binding = UNIT_ATLAS_SPECULAR) uniform sampler2D u_atlasSpecular;  // LabPBR _s, nearest
+
+in vec3 v_position;
+in vec2 v_uv;
+in vec3 v_tint;
+in vec3 v_light;
+flat in int v_face;
+
+const vec3 kFaceNormals[10] = FACE_NORMALS;
+const vec3 kFaceTangents[10] = FACE_TANGENTS;
+const vec3 kFaceUps[10] = FACE_UPS;
+
+// Vanilla-like corner darkening: AO level 0..3 -> 0.4 .. 1.
+float vertexAo() { return mix(0.4, 1.0, v_light.z); }
+
+vec3 vertexNormal() { return kFaceNormals[v_face]; }
+
+// The normal map in world space, faded back to the vertex normal where it would face away from the
+// viewer (the seeds' smoothstep), so no pixel is lit from behind.
+vec3 mappedNormal(vec4 normalTexel) {
+  vec3 N = kFaceNormals[v_face];
+  mat3 tbn = mat3(kFaceTangents[v_face], kFaceUps[v_face], N);
+  vec3 n = tbn * labpbrNormal(normalTexel);
+  vec3 viewDir = v_position / max(length(v_position), 1e-6);
+  float fade = smoothstep(-0.5, 0.5, dot(viewDir, n));
+  n = mix(n, N, fade);
+  float len = length(n);
+  return len > 1e-4 ? n / len : N;  // n and N are never opposite (z >= 0), but stay safe
+}

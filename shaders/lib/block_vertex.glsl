@@ -1,0 +1,24 @@
+// The mesher's 16-byte vertex (engine/mesh/mesh_data.h, PackedVertex), unpacked.
+
+struct BlockVertex {
+  vec3 position;  // blocks, from the section's minimum corner
+  int texture;
+  int face;       // 0..5 Direction, 6..9 cross planes: indexes FACE_NORMALS / FACE_TANGENTS / FACE_UPS
+  int tint;       // 0 none, 1 grass, 2 foliage, 3 water
+  float blockLight, skyLight;  // 0..1
+  float ao;                    // 0..1 (0 = darkest corner)
+  vec2 uv;                     // 0..1 across the texture, v = 0 at its top row
+};
+
+BlockVertex unpackBlockVertex(uvec4 p) {
+  BlockVertex v;
+  v.position = vec3(p.x & 1023u, (p.x >> 10) & 1023u, (p.x >> 20) & 1023u) / 32.0;
+  v.texture = int(p.y & 0xFFFFu);
+  v.face = int((p.y >> 16) & 15u);
+  v.tint = int((p.y >> 20) & 3u);
+  v.blockLight = float(p.z & 63u) / 60.0;
+  v.skyLight = float((p.z >> 6) & 63u) / 60.0;
+  v.ao = float((p.z >> 12) & 3u) / 3.0;
+  v.uv = vec2(p.w & 31u, (p.w >> 5) & 31u) / 16.0;
+  return v;
+}

@@ -1,0 +1,36 @@
+// The sky seen along a direction: a gradient by time of day, the sun and moon discs, and stars.
+
+uniform vec3 u_skyZenith;
+uniform vec3 u_skyHorizon;
+uniform vec3 u_toSun;
+uniform vec3 u_toMoon;
+uniform vec3 u_sunColor;
+uniform vec3 u_moonColor;
+uniform float u_starVisibility;
+
+const float kSkyRadiance = 3.0;  // the gradient's scale against the sun's ~3 (day_cycle.h)
+const float kSunCos = 0.99966;   // ~1.5 degrees radius, a little larger than the real sun, like vanilla's
+const float kMoonCos = 0.99978;
+
+float hash13(vec3 p) {
+  p = fract(p * 0.1031);
+  p += dot(p, p.zyx + 31.32);
+  return fract((p.x + p.y) * p.z);
+}
+
+vec3 skyColor(vec3 dir) {
+  float up = dir.y;
+  // Below the horizon the haze stays near the horizon's colour, so fog at the world's edge blends in.
+  vec3 color = kSkyRadiance * (up >= 0.0 ? mix(u_skyHorizon, u_skyZenith, sqrt(up))
+                                         : mix(u_skyHorizon, u_skyHorizon * 0.7, min(-up * 2.0, 1.0)));
+  float toSun = dot(dir, u_toSun);
+  color += u_sunColor * (0.5 * pow(max(toSun, 0.0), 24.0));  // glow around the sun
+  color += u_sunColor * 20.0 * smoothstep(kSunCos - 0.00006, kSunCos, toSun);
+  color += u_moonColor * 10.0 * smoothstep(kMoonCos - 0.00004, kMoonCos, dot(dir, u_toMoon));
+  if (u_starVisibility > 0.0 && up > 0.0) {
+    vec3 cell = floor(dir * 300.0);
+    float star = step(0.9985, hash13(cell));
+    color += vec3(star * u_starVisibility * smoothstep(0.0, 0.2, up) * 3.0);
+  }
+  return color;
+}

@@ -1,0 +1,50 @@
+#version 450 core
+// Deferred lighting: reads the G-buffer, writes linear HDR radiance. Sky pixels (depth 1) skip the
+// lighting and show the sky; distant geometry fades into the sky colour (fog).
+
+#include "lib/octahedral.glsl"
+#include "lib/lighting.glsl"
+#include "lib/sky.glsl"
+
+layout(binding = GB_ALBEDO) uniform sampler2D g_albedo;
+layout(binding = GB_NORMALS) uniform sampler2D g_normals;
+layout(binding = GB_SPECULAR) uniform sampler2D g_specular;
+layout(binding = GB_LIGHT) uniform sampler2D g_light;
+layout(binding = GB_DEPTH_UNIT) uniform sampler2D g_depth;
+
+uniform mat4 u_inverseViewProjection;  // camera-relative
+uniform vec2 u_fogRange;               // start, end (blocks)
+
+in vec2 v_ndc;
+layout(location = OUT_COLOR) out vec4 o_color;
+
+vec3 unproject(vec2 ndc, float depth) {
+  vec4 p = u_inverseViewProjection * vec4(ndc, depth * 2.0 - 1.0, 1.0);
+  return p.xyz / p.w;
+}
+
+void main() {
+  ivec2 pixel = ivec2(gl_FragCoord.xy);
+  float depth = texelFetch(g_depth, pixel, 0).r;
+  vec3 far = unproject(v_ndc, 1.0);
+  vec3 viewDir = far / max(length(far), 1e-20);
+  if (depth >= 1.0) {
+    o_color = vec4(skyColor(viewDir), 1.0);
+    return;
+  }
+  vec3 position = unproject(v_ndc, depth);
+  vec4 albedo = texelFetch(g_albedo, pixel, 0);
+  vec4 normals = texelFetch(g_normals, pixel, 0);
+  vec4 light = texelFetch(g_light, pixel, 0);
+  Surface s;
+  s.albedo = albedo.rgb;
+  s.materialAo = albedo.a;
+  s.normal = octDecode(normals.xy);
+  s.vertexNormal = octDecode(normals.zw);
+  s.spec = texelFetch(g_specular, pixel, 0);
+  s.blockLight = light.x;
+  s.skyLight = light.y;
+  vec3 color = shade(s, -viewDir);
+  float fog = smoothstep(u_fogRange.x, u_fogRange.y, length(position.xz));
+  o_color = vec4(mix(color, skyColor(viewDir), fog), 1.0);
+}

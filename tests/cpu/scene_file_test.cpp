@@ -1,0 +1,278 @@
+#include "scene/scene_file.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "core/error.h"
+#include "core/paths.h"
+#include "support/world_support.h"
+
+namespace terrasol {
+namespace {
+
+constexpr const char* kFile = "scenes/a.json";
+
+std::string errorOf(const std::string& json, const std::filesystem::path& file = kFile) {
+  try {
+    parseScene(json, file);
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+// The message must contain `part`, typically "scenes/a.json: <key path>: <what>".
+::testing::AssertionResult failsWith(const std::string& json, const std::string& part) {
+  const std::string message = errorOf(json);
+  if (message.find(part) != std::string::npos) return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure()
+         << "scene " << json << "\n  gave \"" << message << "\"\n  expected it to contain \"" << part << "\"";
+}
+
+::testing::AssertionResult parses(const std::string& json) {
+  const std::string message = errorOf(json);
+  if (message == "no error") return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure() << "scene " << json << "\n  gave \"" << message << "\"";
+}
+
+std::string withEdit(const std::string& edit) {
+  return R"({"world": {"edits": [)" + edit + "]}}";
+}
+
+void writeFile(const std::filesystem::path& file, const std::string& text) {
+  std::ofstream(file, std::ios::binary | std::ios::trunc) << text;
+}
+
+TEST(SceneFile, FullSceneParsesIntoTheRightValues) {
+  const SceneFile scene = parseScene(R"({
+    "world": { "generator": "flat", "seed": 18446744073709551615,
+               "edits": [ { "fill": [5, 70, -3, 1, 64, 2], "block": "stone" },
+                          { "set": [0, 71, 0], "block": "torch" } ] },
+    "packs": [ "default", "packs/hd" ],
+    "time": 13000,
+    "sun_path_rotation": -30,
+    "render": { "width": 640, "height": 360, "view_distance": 8, "debug_view": "normal" },
+    "camera": { "position": [1.5, 72, -4.25], "look_at": [0, 64, 0], "fov": 55.5 } })",
+                                     kFile);
+  EXPECT_EQ(scene.file, kFile);
+  EXPECT_EQ(scene.generator, "flat");
+  EXPECT_EQ(scene.seed, 18446744073709551615ull);
+  ASSERT_EQ(scene.edits.size(), 2u);
+  EXPECT_EQ(scene.edits[0].kind, SceneEdit::Kind::Fill);
+  EXPECT_EQ(scene.edits[0].from, glm::ivec3(1, 64, -3));  // corners normalised
+  EXPECT_EQ(scene.edits[0].to, glm::ivec3(5, 70, 2));
+  EXPECT_EQ(scene.edits[0].block, "stone");
+  EXPECT_EQ(scene.edits[0].key, "world.edits[0]");
+  EXPECT_EQ(scene.edits[1].kind, SceneEdit::Kind::Set);
+  EXPECT_EQ(scene.edits[1].from, glm::ivec3(0, 71, 0));
+  EXPECT_EQ(scene.edits[1].to, glm::ivec3(0, 71, 0));
+  EXPECT_EQ(scene.edits[1].block, "torch");
+  EXPECT_EQ(scene.edits[1].key, "world.edits[1]");
+  ASSERT_EQ(scene.packs.size(), 2u);
+  EXPECT_EQ(scene.packs[0], resourcePackDir() / "default");
+  EXPECT_EQ(scene.packs[1], std::filesystem::path("scenes/packs/hd"));
+  EXPECT_EQ(scene.time, 13000);
+  EXPECT_FLOAT_EQ(scene.sunPathRotation, -30.0f);
+  EXPECT_EQ(scene.width, 640);
+  EXPECT_EQ(scene.height, 360);
+  EXPECT_EQ(scene.viewDistance, 8);
+  EXPECT_EQ(scene.debugView, "normal");
+  EXPECT_EQ(scene.cameraPosition, glm::dvec3(1.5, 72.0, -4.25));
+  EXPECT_EQ(scene.cameraLookAt, glm::dvec3(0.0, 64.0, 0.0));
+  EXPECT_FLOAT_EQ(scene.fov, 55.5f);
+}
+
+TEST(SceneFile, AbsentKeysTakeTheirDefaults) {
+  for (const char* json : {"{}", R"({"world": {}, "render": {}, "camera": {}})"}) {
+    const SceneFile scene = parseScene(json, "");
+    EXPECT_EQ(scene.file, std::filesystem::path());
+    EXPECT_EQ(scene.generator, "terrain");
+    EXPECT_EQ(scene.seed, 1u);
+    EXPECT_TRUE(scene.edits.empty());
+    EXPECT_EQ(scene.packs, std::vector<std::filesystem::path>{resourcePackDir() / "default"});
+    EXPECT_EQ(scene.time, 6000);
+    EXPECT_EQ(scene.sunPathRotation, 0.0f);
+    EXPECT_EQ(scene.width, 320);
+    EXPECT_EQ(scene.height, 180);
+    EXPECT_EQ(scene.viewDistance, 4);
+    EXPECT_EQ(scene.debugView, "none");
+    EXPECT_EQ(scene.cameraPosition, glm::dvec3(0.0, 80.0, 0.0));
+    EXPECT_EQ(scene.cameraLookAt, glm::dvec3(0.0, 80.0, -1.0));
+    EXPECT_EQ(scene.fov, 70.0f);
+  }
+}
+
+TEST(SceneFile, PackPathsResolveAgainstTheSceneDirectory) {
+  const SceneFile scene = parseScene(
+      R"({"packs": ["default", "../packs/x", "/abs/pack", "hd.zip", "./a/../b"]})", "scenes/sub/a.json");
+  const std::vector<std::filesystem::path> expected = {resourcePackDir() / "default", "scenes/packs/x",
+                                                       "/abs/pack", "scenes/sub/hd.zip", "scenes/sub/b"};
+  EXPECT_EQ(scene.packs, expected);
+  // With no file name, relative paths stay relative (to the working directory).
+  EXPECT_EQ(parseScene(R"({"packs": ["hd"]})", "").packs, std::vector<std::filesystem::path>{"hd"});
+}
+
+TEST(SceneFile, LoadsFromDiskWithPacksBesideTheScene) {
+  const auto dir = testing::scratchDir("scene_file");
+  writeFile(dir / "scene.json", R"({"packs": ["default", "mine"], "time": 18000})");
+  const SceneFile scene = loadScene(dir / "scene.json");
+  EXPECT_EQ(scene.file, dir / "scene.json");
+  EXPECT_EQ(scene.time, 18000);
+  EXPECT_EQ(scene.packs, (std::vector<std::filesystem::path>{resourcePackDir() / "default", dir / "mine"}));
+}
+
+TEST(SceneFile, MissingOrUnreadableFileIsAnError) {
+  const auto dir = testing::scratchDir("scene_file_missing");
+  const auto missing = dir / "missing.json";
+  try {
+    loadScene(missing);
+    FAIL() << "no error for a missing file";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find(missing.string() + ": cannot open"), std::string::npos) << e.what();
+  }
+  try {
+    loadScene(dir);
+    FAIL() << "no error for a directory";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find(dir.string() + ": is a directory"), std::string::npos) << e.what();
+  }
+}
+
+TEST(SceneFile, SyntaxErrorsGiveLineAndColumn) {
+  EXPECT_TRUE(failsWith("{\n  \"time\": 6000,\n  \"render\": {\"width\": 32,,}\n}",
+                        "scenes/a.json:3:26: invalid JSON: "));
+  EXPECT_TRUE(failsWith("{\"time\": 6000", "scenes/a.json:1:14: invalid JSON: "));
+  EXPECT_TRUE(failsWith("", "scenes/a.json:1:1: invalid JSON: "));
+  EXPECT_TRUE(failsWith("{\"time\": 1e999}", "scenes/a.json: invalid JSON: number overflow"));
+  EXPECT_EQ(errorOf("{\n\n  x}", "").rfind("line 3, column 3: invalid JSON: ", 0), 0u)
+      << errorOf("{\n\n  x}", "");
+}
+
+TEST(SceneFile, CommentsAreAllowed) {
+  EXPECT_EQ(parseScene("{ // noon\n \"time\": 6000 /* ticks */ }", kFile).time, 6000);
+}
+
+TEST(SceneFile, UnknownKeysAreErrorsAtEveryLevel) {
+  EXPECT_TRUE(failsWith(R"({"tim": 5})", "scenes/a.json: tim: unknown key"));
+  EXPECT_TRUE(failsWith(R"({"world": {"gen": "flat"}})", "scenes/a.json: world.gen: unknown key"));
+  EXPECT_TRUE(failsWith(R"({"render": {"widht": 5}})", "scenes/a.json: render.widht: unknown key"));
+  EXPECT_TRUE(failsWith(R"({"camera": {"lookat": [0, 0, 0]}})", "scenes/a.json: camera.lookat: unknown key"));
+  EXPECT_TRUE(
+      failsWith(withEdit(R"({"set": [0, 0, 0], "block": "stone"}, {"set": [0, 0, 0], "blok": "stone"})"),
+                "scenes/a.json: world.edits[1].blok: unknown key"));
+  // The key path alone when the scene has no file name.
+  EXPECT_EQ(errorOf(R"({"tim": 5})", "").rfind("tim: unknown key", 0), 0u) << errorOf(R"({"tim": 5})", "");
+}
+
+TEST(SceneFile, WrongTypesNameTheKey) {
+  EXPECT_TRUE(failsWith("[1, 2]", "scenes/a.json: expected an object, got an array"));
+  EXPECT_TRUE(failsWith(R"({"world": 5})", "scenes/a.json: world: expected an object, got 5"));
+  EXPECT_TRUE(
+      failsWith(R"({"world": {"generator": "flatt"}})", "scenes/a.json: world.generator: expected one of"));
+  EXPECT_TRUE(failsWith(R"({"world": {"generator": 1}})", "scenes/a.json: world.generator: expected one of"));
+  EXPECT_TRUE(
+      failsWith(R"({"world": {"seed": "abc"}})", "scenes/a.json: world.seed: expected a whole number"));
+  EXPECT_TRUE(failsWith(R"({"world": {"seed": -1}})", "scenes/a.json: world.seed: expected a whole number"));
+  EXPECT_TRUE(failsWith(R"({"world": {"edits": {}}})", "scenes/a.json: world.edits: expected an array"));
+  EXPECT_TRUE(failsWith(R"({"packs": "default"})", "scenes/a.json: packs: expected a non-empty array"));
+  EXPECT_TRUE(failsWith(R"({"packs": []})", "scenes/a.json: packs: expected a non-empty array"));
+  EXPECT_TRUE(
+      failsWith(R"({"packs": ["default", 3]})", "scenes/a.json: packs[1]: expected a non-empty string"));
+  EXPECT_TRUE(failsWith(R"({"packs": [""]})", "scenes/a.json: packs[0]: expected a non-empty string"));
+  EXPECT_TRUE(failsWith(R"({"time": "noon"})", "scenes/a.json: time: expected a whole number"));
+  EXPECT_TRUE(
+      failsWith(R"({"sun_path_rotation": null})", "scenes/a.json: sun_path_rotation: expected a number"));
+  EXPECT_TRUE(failsWith(R"({"render": []})", "scenes/a.json: render: expected an object"));
+  EXPECT_TRUE(
+      failsWith(R"({"render": {"width": "320"}})", "scenes/a.json: render.width: expected a whole number"));
+  EXPECT_TRUE(failsWith(R"({"camera": {"fov": "wide"}})", "scenes/a.json: camera.fov: expected a number"));
+  EXPECT_TRUE(failsWith(R"({"camera": {"position": [0, "1", 0]}})",
+                        "scenes/a.json: camera.position[1]: expected a number"));
+}
+
+TEST(SceneFile, WrongArrayLengthsNameTheKey) {
+  EXPECT_TRUE(failsWith(R"({"camera": {"position": [1, 2]}})",
+                        "scenes/a.json: camera.position: expected an array of 3 numbers"));
+  EXPECT_TRUE(failsWith(R"({"camera": {"look_at": [1, 2, 3, 4]}})",
+                        "scenes/a.json: camera.look_at: expected an array of 3 numbers"));
+  EXPECT_TRUE(failsWith(R"({"camera": {"position": 5}})",
+                        "scenes/a.json: camera.position: expected an array of 3 numbers"));
+  EXPECT_TRUE(
+      failsWith(withEdit(R"({"set": [0, 0, 0], "block": "a"}, {"fill": [0, 0, 0, 1, 1], "block": "a"})"),
+                "scenes/a.json: world.edits[1].fill: expected an array of 6 whole numbers"));
+  EXPECT_TRUE(failsWith(withEdit(R"({"set": [0, 0], "block": "a"})"),
+                        "scenes/a.json: world.edits[0].set: expected an array of 3 whole numbers"));
+}
+
+TEST(SceneFile, EditCoordinatesAreWholeInt32Numbers) {
+  EXPECT_TRUE(failsWith(withEdit(R"({"set": [0, 1.5, 0], "block": "a"})"),
+                        "scenes/a.json: world.edits[0].set[1]: expected a whole number"));
+  EXPECT_TRUE(failsWith(
+      withEdit(R"({"fill": [0, 0, 0, 3000000000, 0, 0], "block": "a"})"),
+      "scenes/a.json: world.edits[0].fill[3]: expected a whole number from -2147483648 to 2147483647"));
+  EXPECT_TRUE(failsWith(withEdit(R"({"set": [0, true, 0], "block": "a"})"),
+                        "scenes/a.json: world.edits[0].set[1]: expected a whole number"));
+  // Outside the world's height is fine (ignored later); 2.0 and 1e3 are whole.
+  const SceneFile scene = parseScene(withEdit(R"({"set": [-2147483648, 1000, 2.0], "block": "a"},
+                                                 {"fill": [2147483647, -500, 1e3, 0, 0, 0], "block": "b"})"),
+                                     kFile);
+  ASSERT_EQ(scene.edits.size(), 2u);
+  EXPECT_EQ(scene.edits[0].from, glm::ivec3(-2147483647 - 1, 1000, 2));
+  EXPECT_EQ(scene.edits[1].from, glm::ivec3(0, -500, 0));
+  EXPECT_EQ(scene.edits[1].to, glm::ivec3(2147483647, 0, 1000));
+}
+
+TEST(SceneFile, EditsNeedExactlyOneShapeAndABlock) {
+  EXPECT_TRUE(failsWith(withEdit(R"({"fill": [0, 0, 0, 1, 1, 1], "set": [0, 0, 0], "block": "a"})"),
+                        "scenes/a.json: world.edits[0]: has both \"fill\" and \"set\""));
+  EXPECT_TRUE(failsWith(withEdit(R"({"block": "a"})"), "scenes/a.json: world.edits[0]: needs \"fill\""));
+  EXPECT_TRUE(failsWith(withEdit(R"({"set": [0, 0, 0], "block": "a"}, {"set": [0, 0, 0]})"),
+                        "scenes/a.json: world.edits[1]: needs \"block\""));
+  EXPECT_TRUE(failsWith(withEdit(R"({"set": [0, 0, 0], "block": ""})"),
+                        "scenes/a.json: world.edits[0].block: expected a non-empty string"));
+  EXPECT_TRUE(failsWith(withEdit(R"({"set": [0, 0, 0], "block": 1})"),
+                        "scenes/a.json: world.edits[0].block: expected a non-empty string"));
+  EXPECT_TRUE(failsWith(withEdit(R"("stone")"), "scenes/a.json: world.edits[0]: expected an object"));
+}
+
+TEST(SceneFile, OutOfRangeValuesNameTheKey) {
+  EXPECT_TRUE(failsWith(R"({"render": {"width": 0}})",
+                        "scenes/a.json: render.width: expected a whole number from 1"));
+  EXPECT_TRUE(failsWith(R"({"render": {"width": 8193}})", "scenes/a.json: render.width: "));
+  EXPECT_TRUE(failsWith(R"({"render": {"width": 320.5}})", "scenes/a.json: render.width: "));
+  EXPECT_TRUE(failsWith(R"({"render": {"height": 0}})", "scenes/a.json: render.height: "));
+  EXPECT_TRUE(failsWith(R"({"render": {"height": 9000}})", "scenes/a.json: render.height: "));
+  EXPECT_TRUE(failsWith(R"({"render": {"view_distance": 33}})", "scenes/a.json: render.view_distance: "));
+  EXPECT_TRUE(failsWith(R"({"render": {"view_distance": -1}})", "scenes/a.json: render.view_distance: "));
+  EXPECT_TRUE(
+      failsWith(R"({"camera": {"fov": 0}})", "scenes/a.json: camera.fov: expected a number greater than 0"));
+  EXPECT_TRUE(failsWith(R"({"camera": {"fov": 180}})", "scenes/a.json: camera.fov: "));
+  EXPECT_TRUE(failsWith(R"({"camera": {"fov": -10}})", "scenes/a.json: camera.fov: "));
+  EXPECT_TRUE(failsWith(R"({"sun_path_rotation": 90.5})",
+                        "scenes/a.json: sun_path_rotation: expected a number from"));
+  EXPECT_TRUE(failsWith(R"({"sun_path_rotation": -91})", "scenes/a.json: sun_path_rotation: "));
+  EXPECT_TRUE(failsWith(R"({"time": -1})", "scenes/a.json: time: expected a whole number >= 0"));
+  EXPECT_TRUE(failsWith(R"({"time": 100.5})", "scenes/a.json: time: "));
+  EXPECT_TRUE(failsWith(R"({"time": 1e30})", "scenes/a.json: time: "));
+  EXPECT_TRUE(failsWith(R"({"render": {"debug_view": "normals"}})",
+                        "scenes/a.json: render.debug_view: expected one of \"none\", \"albedo\""));
+}
+
+TEST(SceneFile, ValuesAtTheEdgesOfTheirRangesParse) {
+  EXPECT_TRUE(parses(R"({"render": {"width": 1, "height": 8192, "view_distance": 0}})"));
+  EXPECT_TRUE(parses(R"({"render": {"width": 8192, "height": 1, "view_distance": 32}})"));
+  EXPECT_TRUE(parses(R"({"camera": {"fov": 1}, "sun_path_rotation": -90})"));
+  EXPECT_TRUE(parses(R"({"camera": {"fov": 170}, "sun_path_rotation": 90})"));
+  EXPECT_TRUE(parses(R"({"camera": {"position": [3, 4, 5], "look_at": [3, 4, 5]}})"));
+  EXPECT_TRUE(parses(R"({"world": {"generator": "void", "seed": 0}, "time": 0})"));
+  EXPECT_EQ(parseScene(R"({"time": 1e9})", kFile).time, 1000000000);
+  EXPECT_EQ(parseScene(R"({"time": 9223372036854775807})", kFile).time, 9223372036854775807);
+  for (std::string_view view : kDebugViews) {
+    const std::string json = R"({"render": {"debug_view": ")" + std::string(view) + "\"}}";
+    EXPECT_EQ(parseScene(json, kFile).debugView, view);
+  }
+}
+
+}  // namespace
+}  // namespace terrasol
