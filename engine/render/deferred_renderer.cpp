@@ -1,6 +1,7 @@
 #include "render/deferred_renderer.h"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 
 #include <glm/gtc/matrix_inverse.hpp>
@@ -27,6 +28,11 @@ gl::Program build(const ShaderPreprocessor& shaders, const char* vertex, const c
   return buildProgram(shaders, {{GL_VERTEX_SHADER, vertex}, {GL_FRAGMENT_SHADER, fragment}}, defines);
 }
 
+std::vector<ShaderDefine> lightingDefines(const RendererOptions& options) {
+  if (options.ggxSpecular) return {{"SPECULAR_GGX", "1"}};
+  return {};
+}
+
 void setVec3(GLuint program, const char* name, glm::vec3 v) {
   glProgramUniform3fv(program, glGetUniformLocation(program, name), 1, glm::value_ptr(v));
 }
@@ -39,6 +45,22 @@ glm::vec3 ambientTint(glm::vec3 zenith) {
   const float luminance = glm::dot(zenith, glm::vec3(0.2126f, 0.7152f, 0.0722f));
   const glm::vec3 hue = luminance > 1e-5f ? zenith / luminance : glm::vec3(1.0f);
   return glm::mix(glm::vec3(1.0f), glm::clamp(hue, 0.0f, 4.0f), 0.4f);
+}
+
+// The six planes of a view-projection's frustum (Gribb and Hartmann), inside where dot(p, (x, 1)) >= 0.
+std::array<glm::vec4, 6> frustumPlanes(const glm::mat4& m) {
+  const glm::mat4 t = glm::transpose(m);
+  return {t[3] + t[0], t[3] - t[0], t[3] + t[1], t[3] - t[1], t[3] + t[2], t[3] - t[2]};
+}
+
+// False when the box from `lo` to `lo + size` is entirely outside one plane.
+bool boxVisible(const std::array<glm::vec4, 6>& planes, glm::vec3 lo, float size) {
+  for (const glm::vec4& p : planes) {
+    // The box corner furthest along the plane's normal.
+    const glm::vec3 far = lo + glm::vec3(p.x > 0.0f ? size : 0.0f, p.y > 0.0f ? size : 0.0f, p.z > 0.0f ? size : 0.0f);
+    if (glm::dot(glm::vec3(p), far) + p.w < 0.0f) return false;
+  }
+  return true;
 }
 
 // Ends a pass: with timings on, waits for the GPU and records the pass's wall time.
@@ -69,17 +91,19 @@ struct DeferredRenderer::View {
   glm::dvec3 camera;
   glm::mat4 viewProjection;  // camera-relative
   glm::mat4 inverseViewProjection;
+  std::array<glm::vec4, 6> frustum;  // camera-relative
   glm::vec2 nearFar;
   glm::vec2 fogRange;
   DayState day;
   bool materialAo;
 };
 
-DeferredRenderer::DeferredRenderer(const ShaderPreprocessor& shaders, const Atlas& atlas, const BiomeTints& tints)
+DeferredRenderer::DeferredRenderer(const ShaderPreprocessor& shaders, const Atlas& atlas, const BiomeTints& tints,
+                                   const RendererOptions& options)
     : geometry_(build(shaders, "gbuffer.vert", "gbuffer.frag")),
       cutout_(build(shaders, "gbuffer.vert", "gbuffer.frag", {{"CUTOUT", "1"}})),
-      lighting_(build(shaders, "fullscreen.vert", "lighting.frag")),
-      translucent_(build(shaders, "gbuffer.vert", "translucent.frag")),
+      lighting_(build(shaders, "fullscreen.vert", "lighting.frag", lightingDefines(options))),
+      translucent_(build(shaders, "gbuffer.vert", "translucent.frag", lightingDefines(options))),
       final_(build(shaders, "fullscreen.vert", "final.frag")),
       debug_(build(shaders, "fullscreen.vert", "debug_view.frag")),
       textures_(atlas, tints),
@@ -107,6 +131,7 @@ void DeferredRenderer::render(const FrameInputs& frame, const SectionMeshes& mes
   const glm::mat4 projection = camera.projection(static_cast<float>(size.x) / static_cast<float>(size.y));
   view.viewProjection = projection * camera.view();
   view.inverseViewProjection = glm::inverse(view.viewProjection);
+  view.frustum = frustumPlanes(view.viewProjection);
   view.nearFar = {camera.nearPlane, camera.farPlane};
   view.fogRange = {0.8f * frame.viewDistance, frame.viewDistance};
   view.day = dayStateAt(frame.ticks, frame.sunPathRotation);
@@ -169,6 +194,7 @@ void DeferredRenderer::drawLayer(GLuint program, const View& view, const Section
     // In double: far from the origin a float cannot hold both the section and the small offset.
     const glm::dvec3 corner(pos.x * 16.0, kMinY + pos.section * 16.0, pos.z * 16.0);
     const glm::vec3 offset(corner - view.camera);
+    if (!boxVisible(view.frustum, offset, 16.0f)) continue;
     draws.push_back({&l, offset, glm::length(offset + glm::vec3(8.0f))});
   }
   if (draws.empty()) return;

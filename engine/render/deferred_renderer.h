@@ -38,6 +38,11 @@ struct FrameInputs {
   bool materialAo = true;         // LabPBR _n blue darkens ambient light
 };
 
+// Choices that pick shader variants, fixed for the renderer's life.
+struct RendererOptions {
+  bool ggxSpecular = false;  // GGX/Smith instead of energy-conserving Blinn-Phong
+};
+
 struct PassTiming {
   std::string pass;
   double ms;
@@ -45,7 +50,8 @@ struct PassTiming {
 
 class DeferredRenderer {
  public:
-  DeferredRenderer(const ShaderPreprocessor& shaders, const Atlas& atlas, const BiomeTints& tints);
+  DeferredRenderer(const ShaderPreprocessor& shaders, const Atlas& atlas, const BiomeTints& tints,
+                   const RendererOptions& options = {});
 
   // Draws a frame into `framebuffer` (0 for a window) of `size`. With `timings`, every pass ends
   // with glFinish and its wall time is appended (llvmpipe has no useful timer queries).

@@ -221,8 +221,13 @@ std::vector<path> parsePacks(const json& value, const path& sceneDir) {
   return packs;
 }
 
+bool boolean(const json& value, const std::string& key) {
+  if (!value.is_boolean()) expected(key, "true or false", value);
+  return value.get<bool>();
+}
+
 void parseRender(const json& render, SceneFile& scene) {
-  checkObject(render, "render", {"width", "height", "view_distance", "debug_view"});
+  checkObject(render, "render", {"width", "height", "view_distance", "debug_view", "specular", "material_ao"});
   if (const json* v = field(render, "width")) {
     scene.width = static_cast<int>(wholeNumber(*v, "render.width", 1, 8192));
   }
@@ -235,6 +240,8 @@ void parseRender(const json& render, SceneFile& scene) {
   if (const json* v = field(render, "debug_view")) {
     scene.debugView = oneOf(*v, "render.debug_view", kDebugViews);
   }
+  if (const json* v = field(render, "specular")) scene.specular = oneOf(*v, "render.specular", kSpecularModels);
+  if (const json* v = field(render, "material_ao")) scene.materialAo = boolean(*v, "render.material_ao");
 }
 
 void parseCamera(const json& camera, SceneFile& scene) {

@@ -34,10 +34,15 @@ struct SceneFile {
   int width = 320, height = 180;   // pixels, 1..8192 each
   int viewDistance = 4;            // chunks, 0..32
   std::string debugView = "none";  // "render.debug_view": one of kDebugViews
+  std::string specular = "blinn_phong";  // "render.specular": one of kSpecularModels
+  bool materialAo = true;          // "render.material_ao": LabPBR _n blue darkens ambient light
   glm::dvec3 cameraPosition{0.0, 80.0, 0.0};
   glm::dvec3 cameraLookAt{0.0, 80.0, -1.0};
   float fov = 70.0f;  // vertical degrees, in (0, 180)
 };
+
+// Specular lobes of the lighting: energy-conserving Blinn-Phong (the seeds') or GGX with Smith visibility.
+inline constexpr std::array<std::string_view, 2> kSpecularModels = {"blinn_phong", "ggx"};
 
 // Debug views of the G-buffer, "none" first.
 inline constexpr std::array<std::string_view, 9> kDebugViews = {

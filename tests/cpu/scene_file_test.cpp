@@ -191,6 +191,15 @@ TEST(SceneFile, WrongTypesNameTheKey) {
                         "scenes/a.json: camera.position[1]: expected a number"));
 }
 
+TEST(SceneFile, SpecularModelAndMaterialAo) {
+  const SceneFile scene = parseScene(R"({"render": {"specular": "ggx", "material_ao": false}})", "scenes/a.json");
+  EXPECT_EQ(scene.specular, "ggx");
+  EXPECT_FALSE(scene.materialAo);
+  EXPECT_TRUE(failsWith(R"({"render": {"specular": "phong"}})", "scenes/a.json: render.specular: expected one of"));
+  EXPECT_TRUE(
+      failsWith(R"({"render": {"material_ao": 1}})", "scenes/a.json: render.material_ao: expected true or false"));
+}
+
 TEST(SceneFile, WrongArrayLengthsNameTheKey) {
   EXPECT_TRUE(failsWith(R"({"camera": {"position": [1, 2]}})",
                         "scenes/a.json: camera.position: expected an array of 3 numbers"));

@@ -48,6 +48,26 @@ TEST_F(SceneRenderTest, EveryDebugViewMatchesItsGolden) {
   }
 }
 
+// The scene parser's names and the renderer's views are two lists: they must agree.
+TEST(DebugViews, EverySceneNameMapsToTheRendererViewOfTheSameIndex) {
+  ASSERT_EQ(std::size(kDebugViews), std::size(kDebugViewNames));
+  for (std::size_t i = 0; i < std::size(kDebugViews); ++i) {
+    SceneFile scene;
+    scene.debugView = std::string(kDebugViews[i]);
+    EXPECT_EQ(static_cast<std::size_t>(debugViewOf(scene)), i) << kDebugViews[i];
+  }
+}
+
+// GGX is a real alternative lobe: a smooth metal close up looks different with it, and stays finite.
+TEST_F(SceneRenderTest, GgxSpecularIsAVariantOfItsOwn) {
+  SceneFile scene = loadScene(kScenes / "metal_emissive.json");
+  const Image blinnPhong = render(scene);
+  scene.specular = "ggx";
+  const Image ggx = render(scene);
+  EXPECT_GT(compareImages(ggx, blinnPhong, {}).failingPixels, 0);
+  EXPECT_TRUE(testing::matchesGolden(ggx, "scene_metal_emissive_ggx"));
+}
+
 TEST_F(SceneRenderTest, TheSameSceneRendersToIdenticalPixelsTwice) {
   const SceneFile scene = loadScene(kScenes / "water_glass.json");
   const Image first = render(scene);

@@ -47,8 +47,9 @@ DebugView debugViewOf(const SceneFile& scene) {
 }
 
 struct SceneRenderer::Gpu {
-  Gpu(const ShaderPreprocessor& shaders, const Atlas& atlas, const BiomeTints& tints, glm::ivec2 size)
-      : renderer(shaders, atlas, tints), target(size) {}
+  Gpu(const ShaderPreprocessor& shaders, const Atlas& atlas, const BiomeTints& tints, const RendererOptions& options,
+      glm::ivec2 size)
+      : renderer(shaders, atlas, tints, options), target(size) {}
   DeferredRenderer renderer;
   SectionMeshes meshes;
   RenderTarget target;
@@ -62,6 +63,7 @@ SceneRenderer::SceneRenderer(const SceneFile& scene) : scene_(scene) {
   frame_.sunPathRotation = scene.sunPathRotation;
   frame_.viewDistance = static_cast<float>(scene.viewDistance * 16);
   frame_.debugView = debugViewOf(scene);
+  frame_.materialAo = scene.materialAo;
 
   const auto start = std::chrono::steady_clock::now();
   const BlockRegistry blocks = BlockRegistry::fromFile(resourcePackDir() / "default" / "blocks.json");
@@ -78,7 +80,9 @@ SceneRenderer::SceneRenderer(const SceneFile& scene) : scene_(scene) {
   stats_.worldMs = msSince(worldStart);
 
   const ShaderPreprocessor shaders(shaderDir());
-  gpu_ = std::make_unique<Gpu>(shaders, atlas.atlas, tints, glm::ivec2(scene.width, scene.height));
+  RendererOptions options;
+  options.ggxSpecular = scene.specular == "ggx";
+  gpu_ = std::make_unique<Gpu>(shaders, atlas.atlas, tints, options, glm::ivec2(scene.width, scene.height));
   for (const auto& mesh : meshes) {
     gpu_->meshes.upload(mesh);
     stats_.quads += mesh.quads();
