@@ -9,20 +9,23 @@ struct Vec {
   int x, y, z;
 };
 
-// Per face (Direction order): the normal n and tangents t, b with t x b = n, so corners taken as
-// (-,-) (+,-) (+,+) (-,+) in (t, b) run counter-clockwise seen from outside. u runs along t and v
-// against b (v = 0 at the texture's top).
+// Per face (Direction order), from kFaceBases in integers: the normal n and tangents t, b with
+// t x b = n, so corners taken as (-,-) (+,-) (+,+) (-,+) in (t, b) run counter-clockwise seen from
+// outside. u runs along t and v against b (v = 0 at the texture's top).
 struct FaceFrame {
   Vec n, t, b;
 };
-constexpr FaceFrame kFaces[6] = {
-    {{-1, 0, 0}, {0, 0, 1}, {0, 1, 0}},   // West
-    {{1, 0, 0}, {0, 0, -1}, {0, 1, 0}},   // East
-    {{0, -1, 0}, {1, 0, 0}, {0, 0, 1}},   // Down
-    {{0, 1, 0}, {1, 0, 0}, {0, 0, -1}},   // Up
-    {{0, 0, -1}, {-1, 0, 0}, {0, 1, 0}},  // North
-    {{0, 0, 1}, {1, 0, 0}, {0, 1, 0}},    // South
-};
+constexpr Vec toVec(const float (&v)[3]) {
+  return {static_cast<int>(v[0]), static_cast<int>(v[1]), static_cast<int>(v[2])};
+}
+constexpr auto kFaces = [] {
+  std::array<FaceFrame, 6> faces{};
+  for (int d = 0; d < 6; ++d) {
+    const FaceBasis& b = kFaceBases[d];
+    faces[static_cast<std::size_t>(d)] = {toVec(b.normal), toVec(b.tangent), toVec(b.up)};
+  }
+  return faces;
+}();
 constexpr int kCornerSigns[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
 
 constexpr int offset(int dx, int dy, int dz) {
