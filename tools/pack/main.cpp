@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "assets/atlas.h"
+#include "scene/block_atlas.h"
 #include "core/error.h"
 #include "core/tool_main.h"
 #include "core/paths.h"
@@ -71,19 +72,13 @@ int inspect(const PackStack& packs) {
 
 int atlas(const PackStack& packs, const std::filesystem::path& out) {
   const BlockRegistry blocks = BlockRegistry::fromFile(resourcePackDir() / "default" / "blocks.json");
-  std::set<std::vector<std::string>> wanted;
-  for (BlockId id = 0; id < blocks.size(); ++id) {
-    for (const auto& face : blocks[id].textures) {
-      if (!face.empty()) wanted.insert(face);
-    }
-  }
   const auto start = std::chrono::steady_clock::now();
-  std::vector<PackProblem> problems;
-  std::vector<LoadedTexture> textures;
-  for (const auto& candidates : wanted) textures.push_back(loadBlockTexture(packs, candidates, problems));
-  const Atlas built = buildAtlas(textures);
+  const BlockAtlas blockAtlas = buildBlockAtlas(blocks, packs);  // exactly what the renderer gets
+  const Atlas& built = blockAtlas.atlas;
   const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  for (const auto& p : problems) std::printf("%s: %s\n", p.severity == PackProblem::Severity::Error ? "error" : "warning", p.message.c_str());
+  for (const auto& p : blockAtlas.problems) {
+    std::printf("%s: %s\n", p.severity == PackProblem::Severity::Error ? "error" : "warning", p.message.c_str());
+  }
   std::filesystem::create_directories(out);
   for (int level = 0; level < built.levels(); ++level) {
     const std::string suffix = level == 0 ? "" : "_mip" + std::to_string(level);
