@@ -9,9 +9,12 @@ glm::mat4 Camera::view() const {
   glm::vec3 forward = lookAt - position;
   const float length = glm::length(forward);
   forward = length > 1e-6f ? forward / length : glm::vec3(0.0f, 0.0f, -1.0f);
-  // Y is up; looking (nearly) straight along it, take -Z as "up" on screen instead.
-  const glm::vec3 up = std::abs(forward.y) > 0.9999f ? glm::vec3(0.0f, 0.0f, -1.0f) : glm::vec3(0.0f, 1.0f, 0.0f);
-  return glm::lookAt(position, position + forward, up);
+  // The up hint, unless the view runs (nearly) along it: then Y, or -Z when looking along Y.
+  const float upLength = glm::length(up);
+  glm::vec3 hint = upLength > 1e-6f ? up / upLength : glm::vec3(0.0f, 1.0f, 0.0f);
+  if (std::abs(glm::dot(forward, hint)) > 0.9999f) hint = glm::vec3(0.0f, 1.0f, 0.0f);
+  if (std::abs(glm::dot(forward, hint)) > 0.9999f) hint = glm::vec3(0.0f, 0.0f, -1.0f);
+  return glm::lookAt(position, position + forward, hint);
 }
 
 glm::mat4 Camera::projection(float aspect) const {

@@ -12,6 +12,7 @@ struct Camera {
   float fovDegrees = 70.0f;  // vertical
   float nearPlane = 0.05f;
   float farPlane = 1000.0f;
+  glm::vec3 up{0.0f, 1.0f, 0.0f};  // screen-up hint; ignored when (nearly) along the view direction
 
   glm::mat4 view() const;
   glm::mat4 projection(float aspect) const;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <cmath>
 
 #include <glm/gtc/matrix_inverse.hpp>
 #include <glm/gtc/type_ptr.hpp>
@@ -126,6 +127,7 @@ void DeferredRenderer::render(const FrameInputs& frame, const SectionMeshes& mes
   Camera camera;  // at the origin: everything is drawn relative to the camera
   const glm::dvec3 forward = frame.cameraLookAt - frame.cameraPosition;
   camera.lookAt = glm::vec3(forward);
+  camera.up = glm::vec3(frame.cameraUp);
   camera.fovDegrees = frame.fovDegrees;
   camera.farPlane = std::max(2.0f * frame.viewDistance, 256.0f);
   const glm::mat4 projection = camera.projection(static_cast<float>(size.x) / static_cast<float>(size.y));
@@ -143,19 +145,25 @@ void DeferredRenderer::render(const FrameInputs& frame, const SectionMeshes& mes
   textures_.update(frame.ticks);
 
   PassClock clock(timings);
+  cull(view, meshes);
   geometryPass(view, meshes);
   clock.lap("geometry");
   if (frame.debugView != DebugView::None) {
     glProgramUniform1i(debug_.id(), glGetUniformLocation(debug_.id(), "u_view"), static_cast<int>(frame.debugView));
     debugPass(view, framebuffer, size);
     clock.lap("debug_view");
+    for (const char* pass : {"lighting", "translucent", "final"}) {
+      stats_.passesSkipped.push_back({pass, "a debug view shows the G-buffer instead"});
+    }
     return;
   }
   lightingPass(view);
   clock.lap("lighting");
-  if (meshes.quads(MeshLayer::Translucent) > 0) {
+  if (visibleQuads(MeshLayer::Translucent) > 0) {
     translucentPass(view, meshes);
     clock.lap("translucent");
+  } else {
+    stats_.passesSkipped.push_back({"translucent", "no translucent geometry in view"});
   }
   finalPass(framebuffer, size);
   clock.lap("final");
@@ -180,6 +188,28 @@ void DeferredRenderer::geometryPass(const View& view, const SectionMeshes& meshe
   glDisable(GL_FRAMEBUFFER_SRGB);
 }
 
+void DeferredRenderer::cull(const View& view, const SectionMeshes& meshes) {
+  visible_.clear();
+  stats_ = {};
+  for (const auto& [pos, section] : meshes.sections()) {
+    // In double: far from the origin a float cannot hold both the section and the small offset.
+    const glm::dvec3 corner(pos.x * 16.0, kMinY + pos.section * 16.0, pos.z * 16.0);
+    const glm::vec3 offset(corner - view.camera);
+    if (boxVisible(view.frustum, offset, 16.0f)) {
+      visible_.push_back({&section, offset});
+    } else {
+      ++stats_.sectionsCulled;
+    }
+  }
+  stats_.sectionsDrawn = static_cast<int>(visible_.size());
+}
+
+std::size_t DeferredRenderer::visibleQuads(MeshLayer layer) const {
+  std::size_t quads = 0;
+  for (const Visible& v : visible_) quads += static_cast<std::size_t>(v.section->layers[static_cast<std::size_t>(layer)].quads);
+  return quads;
+}
+
 void DeferredRenderer::drawLayer(GLuint program, const View& view, const SectionMeshes& meshes, MeshLayer layer,
                                  bool backToFront) {
   struct Draw {
@@ -188,14 +218,9 @@ void DeferredRenderer::drawLayer(GLuint program, const View& view, const Section
     float distance;
   };
   std::vector<Draw> draws;
-  for (const auto& [pos, section] : meshes.sections()) {
-    const auto& l = section.layers[static_cast<std::size_t>(layer)];
-    if (l.quads == 0) continue;
-    // In double: far from the origin a float cannot hold both the section and the small offset.
-    const glm::dvec3 corner(pos.x * 16.0, kMinY + pos.section * 16.0, pos.z * 16.0);
-    const glm::vec3 offset(corner - view.camera);
-    if (!boxVisible(view.frustum, offset, 16.0f)) continue;
-    draws.push_back({&l, offset, glm::length(offset + glm::vec3(8.0f))});
+  for (const Visible& v : visible_) {
+    const auto& l = v.section->layers[static_cast<std::size_t>(layer)];
+    if (l.quads > 0) draws.push_back({&l, v.offset, glm::length(v.offset + glm::vec3(8.0f))});
   }
   if (draws.empty()) return;
   if (backToFront) std::stable_sort(draws.begin(), draws.end(), [](const Draw& a, const Draw& b) { return a.distance > b.distance; });
@@ -289,6 +314,24 @@ void DeferredRenderer::debugPass(const View& view, GLuint framebuffer, glm::ivec
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glBindVertexArray(0);
   glUseProgram(0);
+}
+
+std::size_t nonFinitePixels(const GBuffer& gbuffer) {
+  const glm::ivec2 size = gbuffer.size();
+  const std::size_t pixels = static_cast<std::size_t>(size.x) * static_cast<std::size_t>(size.y);
+  std::vector<bool> bad(pixels, false);
+  std::vector<float> texels(pixels * 4);
+  auto scan = [&](GLuint texture, GLenum format, int channels) {
+    glGetTextureImage(texture, 0, format, GL_FLOAT, static_cast<GLsizei>(pixels * 4 * sizeof(float)), texels.data());
+    for (std::size_t p = 0; p < pixels; ++p)
+      for (int c = 0; c < channels; ++c) {
+        if (!std::isfinite(texels[p * static_cast<std::size_t>(channels) + static_cast<std::size_t>(c)])) bad[p] = true;
+      }
+  };
+  scan(gbuffer.scene(), GL_RGBA, 4);
+  scan(gbuffer.target(gbuffer::kNormals), GL_RGBA, 4);
+  scan(gbuffer.depth(), GL_DEPTH_COMPONENT, 1);
+  return static_cast<std::size_t>(std::count(bad.begin(), bad.end(), true));
 }
 
 }  // namespace terrasol

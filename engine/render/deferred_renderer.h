@@ -30,6 +30,7 @@ inline constexpr const char* kDebugViewNames[] = {"none",     "albedo", "normal"
 struct FrameInputs {
   glm::dvec3 cameraPosition{0.0};
   glm::dvec3 cameraLookAt{0.0, 0.0, -1.0};
+  glm::dvec3 cameraUp{0.0, 1.0, 0.0};  // screen-up hint (camera paths roll it continuously)
   float fovDegrees = 70.0f;
   std::int64_t ticks = 6000;      // world time
   float sunPathRotation = 0.0f;   // degrees
@@ -48,6 +49,15 @@ struct PassTiming {
   double ms;
 };
 
+// What the last frame did, for reports.
+struct FrameStats {
+  int sectionsDrawn = 0, sectionsCulled = 0;  // 16x16x16 sections with a mesh, inside / outside the frustum
+  struct Skipped {
+    std::string pass, why;
+  };
+  std::vector<Skipped> passesSkipped;
+};
+
 class DeferredRenderer {
  public:
   DeferredRenderer(const ShaderPreprocessor& shaders, const Atlas& atlas, const BiomeTints& tints,
@@ -60,15 +70,22 @@ class DeferredRenderer {
 
   // The targets of the last frame (for tests and reports), null before the first.
   const GBuffer* gbuffer() const { return gbuffer_ ? &*gbuffer_ : nullptr; }
+  const FrameStats& lastFrame() const { return stats_; }
 
  private:
   struct View;
+  struct Visible {
+    const SectionMeshes::Section* section;
+    glm::vec3 offset;  // section corner minus camera
+  };
+  void cull(const View& view, const SectionMeshes& meshes);
   void geometryPass(const View& view, const SectionMeshes& meshes);
   void lightingPass(const View& view);
   void translucentPass(const View& view, const SectionMeshes& meshes);
   void finalPass(GLuint framebuffer, glm::ivec2 size);
   void debugPass(const View& view, GLuint framebuffer, glm::ivec2 size);
   void drawLayer(GLuint program, const View& view, const SectionMeshes& meshes, MeshLayer layer, bool backToFront);
+  std::size_t visibleQuads(MeshLayer layer) const;
   void setLightingUniforms(GLuint program, const View& view) const;
 
   gl::Program geometry_, cutout_, lighting_, translucent_, final_, debug_;
@@ -76,6 +93,11 @@ class DeferredRenderer {
   gl::Texture lightmap_;
   gl::VertexArray empty_;  // full-screen passes make their vertices from gl_VertexID
   std::optional<GBuffer> gbuffer_;
+  std::vector<Visible> visible_;  // this frame's sections inside the frustum
+  FrameStats stats_;
 };
+
+// Pixels of the last frame holding NaN or Inf in any float target (lit scene, normals, depth).
+std::size_t nonFinitePixels(const GBuffer& gbuffer);
 
 }  // namespace terrasol

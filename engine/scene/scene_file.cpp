@@ -23,6 +23,7 @@ constexpr std::array<std::string_view, 3> kGenerators = {"void", "flat", "terrai
 constexpr std::int64_t kMaxInt64 = std::numeric_limits<std::int64_t>::max();
 constexpr std::int64_t kMinInt32 = std::numeric_limits<std::int32_t>::min();
 constexpr std::int64_t kMaxInt32 = std::numeric_limits<std::int32_t>::max();
+constexpr std::int64_t kMaxFrames = 100000;
 
 // Appends, never `"literal" + std::string` chains (gcc 12 warns wrongly about those under -Werror).
 std::string join(std::initializer_list<std::string_view> parts) {
@@ -170,7 +171,7 @@ std::array<int, N> cells(const json& value, const std::string& key) {
 }
 
 SceneEdit parseEdit(const json& value, const std::string& key) {
-  checkObject(value, key, {"fill", "set", "block"});
+  checkObject(value, key, {"fill", "set", "block", "at_frame"});
   const json* fill = field(value, "fill");
   const json* set = field(value, "set");
   if (fill && set) fail(key, "has both \"fill\" and \"set\"; give one");
@@ -188,6 +189,9 @@ SceneEdit parseEdit(const json& value, const std::string& key) {
   } else {
     const auto c = cells<3>(*set, member(key, "set"));
     edit.from = edit.to = glm::ivec3(c[0], c[1], c[2]);
+  }
+  if (const json* f = field(value, "at_frame")) {
+    edit.atFrame = static_cast<int>(wholeNumber(*f, member(key, "at_frame"), 0, kMaxFrames - 1));
   }
   return edit;
 }
@@ -251,8 +255,66 @@ void parseCamera(const json& camera, SceneFile& scene) {
   if (const json* v = field(camera, "fov")) scene.fov = numberIn(*v, "camera.fov", 0.0, 180.0, true);
 }
 
+CameraKeyframe parseKeyframe(const json& value, const std::string& key, const SceneFile& scene) {
+  checkObject(value, key, {"t", "position", "look_at", "fov", "time"});
+  for (const char* required : {"t", "position", "look_at"}) {
+    if (!field(value, required)) fail(key, join({"needs \"", required, "\""}));
+  }
+  CameraKeyframe k;
+  k.t = numberIn(*field(value, "t"), member(key, "t"), 0.0, 1.0, false);
+  k.position = vec3(*field(value, "position"), member(key, "position"));
+  k.lookAt = vec3(*field(value, "look_at"), member(key, "look_at"));
+  k.fov = scene.fov;
+  k.time = scene.time;
+  if (const json* v = field(value, "fov")) k.fov = numberIn(*v, member(key, "fov"), 0.0, 180.0, true);
+  if (const json* v = field(value, "time")) k.time = wholeNumber(*v, member(key, "time"), 0, kMaxInt64);
+  return k;
+}
+
+// After "camera" and "time", whose values are the keyframes' defaults.
+CameraPath parseCameraPath(const json& value, const SceneFile& scene) {
+  checkObject(value, "camera_path", {"frames", "keyframes"});
+  CameraPath path;
+  if (const json* v = field(value, "frames")) {
+    path.frames = static_cast<int>(wholeNumber(*v, "camera_path.frames", 1, kMaxFrames));
+  }
+  const json* keyframes = field(value, "keyframes");
+  if (!keyframes) fail("camera_path", "needs \"keyframes\"");
+  if (!keyframes->is_array() || keyframes->empty()) {
+    expected("camera_path.keyframes", "a non-empty array of keyframes", *keyframes);
+  }
+  for (std::size_t i = 0; i < keyframes->size(); ++i) {
+    const std::string key = element("camera_path.keyframes", i);
+    path.keyframes.push_back(parseKeyframe((*keyframes)[i], key, scene));
+    if (i > 0 && path.keyframes[i].t <= path.keyframes[i - 1].t) {
+      fail(member(key, "t"), "must be greater than the previous keyframe's");
+    }
+  }
+  return path;
+}
+
+void parseCompare(const json& value, SceneFile& scene) {
+  checkObject(value, "compare", {"pixel_threshold", "max_failing_percent"});
+  if (const json* v = field(value, "pixel_threshold")) {
+    scene.compare.pixelThreshold = numberIn(*v, "compare.pixel_threshold", 0.0, 1.0, false);
+  }
+  if (const json* v = field(value, "max_failing_percent")) {
+    scene.compare.maxFailingPercent = numberIn(*v, "compare.max_failing_percent", 0.0, 100.0, false);
+  }
+}
+
+// Edits keyed to frames must name a frame the scene has.
+void checkEditFrames(const SceneFile& scene) {
+  for (const SceneEdit& edit : scene.edits) {
+    if (edit.atFrame >= scene.frameCount()) {
+      fail(member(edit.key, "at_frame"),
+           join({"the scene has ", std::to_string(scene.frameCount()), " frame(s), numbered from 0"}));
+    }
+  }
+}
+
 SceneFile parseRoot(const json& root, const path& file) {
-  checkObject(root, "", {"world", "packs", "time", "sun_path_rotation", "render", "camera"});
+  checkObject(root, "", {"world", "packs", "time", "sun_path_rotation", "render", "camera", "camera_path", "compare"});
   SceneFile scene;
   scene.file = file;
   if (const json* v = field(root, "world")) parseWorld(*v, scene);
@@ -265,6 +327,9 @@ SceneFile parseRoot(const json& root, const path& file) {
   }
   if (const json* v = field(root, "render")) parseRender(*v, scene);
   if (const json* v = field(root, "camera")) parseCamera(*v, scene);
+  if (const json* v = field(root, "camera_path")) scene.cameraPath = parseCameraPath(*v, scene);
+  if (const json* v = field(root, "compare")) parseCompare(*v, scene);
+  checkEditFrames(scene);
   return scene;
 }
 
@@ -304,10 +369,38 @@ json parseJson(std::string_view text, const path& file) {
   }
 }
 
-}  // namespace
+// One "--set key.path=value" applied to the parsed document.
+void applyOverride(json& root, const std::string& setting) {
+  const std::size_t equals = setting.find('=');
+  const std::string name = join({"--set ", setting});
+  if (equals == std::string::npos || equals == 0) throw Error(join({name, ": expected key.path=value"}));
+  json value = json::parse(setting.substr(equals + 1), nullptr, false);
+  if (value.is_discarded()) value = setting.substr(equals + 1);  // a bare word is a string
+  json* at = &root;
+  std::string_view rest(setting.data(), equals);
+  while (true) {
+    const std::size_t dot = rest.find('.');
+    const std::string part(rest.substr(0, dot));
+    if (part.empty()) throw Error(join({name, ": empty key in the path"}));
+    const bool index = std::all_of(part.begin(), part.end(), [](char c) { return c >= '0' && c <= '9'; });
+    if (index && at->is_array()) {
+      const std::size_t i = std::stoul(part);
+      if (i >= at->size()) throw Error(join({name, ": index ", part, " is past the end of the array"}));
+      at = &(*at)[i];
+    } else {
+      if (!at->is_object()) {
+        if (!at->is_null()) throw Error(join({name, ": \"", part, "\" is inside a value that is not an object"}));
+        *at = json::object();
+      }
+      at = &(*at)[part];
+    }
+    if (dot == std::string_view::npos) break;
+    rest.remove_prefix(dot + 1);
+  }
+  *at = std::move(value);
+}
 
-SceneFile parseScene(std::string_view json, const std::filesystem::path& file) {
-  const nlohmann::json root = parseJson(json, file);
+SceneFile parseChecked(const nlohmann::json& root, const std::filesystem::path& file) {
   try {
     return parseRoot(root, file);
   } catch (const Error& e) {
@@ -315,9 +408,18 @@ SceneFile parseScene(std::string_view json, const std::filesystem::path& file) {
   }
 }
 
-SceneFile loadScene(const std::filesystem::path& file) {
+}  // namespace
+
+SceneFile parseScene(std::string_view json, const std::filesystem::path& file) {
+  return parseChecked(parseJson(json, file), file);
+}
+
+SceneFile loadScene(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
   if (std::filesystem::is_directory(file)) throw Error(locate(file, 0, "is a directory, not a scene file"));
-  return parseScene(readTextFile(file), file);
+  if (overrides.empty()) return parseScene(readTextFile(file), file);
+  nlohmann::json root = parseJson(readTextFile(file), file);
+  for (const std::string& setting : overrides) applyOverride(root, setting);
+  return parseChecked(root, file);
 }
 
 }  // namespace terrasol

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <glm/vec3.hpp>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -19,6 +20,25 @@ struct SceneEdit {
       to{0};          // inclusive; for Set both are the cell. Fill corners are normalised so from <= to.
   std::string block;  // block name, resolved later against the block registry
   std::string key;    // where it came from, e.g. "world.edits[2]", for later error messages
+  int atFrame = -1;   // "at_frame": applied just before that frame is drawn; -1: before light, at load
+};
+
+// "camera_path": the camera of frame i is at t = i / (frames - 1) along the keyframes.
+struct CameraKeyframe {
+  double t = 0.0;  // 0..1, strictly increasing along the path
+  glm::dvec3 position{0.0}, lookAt{0.0, 0.0, -1.0};
+  float fov = 70.0f;         // defaults to camera.fov
+  std::int64_t time = 6000;  // defaults to the scene's time
+};
+struct CameraPath {
+  int frames = 1;  // 1..100000
+  std::vector<CameraKeyframe> keyframes;  // at least one
+};
+
+// "compare": how terrasol-render --compare judges a frame against its golden.
+struct CompareSettings {
+  float pixelThreshold = 10.0f / 255.0f;  // a pixel fails when any channel differs by more (0..1)
+  float maxFailingPercent = 0.5f;         // a frame fails when more of its pixels fail (0..100)
 };
 
 struct SceneFile {
@@ -39,6 +59,10 @@ struct SceneFile {
   glm::dvec3 cameraPosition{0.0, 80.0, 0.0};
   glm::dvec3 cameraLookAt{0.0, 80.0, -1.0};
   float fov = 70.0f;  // vertical degrees, in (0, 180)
+  std::optional<CameraPath> cameraPath;  // when absent: one frame from `camera`
+  CompareSettings compare;
+
+  int frameCount() const { return cameraPath ? cameraPath->frames : 1; }
 };
 
 // Specular lobes of the lighting: energy-conserving Blinn-Phong (the seeds') or GGX with Smith visibility.
@@ -53,7 +77,10 @@ inline constexpr std::array<std::string_view, 9> kDebugViews = {
 // in messages and is the base for relative pack paths (may be empty: then messages start with the key).
 SceneFile parseScene(std::string_view json, const std::filesystem::path& file);
 
-// Reads the file (Error naming it if missing or unreadable), then parseScene.
-SceneFile loadScene(const std::filesystem::path& file);
+// Reads the file (Error naming it if missing or unreadable), then parseScene. `overrides` are
+// "key.path=value" settings applied to the JSON first, as terrasol-render's --set: the value is read as
+// JSON when it parses (640, true, [1,2,3], "x") and as a string otherwise; a number in the path indexes
+// an array (camera_path.keyframes.0.time=0). The result is checked like any scene.
+SceneFile loadScene(const std::filesystem::path& file, const std::vector<std::string>& overrides = {});
 
 }  // namespace terrasol

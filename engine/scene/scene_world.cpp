@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <thread>
 
 #include "core/error.h"
+#include "mesh/mesh_scheduler.h"
 
 namespace terrasol {
 namespace {
@@ -52,7 +54,9 @@ SceneWorld::SceneWorld(const SceneFile& scene, const BlockRegistry& blocks)
     bool found = false;
     const BlockId block = blocks.find(edit.block, &found);
     if (!found) fail(scene, edit.key + ".block", "unknown block \"" + edit.block + "\"");
-    applyEdit(edit, block, load);
+    const bool now = edit.atFrame < 0;
+    if (now) forEachCell(edit, [&](const BlockPos& p) { world_.setBlock(p, block); });
+    edits_.push_back({edit, block, now});
   }
   // Light after the edits: one propagation instead of one per edited block.
   for (int dz = -load; dz <= load; ++dz)
@@ -62,14 +66,47 @@ SceneWorld::SceneWorld(const SceneFile& scene, const BlockRegistry& blocks)
 
 // Only the part of the box inside the loaded chunks and the world's height is visited, so a huge box
 // costs no more than the loaded area.
-void SceneWorld::applyEdit(const SceneEdit& edit, BlockId block, int loadRadius) {
-  const glm::ivec3 lo(std::max(edit.from.x, (centre_.x - loadRadius) * 16), std::max(edit.from.y, kMinY),
-                      std::max(edit.from.z, (centre_.z - loadRadius) * 16));
-  const glm::ivec3 hi(std::min(edit.to.x, (centre_.x + loadRadius) * 16 + 15), std::min(edit.to.y, kMaxY - 1),
-                      std::min(edit.to.z, (centre_.z + loadRadius) * 16 + 15));
+template <class F>
+void SceneWorld::forEachCell(const SceneEdit& edit, F&& f) const {
+  const int load = viewDistance_ + 1;
+  const glm::ivec3 lo(std::max(edit.from.x, (centre_.x - load) * 16), std::max(edit.from.y, kMinY),
+                      std::max(edit.from.z, (centre_.z - load) * 16));
+  const glm::ivec3 hi(std::min(edit.to.x, (centre_.x + load) * 16 + 15), std::min(edit.to.y, kMaxY - 1),
+                      std::min(edit.to.z, (centre_.z + load) * 16 + 15));
   for (int z = lo.z; z <= hi.z; ++z)
     for (int y = lo.y; y <= hi.y; ++y)
-      for (int x = lo.x; x <= hi.x; ++x) world_.setBlock({x, y, z}, block);
+      for (int x = lo.x; x <= hi.x; ++x) f(BlockPos{x, y, z});
+}
+
+bool SceneWorld::withinView(SectionPos pos) const {
+  return std::abs(pos.x - centre_.x) <= viewDistance_ && std::abs(pos.z - centre_.z) <= viewDistance_;
+}
+
+std::vector<SectionMesh> SceneWorld::advanceTo(int frame, const BlockMeshTable& table) {
+  MeshScheduler scheduler(table, 1);
+  bool changed = false;
+  for (Edit& e : edits_) {
+    if (e.applied || e.edit.atFrame > frame) continue;
+    e.applied = true;
+    forEachCell(e.edit, [&](const BlockPos& p) {
+      if (const auto change = world_.setBlock(p, e.block)) {
+        light_.blockChanged(*change);
+        scheduler.markBlockChanged(p);
+        changed = true;
+      }
+    });
+  }
+  std::vector<SectionMesh> meshes;
+  if (!changed) return meshes;
+  for (const SectionPos& s : light_.takeChangedSections()) scheduler.markDirty(s);
+  // Drained to the end: every change is in the frame it belongs to.
+  while (scheduler.dirty() > 0 || scheduler.inFlight() > 0) {
+    for (SectionMesh& mesh : scheduler.update(world_)) {
+      if (withinView(mesh.pos)) meshes.push_back(std::move(mesh));
+    }
+    std::this_thread::yield();
+  }
+  return meshes;
 }
 
 std::vector<SectionMesh> SceneWorld::meshVisible(const BlockMeshTable& table) const {

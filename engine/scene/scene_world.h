@@ -22,19 +22,33 @@ class SceneWorld {
   // Meshes of every section that has faces, within the view distance of the camera.
   std::vector<SectionMesh> meshVisible(const BlockMeshTable& table) const;
 
+  // Applies the edits keyed to frames up to `frame` not applied yet, block by block through the light
+  // engine as the game does, and remeshes only the sections whose blocks or light changed. Returns
+  // their new meshes (within the view distance; an empty one means the section's mesh goes).
+  std::vector<SectionMesh> advanceTo(int frame, const BlockMeshTable& table);
+
   World& world() { return world_; }
   LightEngine& light() { return light_; }
   ChunkPos centre() const { return centre_; }
   int viewDistance() const { return viewDistance_; }
 
  private:
-  void applyEdit(const SceneEdit& edit, BlockId block, int loadRadius);
+  struct Edit {
+    SceneEdit edit;
+    BlockId block;
+    bool applied;
+  };
+  // Calls `f(pos)` for each cell of the edit inside the loaded chunks and the world's height.
+  template <class F>
+  void forEachCell(const SceneEdit& edit, F&& f) const;
+  bool withinView(SectionPos pos) const;
 
   World world_;
   LightEngine light_;
   std::unique_ptr<ChunkGenerator> generator_;
   ChunkPos centre_;
   int viewDistance_;
+  std::vector<Edit> edits_;  // in file order
 };
 
 }  // namespace terrasol

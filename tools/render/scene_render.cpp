@@ -7,6 +7,7 @@
 #include "core/paths.h"
 #include "render/gl/render_target.h"
 #include "scene/block_atlas.h"
+#include "scene/camera_path.h"
 #include "scene/scene_world.h"
 
 namespace terrasol {
@@ -46,6 +47,19 @@ DebugView debugViewOf(const SceneFile& scene) {
   throw Error(keyError(scene, "render.debug_view", "unknown view \"" + scene.debugView + "\""));
 }
 
+// The CPU side: blocks, atlas, the mesher's table and the world, kept for edits keyed to frames.
+struct SceneRenderer::World {
+  World(const SceneFile& scene, const PackStack& packs)
+      : blocks(BlockRegistry::fromFile(resourcePackDir() / "default" / "blocks.json")),
+        atlas(buildBlockAtlas(blocks, packs)),
+        table(blocks, [this](BlockId id, int face) { return atlas.textureOf(id, face); }),
+        world(scene, blocks) {}
+  BlockRegistry blocks;
+  BlockAtlas atlas;
+  BlockMeshTable table;
+  SceneWorld world;
+};
+
 struct SceneRenderer::Gpu {
   Gpu(const ShaderPreprocessor& shaders, const Atlas& atlas, const BiomeTints& tints, const RendererOptions& options,
       glm::ivec2 size)
@@ -55,34 +69,20 @@ struct SceneRenderer::Gpu {
   RenderTarget target;
 };
 
-SceneRenderer::SceneRenderer(const SceneFile& scene) : scene_(scene) {
-  frame_.cameraPosition = scene.cameraPosition;
-  frame_.cameraLookAt = scene.cameraLookAt;
-  frame_.fovDegrees = scene.fov;
-  frame_.ticks = scene.time;
-  frame_.sunPathRotation = scene.sunPathRotation;
-  frame_.viewDistance = static_cast<float>(scene.viewDistance * 16);
-  frame_.debugView = debugViewOf(scene);
-  frame_.materialAo = scene.materialAo;
-
+SceneRenderer::SceneRenderer(const SceneFile& scene) : scene_(scene), debugView_(debugViewOf(scene)) {
   const auto start = std::chrono::steady_clock::now();
-  const BlockRegistry blocks = BlockRegistry::fromFile(resourcePackDir() / "default" / "blocks.json");
   const PackStack packs = openPacks(scene);
-  BlockAtlas atlas = buildBlockAtlas(blocks, packs);
-  const BiomeTints tints = loadTints(packs, atlas.problems);
-  const BlockMeshTable table(blocks, [&](BlockId id, int face) { return atlas.textureOf(id, face); });
+  world_ = std::make_unique<World>(scene, packs);
+  std::vector<PackProblem>& problems = world_->atlas.problems;
+  const BiomeTints tints = loadTints(packs, problems);
+  stats_.problems = problems;
+  const std::vector<SectionMesh> meshes = world_->world.meshVisible(world_->table);
   stats_.loadMs = msSince(start);
-  stats_.problems = atlas.problems;
-
-  const auto worldStart = std::chrono::steady_clock::now();
-  SceneWorld world(scene, blocks);
-  const std::vector<SectionMesh> meshes = world.meshVisible(table);
-  stats_.worldMs = msSince(worldStart);
 
   const ShaderPreprocessor shaders(shaderDir());
   RendererOptions options;
   options.ggxSpecular = scene.specular == "ggx";
-  gpu_ = std::make_unique<Gpu>(shaders, atlas.atlas, tints, options, glm::ivec2(scene.width, scene.height));
+  gpu_ = std::make_unique<Gpu>(shaders, world_->atlas.atlas, tints, options, glm::ivec2(scene.width, scene.height));
   for (const auto& mesh : meshes) {
     gpu_->meshes.upload(mesh);
     stats_.quads += mesh.quads();
@@ -94,19 +94,48 @@ SceneRenderer::~SceneRenderer() = default;
 
 DeferredRenderer& SceneRenderer::renderer() { return gpu_->renderer; }
 
-Image SceneRenderer::render(std::vector<PassTiming>* timings) {
+FrameInputs SceneRenderer::inputsFor(int frame) const {
+  const CameraState camera = cameraAtFrame(scene_, frame);
+  FrameInputs inputs;
+  inputs.cameraPosition = camera.position;
+  inputs.cameraLookAt = camera.position + camera.forward;
+  inputs.cameraUp = camera.up;
+  inputs.fovDegrees = camera.fov;
+  inputs.ticks = camera.time;
+  inputs.sunPathRotation = scene_.sunPathRotation;
+  inputs.viewDistance = static_cast<float>(scene_.viewDistance * 16);
+  inputs.debugView = debugView_;
+  inputs.materialAo = scene_.materialAo;
+  return inputs;
+}
+
+RenderedFrame SceneRenderer::renderFrame(int frame, const FrameRequest& request) {
+  for (const SectionMesh& mesh : world_->world.advanceTo(frame, world_->table)) gpu_->meshes.upload(mesh);
+  FrameInputs inputs = inputsFor(frame);
+  if (request.debugView) inputs.debugView = *request.debugView;
+  RenderedFrame out;
   const GLuint fbo = gpu_->target.framebuffer();
-  gpu_->renderer.render(frame_, gpu_->meshes, fbo, gpu_->target.size());
-  if (timings) gpu_->renderer.render(frame_, gpu_->meshes, fbo, gpu_->target.size(), timings);
-  return gpu_->target.readPixels();
+  gpu_->renderer.render(inputs, gpu_->meshes, fbo, gpu_->target.size(), request.timed ? &out.timings : nullptr);
+  out.stats = gpu_->renderer.lastFrame();
+  if (request.checkNan) out.nanPixels = nonFinitePixels(*gpu_->renderer.gbuffer());
+  out.image = gpu_->target.readPixels();
+  return out;
+}
+
+Image SceneRenderer::render(std::vector<PassTiming>* timings) {
+  RenderedFrame frame = renderFrame(0);
+  if (!timings) return std::move(frame.image);
+  FrameRequest timed;
+  timed.timed = true;
+  frame = renderFrame(0, timed);
+  *timings = std::move(frame.timings);
+  return std::move(frame.image);
 }
 
 Image SceneRenderer::render(DebugView debugView) {
-  const DebugView own = frame_.debugView;
-  frame_.debugView = debugView;
-  Image image = render();
-  frame_.debugView = own;
-  return image;
+  FrameRequest request;
+  request.debugView = debugView;
+  return renderFrame(0, request).image;
 }
 
 }  // namespace terrasol

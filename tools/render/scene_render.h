@@ -1,7 +1,10 @@
 #pragma once
-// A scene file rendered to an image, with a current GL context: what terrasol-render and the scene
-// tests share. Loads the packs and the atlas, builds and lights the world, meshes it, draws a frame.
+// A scene file rendered frame by frame, with a current GL context: what terrasol-render and the scene
+// tests share. Loads the packs and the atlas, builds and lights the world, meshes it, then draws the
+// frames of its camera path in order (edits keyed to frames apply as the path reaches them).
 
+#include <memory>
+#include <optional>
 #include <vector>
 
 #include "assets/image.h"
@@ -16,26 +19,46 @@ struct SceneRenderStats {
   std::vector<PackProblem> problems;   // from the packs: warnings, never fatal
 };
 
+struct RenderedFrame {
+  Image image;
+  std::vector<PassTiming> timings;  // when asked for: glFinish after each pass
+  FrameStats stats;
+  std::size_t nanPixels = 0;        // when asked for
+};
+
+struct FrameRequest {
+  bool timed = false;
+  bool checkNan = false;
+  std::optional<DebugView> debugView;  // overrides the scene's
+};
+
 class SceneRenderer {
  public:
-  // Everything but the frame itself. Throws Error naming the scene key for bad scene content.
+  // Everything but the frames. Throws Error naming the scene key for bad scene content.
   explicit SceneRenderer(const SceneFile& scene);
   ~SceneRenderer();
 
-  // Draws the scene (with `debugView` overriding the scene's own) and reads the image back. With
-  // `timings`, one more frame is drawn and timed pass by pass (the first pays for warm-up).
+  int frames() const { return scene_.frameCount(); }
+  // Frames must come in order (0, 1, ...; repeating the last one is fine): edits keyed to frames
+  // change the world as the path passes them.
+  RenderedFrame renderFrame(int frame, const FrameRequest& request = {});
+
+  // Frame 0; with `timings` it is drawn twice and the second is timed (the first pays for warm-up).
   Image render(std::vector<PassTiming>* timings = nullptr);
   Image render(DebugView debugView);
 
   const SceneRenderStats& stats() const { return stats_; }
-  const FrameInputs& frame() const { return frame_; }
   DeferredRenderer& renderer();
 
  private:
   struct Gpu;
+  struct World;
+  FrameInputs inputsFor(int frame) const;
+
   SceneFile scene_;
-  FrameInputs frame_;
+  DebugView debugView_;
   SceneRenderStats stats_;
+  std::unique_ptr<World> world_;
   std::unique_ptr<Gpu> gpu_;
 };
 
