@@ -1,77 +1,204 @@
-// terrasol-render: renders a scene file headless (EGL) into DIR/frame_0000.png.
+// terrasol-render: renders a scene file headless (EGL), one PNG per frame of its camera path.
 //
-//   terrasol-render SCENE.json --out DIR [--timings]
+//   terrasol-render SCENE.json --out DIR [--set KEY=VALUE]... [--compare GOLDEN_DIR [--update-goldens]]
+//                   [--threshold X] [--max-failing PERCENT] [--report FILE.json] [--timings]
 //
-// --timings ends every pass with glFinish and prints its milliseconds, from a second frame (the
-// first pays for shader compilation and uploads).
+// Exit status: 0 done (and every frame matched); 1 a frame differs from its golden, a golden is
+// missing, or rendering failed; 2 bad arguments or a bad scene (nothing is written then).
 
 #include <cstdio>
+#include <fstream>
+#include <optional>
 #include <string>
 
+#include <nlohmann/json.hpp>
+
+#include "core/error.h"
 #include "core/tool_main.h"
 #include "platform/egl/egl_context.h"
+#include "progress.h"
+#include "render/gl/program.h"
 #include "scene_render.h"
 
 namespace terrasol {
 namespace {
 
+constexpr int kBadInput = 2;
+
 struct Options {
-  std::filesystem::path scene, out;
-  bool timings = false;
+  std::filesystem::path scene, out, compare, report;
+  std::vector<std::string> overrides;
+  bool updateGoldens = false, timings = false;
+  std::optional<float> threshold, maxFailing;
 };
 
-int usage() {
-  std::fputs("usage: terrasol-render SCENE.json --out DIR [--timings]\n", stderr);
-  return 2;
+const char* const kUsage =
+    "usage: terrasol-render SCENE.json --out DIR [options]\n"
+    "  --set KEY=VALUE        change a scene value, e.g. --set render.width=640 (repeatable)\n"
+    "  --compare GOLDEN_DIR   compare every frame with GOLDEN_DIR/frame_NNNN.png; exit 1 on a difference\n"
+    "  --update-goldens       with --compare: write the frames into GOLDEN_DIR instead, on purpose\n"
+    "  --threshold X          per-pixel threshold 0..1 (default: the scene's compare.pixel_threshold)\n"
+    "  --max-failing PERCENT  pixels allowed over it (default: the scene's compare.max_failing_percent)\n"
+    "  --report FILE.json     per-frame report: ms per pass, NaN/Inf pixels, sections drawn and culled\n"
+    "  --timings              print ms per pass (glFinish after each pass)\n";
+
+class UsageError : public Error {
+ public:
+  using Error::Error;
+};
+
+float numberArgument(const std::string& flag, const std::string& text) {
+  try {
+    std::size_t used = 0;
+    const float v = std::stof(text, &used);
+    if (used == text.size()) return v;
+  } catch (const std::exception&) {
+  }
+  throw UsageError(flag + ": expected a number, got \"" + text + "\"");
 }
 
-void printTimings(const std::vector<PassTiming>& timings, const SceneFile& scene) {
+Options parseOptions(int argc, char** argv) {
+  Options o;
+  auto value = [&](int& i, const std::string& flag) -> std::string {
+    if (i + 1 >= argc) throw UsageError(flag + " needs a value");
+    return argv[++i];
+  };
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg == "--out") o.out = value(i, arg);
+    else if (arg == "--set") o.overrides.push_back(value(i, arg));
+    else if (arg == "--compare") o.compare = value(i, arg);
+    else if (arg == "--update-goldens") o.updateGoldens = true;
+    else if (arg == "--threshold") o.threshold = numberArgument(arg, value(i, arg));
+    else if (arg == "--max-failing") o.maxFailing = numberArgument(arg, value(i, arg));
+    else if (arg == "--report") o.report = value(i, arg);
+    else if (arg == "--timings") o.timings = true;
+    else if (!arg.empty() && arg[0] != '-' && o.scene.empty()) o.scene = arg;
+    else throw UsageError("unknown argument \"" + arg + "\"");
+  }
+  if (o.scene.empty() || o.out.empty()) throw UsageError("a scene and --out DIR are required");
+  if (o.updateGoldens && o.compare.empty()) throw UsageError("--update-goldens needs --compare GOLDEN_DIR");
+  return o;
+}
+
+std::string frameName(const char* prefix, int frame) {
+  char name[32];
+  std::snprintf(name, sizeof name, "%s_%04d.png", prefix, frame);
+  return name;
+}
+
+nlohmann::json frameReport(int index, const RenderedFrame& frame) {
+  nlohmann::json ms = nlohmann::json::object();
   double total = 0.0;
-  for (const auto& t : timings) {
-    std::printf("  %-12s %8.2f ms\n", t.pass.c_str(), t.ms);
+  for (const PassTiming& t : frame.timings) {
+    ms[t.pass] = t.ms;
     total += t.ms;
   }
-  std::printf("  %-12s %8.2f ms  (%dx%d, glFinish after each pass)\n", "total", total, scene.width, scene.height);
+  ms["total"] = total;
+  nlohmann::json skipped = nlohmann::json::array();
+  for (const auto& s : frame.stats.passesSkipped) skipped.push_back({{"pass", s.pass}, {"why", s.why}});
+  return {{"frame", index},
+          {"ms", ms},
+          {"nan_pixels", frame.nanPixels},
+          {"chunks", {{"drawn", frame.stats.sectionsDrawn}, {"culled", frame.stats.sectionsCulled}}},
+          {"passes_skipped", skipped}};
 }
 
-int render(const Options& options) {
-  const SceneFile scene = loadScene(options.scene);
-  auto context = createHeadlessContext(GlErrorPolicy::Throw);
-  SceneRenderer renderer(scene);
-  for (const auto& p : renderer.stats().problems) {
-    std::fprintf(stderr, "terrasol-render: %s: %s\n", p.severity == PackProblem::Severity::Error ? "error" : "warning",
-                 p.message.c_str());
+// One line per frame; true when it matches (or the golden was written on purpose).
+bool compareFrame(const Options& o, const SceneFile& scene, int index, const Image& image, Progress& progress) {
+  const auto golden = o.compare / frameName("frame", index);
+  if (o.updateGoldens) {
+    saveImage(golden, image);
+    progress.line(frameName("frame", index) + ": golden written to " + golden.string());
+    return true;
   }
-  std::vector<PassTiming> timings;
-  const Image image = renderer.render(options.timings ? &timings : nullptr);
-  context->checkErrors("rendering the scene");
-  std::filesystem::create_directories(options.out);
-  const auto file = options.out / "frame_0000.png";
-  saveImage(file, image);
+  if (!std::filesystem::exists(golden)) {
+    progress.line(frameName("frame", index) + ": FAIL, missing golden " + golden.string());
+    return false;
+  }
+  const ImageTolerance tolerance{o.threshold.value_or(scene.compare.pixelThreshold),
+                                 o.maxFailing.value_or(scene.compare.maxFailingPercent)};
+  const ImageComparison c = compareImages(image, loadImage(golden), tolerance);
+  char detail[160];
+  std::snprintf(detail, sizeof detail, "%.3f %% of pixels over %.1f/255 (allowed %.3f %%), max difference %.1f/255",
+                c.failingPercent, tolerance.pixel * 255.0, tolerance.percent, c.maxError * 255.0);
+  if (c.matches) {
+    progress.line(frameName("frame", index) + ": ok, " + detail);
+    return true;
+  }
+  std::string line = frameName("frame", index) + ": FAIL, ";
+  if (!c.sameSize) {
+    line += "size differs from the golden";
+  } else {
+    const auto diff = o.out / frameName("diff", index);
+    saveImage(diff, c.diff);
+    line += std::string(detail) + "; diff: " + diff.string();
+  }
+  progress.line(line);
+  return false;
+}
+
+int renderScene(const Options& o, const SceneFile& scene, SceneRenderer& renderer) {
+  std::filesystem::create_directories(o.out);
+  if (!o.compare.empty()) std::filesystem::create_directories(o.compare);
+  Progress progress(renderer.frames(), stdout);
+  nlohmann::json frames = nlohmann::json::array();
+  bool allMatch = true;
+  FrameRequest request;
+  request.timed = o.timings || !o.report.empty();
+  request.checkNan = !o.report.empty();
+  for (int i = 0; i < renderer.frames(); ++i) {
+    const auto start = std::chrono::steady_clock::now();
+    const RenderedFrame frame = renderer.renderFrame(i, request);
+    saveImage(o.out / frameName("frame", i), frame.image);
+    if (!o.report.empty()) frames.push_back(frameReport(i, frame));
+    if (o.timings) {
+      std::string line = frameName("frame", i) + ":";
+      for (const PassTiming& t : frame.timings) line += " " + t.pass + " " + std::to_string(t.ms).substr(0, 6) + " ms";
+      progress.line(line);
+    }
+    if (!o.compare.empty()) allMatch = compareFrame(o, scene, i, frame.image, progress) && allMatch;
+    progress.frameDone(i + 1, std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+  }
+  progress.finish();
+  if (!o.report.empty()) {
+    std::ofstream(o.report) << nlohmann::json{{"scene", scene.file.string()}, {"frames", frames}}.dump(2) << "\n";
+  }
   const SceneRenderStats& stats = renderer.stats();
-  std::printf("terrasol-render: %s: %zu sections, %zu quads; packs and atlas %.0f ms, world %.0f ms; wrote %s\n",
-              scene.file.string().c_str(), stats.sections, stats.quads, stats.loadMs, stats.worldMs,
-              file.string().c_str());
-  if (options.timings) printTimings(timings, scene);
-  return 0;
+  std::printf("terrasol-render: %s: %d frame(s), %zu sections, %zu quads, loaded in %.0f ms; wrote %s\n",
+              scene.file.string().c_str(), renderer.frames(), stats.sections, stats.quads, stats.loadMs,
+              o.out.string().c_str());
+  if (!allMatch) std::printf("terrasol-render: some frames differ from their goldens in %s\n", o.compare.string().c_str());
+  return allMatch ? 0 : 1;
 }
 
 int run(int argc, char** argv) {
   Options options;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    if (arg == "--out" && i + 1 < argc) {
-      options.out = argv[++i];
-    } else if (arg == "--timings") {
-      options.timings = true;
-    } else if (!arg.empty() && arg[0] != '-' && options.scene.empty()) {
-      options.scene = arg;
-    } else {
-      return usage();
-    }
+  std::optional<SceneFile> scene;
+  try {
+    options = parseOptions(argc, argv);
+    scene = loadScene(options.scene, options.overrides);
+  } catch (const Error& e) {
+    std::fprintf(stderr, "terrasol-render: error: %s\n%s", e.what(), dynamic_cast<const UsageError*>(&e) ? kUsage : "");
+    return kBadInput;
   }
-  if (options.scene.empty() || options.out.empty()) return usage();
-  return render(options);
+  auto context = createHeadlessContext(GlErrorPolicy::Throw);
+  std::optional<SceneRenderer> renderer;
+  try {
+    renderer.emplace(*scene);  // unknown blocks, unreadable packs: the scene is bad
+  } catch (const ShaderError&) {
+    throw;
+  } catch (const Error& e) {
+    std::fprintf(stderr, "terrasol-render: error: %s\n", e.what());
+    return kBadInput;
+  }
+  for (const auto& p : renderer->stats().problems) {
+    std::fprintf(stderr, "terrasol-render: %s: %s\n", p.severity == PackProblem::Severity::Error ? "error" : "warning",
+                 p.message.c_str());
+  }
+  const int status = renderScene(options, *scene, *renderer);
+  context->checkErrors("rendering the scene");
+  return status;
 }
 
 }  // namespace
