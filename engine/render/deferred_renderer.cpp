@@ -64,12 +64,24 @@ bool boxVisible(const std::array<glm::vec4, 6>& planes, glm::vec3 lo, float size
   return true;
 }
 
-// Ends a pass: with timings on, waits for the GPU and records the pass's wall time.
+// Times passes when asked: with GL_TIME_ELAPSED queries on a real GPU, or by waiting for the GPU
+// (glFinish) and reading the wall clock on a software renderer, whose timer queries measure nothing
+// useful.
 class PassClock {
  public:
-  explicit PassClock(std::vector<PassTiming>* timings) : timings_(timings) { restart(); }
+  PassClock(std::vector<PassTiming>* timings, bool gpuTimer) : timings_(timings), gpuTimer_(gpuTimer) { begin(); }
+  ~PassClock() { finish(); }
+  PassClock(const PassClock&) = delete;
+  PassClock& operator=(const PassClock&) = delete;
+
   void lap(const char* pass) {
     if (!timings_) return;
+    if (gpuTimer_) {
+      glEndQuery(GL_TIME_ELAPSED);
+      queries_.push_back({pass, std::move(current_)});
+      begin();
+      return;
+    }
     glFinish();
     const auto now = std::chrono::steady_clock::now();
     timings_->push_back({pass, std::chrono::duration<double, std::milli>(now - start_).count()});
@@ -77,14 +89,40 @@ class PassClock {
   }
 
  private:
-  void restart() {
+  void begin() {
     if (!timings_) return;
+    if (gpuTimer_) {
+      current_ = gl::Query::create(GL_TIME_ELAPSED);
+      glBeginQuery(GL_TIME_ELAPSED, current_.id());
+      return;
+    }
     glFinish();
     start_ = std::chrono::steady_clock::now();
   }
+  // Waits for the queries' results (the frame is over by then).
+  void finish() {
+    if (!timings_ || !gpuTimer_) return;
+    glEndQuery(GL_TIME_ELAPSED);
+    for (const auto& [pass, query] : queries_) {
+      GLuint64 ns = 0;
+      glGetQueryObjectui64v(query.id(), GL_QUERY_RESULT, &ns);
+      timings_->push_back({pass, static_cast<double>(ns) / 1e6});
+    }
+  }
+
   std::vector<PassTiming>* timings_;
+  bool gpuTimer_;
   std::chrono::steady_clock::time_point start_;
+  gl::Query current_;
+  std::vector<std::pair<const char*, gl::Query>> queries_;
 };
+
+bool softwareRenderer() {
+  const auto* name = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  const std::string renderer = name ? name : "";
+  return renderer.find("llvmpipe") != std::string::npos || renderer.find("softpipe") != std::string::npos ||
+         renderer.find("SwiftShader") != std::string::npos;
+}
 
 }  // namespace
 
@@ -109,7 +147,8 @@ DeferredRenderer::DeferredRenderer(const ShaderPreprocessor& shaders, const Atla
       debug_(build(shaders, "fullscreen.vert", "debug_view.frag")),
       textures_(atlas, tints),
       lightmap_(gl::Texture::create(GL_TEXTURE_2D)),
-      empty_(gl::VertexArray::create()) {
+      empty_(gl::VertexArray::create()),
+      gpuTimer_(!softwareRenderer()) {
   glTextureStorage2D(lightmap_.id(), 1, GL_RGBA16F, Lightmap::kSize, Lightmap::kSize);
   glTextureParameteri(lightmap_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
   glTextureParameteri(lightmap_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
@@ -144,7 +183,7 @@ void DeferredRenderer::render(const FrameInputs& frame, const SectionMeshes& mes
                       lightmap.texels.data());
   textures_.update(frame.ticks);
 
-  PassClock clock(timings);
+  PassClock clock(timings, gpuTimer_);
   cull(view, meshes);
   geometryPass(view, meshes);
   clock.lap("geometry");

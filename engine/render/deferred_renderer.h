@@ -63,8 +63,9 @@ class DeferredRenderer {
   DeferredRenderer(const ShaderPreprocessor& shaders, const Atlas& atlas, const BiomeTints& tints,
                    const RendererOptions& options = {});
 
-  // Draws a frame into `framebuffer` (0 for a window) of `size`. With `timings`, every pass ends
-  // with glFinish and its wall time is appended (llvmpipe has no useful timer queries).
+  // Draws a frame into `framebuffer` (0 for a window) of `size`. With `timings`, each pass's time is
+  // appended: from timer queries on a GPU, from glFinish and the wall clock on llvmpipe (whose timer
+  // queries measure nothing useful).
   void render(const FrameInputs& frame, const SectionMeshes& meshes, GLuint framebuffer, glm::ivec2 size,
               std::vector<PassTiming>* timings = nullptr);
 
@@ -93,6 +94,7 @@ class DeferredRenderer {
   gl::Texture lightmap_;
   gl::VertexArray empty_;  // full-screen passes make their vertices from gl_VertexID
   std::optional<GBuffer> gbuffer_;
+  bool gpuTimer_;  // timer queries for pass timings (a real GPU); else glFinish and the wall clock
   std::vector<Visible> visible_;  // this frame's sections inside the frustum
   FrameStats stats_;
 };
