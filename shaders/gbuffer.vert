@@ -1,19 +1,14 @@
 #version 450 core
 // G-buffer pass (and translucent pass): block vertices of one section, camera-relative.
 
+#include "lib/atlas_uv.glsl"
 #include "lib/block_vertex.glsl"
 
 layout(location = ATTRIB_PACKED) in uvec4 a_packed;
 
 uniform mat4 u_viewProjection;  // camera at the origin: positions stay small far from the world's origin
 uniform vec3 u_sectionOffset;   // section's minimum corner minus the camera position (computed in double)
-uniform ivec3 u_atlasGrid;      // columns, slot size, tile size (texels)
-uniform vec2 u_atlasSize;       // texels
 uniform vec3 u_tints[4];        // linear; index 0 is white
-
-layout(std430, binding = STORAGE_TILES) readonly buffer Tiles {
-  uint tiles[];  // atlas tile shown this frame by each texture id (animations advance it)
-};
 
 out vec3 v_position;  // camera-relative
 out vec2 v_uv;
@@ -24,9 +19,7 @@ flat out int v_face;
 void main() {
   BlockVertex v = unpackBlockVertex(a_packed);
   v_position = u_sectionOffset + v.position;
-  int tile = int(tiles[v.texture]);
-  vec2 corner = vec2(tile % u_atlasGrid.x, tile / u_atlasGrid.x) * float(u_atlasGrid.y) + 0.5 * float(u_atlasGrid.z);
-  v_uv = (corner + v.uv * float(u_atlasGrid.z)) / u_atlasSize;
+  v_uv = atlasUv(v.texture, v.uv);
   v_tint = u_tints[v.tint];
   v_light = vec3(v.blockLight, v.skyLight, v.ao);
   v_face = v.face;

@@ -5,6 +5,9 @@
 #include "lib/octahedral.glsl"
 #include "lib/lighting.glsl"
 #include "lib/sky.glsl"
+#ifdef SHADOWS
+#include "lib/shadow.glsl"
+#endif
 
 layout(binding = GB_ALBEDO) uniform sampler2D g_albedo;
 layout(binding = GB_NORMALS) uniform sampler2D g_normals;
@@ -44,7 +47,12 @@ void main() {
   s.spec = texelFetch(g_specular, pixel, 0);
   s.blockLight = light.x;
   s.skyLight = light.y;
-  vec3 color = shade(s, -viewDir);
+  float visibility = 1.0;
+#ifdef SHADOWS
+  float cosTheta = dot(s.vertexNormal, u_toLight);
+  if (u_shadowLive && cosTheta > 0.0 && s.skyLight > 0.0) visibility = shadowVisibility(position, s.vertexNormal, cosTheta, gl_FragCoord.xy);
+#endif
+  vec3 color = shade(s, -viewDir, visibility);
   float fog = smoothstep(u_fogRange.x, u_fogRange.y, length(position.xz));
-  o_color = vec4(mix(color, skyColor(viewDir), fog), 1.0);
+  o_color = vec4(mix(color, skyColor(viewDir), fog), shadowTerm(s, visibility));
 }

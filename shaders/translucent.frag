@@ -4,6 +4,9 @@
 
 #include "lib/block_surface.glsl"
 #include "lib/lighting.glsl"
+#ifdef SHADOWS
+#include "lib/shadow.glsl"
+#endif
 
 layout(location = OUT_COLOR) out vec4 o_color;
 
@@ -19,6 +22,11 @@ void main() {
   s.skyLight = v_light.y;
   s.materialAo = normalTexel.b;
   vec3 toViewer = -v_position / max(length(v_position), 1e-6);
-  vec3 lit = shade(s, toViewer);
+  float visibility = 1.0;
+#ifdef SHADOWS
+  float cosTheta = dot(s.vertexNormal, u_toLight);
+  if (u_shadowLive && cosTheta > 0.0) visibility = shadowVisibility(v_position, s.vertexNormal, cosTheta, gl_FragCoord.xy);
+#endif
+  vec3 lit = shade(s, toViewer, visibility);
   o_color = vec4(lit * albedo.a, albedo.a);
 }

@@ -30,8 +30,10 @@ gl::Program build(const ShaderPreprocessor& shaders, const char* vertex, const c
 }
 
 std::vector<ShaderDefine> lightingDefines(const RendererOptions& options) {
-  if (options.ggxSpecular) return {{"SPECULAR_GGX", "1"}};
-  return {};
+  std::vector<ShaderDefine> defines;
+  if (options.ggxSpecular) defines.push_back({"SPECULAR_GGX", "1"});
+  if (options.shadow.enabled) defines.push_back({"SHADOWS", "1"});
+  return defines;
 }
 
 void setVec3(GLuint program, const char* name, glm::vec3 v) {
@@ -135,6 +137,7 @@ struct DeferredRenderer::View {
   glm::vec2 fogRange;
   DayState day;
   bool materialAo;
+  bool shadowLive = false;  // the shadow pass ran this frame
 };
 
 DeferredRenderer::DeferredRenderer(const ShaderPreprocessor& shaders, const Atlas& atlas, const BiomeTints& tints,
@@ -143,11 +146,14 @@ DeferredRenderer::DeferredRenderer(const ShaderPreprocessor& shaders, const Atla
       cutout_(build(shaders, "gbuffer.vert", "gbuffer.frag", {{"CUTOUT", "1"}})),
       lighting_(build(shaders, "fullscreen.vert", "lighting.frag", lightingDefines(options))),
       translucent_(build(shaders, "gbuffer.vert", "translucent.frag", lightingDefines(options))),
+      shadow_(options.shadow.enabled ? build(shaders, "shadow.vert", "shadow.frag") : gl::Program()),
+      shadowCutout_(options.shadow.enabled ? build(shaders, "shadow.vert", "shadow.frag", {{"CUTOUT", "1"}}) : gl::Program()),
       final_(build(shaders, "fullscreen.vert", "final.frag")),
       debug_(build(shaders, "fullscreen.vert", "debug_view.frag")),
       textures_(atlas, tints),
       lightmap_(gl::Texture::create(GL_TEXTURE_2D)),
       empty_(gl::VertexArray::create()),
+      options_(options),
       gpuTimer_(!softwareRenderer()) {
   glTextureStorage2D(lightmap_.id(), 1, GL_RGBA16F, Lightmap::kSize, Lightmap::kSize);
   glTextureParameteri(lightmap_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
@@ -185,8 +191,19 @@ void DeferredRenderer::render(const FrameInputs& frame, const SectionMeshes& mes
 
   PassClock clock(timings, gpuTimer_);
   cull(view, meshes);
+  // Below 0.1 % of its strength the light can show nothing (it is 0 at and under the horizon).
+  view.shadowLive = options_.shadow.enabled && view.day.directStrength > 1e-3f;
+  if (view.shadowLive) {
+    shadowPass(view, meshes);
+    clock.lap("shadow");
+  } else {
+    stats_.passesSkipped.push_back({"shadow", options_.shadow.enabled ? "neither sun nor moon is above the horizon"
+                                                                      : "shadows are off"});
+  }
   geometryPass(view, meshes);
   clock.lap("geometry");
+  lastGeometry_ = {view.camera, view.viewProjection, view.inverseViewProjection, view.day.toShadowLight, view.shadowLive,
+               view.shadowLive ? shadowView_.texelWorld : 0.0f};
   if (frame.debugView != DebugView::None) {
     glProgramUniform1i(debug_.id(), glGetUniformLocation(debug_.id(), "u_view"), static_cast<int>(frame.debugView));
     debugPass(view, framebuffer, size);
@@ -222,8 +239,10 @@ void DeferredRenderer::geometryPass(const View& view, const SectionMeshes& meshe
   glEnable(GL_CULL_FACE);
   glDisable(GL_BLEND);
   glEnable(GL_FRAMEBUFFER_SRGB);  // the albedo target stores linear light sRGB-encoded
-  drawLayer(geometry_.id(), view, meshes, MeshLayer::Opaque, false);
-  drawLayer(cutout_.id(), view, meshes, MeshLayer::Cutout, false);
+  setMat4(geometry_.id(), "u_viewProjection", view.viewProjection);
+  setMat4(cutout_.id(), "u_viewProjection", view.viewProjection);
+  drawSections(geometry_.id(), visible_, meshes, MeshLayer::Opaque, false);
+  drawSections(cutout_.id(), visible_, meshes, MeshLayer::Cutout, false);
   glDisable(GL_FRAMEBUFFER_SRGB);
 }
 
@@ -249,15 +268,15 @@ std::size_t DeferredRenderer::visibleQuads(MeshLayer layer) const {
   return quads;
 }
 
-void DeferredRenderer::drawLayer(GLuint program, const View& view, const SectionMeshes& meshes, MeshLayer layer,
-                                 bool backToFront) {
+void DeferredRenderer::drawSections(GLuint program, const std::vector<Visible>& sections, const SectionMeshes& meshes,
+                                    MeshLayer layer, bool backToFront) {
   struct Draw {
     const SectionMeshes::Layer* layer;
     glm::vec3 offset;
     float distance;
   };
   std::vector<Draw> draws;
-  for (const Visible& v : visible_) {
+  for (const Visible& v : sections) {
     const auto& l = v.section->layers[static_cast<std::size_t>(layer)];
     if (l.quads > 0) draws.push_back({&l, v.offset, glm::length(v.offset + glm::vec3(8.0f))});
   }
@@ -266,7 +285,6 @@ void DeferredRenderer::drawLayer(GLuint program, const View& view, const Section
 
   glUseProgram(program);
   textures_.bind(program);
-  setMat4(program, "u_viewProjection", view.viewProjection);
   const GLint offsetLocation = glGetUniformLocation(program, "u_sectionOffset");
   glBindVertexArray(meshes.vertexArray());
   for (const Draw& d : draws) {
@@ -277,6 +295,45 @@ void DeferredRenderer::drawLayer(GLuint program, const View& view, const Section
   glBindVertexArray(0);
 }
 
+// The light's view: casters inside the light's box (culled per section), opaque then alpha-tested.
+void DeferredRenderer::shadowPass(const View& view, const SectionMeshes& meshes) {
+  const ShadowSettings& settings = options_.shadow;
+  shadowMap_.ensure(settings.resolution);
+  shadowView_ = shadowViewFor(settings, view.day.toShadowLight, view.camera);
+  const auto planes = frustumPlanes(shadowView_.matrix);
+  std::vector<Visible> casters;
+  for (const auto& [pos, section] : meshes.sections()) {
+    const glm::dvec3 corner(pos.x * 16.0, kMinY + pos.section * 16.0, pos.z * 16.0);
+    const glm::vec3 offset(corner - view.camera);
+    if (boxVisible(planes, offset, 16.0f)) casters.push_back({&section, offset});
+  }
+  stats_.shadowCasters = static_cast<int>(casters.size());
+
+  glBindFramebuffer(GL_FRAMEBUFFER, shadowMap_.framebuffer());
+  glViewport(0, 0, settings.resolution, settings.resolution);
+  const float farDepth = 1.0f;
+  glClearNamedFramebufferfv(shadowMap_.framebuffer(), GL_DEPTH, 0, &farDepth);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDepthMask(GL_TRUE);
+  glDisable(GL_CULL_FACE);    // single faces (the mesher drops hidden ones) must cast from both sides
+  glEnable(GL_DEPTH_CLAMP);   // casters above the near plane still cast, flattened onto it
+  glDisable(GL_BLEND);
+  for (const GLuint program : {shadow_.id(), shadowCutout_.id()}) {
+    setMat4(program, "u_shadowMatrix", shadowView_.matrix);
+    setWarpUniforms(program);
+  }
+  drawSections(shadow_.id(), casters, meshes, MeshLayer::Opaque, false);
+  drawSections(shadowCutout_.id(), casters, meshes, MeshLayer::Cutout, false);
+  glDisable(GL_DEPTH_CLAMP);
+}
+
+void DeferredRenderer::setWarpUniforms(GLuint program) const {
+  glProgramUniform1i(program, glGetUniformLocation(program, "u_shadowWarp"), static_cast<int>(options_.shadow.warp));
+  glProgramUniform1f(program, glGetUniformLocation(program, "u_shadowWarpStrength"),
+                     std::clamp(options_.shadow.warpStrength, 0.0f, 0.999f));
+}
+
 void DeferredRenderer::setLightingUniforms(GLuint program, const View& view) const {
   const DayState& day = view.day;
   setVec3(program, "u_toLight", day.toShadowLight);
@@ -284,6 +341,18 @@ void DeferredRenderer::setLightingUniforms(GLuint program, const View& view) con
   setVec3(program, "u_ambientTint", ambientTint(day.skyZenith));
   glProgramUniform1i(program, glGetUniformLocation(program, "u_materialAo"), view.materialAo ? 1 : 0);
   glBindTextureUnit(slots::kUnitLightmap, lightmap_.id());
+  if (!options_.shadow.enabled) return;
+  const ShadowSettings& settings = options_.shadow;
+  setWarpUniforms(program);
+  setMat4(program, "u_shadowMatrix", shadowView_.matrix);
+  glProgramUniform1f(program, glGetUniformLocation(program, "u_shadowTexelWorld"), shadowView_.texelWorld);
+  glProgramUniform1f(program, glGetUniformLocation(program, "u_shadowDepthRange"), shadowView_.depthRange);
+  glProgramUniform1f(program, glGetUniformLocation(program, "u_shadowResolution"), static_cast<float>(settings.resolution));
+  glProgramUniform1i(program, glGetUniformLocation(program, "u_pcfSamples"), std::clamp(settings.pcfSamples, 0, 8));
+  glProgramUniform1f(program, glGetUniformLocation(program, "u_pcfRadius"), std::max(settings.pcfRadius, 0.0f));
+  glProgramUniform1i(program, glGetUniformLocation(program, "u_pcfPattern"), static_cast<int>(settings.pcfPattern));
+  glProgramUniform1i(program, glGetUniformLocation(program, "u_shadowLive"), view.shadowLive ? 1 : 0);
+  glBindTextureUnit(slots::kUnitShadowMap, shadowMap_.depth());
 }
 
 void DeferredRenderer::lightingPass(const View& view) {
@@ -320,8 +389,10 @@ void DeferredRenderer::translucentPass(const View& view, const SectionMeshes& me
   glDepthMask(GL_FALSE);  // tested against the opaque scene, never hiding each other
   glEnable(GL_CULL_FACE);
   glEnable(GL_BLEND);
-  glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);  // premultiplied
-  drawLayer(translucent_.id(), view, meshes, MeshLayer::Translucent, true);
+  // Premultiplied colour; alpha keeps the lighting pass's shadow term of the surface behind.
+  glBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
+  setMat4(translucent_.id(), "u_viewProjection", view.viewProjection);
+  drawSections(translucent_.id(), visible_, meshes, MeshLayer::Translucent, true);
   glDisable(GL_BLEND);
   glDepthMask(GL_TRUE);
   glDisable(GL_DEPTH_TEST);
@@ -355,22 +426,14 @@ void DeferredRenderer::debugPass(const View& view, GLuint framebuffer, glm::ivec
   glUseProgram(0);
 }
 
-std::size_t nonFinitePixels(const GBuffer& gbuffer) {
-  const glm::ivec2 size = gbuffer.size();
-  const std::size_t pixels = static_cast<std::size_t>(size.x) * static_cast<std::size_t>(size.y);
-  std::vector<bool> bad(pixels, false);
-  std::vector<float> texels(pixels * 4);
-  auto scan = [&](GLuint texture, GLenum format, int channels) {
-    glGetTextureImage(texture, 0, format, GL_FLOAT, static_cast<GLsizei>(pixels * 4 * sizeof(float)), texels.data());
-    for (std::size_t p = 0; p < pixels; ++p)
-      for (int c = 0; c < channels; ++c) {
-        if (!std::isfinite(texels[p * static_cast<std::size_t>(channels) + static_cast<std::size_t>(c)])) bad[p] = true;
-      }
-  };
-  scan(gbuffer.scene(), GL_RGBA, 4);
-  scan(gbuffer.target(gbuffer::kNormals), GL_RGBA, 4);
-  scan(gbuffer.depth(), GL_DEPTH_COMPONENT, 1);
-  return static_cast<std::size_t>(std::count(bad.begin(), bad.end(), true));
+std::size_t nonFinitePixels(const GBufferPixels& g) {
+  std::size_t bad = 0;
+  for (std::size_t p = 0; p < g.depth.size(); ++p) {
+    bool finite = std::isfinite(g.depth[p]);
+    for (int c = 0; c < 4; ++c) finite = finite && std::isfinite(g.scene[p][c]) && std::isfinite(g.normals[p][c]);
+    bad += !finite;
+  }
+  return bad;
 }
 
 }  // namespace terrasol

@@ -19,6 +19,7 @@
 #include "render/block_textures.h"
 #include "render/gbuffer.h"
 #include "render/section_meshes.h"
+#include "render/shadow_map.h"
 
 namespace terrasol {
 
@@ -42,6 +43,7 @@ struct FrameInputs {
 // Choices that pick shader variants, fixed for the renderer's life.
 struct RendererOptions {
   bool ggxSpecular = false;  // GGX/Smith instead of energy-conserving Blinn-Phong
+  ShadowSettings shadow;
 };
 
 struct PassTiming {
@@ -49,9 +51,20 @@ struct PassTiming {
   double ms;
 };
 
+// Where the last frame looked from, for reports that check it against the world.
+struct FrameGeometry {
+  glm::dvec3 camera{0.0};
+  glm::mat4 viewProjection{1.0f};         // camera-relative
+  glm::mat4 inverseViewProjection{1.0f};
+  glm::vec3 toLight{0.0f, 1.0f, 0.0f};    // the shadow-casting light
+  bool shadowLive = false;                // the shadow pass ran
+  float shadowTexelWorld = 0.0f;          // blocks per texel of the unwarped shadow map
+};
+
 // What the last frame did, for reports.
 struct FrameStats {
   int sectionsDrawn = 0, sectionsCulled = 0;  // 16x16x16 sections with a mesh, inside / outside the frustum
+  int shadowCasters = 0;                      // sections drawn into the shadow map
   struct Skipped {
     std::string pass, why;
   };
@@ -72,6 +85,7 @@ class DeferredRenderer {
   // The targets of the last frame (for tests and reports), null before the first.
   const GBuffer* gbuffer() const { return gbuffer_ ? &*gbuffer_ : nullptr; }
   const FrameStats& lastFrame() const { return stats_; }
+  const FrameGeometry& lastGeometry() const { return lastGeometry_; }
 
  private:
   struct View;
@@ -85,21 +99,28 @@ class DeferredRenderer {
   void translucentPass(const View& view, const SectionMeshes& meshes);
   void finalPass(GLuint framebuffer, glm::ivec2 size);
   void debugPass(const View& view, GLuint framebuffer, glm::ivec2 size);
-  void drawLayer(GLuint program, const View& view, const SectionMeshes& meshes, MeshLayer layer, bool backToFront);
+  void drawSections(GLuint program, const std::vector<Visible>& sections, const SectionMeshes& meshes,
+                    MeshLayer layer, bool backToFront);
+  void shadowPass(const View& view, const SectionMeshes& meshes);
+  void setWarpUniforms(GLuint program) const;
   std::size_t visibleQuads(MeshLayer layer) const;
   void setLightingUniforms(GLuint program, const View& view) const;
 
-  gl::Program geometry_, cutout_, lighting_, translucent_, final_, debug_;
+  gl::Program geometry_, cutout_, lighting_, translucent_, shadow_, shadowCutout_, final_, debug_;
   BlockTextures textures_;
   gl::Texture lightmap_;
   gl::VertexArray empty_;  // full-screen passes make their vertices from gl_VertexID
   std::optional<GBuffer> gbuffer_;
+  RendererOptions options_;
+  ShadowMap shadowMap_;
+  ShadowView shadowView_{};
   bool gpuTimer_;  // timer queries for pass timings (a real GPU); else glFinish and the wall clock
   std::vector<Visible> visible_;  // this frame's sections inside the frustum
   FrameStats stats_;
+  FrameGeometry lastGeometry_;
 };
 
-// Pixels of the last frame holding NaN or Inf in any float target (lit scene, normals, depth).
-std::size_t nonFinitePixels(const GBuffer& gbuffer);
+// Pixels holding NaN or Inf in any float target (lit scene, normals, depth).
+std::size_t nonFinitePixels(const GBufferPixels& gbuffer);
 
 }  // namespace terrasol

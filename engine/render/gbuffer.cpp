@@ -57,6 +57,23 @@ GBuffer::GBuffer(glm::ivec2 size)
   checkComplete(translucent_.id(), "translucent");
 }
 
+GBufferPixels GBuffer::read() const {
+  GBufferPixels out;
+  out.size = size_;
+  const std::size_t pixels = static_cast<std::size_t>(size_.x) * static_cast<std::size_t>(size_.y);
+  out.depth.resize(pixels);
+  out.normals.resize(pixels);
+  out.scene.resize(pixels);
+  out.light.resize(pixels);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  auto bytes = [](const auto& v) { return static_cast<GLsizei>(v.size() * sizeof(v[0])); };
+  glGetTextureImage(depth_.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, bytes(out.depth), out.depth.data());
+  glGetTextureImage(target(gbuffer::kNormals), 0, GL_RGBA, GL_FLOAT, bytes(out.normals), out.normals.data());
+  glGetTextureImage(scene_.id(), 0, GL_RGBA, GL_FLOAT, bytes(out.scene), out.scene.data());
+  glGetTextureImage(target(gbuffer::kLight), 0, GL_RGBA, GL_UNSIGNED_BYTE, bytes(out.light), out.light.data());
+  return out;
+}
+
 void GBuffer::bindForReading() const {
   for (int i = 0; i < gbuffer::kTargets; ++i) glBindTextureUnit(static_cast<GLuint>(i), target(i));
   glBindTextureUnit(gbuffer::kDepthUnit, depth_.id());

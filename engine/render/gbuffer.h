@@ -4,12 +4,25 @@
 
 #include <array>
 
+#include <vector>
+
 #include <glm/vec2.hpp>
+#include <glm/vec4.hpp>
+#include <glm/gtc/type_precision.hpp>
 
 #include "render/gbuffer_layout.h"
 #include "render/gl/object.h"
 
 namespace terrasol {
+
+// The targets read back to the CPU, rows bottom first as GL stores them (pixel (x, y) at y * width + x).
+struct GBufferPixels {
+  glm::ivec2 size{0};
+  std::vector<float> depth;         // 0..1, 1 = sky
+  std::vector<glm::vec4> normals;   // octahedral surface xy, vertex zw
+  std::vector<glm::vec4> scene;     // linear HDR; alpha = the direct light's shadow term (lighting.glsl)
+  std::vector<glm::u8vec4> light;   // block, sky, vertex AO
+};
 
 class GBuffer {
  public:
@@ -27,6 +40,8 @@ class GBuffer {
 
   // Binds the targets and depth to the texture units gbuffer_layout.h names.
   void bindForReading() const;
+  // Reads depth, normals, light and the lit scene back (slow: for tests and reports).
+  GBufferPixels read() const;
 
  private:
   glm::ivec2 size_;

@@ -16,6 +16,7 @@ std::vector<ShaderDefine> slotDefines() {
       define("UNIT_ATLAS_NORMAL", slots::kUnitAtlasNormal),
       define("UNIT_ATLAS_SPECULAR", slots::kUnitAtlasSpecular),
       define("UNIT_LIGHTMAP", slots::kUnitLightmap),
+      define("UNIT_SHADOW_MAP", slots::kUnitShadowMap),
       define("STORAGE_TILES", slots::kStorageTiles),
   };
 }

@@ -225,13 +225,41 @@ std::vector<path> parsePacks(const json& value, const path& sceneDir) {
   return packs;
 }
 
+
 bool boolean(const json& value, const std::string& key) {
   if (!value.is_boolean()) expected(key, "true or false", value);
   return value.get<bool>();
 }
 
+void parsePcf(const json& pcf, SceneShadow& shadow) {
+  checkObject(pcf, "render.shadow.pcf", {"samples", "radius", "pattern"});
+  if (const json* v = field(pcf, "samples")) {
+    shadow.pcfSamples = static_cast<int>(wholeNumber(*v, "render.shadow.pcf.samples", 0, 8));
+  }
+  if (const json* v = field(pcf, "radius")) shadow.pcfRadius = numberIn(*v, "render.shadow.pcf.radius", 0.0, 32.0, false);
+  if (const json* v = field(pcf, "pattern")) shadow.pcfPattern = oneOf(*v, "render.shadow.pcf.pattern", kPcfPatterns);
+}
+
+void parseShadow(const json& value, SceneShadow& shadow) {
+  const std::string key = "render.shadow";
+  checkObject(value, key, {"enabled", "mode", "resolution", "distance", "warp", "warp_strength", "pcf"});
+  if (const json* v = field(value, "enabled")) shadow.enabled = boolean(*v, member(key, "enabled"));
+  if (const json* v = field(value, "mode")) shadow.mode = oneOf(*v, member(key, "mode"), kShadowModes);
+  if (const json* v = field(value, "resolution")) {
+    shadow.resolution = static_cast<int>(wholeNumber(*v, member(key, "resolution"), 16, 16384));
+  }
+  if (const json* v = field(value, "distance")) shadow.distance = numberIn(*v, member(key, "distance"), 1.0, 4096.0, false);
+  if (const json* v = field(value, "warp")) shadow.warp = oneOf(*v, member(key, "warp"), kShadowWarps);
+  if (const json* v = field(value, "warp_strength")) {
+    const double a = finiteNumber(*v, member(key, "warp_strength"));
+    if (a < 0.0 || a >= 1.0) expected(member(key, "warp_strength"), "a number from 0 up to (not including) 1", *v);
+    shadow.warpStrength = static_cast<float>(a);
+  }
+  if (const json* v = field(value, "pcf")) parsePcf(*v, shadow);
+}
+
 void parseRender(const json& render, SceneFile& scene) {
-  checkObject(render, "render", {"width", "height", "view_distance", "debug_view", "specular", "material_ao"});
+  checkObject(render, "render", {"width", "height", "view_distance", "debug_view", "specular", "material_ao", "shadow"});
   if (const json* v = field(render, "width")) {
     scene.width = static_cast<int>(wholeNumber(*v, "render.width", 1, 8192));
   }
@@ -246,6 +274,7 @@ void parseRender(const json& render, SceneFile& scene) {
   }
   if (const json* v = field(render, "specular")) scene.specular = oneOf(*v, "render.specular", kSpecularModels);
   if (const json* v = field(render, "material_ao")) scene.materialAo = boolean(*v, "render.material_ao");
+  if (const json* v = field(render, "shadow")) parseShadow(*v, scene.shadow);
 }
 
 void parseCamera(const json& camera, SceneFile& scene) {

@@ -35,6 +35,22 @@ struct CameraPath {
   std::vector<CameraKeyframe> keyframes;  // at least one
 };
 
+// "render.shadow": the shadow map (engine/render/shadow_map.h has the meaning of each).
+struct SceneShadow {
+  bool enabled = true;
+  std::string mode = "warped";   // one of kShadowModes
+  int resolution = 2048;         // 16..16384 texels per side
+  float distance = 128.0f;       // blocks, 1..4096
+  std::string warp = "radial";   // one of kShadowWarps
+  float warpStrength = 0.85f;    // [0, 1)
+  int pcfSamples = 1;            // 0..8
+  float pcfRadius = 1.0f;        // texels, 0..32
+  std::string pcfPattern = "disk";  // one of kPcfPatterns
+};
+inline constexpr std::array<std::string_view, 1> kShadowModes = {"warped"};
+inline constexpr std::array<std::string_view, 3> kShadowWarps = {"none", "square", "radial"};
+inline constexpr std::array<std::string_view, 2> kPcfPatterns = {"grid", "disk"};
+
 // "compare": how terrasol-render --compare judges a frame against its golden.
 struct CompareSettings {
   float pixelThreshold = 10.0f / 255.0f;  // a pixel fails when any channel differs by more (0..1)
@@ -56,6 +72,7 @@ struct SceneFile {
   std::string debugView = "none";  // "render.debug_view": one of kDebugViews
   std::string specular = "blinn_phong";  // "render.specular": one of kSpecularModels
   bool materialAo = true;          // "render.material_ao": LabPBR _n blue darkens ambient light
+  SceneShadow shadow;              // "render.shadow"
   glm::dvec3 cameraPosition{0.0, 80.0, 0.0};
   glm::dvec3 cameraLookAt{0.0, 80.0, -1.0};
   float fov = 70.0f;  // vertical degrees, in (0, 180)

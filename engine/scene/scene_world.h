@@ -28,6 +28,7 @@ class SceneWorld {
   std::vector<SectionMesh> advanceTo(int frame, const BlockMeshTable& table);
 
   World& world() { return world_; }
+  const World& world() const { return world_; }
   LightEngine& light() { return light_; }
   ChunkPos centre() const { return centre_; }
   int viewDistance() const { return viewDistance_; }

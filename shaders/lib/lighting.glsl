@@ -56,18 +56,29 @@ vec3 sampleLightmap(float block, float sky) {
   return texture(u_lightmap, (vec2(block, sky) * 15.0 + 0.5) / 16.0).rgb;
 }
 
-// Light leaving the surface towards `toViewer` (unit).
-vec3 shade(Surface s, vec3 toViewer) {
+// The direct light's shadow term (0 = in shadow, 1 = lit): the shadow map's lit fraction gated by sky
+// light. The lighting pass keeps it in the HDR target's alpha, for the shadow-error report.
+float shadowTerm(Surface s, float visibility) {
+#ifdef SHADOWS
+  return step(0.5 / 15.0, s.skyLight) * visibility;
+#else
+  return smoothstep(0.5, 1.0, s.skyLight) * visibility;
+#endif
+}
+
+// Light leaving the surface towards `toViewer` (unit). `visibility`: the shadow map's lit fraction
+// (1 without shadows).
+vec3 shade(Surface s, vec3 toViewer, float visibility) {
   Material m = labpbrMaterial(s.spec, s.albedo);
   vec3 N = s.normal;
   float NdotV = max(dot(N, toViewer), 1e-4);
   vec3 kd = m.metal ? vec3(0.0) : vec3(1.0);
 
-  // Direct light. Surfaces whose geometry faces away are simply unlit; and until shadow maps, sky
-  // light stands in for occlusion: no sun where little sky light reaches (a sealed cave never).
+  // Direct light. Surfaces whose geometry faces away are simply unlit. No sky light means no sun,
+  // whatever the shadow map says (a sealed cave); without a shadow map, sky light also stands in for
+  // occlusion, fading the sun out where little of it reaches.
   float facing = smoothstep(0.0, 0.05, dot(s.vertexNormal, u_toLight));
-  float skyGate = smoothstep(0.5, 1.0, s.skyLight);
-  float NdotL = max(dot(N, u_toLight), 0.0) * facing * skyGate;
+  float NdotL = max(dot(N, u_toLight), 0.0) * facing * shadowTerm(s, visibility);
   vec3 color = vec3(0.0);
   if (NdotL > 0.0) {
     vec3 halfway = u_toLight + toViewer;

@@ -37,7 +37,8 @@ TEST_P(SceneGoldenTest, MatchesGolden) {
 
 INSTANTIATE_TEST_SUITE_P(Scenes, SceneGoldenTest,
                          ::testing::Values("noon_terrain", "sunset_terrain", "night_cave_torches", "metal_emissive",
-                                           "stone_closeup", "water_glass", "pack_pixel_perfection"));
+                                           "stone_closeup", "water_glass", "pack_pixel_perfection", "shadow_noon",
+                                           "shadow_low_sun", "shadow_moon", "shadow_forest", "shadow_cave_mouth"));
 
 TEST_F(SceneRenderTest, EveryDebugViewMatchesItsGolden) {
   SceneRenderer renderer(loadScene(kScenes / "metal_emissive.json"));
@@ -116,6 +117,7 @@ TEST_F(SceneRenderTest, NoFloatTargetHoldsNanOrInf) {
     ASSERT_NE(g, nullptr);
     EXPECT_EQ(nonFinite(g->scene(), g->size()), 0u) << c.name << ": lit scene";
     EXPECT_EQ(nonFinite(g->target(gbuffer::kNormals), g->size()), 0u) << c.name << ": normals";
+    EXPECT_EQ(nonFinitePixels(g->read()), 0u) << c.name;
     context_->checkErrors(c.name);
   }
 }

@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <fstream>
 #include <optional>
+#include <random>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -19,6 +20,7 @@
 #include "progress.h"
 #include "render/gl/program.h"
 #include "scene_render.h"
+#include "shadow_truth.h"
 
 namespace terrasol {
 namespace {
@@ -87,6 +89,24 @@ std::string frameName(const char* prefix, int frame) {
   return name;
 }
 
+// The frame's shadows against ray-traced truth, and their flicker: the same frame again with the camera
+// moved by a random fraction of a shadow texel (the sun frozen).
+nlohmann::json shadowReport(SceneRenderer& renderer, int index, const RenderedFrame& frame, const FrameRequest& request) {
+  const float distance = renderer.scene().shadow.distance;
+  const ShadowError error = measureShadowError(renderer.world(), frame.pixels, frame.geometry, distance);
+  std::mt19937 random(static_cast<std::uint32_t>(index) * 2654435761u + 1u);
+  std::uniform_real_distribution<double> within(-0.5, 0.5);
+  FrameRequest moved = request;
+  moved.timed = false;
+  moved.readBack = true;
+  const double texel = frame.geometry.shadowTexelWorld;
+  moved.cameraOffset = glm::dvec3(within(random) * texel, within(random) * texel, within(random) * texel);
+  const RenderedFrame again = renderer.renderFrame(index, moved);
+  std::size_t compared = 0;
+  const double flicker = flickerPercent(frame.pixels, frame.geometry, again.pixels, again.geometry, distance, compared);
+  return shadowErrorJson(error, flicker, compared);
+}
+
 nlohmann::json frameReport(int index, const RenderedFrame& frame) {
   nlohmann::json ms = nlohmann::json::object();
   double total = 0.0;
@@ -147,11 +167,15 @@ int renderScene(const Options& o, const SceneFile& scene, SceneRenderer& rendere
   FrameRequest request;
   request.timed = o.timings || !o.report.empty();
   request.checkNan = !o.report.empty();
+  request.readBack = !o.report.empty();
   for (int i = 0; i < renderer.frames(); ++i) {
     const auto start = std::chrono::steady_clock::now();
     const RenderedFrame frame = renderer.renderFrame(i, request);
     saveImage(o.out / frameName("frame", i), frame.image);
-    if (!o.report.empty()) frames.push_back(frameReport(i, frame));
+    if (!o.report.empty()) {
+      frames.push_back(frameReport(i, frame));
+      if (frame.geometry.shadowLive) frames.back()["shadow_error"] = shadowReport(renderer, i, frame, request);
+    }
     if (o.timings) {
       std::string line = frameName("frame", i) + ":";
       for (const PassTiming& t : frame.timings) line += " " + t.pass + " " + std::to_string(t.ms).substr(0, 6) + " ms";

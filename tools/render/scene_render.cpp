@@ -34,6 +34,19 @@ PackStack openPacks(const SceneFile& scene) {
   return packs;
 }
 
+ShadowSettings shadowSettingsOf(const SceneShadow& s) {
+  ShadowSettings out;
+  out.enabled = s.enabled;
+  out.resolution = s.resolution;
+  out.distance = s.distance;
+  out.warp = s.warp == "none" ? ShadowWarp::None : s.warp == "square" ? ShadowWarp::Square : ShadowWarp::Radial;
+  out.warpStrength = s.warpStrength;
+  out.pcfSamples = s.pcfSamples;
+  out.pcfRadius = s.pcfRadius;
+  out.pcfPattern = s.pcfPattern == "grid" ? PcfPattern::Grid : PcfPattern::Disk;
+  return out;
+}
+
 double msSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
@@ -82,6 +95,7 @@ SceneRenderer::SceneRenderer(const SceneFile& scene) : scene_(scene), debugView_
   const ShaderPreprocessor shaders(shaderDir());
   RendererOptions options;
   options.ggxSpecular = scene.specular == "ggx";
+  options.shadow = shadowSettingsOf(scene.shadow);
   gpu_ = std::make_unique<Gpu>(shaders, world_->atlas.atlas, tints, options, glm::ivec2(scene.width, scene.height));
   for (const auto& mesh : meshes) {
     gpu_->meshes.upload(mesh);
@@ -93,6 +107,8 @@ SceneRenderer::SceneRenderer(const SceneFile& scene) : scene_(scene), debugView_
 SceneRenderer::~SceneRenderer() = default;
 
 DeferredRenderer& SceneRenderer::renderer() { return gpu_->renderer; }
+
+const terrasol::World& SceneRenderer::world() const { return world_->world.world(); }
 
 FrameInputs SceneRenderer::inputsFor(int frame) const {
   const CameraState camera = cameraAtFrame(scene_, frame);
@@ -113,11 +129,17 @@ RenderedFrame SceneRenderer::renderFrame(int frame, const FrameRequest& request)
   for (const SectionMesh& mesh : world_->world.advanceTo(frame, world_->table)) gpu_->meshes.upload(mesh);
   FrameInputs inputs = inputsFor(frame);
   if (request.debugView) inputs.debugView = *request.debugView;
+  inputs.cameraPosition += request.cameraOffset;
+  inputs.cameraLookAt += request.cameraOffset;
   RenderedFrame out;
   const GLuint fbo = gpu_->target.framebuffer();
   gpu_->renderer.render(inputs, gpu_->meshes, fbo, gpu_->target.size(), request.timed ? &out.timings : nullptr);
   out.stats = gpu_->renderer.lastFrame();
-  if (request.checkNan) out.nanPixels = nonFinitePixels(*gpu_->renderer.gbuffer());
+  if (request.checkNan || request.readBack) {
+    out.pixels = gpu_->renderer.gbuffer()->read();
+    out.nanPixels = nonFinitePixels(out.pixels);
+  }
+  out.geometry = gpu_->renderer.lastGeometry();
   out.image = gpu_->target.readPixels();
   return out;
 }

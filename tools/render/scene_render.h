@@ -10,6 +10,7 @@
 #include "assets/image.h"
 #include "render/deferred_renderer.h"
 #include "scene/scene_file.h"
+#include "world/world.h"
 
 namespace terrasol {
 
@@ -24,11 +25,15 @@ struct RenderedFrame {
   std::vector<PassTiming> timings;  // when asked for: glFinish after each pass
   FrameStats stats;
   std::size_t nanPixels = 0;        // when asked for
+  GBufferPixels pixels;             // with checkNan or readBack
+  FrameGeometry geometry;
 };
 
 struct FrameRequest {
   bool timed = false;
   bool checkNan = false;
+  bool readBack = false;            // keep the G-buffer's pixels (shadow-error report)
+  glm::dvec3 cameraOffset{0.0};     // moves the camera (the flicker measurement)
   std::optional<DebugView> debugView;  // overrides the scene's
 };
 
@@ -48,6 +53,8 @@ class SceneRenderer {
   Image render(DebugView debugView);
 
   const SceneRenderStats& stats() const { return stats_; }
+  const SceneFile& scene() const { return scene_; }
+  const terrasol::World& world() const;
   DeferredRenderer& renderer();
 
  private:

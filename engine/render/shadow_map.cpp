@@ -1,0 +1,66 @@
+#include "render/shadow_map.h"
+
+#include <cmath>
+#include <string>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "core/error.h"
+
+namespace terrasol {
+
+// Casters this far beyond the map's reach towards the light still shadow it (a mountain between the
+// sun and the camera's surroundings).
+constexpr float kCasterReach = 256.0f;
+
+ShadowView shadowViewFor(const ShadowSettings& settings, glm::vec3 toLight, glm::dvec3 camera) {
+  const glm::dvec3 z = glm::normalize(glm::dvec3(toLight));
+  const glm::dvec3 hint = std::abs(z.y) < 0.99 ? glm::dvec3(0.0, 1.0, 0.0) : glm::dvec3(0.0, 0.0, 1.0);
+  const glm::dvec3 x = glm::normalize(glm::cross(hint, z));
+  const glm::dvec3 y = glm::cross(z, x);
+  const double distance = std::max(static_cast<double>(settings.distance), 1.0);
+  const double texel = 2.0 * distance / std::max(settings.resolution, 1);
+  // The camera in light space, and the nearest whole-texel centre: the map moves in whole texels.
+  const glm::dvec2 lightPos(glm::dot(camera, x), glm::dot(camera, y));
+  const glm::dvec2 snapped = glm::floor(lightPos / texel) * texel;
+  const glm::dvec2 shift = lightPos - snapped;  // under one texel: small, safe in float
+
+  glm::mat4 view(1.0f);  // rows x, y, z: camera-relative world -> light space
+  for (int i = 0; i < 3; ++i) {
+    view[i][0] = static_cast<float>(x[i]);
+    view[i][1] = static_cast<float>(y[i]);
+    view[i][2] = static_cast<float>(z[i]);
+  }
+  const glm::mat4 recentre = glm::translate(glm::mat4(1.0f), glm::vec3(shift, 0.0));
+  const float d = static_cast<float>(distance);
+  // Light-space z grows towards the light: keep from `distance` below the camera to far above it.
+  const glm::mat4 ortho = glm::ortho(-d, d, -d, d, -(d + kCasterReach), d);
+  ShadowView v;
+  v.matrix = ortho * recentre * view;
+  v.toLight = glm::vec3(z);
+  v.depthRange = 2.0f * d + kCasterReach;
+  v.texelWorld = static_cast<float>(texel);
+  return v;
+}
+
+void ShadowMap::ensure(int resolution) {
+  if (resolution == resolution_) return;
+  depth_ = gl::Texture::create(GL_TEXTURE_2D);
+  glTextureStorage2D(depth_.id(), 1, GL_DEPTH_COMPONENT32F, resolution, resolution);
+  // Hardware comparison: each tap returns the lit fraction of its 2x2 texels.
+  glTextureParameteri(depth_.id(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+  glTextureParameteri(depth_.id(), GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+  glTextureParameteri(depth_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTextureParameteri(depth_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTextureParameteri(depth_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTextureParameteri(depth_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  framebuffer_ = gl::Framebuffer::create();
+  glNamedFramebufferTexture(framebuffer_.id(), GL_DEPTH_ATTACHMENT, depth_.id(), 0);
+  glNamedFramebufferDrawBuffer(framebuffer_.id(), GL_NONE);
+  if (glCheckNamedFramebufferStatus(framebuffer_.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+    throw Error("shadow map framebuffer incomplete at " + std::to_string(resolution) + " texels");
+  }
+  resolution_ = resolution;
+}
+
+}  // namespace terrasol

@@ -1,0 +1,62 @@
+// Shadow map lookup: normal offset and slope-scaled depth bias sized to the local (warped) texel,
+// then PCF with hardware depth comparison. Outside the map or beyond its depth range counts as lit.
+
+#include "lib/shadow_warp.glsl"
+
+layout(binding = UNIT_SHADOW_MAP) uniform sampler2DShadow u_shadowMap;
+uniform mat4 u_shadowMatrix;       // camera-relative world -> light clip space (unwarped)
+uniform float u_shadowTexelWorld;  // blocks per texel of the unwarped map
+uniform float u_shadowDepthRange;  // blocks from the near to the far plane
+uniform float u_shadowResolution;  // texels per side
+uniform int u_pcfSamples;          // N: (2N + 1)^2 grid taps or the 16-tap disk; 0 = one tap
+uniform float u_pcfRadius;         // texels
+uniform int u_pcfPattern;          // 0 grid, 1 rotated Poisson disk
+uniform bool u_shadowLive;         // false when no pass ran this frame (no light above the horizon)
+
+const vec2 kPoisson[16] = vec2[16](
+    vec2(-0.94201624, -0.39906216), vec2(0.94558609, -0.76890725), vec2(-0.09418410, -0.92938870),
+    vec2(0.34495938, 0.29387760), vec2(-0.91588581, 0.45771432), vec2(-0.81544232, -0.87912464),
+    vec2(-0.38277543, 0.27676845), vec2(0.97484398, 0.75648379), vec2(0.44323325, -0.97511554),
+    vec2(0.53742981, -0.47373420), vec2(-0.26496911, -0.41893023), vec2(0.79197514, 0.19090188),
+    vec2(-0.24188840, 0.99706507), vec2(-0.81409955, 0.91437590), vec2(0.19984126, 0.78641367),
+    vec2(0.14383161, -0.14100790));
+
+// Jimenez's interleaved gradient noise: a per-pixel angle that hides the disk's pattern.
+float interleavedGradientNoise(vec2 pixel) {
+  return fract(52.9829189 * fract(dot(pixel, vec2(0.06711056, 0.00583715))));
+}
+
+float shadowTap(vec2 uv, float depth, vec2 offsetTexels) {
+  return texture(u_shadowMap, vec3(uv + offsetTexels / u_shadowResolution, depth));
+}
+
+// 1 = fully lit. `position` camera-relative, `vertexNormal` unit, `cosTheta` = dot(vertexNormal, toLight) > 0.
+float shadowVisibility(vec3 position, vec3 vertexNormal, float cosTheta, vec2 pixel) {
+  vec4 unshifted = u_shadowMatrix * vec4(position, 1.0);
+  // One warped texel here, in blocks; clamped where a strong warp makes the edge texels huge.
+  float texel = min(u_shadowTexelWorld / max(warpScale(unshifted.xy), 1e-3), 4.0);
+  float c = clamp(cosTheta, 0.0, 1.0);
+  float sinTheta = sqrt(1.0 - c * c);
+  float tanTheta = min(sinTheta / max(c, 1e-3), 10.0);  // grazing light: tan -> infinity, clamped
+  float spread = 1.0 + (u_pcfSamples > 0 ? u_pcfRadius : 0.0);
+  vec3 offset = vertexNormal * texel * spread * (0.35 + 0.65 * sinTheta);
+  vec4 p = u_shadowMatrix * vec4(position + offset, 1.0);
+  if (any(greaterThan(abs(p.xyz), vec3(1.0)))) return 1.0;  // outside the map or its depth range
+  vec2 uv = warpShadow(p.xy) * 0.5 + 0.5;
+  float bias = (texel * spread * 0.5 * tanTheta + 0.02) / u_shadowDepthRange;
+  float depth = p.z * 0.5 + 0.5 - bias;
+
+  if (u_pcfSamples <= 0) return shadowTap(uv, depth, vec2(0.0));
+  float lit = 0.0;
+  if (u_pcfPattern == 0) {
+    float step = u_pcfRadius / float(u_pcfSamples);
+    for (int y = -u_pcfSamples; y <= u_pcfSamples; ++y)
+      for (int x = -u_pcfSamples; x <= u_pcfSamples; ++x) lit += shadowTap(uv, depth, vec2(x, y) * step);
+    float side = float(2 * u_pcfSamples + 1);
+    return lit / (side * side);
+  }
+  float angle = 6.2831853 * interleavedGradientNoise(pixel);
+  mat2 rotation = mat2(cos(angle), sin(angle), -sin(angle), cos(angle));
+  for (int i = 0; i < 16; ++i) lit += shadowTap(uv, depth, rotation * kPoisson[i] * u_pcfRadius);
+  return lit / 16.0;
+}

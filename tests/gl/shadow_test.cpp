@@ -1,0 +1,120 @@
+// Shadows measured against ray-traced truth (tools/render/shadow_truth.h): stiff and extreme settings
+// stay NaN-free with sane error figures, and a sealed cave never sees the sun.
+
+#include <cmath>
+#include <filesystem>
+
+#include "scene_render.h"
+#include "shadow_truth.h"
+#include "support/gl_test.h"
+
+namespace terrasol {
+namespace {
+
+const std::filesystem::path kScenes = std::filesystem::path(TERRASOL_SOURCE_DIR) / "tests" / "scenes";
+
+class ShadowTest : public testing::GlTest {
+ protected:
+  struct Result {
+    ShadowError error;
+    std::size_t nan;
+    FrameStats stats;
+  };
+  Result measure(const SceneFile& scene) {
+    SceneRenderer renderer(scene);
+    FrameRequest request;
+    request.readBack = true;
+    const RenderedFrame frame = renderer.renderFrame(0, request);
+    context_->checkErrors("rendering");
+    return {measureShadowError(renderer.world(), frame.pixels, frame.geometry, scene.shadow.distance), frame.nanPixels,
+            frame.stats};
+  }
+  static double wrongPercent(const ShadowCounts& c) {
+    return c.evaluated ? 100.0 * static_cast<double>(c.falseLit + c.falseShadow) / static_cast<double>(c.evaluated) : 0.0;
+  }
+};
+
+TEST_F(ShadowTest, NoonShadowsMatchRayTracedTruth) {
+  SceneFile scene = loadScene(kScenes / "shadow_noon.json");
+  const Result r = measure(scene);
+  EXPECT_GT(r.error.total.evaluated, 10000u);
+  EXPECT_LT(wrongPercent(r.error.total), 0.5);
+  EXPECT_EQ(r.error.caveLeakPixels, 0u);
+  // And the measurement can fail: with the shadow map gone, every shadowed point is wrongly lit.
+  scene.shadow.enabled = false;
+  scene.sunPathRotation = -30;
+  const Result none = measure(scene);
+  EXPECT_GT(100.0 * static_cast<double>(none.error.total.falseLit) / static_cast<double>(none.error.total.evaluated), 5.0);
+}
+
+// Each stiff setting: rendered without NaN or Inf, and still mostly right.
+TEST_F(ShadowTest, ExtremeSettingsStayFiniteAndSane) {
+  const SceneFile base = loadScene(kScenes / "shadow_noon.json");
+  struct Case {
+    const char* name;
+    void (*change)(SceneFile&);
+  };
+  const Case cases[] = {
+      {"sun 0.5 degrees up", [](SceneFile& s) { s.time = 33; }},
+      {"sun overhead, rotation 0", [](SceneFile& s) { s.sunPathRotation = 0.0f; }},
+      {"warp strength 0", [](SceneFile& s) { s.shadow.warpStrength = 0.0f; }},
+      {"warp strength 0.999", [](SceneFile& s) { s.shadow.warpStrength = 0.999f; }},
+      {"square warp", [](SceneFile& s) { s.shadow.warp = "square"; }},
+      {"resolution 256", [](SceneFile& s) { s.shadow.resolution = 256; }},
+      {"resolution 8192", [](SceneFile& s) { s.shadow.resolution = 8192; }},
+      {"distance 8", [](SceneFile& s) { s.shadow.distance = 8.0f; }},
+      {"distance 1024", [](SceneFile& s) { s.shadow.distance = 1024.0f; }},
+      {"grid PCF, 3 samples, radius 4", [](SceneFile& s) {
+         s.shadow.pcfPattern = "grid";
+         s.shadow.pcfSamples = 3;
+         s.shadow.pcfRadius = 4.0f;
+       }},
+  };
+  for (const Case& c : cases) {
+    SceneFile scene = base;
+    scene.width = 160;
+    scene.height = 90;
+    c.change(scene);
+    SceneRenderer renderer(scene);
+    FrameRequest request;
+    request.checkNan = true;
+    request.readBack = true;
+    const RenderedFrame frame = renderer.renderFrame(0, request);
+    context_->checkErrors(c.name);
+    EXPECT_EQ(frame.nanPixels, 0u) << c.name;
+    const ShadowError e = measureShadowError(renderer.world(), frame.pixels, frame.geometry, scene.shadow.distance);
+    EXPECT_EQ(e.caveLeakPixels, 0u) << c.name;
+    EXPECT_LT(wrongPercent(e.total), 10.0) << c.name << ": " << e.total.falseLit << " false lit, "
+                                           << e.total.falseShadow << " false shadow of " << e.total.evaluated;
+  }
+}
+
+// A room sealed by a one-block roof, the sun straight above: its floor has sky light 0, so no sun
+// reaches it whatever the shadow map's bias does.
+TEST_F(ShadowTest, ASealedCaveUnderAOneBlockRoofHasNoLeaks) {
+  SceneFile scene = parseScene(R"({
+      "world": { "generator": "flat", "edits": [
+        { "fill": [-4, 64, -4, 4, 68, 4], "block": "stone" },
+        { "fill": [-3, 64, -3, 3, 67, 3], "block": "air" },
+        { "set": [0, 64, 0], "block": "torch" } ] },
+      "time": 6000, "sun_path_rotation": 0,
+      "render": { "width": 160, "height": 90, "view_distance": 1, "shadow": { "distance": 32, "resolution": 256 } },
+      "camera": { "position": [2.5, 66.5, 2.5], "look_at": [-2, 64, -2] } })",
+                               kScenes / "sealed.json");
+  const Result r = measure(scene);
+  EXPECT_EQ(r.error.caveLeakPixels, 0u);
+  EXPECT_EQ(r.nan, 0u);
+}
+
+TEST_F(ShadowTest, NoShadowPassWhenNoLightIsAboveTheHorizon) {
+  SceneFile scene = loadScene(kScenes / "shadow_noon.json");
+  scene.time = 12000;  // sunset: the sun on the horizon and the moon on the opposite one
+  SceneRenderer renderer(scene);
+  const RenderedFrame frame = renderer.renderFrame(0);
+  ASSERT_FALSE(frame.stats.passesSkipped.empty());
+  EXPECT_EQ(frame.stats.passesSkipped.front().pass, "shadow");
+  EXPECT_EQ(frame.stats.shadowCasters, 0);
+}
+
+}  // namespace
+}  // namespace terrasol

@@ -1,0 +1,167 @@
+#include "shadow_truth.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/geometric.hpp>
+#include <glm/mat4x4.hpp>
+
+namespace terrasol {
+namespace {
+
+enum class Ray { Lit, Shadowed, Ambiguous };
+
+// Two frames' pixels show the same world point when their surface points are this close (blocks): far
+// below a shadow texel, so a shadow edge between them is rare.
+constexpr double kSamePoint = 0.01;
+
+// Casters beyond this along the ray are outside the shadow map too (shadow_map.cpp's reach).
+constexpr double kReachBeyondDistance = 256.0;
+
+// Amanatides and Woo's grid traversal from `origin` along unit `dir`.
+Ray march(const World& world, glm::dvec3 origin, glm::dvec3 dir, double maxDistance) {
+  glm::ivec3 cell(glm::floor(origin));
+  glm::ivec3 step;
+  glm::dvec3 tMax, tDelta;
+  for (int a = 0; a < 3; ++a) {
+    step[a] = dir[a] > 0.0 ? 1 : -1;
+    const double d = std::abs(dir[a]);
+    tDelta[a] = d > 1e-12 ? 1.0 / d : 1e300;
+    const double boundary = dir[a] > 0.0 ? std::floor(origin[a]) + 1.0 - origin[a] : origin[a] - std::floor(origin[a]);
+    tMax[a] = d > 1e-12 ? boundary / d : 1e300;
+  }
+  const BlockRegistry& blocks = world.blocks();
+  double t = 0.0;
+  while (t <= maxDistance) {
+    if (cell.y >= kMaxY) return Ray::Lit;  // out of the top of the world: open sky
+    if (cell.y < kMinY) return Ray::Shadowed;
+    const BlockPos pos{cell.x, cell.y, cell.z};
+    if (!world.isLoaded(ChunkPos::of(pos))) return Ray::Lit;  // nothing there to cast, in the map either
+    const BlockId id = world.getBlock(pos);
+    if (id != kAir) return blocks[id].isOpaqueCube() ? Ray::Shadowed : Ray::Ambiguous;
+    const int a = tMax.x < tMax.y ? (tMax.x < tMax.z ? 0 : 2) : (tMax.y < tMax.z ? 1 : 2);
+    t = tMax[a];
+    tMax[a] += tDelta[a];
+    cell[a] += step[a];
+  }
+  return Ray::Lit;
+}
+
+// The ray from the point and from four points 0.05 blocks beside it: if they disagree, the ray grazes
+// an edge and the answer depends on sub-texel detail no shadow map has.
+Ray truthAt(const World& world, glm::dvec3 point, glm::dvec3 normal, glm::dvec3 toLight, double maxDistance) {
+  const glm::dvec3 origin = point + normal * 0.02;
+  const Ray centre = march(world, origin, toLight, maxDistance);
+  if (centre == Ray::Ambiguous) return centre;
+  glm::dvec3 t1 = glm::cross(normal, std::abs(normal.y) < 0.9 ? glm::dvec3(0, 1, 0) : glm::dvec3(1, 0, 0));
+  t1 = glm::normalize(t1);
+  const glm::dvec3 t2 = glm::cross(normal, t1);
+  for (const glm::dvec3 d : {t1, -t1, t2, -t2}) {
+    if (march(world, origin + d * 0.05, toLight, maxDistance) != centre) return Ray::Ambiguous;
+  }
+  return centre;
+}
+
+glm::dvec3 octDecode(glm::vec2 e) {
+  glm::dvec3 n(e.x, e.y, 1.0 - std::abs(e.x) - std::abs(e.y));
+  if (n.z < 0.0) {
+    const double x = n.x, y = n.y;
+    n.x = (1.0 - std::abs(y)) * (x >= 0.0 ? 1.0 : -1.0);
+    n.y = (1.0 - std::abs(x)) * (y >= 0.0 ? 1.0 : -1.0);
+  }
+  return glm::normalize(n);
+}
+
+// A pixel as a world point and its vertex normal; false for sky.
+struct Surface {
+  glm::dvec3 relative;  // camera-relative
+  glm::dvec3 normal;
+};
+bool surfaceAt(const GBufferPixels& f, const FrameGeometry& g, int x, int y, Surface& s) {
+  const std::size_t i = static_cast<std::size_t>(y) * static_cast<std::size_t>(f.size.x) + static_cast<std::size_t>(x);
+  const float depth = f.depth[i];
+  if (!(depth < 1.0f)) return false;
+  const glm::vec4 ndc((x + 0.5f) / f.size.x * 2.0f - 1.0f, (y + 0.5f) / f.size.y * 2.0f - 1.0f, depth * 2.0f - 1.0f, 1.0f);
+  const glm::vec4 p = g.inverseViewProjection * ndc;
+  s.relative = glm::dvec3(p) / static_cast<double>(p.w);
+  s.normal = octDecode(glm::vec2(f.normals[i].z, f.normals[i].w));
+  return true;
+}
+
+bool facesLight(const Surface& s, const FrameGeometry& g) { return glm::dot(s.normal, glm::dvec3(g.toLight)) > 0.05; }
+
+int bucketOf(double distance) { return distance < 8.0 ? 0 : distance < 32.0 ? 1 : distance < 64.0 ? 2 : 3; }
+
+}  // namespace
+
+ShadowError measureShadowError(const World& world, const GBufferPixels& frame, const FrameGeometry& geometry,
+                               float distance) {
+  ShadowError e;
+  const glm::dvec3 toLight = glm::normalize(glm::dvec3(geometry.toLight));
+  for (int y = 0; y < frame.size.y; ++y)
+    for (int x = 0; x < frame.size.x; ++x) {
+      Surface s;
+      if (!surfaceAt(frame, geometry, x, y, s) || !facesLight(s, geometry)) continue;
+      const std::size_t i = static_cast<std::size_t>(y) * static_cast<std::size_t>(frame.size.x) + static_cast<std::size_t>(x);
+      const float rendered = frame.scene[i].a;
+      if (frame.light[i].g == 0 && rendered > 0.0f && geometry.shadowLive) ++e.caveLeakPixels;
+      const double d = glm::length(s.relative);
+      if (d > distance) continue;
+      ShadowCounts& bucket = e.byDistance[static_cast<std::size_t>(bucketOf(d))];
+      const Ray truth = truthAt(world, geometry.camera + s.relative, s.normal, toLight, distance + kReachBeyondDistance);
+      for (ShadowCounts* c : {&e.total, &bucket}) {
+        if (truth == Ray::Ambiguous) {
+          ++c->ambiguous;
+          continue;
+        }
+        ++c->evaluated;
+        if (truth == Ray::Lit && rendered < 0.5f) ++c->falseShadow;
+        if (truth == Ray::Shadowed && rendered >= 0.5f) ++c->falseLit;
+      }
+    }
+  return e;
+}
+
+double flickerPercent(const GBufferPixels& a, const FrameGeometry& ga, const GBufferPixels& b,
+                      const FrameGeometry& gb, float distance, std::size_t& compared) {
+  compared = 0;
+  std::size_t flips = 0;
+  for (int y = 0; y < a.size.y; ++y)
+    for (int x = 0; x < a.size.x; ++x) {
+      Surface s;
+      if (!surfaceAt(a, ga, x, y, s) || !facesLight(s, ga) || glm::length(s.relative) > distance) continue;
+      // The same world point in b: project, take the nearest pixel, and check it is that point.
+      const glm::dvec3 world = ga.camera + s.relative;
+      const glm::vec4 clip = gb.viewProjection * glm::vec4(glm::vec3(world - gb.camera), 1.0f);
+      if (clip.w <= 0.0f) continue;
+      const int bx = static_cast<int>(std::floor((clip.x / clip.w * 0.5f + 0.5f) * b.size.x));
+      const int by = static_cast<int>(std::floor((clip.y / clip.w * 0.5f + 0.5f) * b.size.y));
+      if (bx < 0 || by < 0 || bx >= b.size.x || by >= b.size.y) continue;
+      Surface t;
+      if (!surfaceAt(b, gb, bx, by, t) || glm::length(gb.camera + t.relative - world) > kSamePoint) continue;
+      ++compared;
+      const auto ia = static_cast<std::size_t>(y * a.size.x + x), ib = static_cast<std::size_t>(by * b.size.x + bx);
+      flips += (a.scene[ia].a >= 0.5f) != (b.scene[ib].a >= 0.5f);
+    }
+  return compared ? 100.0 * static_cast<double>(flips) / static_cast<double>(compared) : 0.0;
+}
+
+nlohmann::json shadowErrorJson(const ShadowError& error, double flickerPct, std::size_t flickerPoints) {
+  auto split = [](const ShadowCounts& c) {
+    const double all = static_cast<double>(c.evaluated + c.ambiguous);
+    auto pct = [](std::size_t n, double of) { return of > 0.0 ? 100.0 * static_cast<double>(n) / of : 0.0; };
+    return nlohmann::json{{"evaluated_pixels", c.evaluated},
+                          {"false_shadow_pct", pct(c.falseShadow, static_cast<double>(c.evaluated))},
+                          {"false_lit_pct", pct(c.falseLit, static_cast<double>(c.evaluated))},
+                          {"ambiguous_pct", pct(c.ambiguous, all)}};
+  };
+  nlohmann::json out = split(error.total);
+  out["cave_leak_pixels"] = error.caveLeakPixels;
+  const char* names[4] = {"0-8", "8-32", "32-64", "64+"};
+  for (std::size_t b = 0; b < 4; ++b) out["by_distance"][names[b]] = split(error.byDistance[b]);
+  out["flicker_pct"] = flickerPct;
+  out["flicker_points"] = flickerPoints;
+  return out;
+}
+
+}  // namespace terrasol
