@@ -13,7 +13,7 @@ enum class Ray { Lit, Shadowed, Ambiguous };
 
 // Two frames' pixels show the same world point when their surface points are this close (blocks): far
 // below a shadow texel, so a shadow edge between them is rare.
-constexpr double kSamePoint = 0.01;
+constexpr double kSamePoint = 0.002;
 
 // Casters beyond this along the ray are outside the shadow map too (shadow_map.cpp's reach).
 constexpr double kReachBeyondDistance = 256.0;
