@@ -43,4 +43,11 @@ bad 'camera_path.keyframes[0].t' '{"camera_path": {"keyframes": [{"t": 1.5, "pos
 bad 'camera.fov' '{"camera": {"fov": "wide"}}'
 bad 'render.width' '{}' --set render.width=huge
 bad 'world.edits[0].at_frame' '{"world": {"generator": "void", "edits": [{"set": [0, 64, 0], "block": "stone", "at_frame": 3}]}}'
+# A sweep: one CSV row per combination, and the chart.
+"$exe" "$scene" --out "$work/sweep" --set render.width=80 --set render.height=45 \
+  --sweep render.shadow.resolution=256,512 --sweep render.shadow.warp=none,radial > "$work/sweep.log" || fail "sweep: $(cat "$work/sweep.log")"
+[ "$(wc -l < "$work/sweep/sweep.csv")" -eq 5 ] || fail "sweep.csv should have a header and 4 rows"
+grep -q "^512,radial," "$work/sweep/sweep.csv" || fail "sweep.csv misses the 512,radial row"
+[ -s "$work/sweep/sweep.png" ] || fail "no sweep.png"
+bad 'render.shadow.warp' '{}' --sweep render.shadow.warp=none,bent
 echo "ok"

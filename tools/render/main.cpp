@@ -21,6 +21,7 @@
 #include "render/gl/program.h"
 #include "scene_render.h"
 #include "shadow_truth.h"
+#include "sweep.h"
 
 namespace terrasol {
 namespace {
@@ -30,6 +31,7 @@ constexpr int kBadInput = 2;
 struct Options {
   std::filesystem::path scene, out, compare, report;
   std::vector<std::string> overrides;
+  std::vector<Sweep> sweeps;
   bool updateGoldens = false, timings = false;
   std::optional<float> threshold, maxFailing;
 };
@@ -42,7 +44,9 @@ const char* const kUsage =
     "  --threshold X          per-pixel threshold 0..1 (default: the scene's compare.pixel_threshold)\n"
     "  --max-failing PERCENT  pixels allowed over it (default: the scene's compare.max_failing_percent)\n"
     "  --report FILE.json     per-frame report: ms per pass, NaN/Inf pixels, sections drawn and culled\n"
-    "  --timings              print ms per pass (glFinish after each pass)\n";
+    "  --timings              print ms per pass (glFinish after each pass)\n"
+    "  --sweep KEY=V1,V2,...  render every combination of the swept values (repeatable); writes\n"
+    "                         DIR/sweep.csv and DIR/sweep.png (shadow error against ms, Pareto front)\n";
 
 class UsageError : public Error {
  public:
@@ -75,6 +79,7 @@ Options parseOptions(int argc, char** argv) {
     else if (arg == "--max-failing") o.maxFailing = numberArgument(arg, value(i, arg));
     else if (arg == "--report") o.report = value(i, arg);
     else if (arg == "--timings") o.timings = true;
+    else if (arg == "--sweep") o.sweeps.push_back(parseSweep(value(i, arg)));
     else if (!arg.empty() && arg[0] != '-' && o.scene.empty()) o.scene = arg;
     else throw UsageError("unknown argument \"" + arg + "\"");
   }
@@ -202,11 +207,25 @@ int run(int argc, char** argv) {
   try {
     options = parseOptions(argc, argv);
     scene = loadScene(options.scene, options.overrides);
+    if (!options.sweeps.empty()) {
+      // Every value must make a valid scene before anything is rendered.
+      for (const Sweep& s : options.sweeps)
+        for (const auto& v : s.values) {
+          auto settings = options.overrides;
+          settings.push_back(s.key + "=" + v);
+          loadScene(options.scene, settings);
+        }
+    }
   } catch (const Error& e) {
     std::fprintf(stderr, "terrasol-render: error: %s\n%s", e.what(), dynamic_cast<const UsageError*>(&e) ? kUsage : "");
     return kBadInput;
   }
   auto context = createHeadlessContext(GlErrorPolicy::Throw);
+  if (!options.sweeps.empty()) {
+    runSweep(options.scene, options.overrides, options.sweeps, options.out);
+    context->checkErrors("the sweep");
+    return 0;
+  }
   std::optional<SceneRenderer> renderer;
   try {
     renderer.emplace(*scene);  // unknown blocks, unreadable packs: the scene is bad

@@ -1,0 +1,25 @@
+#pragma once
+// terrasol-render --sweep: every combination of the swept scene values rendered and measured (shadow
+// error against ray-traced truth, ms per pass), written as DIR/sweep.csv and plotted as DIR/sweep.png:
+// error against shadow + lighting ms, the Pareto front marked.
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace terrasol {
+
+struct Sweep {
+  std::string key;                  // e.g. "render.shadow.resolution"
+  std::vector<std::string> values;  // e.g. {"512", "1024"}
+};
+
+// "KEY=V1,V2,..." -> Sweep; throws Error when malformed.
+Sweep parseSweep(const std::string& text);
+
+// Renders frame 0 of `scene` for every combination (applied after `overrides`), prints a line per
+// combination, writes `out`/sweep.csv and `out`/sweep.png. Returns the number of combinations.
+int runSweep(const std::filesystem::path& scene, const std::vector<std::string>& overrides,
+             const std::vector<Sweep>& sweeps, const std::filesystem::path& out);
+
+}  // namespace terrasol
