@@ -138,6 +138,7 @@ struct DeferredRenderer::View {
   DayState day;
   bool materialAo;
   bool shadowLive = false;  // the shadow pass ran this frame
+  glm::dvec3 shadowCentreOffset{0.0};
 };
 
 DeferredRenderer::DeferredRenderer(const ShaderPreprocessor& shaders, const Atlas& atlas, const BiomeTints& tints,
@@ -183,6 +184,7 @@ void DeferredRenderer::render(const FrameInputs& frame, const SectionMeshes& mes
   view.fogRange = {0.8f * frame.viewDistance, frame.viewDistance};
   view.day = dayStateAt(frame.ticks, frame.sunPathRotation);
   view.materialAo = frame.materialAo;
+  view.shadowCentreOffset = frame.shadowCentreOffset;
 
   const Lightmap lightmap = buildLightmap(view.day, frame.ticks);
   glTextureSubImage2D(lightmap_.id(), 0, 0, 0, Lightmap::kSize, Lightmap::kSize, GL_RGB, GL_FLOAT,
@@ -203,7 +205,7 @@ void DeferredRenderer::render(const FrameInputs& frame, const SectionMeshes& mes
   geometryPass(view, meshes);
   clock.lap("geometry");
   lastGeometry_ = {view.camera, view.viewProjection, view.inverseViewProjection, view.day.toShadowLight, view.shadowLive,
-               view.shadowLive ? shadowView_.texelWorld : 0.0f};
+               view.shadowLive ? shadowViews_[0].texelWorld : 0.0f};
   if (frame.debugView != DebugView::None) {
     glProgramUniform1i(debug_.id(), glGetUniformLocation(debug_.id(), "u_view"), static_cast<int>(frame.debugView));
     debugPass(view, framebuffer, size);
@@ -295,41 +297,50 @@ void DeferredRenderer::drawSections(GLuint program, const std::vector<Visible>& 
   glBindVertexArray(0);
 }
 
-// The light's view: casters inside the light's box (culled per section), opaque then alpha-tested.
+// The light's view, a layer per cascade: casters inside the layer's box (culled per section), opaque
+// then alpha-tested.
 void DeferredRenderer::shadowPass(const View& view, const SectionMeshes& meshes) {
   const ShadowSettings& settings = options_.shadow;
-  shadowMap_.ensure(settings.resolution);
-  shadowView_ = shadowViewFor(settings, view.day.toShadowLight, view.camera);
-  const auto planes = frustumPlanes(shadowView_.matrix);
-  std::vector<Visible> casters;
-  for (const auto& [pos, section] : meshes.sections()) {
-    const glm::dvec3 corner(pos.x * 16.0, kMinY + pos.section * 16.0, pos.z * 16.0);
-    const glm::vec3 offset(corner - view.camera);
-    if (boxVisible(planes, offset, 16.0f)) casters.push_back({&section, offset});
-  }
-  stats_.shadowCasters = static_cast<int>(casters.size());
-
-  glBindFramebuffer(GL_FRAMEBUFFER, shadowMap_.framebuffer());
+  const int layers = shadowLayers(settings);
+  shadowMap_.ensure(settings.resolution, layers);
   glViewport(0, 0, settings.resolution, settings.resolution);
-  const float farDepth = 1.0f;
-  glClearNamedFramebufferfv(shadowMap_.framebuffer(), GL_DEPTH, 0, &farDepth);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   glDepthMask(GL_TRUE);
-  glDisable(GL_CULL_FACE);    // single faces (the mesher drops hidden ones) must cast from both sides
-  glEnable(GL_DEPTH_CLAMP);   // casters above the near plane still cast, flattened onto it
+  glDisable(GL_CULL_FACE);   // single faces (the mesher drops hidden ones) must cast from both sides
+  glEnable(GL_DEPTH_CLAMP);  // casters above the near plane still cast, flattened onto it
   glDisable(GL_BLEND);
-  for (const GLuint program : {shadow_.id(), shadowCutout_.id()}) {
-    setMat4(program, "u_shadowMatrix", shadowView_.matrix);
-    setWarpUniforms(program);
+  stats_.shadowCasters = 0;
+  for (int layer = 0; layer < layers; ++layer) {
+    ShadowView& light = shadowViews_[static_cast<std::size_t>(layer)];
+    light = shadowViewFor(settings.resolution, cascadeDistance(settings, layer), view.day.toShadowLight, view.camera,
+                          view.camera + view.shadowCentreOffset);
+    const auto planes = frustumPlanes(light.matrix);
+    std::vector<Visible> casters;
+    for (const auto& [pos, section] : meshes.sections()) {
+      const glm::dvec3 corner(pos.x * 16.0, kMinY + pos.section * 16.0, pos.z * 16.0);
+      const glm::vec3 offset(corner - view.camera);
+      if (boxVisible(planes, offset, 16.0f)) casters.push_back({&section, offset});
+    }
+    stats_.shadowCasters += static_cast<int>(casters.size());
+    glBindFramebuffer(GL_FRAMEBUFFER, shadowMap_.framebuffer(layer));
+    const float farDepth = 1.0f;
+    glClearNamedFramebufferfv(shadowMap_.framebuffer(layer), GL_DEPTH, 0, &farDepth);
+    for (const GLuint program : {shadow_.id(), shadowCutout_.id()}) {
+      setMat4(program, "u_shadowMatrix", light.matrix);
+      setWarpUniforms(program);
+    }
+    drawSections(shadow_.id(), casters, meshes, MeshLayer::Opaque, false);
+    drawSections(shadowCutout_.id(), casters, meshes, MeshLayer::Cutout, false);
   }
-  drawSections(shadow_.id(), casters, meshes, MeshLayer::Opaque, false);
-  drawSections(shadowCutout_.id(), casters, meshes, MeshLayer::Cutout, false);
   glDisable(GL_DEPTH_CLAMP);
 }
 
+// Cascades are never warped.
 void DeferredRenderer::setWarpUniforms(GLuint program) const {
-  glProgramUniform1i(program, glGetUniformLocation(program, "u_shadowWarp"), static_cast<int>(options_.shadow.warp));
+  const bool warped = options_.shadow.mode == ShadowMode::Warped;
+  glProgramUniform1i(program, glGetUniformLocation(program, "u_shadowWarp"),
+                     warped ? static_cast<int>(options_.shadow.warp) : static_cast<int>(ShadowWarp::None));
   glProgramUniform1f(program, glGetUniformLocation(program, "u_shadowWarpStrength"),
                      std::clamp(options_.shadow.warpStrength, 0.0f, 0.999f));
 }
@@ -344,9 +355,20 @@ void DeferredRenderer::setLightingUniforms(GLuint program, const View& view) con
   if (!options_.shadow.enabled) return;
   const ShadowSettings& settings = options_.shadow;
   setWarpUniforms(program);
-  setMat4(program, "u_shadowMatrix", shadowView_.matrix);
-  glProgramUniform1f(program, glGetUniformLocation(program, "u_shadowTexelWorld"), shadowView_.texelWorld);
-  glProgramUniform1f(program, glGetUniformLocation(program, "u_shadowDepthRange"), shadowView_.depthRange);
+  const int layers = shadowLayers(settings);
+  std::array<glm::mat4, kMaxShadowCascades> matrices{};
+  std::array<float, kMaxShadowCascades> texels{}, ranges{};
+  for (int i = 0; i < layers; ++i) {
+    const ShadowView& v = shadowViews_[static_cast<std::size_t>(i)];
+    matrices[static_cast<std::size_t>(i)] = v.matrix;
+    texels[static_cast<std::size_t>(i)] = v.texelWorld;
+    ranges[static_cast<std::size_t>(i)] = v.depthRange;
+  }
+  glProgramUniform1i(program, glGetUniformLocation(program, "u_cascades"), layers);
+  glProgramUniformMatrix4fv(program, glGetUniformLocation(program, "u_shadowMatrices"), layers, GL_FALSE,
+                            glm::value_ptr(matrices[0]));
+  glProgramUniform1fv(program, glGetUniformLocation(program, "u_shadowTexelWorlds"), layers, texels.data());
+  glProgramUniform1fv(program, glGetUniformLocation(program, "u_shadowDepthRanges"), layers, ranges.data());
   glProgramUniform1f(program, glGetUniformLocation(program, "u_shadowResolution"), static_cast<float>(settings.resolution));
   glProgramUniform1i(program, glGetUniformLocation(program, "u_pcfSamples"), std::clamp(settings.pcfSamples, 0, 8));
   glProgramUniform1f(program, glGetUniformLocation(program, "u_pcfRadius"), std::max(settings.pcfRadius, 0.0f));

@@ -38,6 +38,9 @@ struct FrameInputs {
   float viewDistance = 64.0f;     // blocks: fog ends here
   DebugView debugView = DebugView::None;
   bool materialAo = true;         // LabPBR _n blue darkens ambient light
+  // Moves the shadow map's centre as if the camera had moved, keeping the view: the flicker
+  // measurement compares the same pixels (the same world points) under two map placements.
+  glm::dvec3 shadowCentreOffset{0.0};
 };
 
 // Choices that pick shader variants, fixed for the renderer's life.
@@ -58,7 +61,7 @@ struct FrameGeometry {
   glm::mat4 inverseViewProjection{1.0f};
   glm::vec3 toLight{0.0f, 1.0f, 0.0f};    // the shadow-casting light
   bool shadowLive = false;                // the shadow pass ran
-  float shadowTexelWorld = 0.0f;          // blocks per texel of the unwarped shadow map
+  float shadowTexelWorld = 0.0f;          // blocks per texel of the unwarped shadow map (its first layer)
 };
 
 // What the last frame did, for reports.
@@ -113,7 +116,7 @@ class DeferredRenderer {
   std::optional<GBuffer> gbuffer_;
   RendererOptions options_;
   ShadowMap shadowMap_;
-  ShadowView shadowView_{};
+  std::array<ShadowView, kMaxShadowCascades> shadowViews_{};  // this frame's, one per layer
   bool gpuTimer_;  // timer queries for pass timings (a real GPU); else glFinish and the wall clock
   std::vector<Visible> visible_;  // this frame's sections inside the frustum
   FrameStats stats_;

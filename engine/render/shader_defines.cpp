@@ -6,6 +6,7 @@
 #include "mesh/mesh_data.h"
 #include "render/gbuffer_layout.h"
 #include "render/gl_slots.h"
+#include "render/shadow_map.h"
 
 namespace terrasol {
 namespace {
@@ -53,6 +54,7 @@ std::vector<ShaderDefine> rendererDefines() {
   defines.push_back({"FACE_TANGENTS", faceArray([](const FaceBasis& b) { return b.tangent; })});
   defines.push_back({"FACE_UPS", faceArray([](const FaceBasis& b) { return b.up; })});
   defines.push_back({"LABPBR_METAL_F0", metalArray()});
+  defines.push_back({"SHADOW_MAX_CASCADES", std::to_string(kMaxShadowCascades)});
   return defines;
 }
 

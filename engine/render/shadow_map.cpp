@@ -1,5 +1,6 @@
 #include "render/shadow_map.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -13,17 +14,25 @@ namespace terrasol {
 // sun and the camera's surroundings).
 constexpr float kCasterReach = 256.0f;
 
-ShadowView shadowViewFor(const ShadowSettings& settings, glm::vec3 toLight, glm::dvec3 camera) {
+int shadowLayers(const ShadowSettings& settings) {
+  return settings.mode == ShadowMode::Cascaded ? std::clamp(settings.cascades, 2, kMaxShadowCascades) : 1;
+}
+
+float cascadeDistance(const ShadowSettings& settings, int layer) {
+  const int layers = shadowLayers(settings);
+  return settings.distance / static_cast<float>(1 << (layers - 1 - layer));
+}
+
+ShadowView shadowViewFor(int resolution, float mapDistance, glm::vec3 toLight, glm::dvec3 camera, glm::dvec3 centre) {
   const glm::dvec3 z = glm::normalize(glm::dvec3(toLight));
   const glm::dvec3 hint = std::abs(z.y) < 0.99 ? glm::dvec3(0.0, 1.0, 0.0) : glm::dvec3(0.0, 0.0, 1.0);
   const glm::dvec3 x = glm::normalize(glm::cross(hint, z));
   const glm::dvec3 y = glm::cross(z, x);
-  const double distance = std::max(static_cast<double>(settings.distance), 1.0);
-  const double texel = 2.0 * distance / std::max(settings.resolution, 1);
-  // The camera in light space, and the nearest whole-texel centre: the map moves in whole texels.
-  const glm::dvec2 lightPos(glm::dot(camera, x), glm::dot(camera, y));
-  const glm::dvec2 snapped = glm::floor(lightPos / texel) * texel;
-  const glm::dvec2 shift = lightPos - snapped;  // under one texel: small, safe in float
+  const double distance = std::max(static_cast<double>(mapDistance), 0.5);
+  const double texel = 2.0 * distance / std::max(resolution, 1);
+  // The centre in light space, snapped to whole texels: the map moves in whole texels.
+  const glm::dvec2 snapped = glm::floor(glm::dvec2(glm::dot(centre, x), glm::dot(centre, y)) / texel) * texel;
+  const glm::dvec2 shift = glm::dvec2(glm::dot(camera, x), glm::dot(camera, y)) - snapped;  // small: safe in float
 
   glm::mat4 view(1.0f);  // rows x, y, z: camera-relative world -> light space
   for (int i = 0; i < 3; ++i) {
@@ -43,10 +52,10 @@ ShadowView shadowViewFor(const ShadowSettings& settings, glm::vec3 toLight, glm:
   return v;
 }
 
-void ShadowMap::ensure(int resolution) {
-  if (resolution == resolution_) return;
-  depth_ = gl::Texture::create(GL_TEXTURE_2D);
-  glTextureStorage2D(depth_.id(), 1, GL_DEPTH_COMPONENT32F, resolution, resolution);
+void ShadowMap::ensure(int resolution, int layers) {
+  if (resolution == resolution_ && layers == layers_) return;
+  depth_ = gl::Texture::create(GL_TEXTURE_2D_ARRAY);
+  glTextureStorage3D(depth_.id(), 1, GL_DEPTH_COMPONENT32F, resolution, resolution, layers);
   // Hardware comparison: each tap returns the lit fraction of its 2x2 texels.
   glTextureParameteri(depth_.id(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
   glTextureParameteri(depth_.id(), GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
@@ -54,13 +63,17 @@ void ShadowMap::ensure(int resolution) {
   glTextureParameteri(depth_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
   glTextureParameteri(depth_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
   glTextureParameteri(depth_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-  framebuffer_ = gl::Framebuffer::create();
-  glNamedFramebufferTexture(framebuffer_.id(), GL_DEPTH_ATTACHMENT, depth_.id(), 0);
-  glNamedFramebufferDrawBuffer(framebuffer_.id(), GL_NONE);
-  if (glCheckNamedFramebufferStatus(framebuffer_.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
-    throw Error("shadow map framebuffer incomplete at " + std::to_string(resolution) + " texels");
+  for (int layer = 0; layer < layers; ++layer) {
+    gl::Framebuffer& fbo = framebuffers_[static_cast<std::size_t>(layer)];
+    fbo = gl::Framebuffer::create();
+    glNamedFramebufferTextureLayer(fbo.id(), GL_DEPTH_ATTACHMENT, depth_.id(), 0, layer);
+    glNamedFramebufferDrawBuffer(fbo.id(), GL_NONE);
+    if (glCheckNamedFramebufferStatus(fbo.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+      throw Error("shadow map framebuffer incomplete at " + std::to_string(resolution) + " texels");
+    }
   }
   resolution_ = resolution;
+  layers_ = layers;
 }
 
 }  // namespace terrasol

@@ -1,11 +1,15 @@
 #pragma once
-// The shadow map: one orthographic depth map from the shadow-casting light (sun or moon), centred on
-// the camera and warped so texels crowd near it. Settings come from the scene ("render.shadow").
+// The shadow map: orthographic depth from the shadow-casting light (sun or moon), centred on the
+// camera. Either one map warped so texels crowd near the camera, or (cascaded) up to four unwarped
+// maps, each covering twice the distance of the one before, as layers of one array texture. Settings
+// come from the scene ("render.shadow").
 //
 // Stability: the map's centre is snapped to whole texels of the unwarped map, computed in double from
 // the camera's world position, so a moving camera slides the map by whole texels and edges do not
 // crawl; the light direction itself is used as is (continuous). Everything is camera-relative, so it
 // holds at any distance from the world's origin.
+
+#include <array>
 
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
@@ -14,12 +18,16 @@
 
 namespace terrasol {
 
+enum class ShadowMode { Warped, Cascaded };
 enum class ShadowWarp { None, Square, Radial };
+inline constexpr int kMaxShadowCascades = 4;
 enum class PcfPattern { Grid, Disk };
 
 struct ShadowSettings {
   bool enabled = true;
-  int resolution = 2048;        // texels per side
+  ShadowMode mode = ShadowMode::Warped;
+  int cascades = 4;             // cascaded mode: 2..kMaxShadowCascades
+  int resolution = 2048;        // texels per side (of each cascade)
   float distance = 128.0f;      // blocks from the camera to the map's edge
   ShadowWarp warp = ShadowWarp::Radial;
   float warpStrength = 0.85f;   // [0, 1): 0 = no warp
@@ -36,21 +44,27 @@ struct ShadowView {
   float texelWorld;        // blocks per texel of the unwarped map
 };
 
-// `toLight` must be unit length (DayState::toShadowLight).
-ShadowView shadowViewFor(const ShadowSettings& settings, glm::vec3 toLight, glm::dvec3 camera);
+// A map of `distance` blocks around `centre` (the camera; moved only to measure flicker), for positions
+// relative to `camera`. `toLight` must be unit length (DayState::toShadowLight).
+ShadowView shadowViewFor(int resolution, float distance, glm::vec3 toLight, glm::dvec3 camera, glm::dvec3 centre);
+
+// The layers the settings ask for: one (warped), or the cascades, smallest first (distance / 2^k).
+int shadowLayers(const ShadowSettings& settings);
+float cascadeDistance(const ShadowSettings& settings, int layer);
 
 class ShadowMap {
  public:
-  // Reallocates when the resolution changes. Throws Error for an incomplete framebuffer.
-  void ensure(int resolution);
-  GLuint framebuffer() const { return framebuffer_.id(); }
+  // Reallocates when the resolution or layer count changes. Throws Error for an incomplete framebuffer.
+  void ensure(int resolution, int layers);
+  // The framebuffer drawing into `layer`.
+  GLuint framebuffer(int layer) const { return framebuffers_[static_cast<std::size_t>(layer)].id(); }
   GLuint depth() const { return depth_.id(); }
   int resolution() const { return resolution_; }
 
  private:
-  int resolution_ = 0;
+  int resolution_ = 0, layers_ = 0;
   gl::Texture depth_;
-  gl::Framebuffer framebuffer_;
+  std::array<gl::Framebuffer, kMaxShadowCascades> framebuffers_;
 };
 
 }  // namespace terrasol

@@ -242,9 +242,12 @@ void parsePcf(const json& pcf, SceneShadow& shadow) {
 
 void parseShadow(const json& value, SceneShadow& shadow) {
   const std::string key = "render.shadow";
-  checkObject(value, key, {"enabled", "mode", "resolution", "distance", "warp", "warp_strength", "pcf"});
+  checkObject(value, key, {"enabled", "mode", "cascades", "resolution", "distance", "warp", "warp_strength", "pcf"});
   if (const json* v = field(value, "enabled")) shadow.enabled = boolean(*v, member(key, "enabled"));
   if (const json* v = field(value, "mode")) shadow.mode = oneOf(*v, member(key, "mode"), kShadowModes);
+  if (const json* v = field(value, "cascades")) {
+    shadow.cascades = static_cast<int>(wholeNumber(*v, member(key, "cascades"), 2, 4));
+  }
   if (const json* v = field(value, "resolution")) {
     shadow.resolution = static_cast<int>(wholeNumber(*v, member(key, "resolution"), 16, 16384));
   }

@@ -39,6 +39,7 @@ struct CameraPath {
 struct SceneShadow {
   bool enabled = true;
   std::string mode = "warped";   // one of kShadowModes
+  int cascades = 4;              // "cascaded": 2..4 maps, each twice the distance of the one before
   int resolution = 2048;         // 16..16384 texels per side
   float distance = 128.0f;       // blocks, 1..4096
   std::string warp = "radial";   // one of kShadowWarps
@@ -47,7 +48,7 @@ struct SceneShadow {
   float pcfRadius = 1.0f;        // texels, 0..32
   std::string pcfPattern = "disk";  // one of kPcfPatterns
 };
-inline constexpr std::array<std::string_view, 1> kShadowModes = {"warped"};
+inline constexpr std::array<std::string_view, 2> kShadowModes = {"warped", "cascaded"};
 inline constexpr std::array<std::string_view, 3> kShadowWarps = {"none", "square", "radial"};
 inline constexpr std::array<std::string_view, 2> kPcfPatterns = {"grid", "disk"};
 

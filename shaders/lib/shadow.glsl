@@ -1,12 +1,15 @@
 // Shadow map lookup: normal offset and slope-scaled depth bias sized to the local (warped) texel,
 // then PCF with hardware depth comparison. Outside the map or beyond its depth range counts as lit.
+// The map is a layer per cascade: one warped layer, or up to 4 unwarped cascades growing outwards
+// from the camera, of which the smallest that holds the point is used.
 
 #include "lib/shadow_warp.glsl"
 
-layout(binding = UNIT_SHADOW_MAP) uniform sampler2DShadow u_shadowMap;
-uniform mat4 u_shadowMatrix;       // camera-relative world -> light clip space (unwarped)
-uniform float u_shadowTexelWorld;  // blocks per texel of the unwarped map
-uniform float u_shadowDepthRange;  // blocks from the near to the far plane
+layout(binding = UNIT_SHADOW_MAP) uniform sampler2DArrayShadow u_shadowMap;
+uniform int u_cascades;                   // layers in use, 1..SHADOW_MAX_CASCADES
+uniform mat4 u_shadowMatrices[SHADOW_MAX_CASCADES];  // camera-relative world -> light clip space (unwarped)
+uniform float u_shadowTexelWorlds[SHADOW_MAX_CASCADES];  // blocks per texel of each layer, unwarped
+uniform float u_shadowDepthRanges[SHADOW_MAX_CASCADES];  // blocks from each layer's near to far plane
 uniform float u_shadowResolution;  // texels per side
 uniform int u_pcfSamples;          // N: (2N + 1)^2 grid taps or the 16-tap disk; 0 = one tap
 uniform float u_pcfRadius;         // texels
@@ -26,37 +29,51 @@ float interleavedGradientNoise(vec2 pixel) {
   return fract(52.9829189 * fract(dot(pixel, vec2(0.06711056, 0.00583715))));
 }
 
-float shadowTap(vec2 uv, float depth, vec2 offsetTexels) {
-  return texture(u_shadowMap, vec3(uv + offsetTexels / u_shadowResolution, depth));
+float shadowTap(vec2 uv, float layer, float depth, vec2 offsetTexels) {
+  return texture(u_shadowMap, vec4(uv + offsetTexels / u_shadowResolution, layer, depth));
+}
+
+// The smallest cascade sure to hold the point: one whose half-width exceeds the point's distance from
+// the camera (light-space |xy| <= that distance), with a margin for the PCF taps and the offset. Chosen
+// by distance, not by map position, so the choice does not change when the maps step by a texel.
+int cascadeOf(vec3 position) {
+  float distance = length(position);
+  for (int i = 0; i < u_cascades - 1; ++i) {
+    if (distance < 0.9 * u_shadowTexelWorlds[i] * u_shadowResolution * 0.5) return i;
+  }
+  return u_cascades - 1;
 }
 
 // 1 = fully lit. `position` camera-relative, `vertexNormal` unit, `cosTheta` = dot(vertexNormal, toLight) > 0.
 float shadowVisibility(vec3 position, vec3 vertexNormal, float cosTheta, vec2 pixel) {
-  vec4 unshifted = u_shadowMatrix * vec4(position, 1.0);
+  int cascade = cascadeOf(position);
+  mat4 toLight = u_shadowMatrices[cascade];
+  vec4 unshifted = toLight * vec4(position, 1.0);
   // One warped texel here, in blocks; clamped where a strong warp makes the edge texels huge.
-  float texel = min(u_shadowTexelWorld / max(warpScale(unshifted.xy), 1e-3), 4.0);
+  float texel = min(u_shadowTexelWorlds[cascade] / max(warpScale(unshifted.xy), 1e-3), 4.0);
   float c = clamp(cosTheta, 0.0, 1.0);
   float sinTheta = sqrt(1.0 - c * c);
   float tanTheta = min(sinTheta / max(c, 1e-3), 10.0);  // grazing light: tan -> infinity, clamped
   float spread = 1.0 + (u_pcfSamples > 0 ? u_pcfRadius : 0.0);
   vec3 offset = vertexNormal * texel * spread * (0.35 + 0.65 * sinTheta);
-  vec4 p = u_shadowMatrix * vec4(position + offset, 1.0);
+  vec4 p = toLight * vec4(position + offset, 1.0);
   if (any(greaterThan(abs(p.xyz), vec3(1.0)))) return 1.0;  // outside the map or its depth range
   vec2 uv = warpShadow(p.xy) * 0.5 + 0.5;
-  float bias = (texel * spread * 0.5 * tanTheta + 0.02) / u_shadowDepthRange;
+  float bias = (texel * spread * 0.5 * tanTheta + 0.02) / u_shadowDepthRanges[cascade];
+  float layer = float(cascade);
   float depth = p.z * 0.5 + 0.5 - bias;
 
-  if (u_pcfSamples <= 0) return shadowTap(uv, depth, vec2(0.0));
+  if (u_pcfSamples <= 0) return shadowTap(uv, layer, depth, vec2(0.0));
   float lit = 0.0;
   if (u_pcfPattern == 0) {
     float step = u_pcfRadius / float(u_pcfSamples);
     for (int y = -u_pcfSamples; y <= u_pcfSamples; ++y)
-      for (int x = -u_pcfSamples; x <= u_pcfSamples; ++x) lit += shadowTap(uv, depth, vec2(x, y) * step);
+      for (int x = -u_pcfSamples; x <= u_pcfSamples; ++x) lit += shadowTap(uv, layer, depth, vec2(x, y) * step);
     float side = float(2 * u_pcfSamples + 1);
     return lit / (side * side);
   }
   float angle = 6.2831853 * interleavedGradientNoise(pixel);
   mat2 rotation = mat2(cos(angle), sin(angle), -sin(angle), cos(angle));
-  for (int i = 0; i < 16; ++i) lit += shadowTap(uv, depth, rotation * kPoisson[i] * u_pcfRadius);
+  for (int i = 0; i < 16; ++i) lit += shadowTap(uv, layer, depth, rotation * kPoisson[i] * u_pcfRadius);
   return lit / 16.0;
 }

@@ -64,6 +64,12 @@ TEST_F(ShadowTest, ExtremeSettingsStayFiniteAndSane) {
       {"resolution 8192", [](SceneFile& s) { s.shadow.resolution = 8192; }},
       {"distance 8", [](SceneFile& s) { s.shadow.distance = 8.0f; }},
       {"distance 1024", [](SceneFile& s) { s.shadow.distance = 1024.0f; }},
+      {"4 cascades", [](SceneFile& s) { s.shadow.mode = "cascaded"; }},
+      {"2 cascades at 256 texels", [](SceneFile& s) {
+         s.shadow.mode = "cascaded";
+         s.shadow.cascades = 2;
+         s.shadow.resolution = 256;
+       }},
       {"grid PCF, 3 samples, radius 4", [](SceneFile& s) {
          s.shadow.pcfPattern = "grid";
          s.shadow.pcfSamples = 3;
@@ -91,6 +97,29 @@ TEST_F(ShadowTest, ExtremeSettingsStayFiniteAndSane) {
 
 // A room sealed by a one-block roof, the sun straight above: its floor has sky light 0, so no sun
 // reaches it whatever the shadow map's bias does.
+// Cascades are unwarped and snapped, so moving the camera by a fraction of a texel changes no shadow.
+// (Moves of a texel or more may: shifted by whole texels in double, the casters' float vertices can
+// round differently, and an alpha-tested plant's shadow then gains or loses a texel.)
+TEST_F(ShadowTest, CascadesMatchTruthAndDoNotFlicker) {
+  SceneFile scene = loadScene(kScenes / "shadow_noon.json");
+  scene.shadow.mode = "cascaded";
+  SceneRenderer renderer(scene);
+  FrameRequest request;
+  request.readBack = true;
+  const RenderedFrame a = renderer.renderFrame(0, request);
+  const ShadowError e = measureShadowError(renderer.world(), a.pixels, a.geometry, scene.shadow.distance);
+  EXPECT_GT(e.total.evaluated, 10000u);
+  EXPECT_LT(wrongPercent(e.total), 0.5);
+  for (const glm::dvec3 move : {glm::dvec3(0.3, 0.1, -0.2), glm::dvec3(-0.45, 0.4, 0.45), glm::dvec3(0.49, 0.0, -0.49)}) {
+    request.shadowCentreOffset = move * static_cast<double>(a.geometry.shadowTexelWorld);
+    const RenderedFrame b = renderer.renderFrame(0, request);
+    std::size_t compared = 0;
+    EXPECT_EQ(flickerPercent(a.pixels, b.pixels, a.geometry, scene.shadow.distance, compared), 0.0);
+    EXPECT_GT(compared, 10000u);
+  }
+  context_->checkErrors("cascades");
+}
+
 TEST_F(ShadowTest, ASealedCaveUnderAOneBlockRoofHasNoLeaks) {
   SceneFile scene = parseScene(R"({
       "world": { "generator": "flat", "edits": [

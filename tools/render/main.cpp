@@ -94,8 +94,9 @@ std::string frameName(const char* prefix, int frame) {
   return name;
 }
 
-// The frame's shadows against ray-traced truth, and their flicker: the same frame again with the camera
-// moved by a random fraction of a shadow texel (the sun frozen).
+// The frame's shadows against ray-traced truth, and their flicker: the same frame again with the shadow
+// map placed as if the camera had moved by a random fraction of a texel (the sun frozen, the view kept,
+// so every pixel shows the same world point in both).
 nlohmann::json shadowReport(SceneRenderer& renderer, int index, const RenderedFrame& frame, const FrameRequest& request) {
   const float distance = renderer.scene().shadow.distance;
   const ShadowError error = measureShadowError(renderer.world(), frame.pixels, frame.geometry, distance);
@@ -105,10 +106,10 @@ nlohmann::json shadowReport(SceneRenderer& renderer, int index, const RenderedFr
   moved.timed = false;
   moved.readBack = true;
   const double texel = frame.geometry.shadowTexelWorld;
-  moved.cameraOffset = glm::dvec3(within(random) * texel, within(random) * texel, within(random) * texel);
+  moved.shadowCentreOffset = glm::dvec3(within(random) * texel, within(random) * texel, within(random) * texel);
   const RenderedFrame again = renderer.renderFrame(index, moved);
   std::size_t compared = 0;
-  const double flicker = flickerPercent(frame.pixels, frame.geometry, again.pixels, again.geometry, distance, compared);
+  const double flicker = flickerPercent(frame.pixels, again.pixels, frame.geometry, distance, compared);
   return shadowErrorJson(error, flicker, compared);
 }
 

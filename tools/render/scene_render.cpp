@@ -37,6 +37,8 @@ PackStack openPacks(const SceneFile& scene) {
 ShadowSettings shadowSettingsOf(const SceneShadow& s) {
   ShadowSettings out;
   out.enabled = s.enabled;
+  out.mode = s.mode == "cascaded" ? ShadowMode::Cascaded : ShadowMode::Warped;
+  out.cascades = s.cascades;
   out.resolution = s.resolution;
   out.distance = s.distance;
   out.warp = s.warp == "none" ? ShadowWarp::None : s.warp == "square" ? ShadowWarp::Square : ShadowWarp::Radial;
@@ -129,8 +131,7 @@ RenderedFrame SceneRenderer::renderFrame(int frame, const FrameRequest& request)
   for (const SectionMesh& mesh : world_->world.advanceTo(frame, world_->table)) gpu_->meshes.upload(mesh);
   FrameInputs inputs = inputsFor(frame);
   if (request.debugView) inputs.debugView = *request.debugView;
-  inputs.cameraPosition += request.cameraOffset;
-  inputs.cameraLookAt += request.cameraOffset;
+  inputs.shadowCentreOffset = request.shadowCentreOffset;
   RenderedFrame out;
   const GLuint fbo = gpu_->target.framebuffer();
   gpu_->renderer.render(inputs, gpu_->meshes, fbo, gpu_->target.size(), request.timed ? &out.timings : nullptr);

@@ -33,7 +33,7 @@ struct FrameRequest {
   bool timed = false;
   bool checkNan = false;
   bool readBack = false;            // keep the G-buffer's pixels (shadow-error report)
-  glm::dvec3 cameraOffset{0.0};     // moves the camera (the flicker measurement)
+  glm::dvec3 shadowCentreOffset{0.0};  // moves the shadow map as if the camera had moved (flicker)
   std::optional<DebugView> debugView;  // overrides the scene's
 };
 

@@ -11,9 +11,8 @@ namespace {
 
 enum class Ray { Lit, Shadowed, Ambiguous };
 
-// Two frames' pixels show the same world point when their surface points are this close (blocks): far
-// below a shadow texel, so a shadow edge between them is rare.
-constexpr double kSamePoint = 0.002;
+// How much a pixel's shadow term must change, across 0.5, to count as flicker.
+constexpr float kFlipMargin = 0.01f;
 
 // Casters beyond this along the ray are outside the shadow map too (shadow_map.cpp's reach).
 constexpr double kReachBeyondDistance = 256.0;
@@ -122,26 +121,23 @@ ShadowError measureShadowError(const World& world, const GBufferPixels& frame, c
   return e;
 }
 
-double flickerPercent(const GBufferPixels& a, const FrameGeometry& ga, const GBufferPixels& b,
-                      const FrameGeometry& gb, float distance, std::size_t& compared) {
+double flickerPercent(const GBufferPixels& a, const GBufferPixels& b, const FrameGeometry& geometry, float distance,
+                      std::size_t& compared) {
   compared = 0;
   std::size_t flips = 0;
   for (int y = 0; y < a.size.y; ++y)
     for (int x = 0; x < a.size.x; ++x) {
       Surface s;
-      if (!surfaceAt(a, ga, x, y, s) || !facesLight(s, ga) || glm::length(s.relative) > distance) continue;
-      // The same world point in b: project, take the nearest pixel, and check it is that point.
-      const glm::dvec3 world = ga.camera + s.relative;
-      const glm::vec4 clip = gb.viewProjection * glm::vec4(glm::vec3(world - gb.camera), 1.0f);
-      if (clip.w <= 0.0f) continue;
-      const int bx = static_cast<int>(std::floor((clip.x / clip.w * 0.5f + 0.5f) * b.size.x));
-      const int by = static_cast<int>(std::floor((clip.y / clip.w * 0.5f + 0.5f) * b.size.y));
-      if (bx < 0 || by < 0 || bx >= b.size.x || by >= b.size.y) continue;
-      Surface t;
-      if (!surfaceAt(b, gb, bx, by, t) || glm::length(gb.camera + t.relative - world) > kSamePoint) continue;
+      // The map's outer tenth is left out: a point there moves in and out of the map as it steps.
+      if (!surfaceAt(a, geometry, x, y, s) || !facesLight(s, geometry) || glm::length(s.relative) > 0.9 * distance) {
+        continue;
+      }
+      const auto i = static_cast<std::size_t>(y * a.size.x + x);
       ++compared;
-      const auto ia = static_cast<std::size_t>(y * a.size.x + x), ib = static_cast<std::size_t>(by * b.size.x + bx);
-      flips += (a.scene[ia].a >= 0.5f) != (b.scene[ib].a >= 0.5f);
+      // A flip crosses 0.5 by a visible amount: llvmpipe's 8-bit filter weights move a term sitting on
+      // 0.5 (8 of 16 taps lit) by ~1e-4 when the map's float offsets round differently.
+      const float ta = a.scene[i].a, tb = b.scene[i].a;
+      flips += (ta >= 0.5f) != (tb >= 0.5f) && std::abs(ta - tb) > kFlipMargin;
     }
   return compared ? 100.0 * static_cast<double>(flips) / static_cast<double>(compared) : 0.0;
 }

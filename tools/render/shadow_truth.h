@@ -31,11 +31,11 @@ struct ShadowError {
 ShadowError measureShadowError(const World& world, const GBufferPixels& frame, const FrameGeometry& geometry,
                                float distance);
 
-// Of the world points seen in `a` (facing the light, within `distance`), the percentage whose shadow
-// (rendered term >= 0.5 or not) differs in `b`, the same frame rendered with the camera moved.
-// `compared` gets how many points both frames saw.
-double flickerPercent(const GBufferPixels& a, const FrameGeometry& ga, const GBufferPixels& b,
-                      const FrameGeometry& gb, float distance, std::size_t& compared);
+// Of the pixels of `a` facing the light within 0.9 `distance` (inside the map's edge), the percentage
+// whose shadow (rendered term >= 0.5 or not) differs in `b`: the same view, the shadow map placed for a moved camera. `compared`
+// gets how many pixels were compared.
+double flickerPercent(const GBufferPixels& a, const GBufferPixels& b, const FrameGeometry& geometry, float distance,
+                      std::size_t& compared);
 
 nlohmann::json shadowErrorJson(const ShadowError& error, double flickerPct, std::size_t flickerPoints);
 

@@ -88,12 +88,13 @@ void writeCsv(const std::filesystem::path& file, const std::vector<Sweep>& sweep
   }
 }
 
-// Points coloured by the warp when it is swept (else by the first sweep's value).
+// Points coloured by the shadow mode or else the warp when swept (else by the first sweep's value).
 void writePlot(const std::filesystem::path& file, const std::vector<Sweep>& sweeps, const std::vector<Row>& rows) {
   std::size_t by = 0;
-  for (std::size_t i = 0; i < sweeps.size(); ++i) {
-    if (sweeps[i].key == "render.shadow.warp") by = i;
-  }
+  for (const char* key : {"render.shadow.warp", "render.shadow.mode"})
+    for (std::size_t i = 0; i < sweeps.size(); ++i) {
+      if (sweeps[i].key == key) by = i;
+    }
   std::vector<PlotPoint> points;
   for (const Row& r : rows) {
     const auto& names = sweeps[by].values;
