@@ -48,11 +48,16 @@ void main() {
   s.blockLight = light.x;
   s.skyLight = light.y;
   float visibility = 1.0;
+  vec3 transmittance = vec3(1.0);
 #ifdef SHADOWS
   float cosTheta = dot(s.vertexNormal, u_toLight);
-  if (u_shadowLive && cosTheta > 0.0 && s.skyLight > 0.0) visibility = shadowVisibility(position, s.vertexNormal, cosTheta, gl_FragCoord.xy);
+  if (u_shadowLive && cosTheta > 0.0 && s.skyLight > 0.0) {
+    ShadowLookup lookup = shadowLookup(position, s.vertexNormal, cosTheta);
+    visibility = shadowVisibility(lookup, gl_FragCoord.xy);
+    transmittance = shadowTransmittance(lookup);
+  }
 #endif
-  vec3 color = shade(s, -viewDir, visibility);
+  vec3 color = shade(s, -viewDir, visibility, transmittance);
   float fog = smoothstep(u_fogRange.x, u_fogRange.y, length(position.xz));
   o_color = vec4(mix(color, skyColor(viewDir), fog), shadowTerm(s, visibility));
 }

@@ -1,12 +1,23 @@
 #version 450 core
-// Shadow pass: depth only; with CUTOUT, texels the G-buffer pass discards cast no shadow either.
+// Shadow pass: depth only; with CUTOUT, texels the G-buffer pass discards cast no shadow either. With
+// TRANSLUCENT, the colour light keeps through the surface: white where clear, its own colour where
+// opaque (a coloured filter, like water's blue).
 
 layout(binding = UNIT_ATLAS_ALBEDO) uniform sampler2D u_atlasAlbedo;
 
 in vec2 v_uv;
+in vec3 v_tint;
+
+#ifdef TRANSLUCENT
+layout(location = OUT_COLOR) out vec4 o_transmittance;
+#endif
 
 void main() {
+  vec4 albedo = texture(u_atlasAlbedo, v_uv);
 #ifdef CUTOUT
-  if (texture(u_atlasAlbedo, v_uv).a < 0.5) discard;
+  if (albedo.a < 0.5) discard;
+#endif
+#ifdef TRANSLUCENT
+  o_transmittance = vec4(mix(vec3(1.0), albedo.rgb * v_tint, albedo.a), 1.0);
 #endif
 }

@@ -9,8 +9,10 @@ layout(location = ATTRIB_PACKED) in uvec4 a_packed;
 
 uniform mat4 u_shadowMatrix;   // camera-relative world -> light clip space (unwarped)
 uniform vec3 u_sectionOffset;  // section's minimum corner minus the camera position
+uniform vec3 u_tints[4];       // linear; index 0 is white
 
 out vec2 v_uv;
+out vec3 v_tint;
 
 void main() {
   BlockVertex v = unpackBlockVertex(a_packed);
@@ -18,4 +20,5 @@ void main() {
   p.xy = warpShadow(p.xy);
   gl_Position = p;
   v_uv = atlasUv(v.texture, v.uv);
+  v_tint = u_tints[v.tint];
 }

@@ -23,10 +23,15 @@ void main() {
   s.materialAo = normalTexel.b;
   vec3 toViewer = -v_position / max(length(v_position), 1e-6);
   float visibility = 1.0;
+  vec3 transmittance = vec3(1.0);
 #ifdef SHADOWS
   float cosTheta = dot(s.vertexNormal, u_toLight);
-  if (u_shadowLive && cosTheta > 0.0) visibility = shadowVisibility(v_position, s.vertexNormal, cosTheta, gl_FragCoord.xy);
+  if (u_shadowLive && cosTheta > 0.0) {
+    ShadowLookup lookup = shadowLookup(v_position, s.vertexNormal, cosTheta);
+    visibility = shadowVisibility(lookup, gl_FragCoord.xy);
+    transmittance = shadowTransmittance(lookup);
+  }
 #endif
-  vec3 lit = shade(s, toViewer, visibility);
+  vec3 lit = shade(s, toViewer, visibility, transmittance);
   o_color = vec4(lit * albedo.a, albedo.a);
 }

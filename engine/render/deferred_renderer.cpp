@@ -149,6 +149,8 @@ DeferredRenderer::DeferredRenderer(const ShaderPreprocessor& shaders, const Atla
       translucent_(build(shaders, "gbuffer.vert", "translucent.frag", lightingDefines(options))),
       shadow_(options.shadow.enabled ? build(shaders, "shadow.vert", "shadow.frag") : gl::Program()),
       shadowCutout_(options.shadow.enabled ? build(shaders, "shadow.vert", "shadow.frag", {{"CUTOUT", "1"}}) : gl::Program()),
+      shadowTranslucent_(options.shadow.enabled ? build(shaders, "shadow.vert", "shadow.frag", {{"TRANSLUCENT", "1"}})
+                                                : gl::Program()),
       final_(build(shaders, "fullscreen.vert", "final.frag")),
       debug_(build(shaders, "fullscreen.vert", "debug_view.frag")),
       textures_(atlas, tints),
@@ -332,6 +334,15 @@ void DeferredRenderer::shadowPass(const View& view, const SectionMeshes& meshes)
     }
     drawSections(shadow_.id(), casters, meshes, MeshLayer::Opaque, false);
     drawSections(shadowCutout_.id(), casters, meshes, MeshLayer::Cutout, false);
+    // Translucent casters into their own depth and colour: the nearest one filters the light.
+    const GLuint translucent = shadowMap_.translucentFramebuffer(layer);
+    const float clear[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+    glClearNamedFramebufferfv(translucent, GL_COLOR, 0, clear);
+    glClearNamedFramebufferfv(translucent, GL_DEPTH, 0, &farDepth);
+    glBindFramebuffer(GL_FRAMEBUFFER, translucent);
+    setMat4(shadowTranslucent_.id(), "u_shadowMatrix", light.matrix);
+    setWarpUniforms(shadowTranslucent_.id());
+    drawSections(shadowTranslucent_.id(), casters, meshes, MeshLayer::Translucent, false);
   }
   glDisable(GL_DEPTH_CLAMP);
 }
@@ -375,6 +386,8 @@ void DeferredRenderer::setLightingUniforms(GLuint program, const View& view) con
   glProgramUniform1i(program, glGetUniformLocation(program, "u_pcfPattern"), static_cast<int>(settings.pcfPattern));
   glProgramUniform1i(program, glGetUniformLocation(program, "u_shadowLive"), view.shadowLive ? 1 : 0);
   glBindTextureUnit(slots::kUnitShadowMap, shadowMap_.depth());
+  glBindTextureUnit(slots::kUnitTranslucentDepth, shadowMap_.translucentDepth());
+  glBindTextureUnit(slots::kUnitTranslucentTint, shadowMap_.transmittance());
 }
 
 void DeferredRenderer::lightingPass(const View& view) {

@@ -109,7 +109,7 @@ class DeferredRenderer {
   std::size_t visibleQuads(MeshLayer layer) const;
   void setLightingUniforms(GLuint program, const View& view) const;
 
-  gl::Program geometry_, cutout_, lighting_, translucent_, shadow_, shadowCutout_, final_, debug_;
+  gl::Program geometry_, cutout_, lighting_, translucent_, shadow_, shadowCutout_, shadowTranslucent_, final_, debug_;
   BlockTextures textures_;
   gl::Texture lightmap_;
   gl::VertexArray empty_;  // full-screen passes make their vertices from gl_VertexID

@@ -25,6 +25,8 @@ inline constexpr int kUnitAtlasNormal = 1;
 inline constexpr int kUnitAtlasSpecular = 2;
 inline constexpr int kUnitLightmap = 5;
 inline constexpr int kUnitShadowMap = 6;
+inline constexpr int kUnitTranslucentDepth = 7;
+inline constexpr int kUnitTranslucentTint = 8;
 
 // Shader storage buffers.
 inline constexpr int kStorageTiles = 0;  // atlas tile of each texture id for the current frame

@@ -52,25 +52,50 @@ ShadowView shadowViewFor(int resolution, float mapDistance, glm::vec3 toLight, g
   return v;
 }
 
+namespace {
+
+gl::Texture depthArray(int resolution, int layers) {
+  gl::Texture depth = gl::Texture::create(GL_TEXTURE_2D_ARRAY);
+  glTextureStorage3D(depth.id(), 1, GL_DEPTH_COMPONENT32F, resolution, resolution, layers);
+  // Hardware comparison: each tap returns the lit fraction of its 2x2 texels.
+  glTextureParameteri(depth.id(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+  glTextureParameteri(depth.id(), GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+  glTextureParameteri(depth.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTextureParameteri(depth.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTextureParameteri(depth.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTextureParameteri(depth.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  return depth;
+}
+
+void checkComplete(GLuint framebuffer, int resolution) {
+  if (glCheckNamedFramebufferStatus(framebuffer, GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+    throw Error("shadow map framebuffer incomplete at " + std::to_string(resolution) + " texels");
+  }
+}
+
+}  // namespace
+
 void ShadowMap::ensure(int resolution, int layers) {
   if (resolution == resolution_ && layers == layers_) return;
-  depth_ = gl::Texture::create(GL_TEXTURE_2D_ARRAY);
-  glTextureStorage3D(depth_.id(), 1, GL_DEPTH_COMPONENT32F, resolution, resolution, layers);
-  // Hardware comparison: each tap returns the lit fraction of its 2x2 texels.
-  glTextureParameteri(depth_.id(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
-  glTextureParameteri(depth_.id(), GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
-  glTextureParameteri(depth_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-  glTextureParameteri(depth_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glTextureParameteri(depth_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  glTextureParameteri(depth_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  depth_ = depthArray(resolution, layers);
+  translucentDepth_ = depthArray(resolution, layers);
+  transmittance_ = gl::Texture::create(GL_TEXTURE_2D_ARRAY);
+  glTextureStorage3D(transmittance_.id(), 1, GL_RGBA8, resolution, resolution, layers);
+  glTextureParameteri(transmittance_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTextureParameteri(transmittance_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTextureParameteri(transmittance_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTextureParameteri(transmittance_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
   for (int layer = 0; layer < layers; ++layer) {
-    gl::Framebuffer& fbo = framebuffers_[static_cast<std::size_t>(layer)];
-    fbo = gl::Framebuffer::create();
-    glNamedFramebufferTextureLayer(fbo.id(), GL_DEPTH_ATTACHMENT, depth_.id(), 0, layer);
-    glNamedFramebufferDrawBuffer(fbo.id(), GL_NONE);
-    if (glCheckNamedFramebufferStatus(fbo.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
-      throw Error("shadow map framebuffer incomplete at " + std::to_string(resolution) + " texels");
-    }
+    gl::Framebuffer& opaque = framebuffers_[static_cast<std::size_t>(layer)];
+    opaque = gl::Framebuffer::create();
+    glNamedFramebufferTextureLayer(opaque.id(), GL_DEPTH_ATTACHMENT, depth_.id(), 0, layer);
+    glNamedFramebufferDrawBuffer(opaque.id(), GL_NONE);
+    checkComplete(opaque.id(), resolution);
+    gl::Framebuffer& translucent = translucentFramebuffers_[static_cast<std::size_t>(layer)];
+    translucent = gl::Framebuffer::create();
+    glNamedFramebufferTextureLayer(translucent.id(), GL_DEPTH_ATTACHMENT, translucentDepth_.id(), 0, layer);
+    glNamedFramebufferTextureLayer(translucent.id(), GL_COLOR_ATTACHMENT0, transmittance_.id(), 0, layer);
+    checkComplete(translucent.id(), resolution);
   }
   resolution_ = resolution;
   layers_ = layers;

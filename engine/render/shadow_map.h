@@ -56,15 +56,19 @@ class ShadowMap {
  public:
   // Reallocates when the resolution or layer count changes. Throws Error for an incomplete framebuffer.
   void ensure(int resolution, int layers);
-  // The framebuffer drawing into `layer`.
+  // The framebuffer drawing opaque casters into `layer`.
   GLuint framebuffer(int layer) const { return framebuffers_[static_cast<std::size_t>(layer)].id(); }
+  // The framebuffer drawing translucent casters into `layer`: their depth and transmittance.
+  GLuint translucentFramebuffer(int layer) const { return translucentFramebuffers_[static_cast<std::size_t>(layer)].id(); }
   GLuint depth() const { return depth_.id(); }
+  GLuint translucentDepth() const { return translucentDepth_.id(); }
+  GLuint transmittance() const { return transmittance_.id(); }
   int resolution() const { return resolution_; }
 
  private:
   int resolution_ = 0, layers_ = 0;
-  gl::Texture depth_;
-  std::array<gl::Framebuffer, kMaxShadowCascades> framebuffers_;
+  gl::Texture depth_, translucentDepth_, transmittance_;
+  std::array<gl::Framebuffer, kMaxShadowCascades> framebuffers_, translucentFramebuffers_;
 };
 
 }  // namespace terrasol

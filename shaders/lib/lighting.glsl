@@ -67,8 +67,8 @@ float shadowTerm(Surface s, float visibility) {
 }
 
 // Light leaving the surface towards `toViewer` (unit). `visibility`: the shadow map's lit fraction
-// (1 without shadows).
-vec3 shade(Surface s, vec3 toViewer, float visibility) {
+// (1 without shadows); `transmittance`: the colour left after translucent casters (white without).
+vec3 shade(Surface s, vec3 toViewer, float visibility, vec3 transmittance) {
   Material m = labpbrMaterial(s.spec, s.albedo);
   vec3 N = s.normal;
   float NdotV = max(dot(N, toViewer), 1e-4);
@@ -86,7 +86,7 @@ vec3 shade(Surface s, vec3 toViewer, float visibility) {
     vec3 H = len > 1e-4 ? halfway / len : N;  // light straight behind the viewer's back: no half vector
     vec3 F = fresnelSchlick(m.f0, dot(H, toViewer));
     float lobe = specularLobe(max(dot(N, H), 0.0), NdotV, NdotL, m.roughness);
-    color += u_lightColor * NdotL * (kd * (1.0 - F) * s.albedo + F * lobe);
+    color += u_lightColor * transmittance * NdotL * (kd * (1.0 - F) * s.albedo + F * lobe);
   }
 
   // Ambient: sky light from the lightmap, split into diffuse and a Fresnel reflection of the sky;

@@ -5,7 +5,10 @@
 
 #include "lib/shadow_warp.glsl"
 
-layout(binding = UNIT_SHADOW_MAP) uniform sampler2DArrayShadow u_shadowMap;
+layout(binding = UNIT_SHADOW_MAP) uniform sampler2DArrayShadow u_shadowMap;  // opaque and cutout casters
+// Translucent casters (water, glass): the nearest one's depth and the colour light keeps through it.
+layout(binding = UNIT_TRANSLUCENT_DEPTH) uniform sampler2DArrayShadow u_translucentDepth;
+layout(binding = UNIT_TRANSLUCENT_TINT) uniform sampler2DArray u_translucentTint;
 uniform int u_cascades;                   // layers in use, 1..SHADOW_MAX_CASCADES
 uniform mat4 u_shadowMatrices[SHADOW_MAX_CASCADES];  // camera-relative world -> light clip space (unwarped)
 uniform float u_shadowTexelWorlds[SHADOW_MAX_CASCADES];  // blocks per texel of each layer, unwarped
@@ -44,8 +47,16 @@ int cascadeOf(vec3 position) {
   return u_cascades - 1;
 }
 
-// 1 = fully lit. `position` camera-relative, `vertexNormal` unit, `cosTheta` = dot(vertexNormal, toLight) > 0.
-float shadowVisibility(vec3 position, vec3 vertexNormal, float cosTheta, vec2 pixel) {
+// Where a surface point looks up the maps: offset along the normal and biased by the local texel.
+struct ShadowLookup {
+  bool inside;  // false outside the map or its depth range: lit
+  vec2 uv;
+  float layer;
+  float depth;
+};
+
+// `position` camera-relative, `vertexNormal` unit, `cosTheta` = dot(vertexNormal, toLight) > 0.
+ShadowLookup shadowLookup(vec3 position, vec3 vertexNormal, float cosTheta) {
   int cascade = cascadeOf(position);
   mat4 toLight = u_shadowMatrices[cascade];
   vec4 unshifted = toLight * vec4(position, 1.0);
@@ -57,23 +68,36 @@ float shadowVisibility(vec3 position, vec3 vertexNormal, float cosTheta, vec2 pi
   float spread = 1.0 + (u_pcfSamples > 0 ? u_pcfRadius : 0.0);
   vec3 offset = vertexNormal * texel * spread * (0.35 + 0.65 * sinTheta);
   vec4 p = toLight * vec4(position + offset, 1.0);
-  if (any(greaterThan(abs(p.xyz), vec3(1.0)))) return 1.0;  // outside the map or its depth range
-  vec2 uv = warpShadow(p.xy) * 0.5 + 0.5;
+  ShadowLookup l;
+  l.inside = all(lessThanEqual(abs(p.xyz), vec3(1.0)));
+  l.uv = warpShadow(p.xy) * 0.5 + 0.5;
+  l.layer = float(cascade);
   float bias = (texel * spread * 0.5 * tanTheta + 0.02) / u_shadowDepthRanges[cascade];
-  float layer = float(cascade);
-  float depth = p.z * 0.5 + 0.5 - bias;
+  l.depth = p.z * 0.5 + 0.5 - bias;
+  return l;
+}
 
-  if (u_pcfSamples <= 0) return shadowTap(uv, layer, depth, vec2(0.0));
+// The lit fraction from opaque and cutout casters, PCF-filtered: 1 = fully lit.
+float shadowVisibility(ShadowLookup l, vec2 pixel) {
+  if (!l.inside) return 1.0;
+  if (u_pcfSamples <= 0) return shadowTap(l.uv, l.layer, l.depth, vec2(0.0));
   float lit = 0.0;
   if (u_pcfPattern == 0) {
     float step = u_pcfRadius / float(u_pcfSamples);
     for (int y = -u_pcfSamples; y <= u_pcfSamples; ++y)
-      for (int x = -u_pcfSamples; x <= u_pcfSamples; ++x) lit += shadowTap(uv, layer, depth, vec2(x, y) * step);
+      for (int x = -u_pcfSamples; x <= u_pcfSamples; ++x) lit += shadowTap(l.uv, l.layer, l.depth, vec2(x, y) * step);
     float side = float(2 * u_pcfSamples + 1);
     return lit / (side * side);
   }
   float angle = 6.2831853 * interleavedGradientNoise(pixel);
   mat2 rotation = mat2(cos(angle), sin(angle), -sin(angle), cos(angle));
-  for (int i = 0; i < 16; ++i) lit += shadowTap(uv, layer, depth, rotation * kPoisson[i] * u_pcfRadius);
+  for (int i = 0; i < 16; ++i) lit += shadowTap(l.uv, l.layer, l.depth, rotation * kPoisson[i] * u_pcfRadius);
   return lit / 16.0;
+}
+
+// The colour the light keeps after the nearest translucent caster above the point (white if none).
+vec3 shadowTransmittance(ShadowLookup l) {
+  if (!l.inside) return vec3(1.0);
+  float before = texture(u_translucentDepth, vec4(l.uv, l.layer, l.depth));  // 1: not behind it
+  return mix(texture(u_translucentTint, vec3(l.uv, l.layer)).rgb, vec3(1.0), before);
 }
