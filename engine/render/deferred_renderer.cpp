@@ -139,6 +139,7 @@ struct DeferredRenderer::View {
   bool materialAo;
   bool shadowLive = false;  // the shadow pass ran this frame
   glm::dvec3 shadowCentreOffset{0.0};
+  glm::dvec3 forward{0.0, 0.0, -1.0};  // unit view direction
 };
 
 DeferredRenderer::DeferredRenderer(const ShaderPreprocessor& shaders, const Atlas& atlas, const BiomeTints& tints,
@@ -187,6 +188,8 @@ void DeferredRenderer::render(const FrameInputs& frame, const SectionMeshes& mes
   view.day = dayStateAt(frame.ticks, frame.sunPathRotation);
   view.materialAo = frame.materialAo;
   view.shadowCentreOffset = frame.shadowCentreOffset;
+  const double forwardLength = glm::length(forward);
+  if (forwardLength > 1e-9) view.forward = forward / forwardLength;
 
   const Lightmap lightmap = buildLightmap(view.day, frame.ticks);
   glTextureSubImage2D(lightmap_.id(), 0, 0, 0, Lightmap::kSize, Lightmap::kSize, GL_RGB, GL_FLOAT,
@@ -313,10 +316,16 @@ void DeferredRenderer::shadowPass(const View& view, const SectionMeshes& meshes)
   glEnable(GL_DEPTH_CLAMP);  // casters above the near plane still cast, flattened onto it
   glDisable(GL_BLEND);
   stats_.shadowCasters = 0;
+  // Cascades are picked by distance from the camera, so only the single warped map moves ahead.
+  const glm::dvec3 forward(view.forward.x, 0.0, view.forward.z);
+  const double along = glm::length(forward);
+  const glm::dvec3 ahead = settings.mode == ShadowMode::Warped && along > 1e-6
+                               ? forward / along * static_cast<double>(settings.shiftAhead * settings.distance)
+                               : glm::dvec3(0.0);
   for (int layer = 0; layer < layers; ++layer) {
     ShadowView& light = shadowViews_[static_cast<std::size_t>(layer)];
     light = shadowViewFor(settings.resolution, cascadeDistance(settings, layer), view.day.toShadowLight, view.camera,
-                          view.camera + view.shadowCentreOffset);
+                          view.camera + view.shadowCentreOffset + ahead);
     const auto planes = frustumPlanes(light.matrix);
     std::vector<Visible> casters;
     for (const auto& [pos, section] : meshes.sections()) {
@@ -383,6 +392,7 @@ void DeferredRenderer::setLightingUniforms(GLuint program, const View& view) con
   glProgramUniform1f(program, glGetUniformLocation(program, "u_shadowResolution"), static_cast<float>(settings.resolution));
   glProgramUniform1i(program, glGetUniformLocation(program, "u_pcfSamples"), std::clamp(settings.pcfSamples, 0, 8));
   glProgramUniform1f(program, glGetUniformLocation(program, "u_pcfRadius"), std::max(settings.pcfRadius, 0.0f));
+  glProgramUniform1i(program, glGetUniformLocation(program, "u_pcfRadiusInBlocks"), settings.pcfRadiusInBlocks ? 1 : 0);
   glProgramUniform1i(program, glGetUniformLocation(program, "u_pcfPattern"), static_cast<int>(settings.pcfPattern));
   glProgramUniform1i(program, glGetUniformLocation(program, "u_shadowLive"), view.shadowLive ? 1 : 0);
   glBindTextureUnit(slots::kUnitShadowMap, shadowMap_.depth());

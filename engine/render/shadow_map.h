@@ -32,8 +32,11 @@ struct ShadowSettings {
   ShadowWarp warp = ShadowWarp::Radial;
   float warpStrength = 0.85f;   // [0, 1): 0 = no warp
   int pcfSamples = 1;           // N: (2N + 1)^2 grid taps, or a 16-tap disk; 0 = one tap
-  float pcfRadius = 1.0f;       // texels of the shadow map
+  float pcfRadius = 1.0f;       // texels of the shadow map, or blocks with pcfRadiusInBlocks
+  bool pcfRadiusInBlocks = false;
   PcfPattern pcfPattern = PcfPattern::Disk;
+  float shiftAhead = 0.0f;      // warped mode: the map's centre moves this fraction of `distance` ahead
+                                // of the camera (horizontally), as Luanti does: more map where one looks
 };
 
 // The light's orthographic view of the camera's surroundings.

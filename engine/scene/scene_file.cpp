@@ -232,17 +232,21 @@ bool boolean(const json& value, const std::string& key) {
 }
 
 void parsePcf(const json& pcf, SceneShadow& shadow) {
-  checkObject(pcf, "render.shadow.pcf", {"samples", "radius", "pattern"});
+  checkObject(pcf, "render.shadow.pcf", {"samples", "radius", "radius_unit", "pattern"});
   if (const json* v = field(pcf, "samples")) {
     shadow.pcfSamples = static_cast<int>(wholeNumber(*v, "render.shadow.pcf.samples", 0, 8));
   }
   if (const json* v = field(pcf, "radius")) shadow.pcfRadius = numberIn(*v, "render.shadow.pcf.radius", 0.0, 32.0, false);
   if (const json* v = field(pcf, "pattern")) shadow.pcfPattern = oneOf(*v, "render.shadow.pcf.pattern", kPcfPatterns);
+  if (const json* v = field(pcf, "radius_unit")) {
+    shadow.pcfRadiusUnit = oneOf(*v, "render.shadow.pcf.radius_unit", kPcfRadiusUnits);
+  }
 }
 
 void parseShadow(const json& value, SceneShadow& shadow) {
   const std::string key = "render.shadow";
-  checkObject(value, key, {"enabled", "mode", "cascades", "resolution", "distance", "warp", "warp_strength", "pcf"});
+  checkObject(value, key,
+              {"enabled", "mode", "cascades", "resolution", "distance", "warp", "warp_strength", "pcf", "shift_ahead"});
   if (const json* v = field(value, "enabled")) shadow.enabled = boolean(*v, member(key, "enabled"));
   if (const json* v = field(value, "mode")) shadow.mode = oneOf(*v, member(key, "mode"), kShadowModes);
   if (const json* v = field(value, "cascades")) {
@@ -259,6 +263,7 @@ void parseShadow(const json& value, SceneShadow& shadow) {
     shadow.warpStrength = static_cast<float>(a);
   }
   if (const json* v = field(value, "pcf")) parsePcf(*v, shadow);
+  if (const json* v = field(value, "shift_ahead")) shadow.shiftAhead = numberIn(*v, member(key, "shift_ahead"), 0.0, 0.9, false);
 }
 
 void parseRender(const json& render, SceneFile& scene) {

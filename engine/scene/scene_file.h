@@ -45,12 +45,15 @@ struct SceneShadow {
   std::string warp = "radial";   // one of kShadowWarps
   float warpStrength = 0.85f;    // [0, 1)
   int pcfSamples = 1;            // 0..8
-  float pcfRadius = 1.0f;        // texels, 0..32
+  float pcfRadius = 1.0f;        // 0..32, in pcfRadiusUnit
+  std::string pcfRadiusUnit = "texels";  // one of kPcfRadiusUnits
   std::string pcfPattern = "disk";  // one of kPcfPatterns
+  float shiftAhead = 0.0f;       // 0..0.9 of distance (warped mode)
 };
 inline constexpr std::array<std::string_view, 2> kShadowModes = {"warped", "cascaded"};
 inline constexpr std::array<std::string_view, 3> kShadowWarps = {"none", "square", "radial"};
 inline constexpr std::array<std::string_view, 2> kPcfPatterns = {"grid", "disk"};
+inline constexpr std::array<std::string_view, 2> kPcfRadiusUnits = {"texels", "blocks"};
 
 // "compare": how terrasol-render --compare judges a frame against its golden.
 struct CompareSettings {

@@ -15,7 +15,8 @@ uniform float u_shadowTexelWorlds[SHADOW_MAX_CASCADES];  // blocks per texel of 
 uniform float u_shadowDepthRanges[SHADOW_MAX_CASCADES];  // blocks from each layer's near to far plane
 uniform float u_shadowResolution;  // texels per side
 uniform int u_pcfSamples;          // N: (2N + 1)^2 grid taps or the 16-tap disk; 0 = one tap
-uniform float u_pcfRadius;         // texels
+uniform float u_pcfRadius;         // texels, or blocks with u_pcfRadiusInBlocks
+uniform bool u_pcfRadiusInBlocks;
 uniform int u_pcfPattern;          // 0 grid, 1 rotated Poisson disk
 uniform bool u_shadowLive;         // false when no pass ran this frame (no light above the horizon)
 
@@ -53,6 +54,7 @@ struct ShadowLookup {
   vec2 uv;
   float layer;
   float depth;
+  float radius;  // PCF radius in texels of this layer, here
 };
 
 // `position` camera-relative, `vertexNormal` unit, `cosTheta` = dot(vertexNormal, toLight) > 0.
@@ -65,7 +67,9 @@ ShadowLookup shadowLookup(vec3 position, vec3 vertexNormal, float cosTheta) {
   float c = clamp(cosTheta, 0.0, 1.0);
   float sinTheta = sqrt(1.0 - c * c);
   float tanTheta = min(sinTheta / max(c, 1e-3), 10.0);  // grazing light: tan -> infinity, clamped
-  float spread = 1.0 + (u_pcfSamples > 0 ? u_pcfRadius : 0.0);
+  // A radius in blocks covers fewer texels where texels are large (far from the camera in a warped map).
+  float radius = u_pcfRadiusInBlocks ? min(u_pcfRadius / texel, 32.0) : u_pcfRadius;
+  float spread = 1.0 + (u_pcfSamples > 0 ? radius : 0.0);
   vec3 offset = vertexNormal * texel * spread * (0.35 + 0.65 * sinTheta);
   vec4 p = toLight * vec4(position + offset, 1.0);
   ShadowLookup l;
@@ -74,6 +78,7 @@ ShadowLookup shadowLookup(vec3 position, vec3 vertexNormal, float cosTheta) {
   l.layer = float(cascade);
   float bias = (texel * spread * 0.5 * tanTheta + 0.02) / u_shadowDepthRanges[cascade];
   l.depth = p.z * 0.5 + 0.5 - bias;
+  l.radius = radius;
   return l;
 }
 
@@ -83,7 +88,7 @@ float shadowVisibility(ShadowLookup l, vec2 pixel) {
   if (u_pcfSamples <= 0) return shadowTap(l.uv, l.layer, l.depth, vec2(0.0));
   float lit = 0.0;
   if (u_pcfPattern == 0) {
-    float step = u_pcfRadius / float(u_pcfSamples);
+    float step = l.radius / float(u_pcfSamples);
     for (int y = -u_pcfSamples; y <= u_pcfSamples; ++y)
       for (int x = -u_pcfSamples; x <= u_pcfSamples; ++x) lit += shadowTap(l.uv, l.layer, l.depth, vec2(x, y) * step);
     float side = float(2 * u_pcfSamples + 1);
@@ -91,7 +96,7 @@ float shadowVisibility(ShadowLookup l, vec2 pixel) {
   }
   float angle = 6.2831853 * interleavedGradientNoise(pixel);
   mat2 rotation = mat2(cos(angle), sin(angle), -sin(angle), cos(angle));
-  for (int i = 0; i < 16; ++i) lit += shadowTap(l.uv, l.layer, l.depth, rotation * kPoisson[i] * u_pcfRadius);
+  for (int i = 0; i < 16; ++i) lit += shadowTap(l.uv, l.layer, l.depth, rotation * kPoisson[i] * l.radius);
   return lit / 16.0;
 }
 

@@ -200,6 +200,33 @@ TEST(SceneFile, SpecularModelAndMaterialAo) {
       failsWith(R"({"render": {"material_ao": 1}})", "scenes/a.json: render.material_ao: expected true or false"));
 }
 
+TEST(SceneFile, ShadowSettings) {
+  const SceneFile scene = parseScene(R"({"render": {"shadow": {"enabled": false, "mode": "cascaded", "cascades": 3,
+      "resolution": 512, "distance": 64, "warp": "square", "warp_strength": 0.5, "shift_ahead": 0.3,
+      "pcf": {"samples": 2, "radius": 0.5, "radius_unit": "blocks", "pattern": "grid"}}}})",
+                                     "scenes/a.json");
+  const SceneShadow& s = scene.shadow;
+  EXPECT_FALSE(s.enabled);
+  EXPECT_EQ(s.mode, "cascaded");
+  EXPECT_EQ(s.cascades, 3);
+  EXPECT_EQ(s.resolution, 512);
+  EXPECT_FLOAT_EQ(s.distance, 64.0f);
+  EXPECT_EQ(s.warp, "square");
+  EXPECT_FLOAT_EQ(s.warpStrength, 0.5f);
+  EXPECT_FLOAT_EQ(s.shiftAhead, 0.3f);
+  EXPECT_EQ(s.pcfSamples, 2);
+  EXPECT_FLOAT_EQ(s.pcfRadius, 0.5f);
+  EXPECT_EQ(s.pcfRadiusUnit, "blocks");
+  EXPECT_EQ(s.pcfPattern, "grid");
+  EXPECT_TRUE(failsWith(R"({"render": {"shadow": {"warp_strength": 1}}})", "render.shadow.warp_strength: expected"));
+  EXPECT_TRUE(failsWith(R"({"render": {"shadow": {"resolution": 8}}})", "render.shadow.resolution: expected"));
+  EXPECT_TRUE(failsWith(R"({"render": {"shadow": {"cascades": 5}}})", "render.shadow.cascades: expected"));
+  EXPECT_TRUE(failsWith(R"({"render": {"shadow": {"pcf": {"radius_unit": "feet"}}}})",
+                        "render.shadow.pcf.radius_unit: expected one of"));
+  EXPECT_TRUE(failsWith(R"({"render": {"shadow": {"mode": "ray_traced"}}})", "render.shadow.mode: expected one of"));
+  EXPECT_TRUE(failsWith(R"({"render": {"shadow": {"softness": 1}}})", "render.shadow.softness: unknown key"));
+}
+
 TEST(SceneFile, WrongArrayLengthsNameTheKey) {
   EXPECT_TRUE(failsWith(R"({"camera": {"position": [1, 2]}})",
                         "scenes/a.json: camera.position: expected an array of 3 numbers"));

@@ -65,6 +65,12 @@ TEST_F(ShadowTest, ExtremeSettingsStayFiniteAndSane) {
       {"distance 8", [](SceneFile& s) { s.shadow.distance = 8.0f; }},
       {"distance 1024", [](SceneFile& s) { s.shadow.distance = 1024.0f; }},
       {"4 cascades", [](SceneFile& s) { s.shadow.mode = "cascaded"; }},
+      {"map shifted 0.9 ahead", [](SceneFile& s) { s.shadow.shiftAhead = 0.9f; }},
+      {"PCF radius 0.25 blocks, 8 samples", [](SceneFile& s) {
+         s.shadow.pcfRadiusUnit = "blocks";
+         s.shadow.pcfRadius = 0.25f;
+         s.shadow.pcfSamples = 8;
+       }},
       {"2 cascades at 256 texels", [](SceneFile& s) {
          s.shadow.mode = "cascaded";
          s.shadow.cascades = 2;

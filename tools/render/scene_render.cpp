@@ -46,6 +46,8 @@ ShadowSettings shadowSettingsOf(const SceneShadow& s) {
   out.pcfSamples = s.pcfSamples;
   out.pcfRadius = s.pcfRadius;
   out.pcfPattern = s.pcfPattern == "grid" ? PcfPattern::Grid : PcfPattern::Disk;
+  out.pcfRadiusInBlocks = s.pcfRadiusUnit == "blocks";
+  out.shiftAhead = s.shiftAhead;
   return out;
 }
 
