@@ -322,10 +322,11 @@ void DeferredRenderer::shadowPass(const View& view, const SectionMeshes& meshes)
   const glm::dvec3 ahead = settings.mode == ShadowMode::Warped && along > 1e-6
                                ? forward / along * static_cast<double>(settings.shiftAhead * settings.distance)
                                : glm::dvec3(0.0);
+  const glm::dvec3 centre = mapCentre(view.camera + view.shadowCentreOffset + ahead);
   for (int layer = 0; layer < layers; ++layer) {
     ShadowView& light = shadowViews_[static_cast<std::size_t>(layer)];
     light = shadowViewFor(settings.resolution, cascadeDistance(settings, layer), view.day.toShadowLight, view.camera,
-                          view.camera + view.shadowCentreOffset + ahead);
+                          centre);
     const auto planes = frustumPlanes(light.matrix);
     std::vector<Visible> casters;
     for (const auto& [pos, section] : meshes.sections()) {
@@ -354,6 +355,19 @@ void DeferredRenderer::shadowPass(const View& view, const SectionMeshes& meshes)
     drawSections(shadowTranslucent_.id(), casters, meshes, MeshLayer::Translucent, false);
   }
   glDisable(GL_DEPTH_CLAMP);
+}
+
+// The maps' centre stays put until the camera has moved kRecentreTexels (of the finest layer) from it.
+// Snapping to whole texels alone keeps an unwarped map stable in exact arithmetic, but the warp around a
+// centre that steps moves world points by fractions of a texel, and even unwarped casters' float
+// vertices round differently after a step, so every step flips a few shadow edges. Re-centring rarely
+// turns that crawl into an occasional step. (Cascades are picked with a 10 % margin, far more.)
+glm::dvec3 DeferredRenderer::mapCentre(glm::dvec3 wanted) {
+  constexpr double kRecentreTexels = 8.0;
+  const ShadowSettings& settings = options_.shadow;
+  const double texel = 2.0 * cascadeDistance(settings, 0) / std::max(settings.resolution, 1);
+  if (!warpCentre_ || glm::length(wanted - *warpCentre_) > kRecentreTexels * texel) warpCentre_ = wanted;
+  return *warpCentre_;
 }
 
 // Cascades are never warped.

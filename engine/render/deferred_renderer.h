@@ -106,6 +106,7 @@ class DeferredRenderer {
                     MeshLayer layer, bool backToFront);
   void shadowPass(const View& view, const SectionMeshes& meshes);
   void setWarpUniforms(GLuint program) const;
+  glm::dvec3 mapCentre(glm::dvec3 wanted);
   std::size_t visibleQuads(MeshLayer layer) const;
   void setLightingUniforms(GLuint program, const View& view) const;
 
@@ -117,6 +118,7 @@ class DeferredRenderer {
   RendererOptions options_;
   ShadowMap shadowMap_;
   std::array<ShadowView, kMaxShadowCascades> shadowViews_{};  // this frame's, one per layer
+  std::optional<glm::dvec3> warpCentre_;  // where the warped map is centred, kept between frames
   bool gpuTimer_;  // timer queries for pass timings (a real GPU); else glFinish and the wall clock
   std::vector<Visible> visible_;  // this frame's sections inside the frustum
   FrameStats stats_;

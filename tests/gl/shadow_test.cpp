@@ -126,6 +126,29 @@ TEST_F(ShadowTest, CascadesMatchTruthAndDoNotFlicker) {
   context_->checkErrors("cascades");
 }
 
+// The warped map stays put for small camera moves (no flicker) and follows large ones (still right).
+TEST_F(ShadowTest, WarpedMapHoldsStillForSmallMovesAndFollowsLargeOnes) {
+  const SceneFile scene = loadScene(kScenes / "shadow_noon.json");
+  SceneRenderer renderer(scene);
+  FrameRequest request;
+  request.readBack = true;
+  const RenderedFrame a = renderer.renderFrame(0, request);
+  const double texel = a.geometry.shadowTexelWorld;
+  request.shadowCentreOffset = glm::dvec3(0.4, 0.2, -0.3) * texel;
+  const RenderedFrame b = renderer.renderFrame(0, request);
+  std::size_t compared = 0;
+  EXPECT_EQ(flickerPercent(a.pixels, b.pixels, a.geometry, scene.shadow.distance, compared), 0.0);
+  EXPECT_GT(compared, 10000u);
+  // 40 texels away: re-centred, and the shadows still match the truth.
+  request.shadowCentreOffset = glm::dvec3(40.0, 0.0, 25.0) * texel;
+  const RenderedFrame c = renderer.renderFrame(0, request);
+  const ShadowError e = measureShadowError(renderer.world(), c.pixels, c.geometry, scene.shadow.distance);
+  EXPECT_LT(wrongPercent(e.total), 0.5);
+  EXPECT_GT(flickerPercent(a.pixels, c.pixels, a.geometry, scene.shadow.distance, compared), 0.0)
+      << "a re-centred warped map moves some shadow edges";
+  context_->checkErrors("warped map");
+}
+
 TEST_F(ShadowTest, ASealedCaveUnderAOneBlockRoofHasNoLeaks) {
   SceneFile scene = parseScene(R"({
       "world": { "generator": "flat", "edits": [
