@@ -1,5 +1,5 @@
-// terrasol: the game. For now it shows the test scene in a window; with no display it says so and
-// renders a short demo headless instead.
+// terrasol: the game. For now it flies over the generated world (demo.h) in a window; with no display
+// it says so and renders a few frames of that flight headless instead.
 
 #include <cstdio>
 #include <exception>
@@ -9,22 +9,20 @@
 #include "demo.h"
 #include "options.h"
 #include "platform/glfw/glfw_window.h"
-#include "render/cube_scene.h"
 #include "render/gl/render_target.h"
+#include "scene_render.h"
 
 namespace terrasol {
 namespace {
 
 int runWindowed(GlfwWindow& window, const GameOptions& options) {
   logInfo("OpenGL: " + window.description());
-  const ShaderPreprocessor shaders(shaderDir());
-  const CubeScene scene(shaders, CubeScene::standardCubes());
+  SceneRenderer scene(demoScene(window.framebufferSize()));
   for (int frame = 0; !window.shouldClose(); ++frame) {
     window.pollEvents();
     // A fixed step when the frame count is fixed, so smoke-test screenshots are reproducible.
     const double seconds = options.frames ? frame * kFixedStep : window.time();
-    const DemoView view = demoView(seconds);
-    scene.draw(0, window.framebufferSize(), view.camera, view.towardLight);
+    scene.draw(demoFrame(seconds), 0, window.framebufferSize());
     window.checkErrors("frame");
     const bool last = options.frames && frame + 1 >= *options.frames;
     if (last && !options.screenshot.empty()) {

@@ -16,7 +16,6 @@ layout(binding = GB_LIGHT) uniform sampler2D g_light;
 layout(binding = GB_DEPTH_UNIT) uniform sampler2D g_depth;
 
 uniform mat4 u_inverseViewProjection;  // camera-relative
-uniform vec2 u_fogRange;               // start, end (blocks)
 
 in vec2 v_ndc;
 layout(location = OUT_COLOR) out vec4 o_color;
@@ -58,6 +57,5 @@ void main() {
   }
 #endif
   vec3 color = shade(s, -viewDir, visibility, transmittance);
-  float fog = smoothstep(u_fogRange.x, u_fogRange.y, length(position.xz));
-  o_color = vec4(mix(color, skyColor(viewDir), fog), shadowTerm(s, visibility));
+  o_color = vec4(fogged(color, position, viewDir), shadowTerm(s, visibility));
 }

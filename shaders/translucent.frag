@@ -4,6 +4,7 @@
 
 #include "lib/block_surface.glsl"
 #include "lib/lighting.glsl"
+#include "lib/sky.glsl"
 #ifdef SHADOWS
 #include "lib/shadow.glsl"
 #endif
@@ -32,6 +33,6 @@ void main() {
     transmittance = shadowTransmittance(lookup);
   }
 #endif
-  vec3 lit = shade(s, toViewer, visibility, transmittance);
+  vec3 lit = fogged(shade(s, toViewer, visibility, transmittance), v_position, -toViewer);
   o_color = vec4(lit * albedo.a, albedo.a);
 }

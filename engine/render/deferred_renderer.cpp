@@ -414,10 +414,9 @@ void DeferredRenderer::setLightingUniforms(GLuint program, const View& view) con
   glBindTextureUnit(slots::kUnitTranslucentTint, shadowMap_.transmittance());
 }
 
-void DeferredRenderer::lightingPass(const View& view) {
-  const GLuint program = lighting_.id();
+// The sky and the fog that fades distant surfaces into it (lighting and translucent passes).
+void DeferredRenderer::setSkyUniforms(GLuint program, const View& view) const {
   const DayState& day = view.day;
-  setLightingUniforms(program, view);
   setVec3(program, "u_skyZenith", day.skyZenith);
   setVec3(program, "u_skyHorizon", day.skyHorizon);
   setVec3(program, "u_toSun", day.toSun);
@@ -425,8 +424,14 @@ void DeferredRenderer::lightingPass(const View& view) {
   setVec3(program, "u_sunColor", day.sunColor);
   setVec3(program, "u_moonColor", day.moonColor);
   glProgramUniform1f(program, glGetUniformLocation(program, "u_starVisibility"), day.starVisibility);
-  setMat4(program, "u_inverseViewProjection", view.inverseViewProjection);
   glProgramUniform2fv(program, glGetUniformLocation(program, "u_fogRange"), 1, glm::value_ptr(view.fogRange));
+}
+
+void DeferredRenderer::lightingPass(const View& view) {
+  const GLuint program = lighting_.id();
+  setLightingUniforms(program, view);
+  setSkyUniforms(program, view);
+  setMat4(program, "u_inverseViewProjection", view.inverseViewProjection);
 
   glBindFramebuffer(GL_FRAMEBUFFER, gbuffer_->lightingFramebuffer());
   glViewport(0, 0, gbuffer_->size().x, gbuffer_->size().y);
@@ -442,6 +447,7 @@ void DeferredRenderer::lightingPass(const View& view) {
 
 void DeferredRenderer::translucentPass(const View& view, const SectionMeshes& meshes) {
   setLightingUniforms(translucent_.id(), view);
+  setSkyUniforms(translucent_.id(), view);
   glBindFramebuffer(GL_FRAMEBUFFER, gbuffer_->translucentFramebuffer());
   glViewport(0, 0, gbuffer_->size().x, gbuffer_->size().y);
   glEnable(GL_DEPTH_TEST);

@@ -109,6 +109,7 @@ class DeferredRenderer {
   glm::dvec3 mapCentre(glm::dvec3 wanted);
   std::size_t visibleQuads(MeshLayer layer) const;
   void setLightingUniforms(GLuint program, const View& view) const;
+  void setSkyUniforms(GLuint program, const View& view) const;
 
   gl::Program geometry_, cutout_, lighting_, translucent_, shadow_, shadowCutout_, shadowTranslucent_, final_, debug_;
   BlockTextures textures_;

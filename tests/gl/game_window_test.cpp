@@ -1,12 +1,10 @@
 // The game in a real window (GLX under Xvfb): `terrasol --frames N` exits 0, and its last frame is
-// the same picture the headless EGL path renders for the same view.
+// the same picture the headless EGL path renders for the same moment of the flight.
 
 #include <cstdlib>
 
-#include "core/paths.h"
 #include "demo.h"
-#include "render/cube_scene.h"
-#include "render/gl/render_target.h"
+#include "scene_render.h"
 #include "support/gl_test.h"
 #include "support/golden.h"
 
@@ -25,12 +23,8 @@ TEST_F(GameWindowTest, WindowShowsWhatHeadlessRenders) {
   ASSERT_EQ(std::system(command.c_str()), 0) << command;
   const Image window = loadImage(screenshot);
 
-  const ShaderPreprocessor shaders(shaderDir());
-  const CubeScene scene(shaders, CubeScene::standardCubes());
-  const RenderTarget target({320, 180});
-  const DemoView view = demoView((kFrames - 1) * kFixedStep);
-  scene.draw(target.framebuffer(), target.size(), view.camera, view.towardLight);
-  const Image headless = target.readPixels();
+  SceneRenderer scene(demoScene({320, 180}));
+  const Image headless = scene.renderFrame(demoFrame((kFrames - 1) * kFixedStep)).image;
 
   const ImageComparison cmp = compareImages(window, headless, {});
   EXPECT_TRUE(cmp.matches) << cmp.failingPercent << " % of pixels differ, max " << cmp.maxError * 255.0;

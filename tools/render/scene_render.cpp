@@ -147,6 +147,11 @@ RenderedFrame SceneRenderer::renderFrame(int frame, const FrameRequest& request)
   return out;
 }
 
+void SceneRenderer::draw(int frame, GLuint framebuffer, glm::ivec2 size) {
+  for (const SectionMesh& mesh : world_->world.advanceTo(frame, world_->table)) gpu_->meshes.upload(mesh);
+  gpu_->renderer.render(inputsFor(frame), gpu_->meshes, framebuffer, size);
+}
+
 Image SceneRenderer::render(std::vector<PassTiming>* timings) {
   RenderedFrame frame = renderFrame(0);
   if (!timings) return std::move(frame.image);

@@ -48,6 +48,9 @@ class SceneRenderer {
   // change the world as the path passes them.
   RenderedFrame renderFrame(int frame, const FrameRequest& request = {});
 
+  // Draws frame `frame` straight into `framebuffer` (0: a window's back buffer) of `size`.
+  void draw(int frame, GLuint framebuffer, glm::ivec2 size);
+
   // Frame 0; with `timings` it is drawn twice and the second is timed (the first pays for warm-up).
   Image render(std::vector<PassTiming>* timings = nullptr);
   Image render(DebugView debugView);
