@@ -1,21 +1,23 @@
 #include "render/deferred_renderer.h"
 
 #include <algorithm>
-#include <array>
-#include <chrono>
 #include <cmath>
 
 #include <glm/gtc/matrix_inverse.hpp>
-#include <glm/gtc/type_ptr.hpp>
 
 #include "core/camera.h"
-#include "core/day_cycle.h"
 #include "core/lightmap.h"
+#include "render/deferred_view.h"
 #include "render/gl/program.h"
+#include "render/gl/uniforms.h"
 #include "render/gl_slots.h"
 #include "render/shader_defines.h"
 
 namespace terrasol {
+
+using gl::setMat4;
+using gl::setVec3;
+
 namespace {
 
 // Scales the scene's radiance (noon sun ~3, full sky light 1) into the tone curve's range, so a
@@ -36,13 +38,6 @@ std::vector<ShaderDefine> lightingDefines(const RendererOptions& options) {
   return defines;
 }
 
-void setVec3(GLuint program, const char* name, glm::vec3 v) {
-  glProgramUniform3fv(program, glGetUniformLocation(program, name), 1, glm::value_ptr(v));
-}
-void setMat4(GLuint program, const char* name, const glm::mat4& m) {
-  glProgramUniformMatrix4fv(program, glGetUniformLocation(program, name), 1, GL_FALSE, glm::value_ptr(m));
-}
-
 // Sky light's colour: the zenith's hue at a fixed brightness (the lightmap carries the brightness).
 glm::vec3 ambientTint(glm::vec3 zenith) {
   const float luminance = glm::dot(zenith, glm::vec3(0.2126f, 0.7152f, 0.0722f));
@@ -50,97 +45,7 @@ glm::vec3 ambientTint(glm::vec3 zenith) {
   return glm::mix(glm::vec3(1.0f), glm::clamp(hue, 0.0f, 4.0f), 0.4f);
 }
 
-// The six planes of a view-projection's frustum (Gribb and Hartmann), inside where dot(p, (x, 1)) >= 0.
-std::array<glm::vec4, 6> frustumPlanes(const glm::mat4& m) {
-  const glm::mat4 t = glm::transpose(m);
-  return {t[3] + t[0], t[3] - t[0], t[3] + t[1], t[3] - t[1], t[3] + t[2], t[3] - t[2]};
-}
-
-// False when the box from `lo` to `lo + size` is entirely outside one plane.
-bool boxVisible(const std::array<glm::vec4, 6>& planes, glm::vec3 lo, float size) {
-  for (const glm::vec4& p : planes) {
-    // The box corner furthest along the plane's normal.
-    const glm::vec3 far = lo + glm::vec3(p.x > 0.0f ? size : 0.0f, p.y > 0.0f ? size : 0.0f, p.z > 0.0f ? size : 0.0f);
-    if (glm::dot(glm::vec3(p), far) + p.w < 0.0f) return false;
-  }
-  return true;
-}
-
-// Times passes when asked: with GL_TIME_ELAPSED queries on a real GPU, or by waiting for the GPU
-// (glFinish) and reading the wall clock on a software renderer, whose timer queries measure nothing
-// useful.
-class PassClock {
- public:
-  PassClock(std::vector<PassTiming>* timings, bool gpuTimer) : timings_(timings), gpuTimer_(gpuTimer) { begin(); }
-  ~PassClock() { finish(); }
-  PassClock(const PassClock&) = delete;
-  PassClock& operator=(const PassClock&) = delete;
-
-  void lap(const char* pass) {
-    if (!timings_) return;
-    if (gpuTimer_) {
-      glEndQuery(GL_TIME_ELAPSED);
-      queries_.push_back({pass, std::move(current_)});
-      begin();
-      return;
-    }
-    glFinish();
-    const auto now = std::chrono::steady_clock::now();
-    timings_->push_back({pass, std::chrono::duration<double, std::milli>(now - start_).count()});
-    start_ = now;
-  }
-
- private:
-  void begin() {
-    if (!timings_) return;
-    if (gpuTimer_) {
-      current_ = gl::Query::create(GL_TIME_ELAPSED);
-      glBeginQuery(GL_TIME_ELAPSED, current_.id());
-      return;
-    }
-    glFinish();
-    start_ = std::chrono::steady_clock::now();
-  }
-  // Waits for the queries' results (the frame is over by then).
-  void finish() {
-    if (!timings_ || !gpuTimer_) return;
-    glEndQuery(GL_TIME_ELAPSED);
-    for (const auto& [pass, query] : queries_) {
-      GLuint64 ns = 0;
-      glGetQueryObjectui64v(query.id(), GL_QUERY_RESULT, &ns);
-      timings_->push_back({pass, static_cast<double>(ns) / 1e6});
-    }
-  }
-
-  std::vector<PassTiming>* timings_;
-  bool gpuTimer_;
-  std::chrono::steady_clock::time_point start_;
-  gl::Query current_;
-  std::vector<std::pair<const char*, gl::Query>> queries_;
-};
-
-bool softwareRenderer() {
-  const auto* name = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-  const std::string renderer = name ? name : "";
-  return renderer.find("llvmpipe") != std::string::npos || renderer.find("softpipe") != std::string::npos ||
-         renderer.find("SwiftShader") != std::string::npos;
-}
-
 }  // namespace
-
-struct DeferredRenderer::View {
-  glm::dvec3 camera;
-  glm::mat4 viewProjection;  // camera-relative
-  glm::mat4 inverseViewProjection;
-  std::array<glm::vec4, 6> frustum;  // camera-relative
-  glm::vec2 nearFar;
-  glm::vec2 fogRange;
-  DayState day;
-  bool materialAo;
-  bool shadowLive = false;  // the shadow pass ran this frame
-  glm::dvec3 shadowCentreOffset{0.0};
-  glm::dvec3 forward{0.0, 0.0, -1.0};  // unit view direction
-};
 
 DeferredRenderer::DeferredRenderer(const ShaderPreprocessor& shaders, const Atlas& atlas, const BiomeTints& tints,
                                    const RendererOptions& options)
@@ -253,19 +158,25 @@ void DeferredRenderer::geometryPass(const View& view, const SectionMeshes& meshe
   glDisable(GL_FRAMEBUFFER_SRGB);
 }
 
-void DeferredRenderer::cull(const View& view, const SectionMeshes& meshes) {
-  visible_.clear();
-  stats_ = {};
+std::vector<DeferredRenderer::Visible> DeferredRenderer::sectionsInside(const FrustumPlanes& planes, glm::dvec3 camera,
+                                                                        const SectionMeshes& meshes, int* outside) {
+  std::vector<Visible> inside;
   for (const auto& [pos, section] : meshes.sections()) {
     // In double: far from the origin a float cannot hold both the section and the small offset.
     const glm::dvec3 corner(pos.x * 16.0, kMinY + pos.section * 16.0, pos.z * 16.0);
-    const glm::vec3 offset(corner - view.camera);
-    if (boxVisible(view.frustum, offset, 16.0f)) {
-      visible_.push_back({&section, offset});
-    } else {
-      ++stats_.sectionsCulled;
+    const glm::vec3 offset(corner - camera);
+    if (boxVisible(planes, offset, 16.0f)) {
+      inside.push_back({&section, offset});
+    } else if (outside) {
+      ++*outside;
     }
   }
+  return inside;
+}
+
+void DeferredRenderer::cull(const View& view, const SectionMeshes& meshes) {
+  stats_ = {};
+  visible_ = sectionsInside(view.frustum, view.camera, meshes, &stats_.sectionsCulled);
   stats_.sectionsDrawn = static_cast<int>(visible_.size());
 }
 
@@ -302,83 +213,6 @@ void DeferredRenderer::drawSections(GLuint program, const std::vector<Visible>& 
   glBindVertexArray(0);
 }
 
-// The light's view, a layer per cascade: casters inside the layer's box (culled per section), opaque
-// then alpha-tested.
-void DeferredRenderer::shadowPass(const View& view, const SectionMeshes& meshes) {
-  const ShadowSettings& settings = options_.shadow;
-  const int layers = shadowLayers(settings);
-  shadowMap_.ensure(settings.resolution, layers);
-  glViewport(0, 0, settings.resolution, settings.resolution);
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LESS);
-  glDepthMask(GL_TRUE);
-  glDisable(GL_CULL_FACE);   // single faces (the mesher drops hidden ones) must cast from both sides
-  glEnable(GL_DEPTH_CLAMP);  // casters above the near plane still cast, flattened onto it
-  glDisable(GL_BLEND);
-  stats_.shadowCasters = 0;
-  // Cascades are picked by distance from the camera, so only the single warped map moves ahead.
-  const glm::dvec3 forward(view.forward.x, 0.0, view.forward.z);
-  const double along = glm::length(forward);
-  const glm::dvec3 ahead = settings.mode == ShadowMode::Warped && along > 1e-6
-                               ? forward / along * static_cast<double>(settings.shiftAhead * settings.distance)
-                               : glm::dvec3(0.0);
-  const glm::dvec3 centre = mapCentre(view.camera + view.shadowCentreOffset + ahead);
-  for (int layer = 0; layer < layers; ++layer) {
-    ShadowView& light = shadowViews_[static_cast<std::size_t>(layer)];
-    light = shadowViewFor(settings.resolution, cascadeDistance(settings, layer), view.day.toShadowLight, view.camera,
-                          centre);
-    const auto planes = frustumPlanes(light.matrix);
-    std::vector<Visible> casters;
-    for (const auto& [pos, section] : meshes.sections()) {
-      const glm::dvec3 corner(pos.x * 16.0, kMinY + pos.section * 16.0, pos.z * 16.0);
-      const glm::vec3 offset(corner - view.camera);
-      if (boxVisible(planes, offset, 16.0f)) casters.push_back({&section, offset});
-    }
-    stats_.shadowCasters += static_cast<int>(casters.size());
-    glBindFramebuffer(GL_FRAMEBUFFER, shadowMap_.framebuffer(layer));
-    const float farDepth = 1.0f;
-    glClearNamedFramebufferfv(shadowMap_.framebuffer(layer), GL_DEPTH, 0, &farDepth);
-    for (const GLuint program : {shadow_.id(), shadowCutout_.id()}) {
-      setMat4(program, "u_shadowMatrix", light.matrix);
-      setWarpUniforms(program);
-    }
-    drawSections(shadow_.id(), casters, meshes, MeshLayer::Opaque, false);
-    drawSections(shadowCutout_.id(), casters, meshes, MeshLayer::Cutout, false);
-    // Translucent casters into their own depth and colour: the nearest one filters the light.
-    const GLuint translucent = shadowMap_.translucentFramebuffer(layer);
-    const float clear[4] = {1.0f, 1.0f, 1.0f, 1.0f};
-    glClearNamedFramebufferfv(translucent, GL_COLOR, 0, clear);
-    glClearNamedFramebufferfv(translucent, GL_DEPTH, 0, &farDepth);
-    glBindFramebuffer(GL_FRAMEBUFFER, translucent);
-    setMat4(shadowTranslucent_.id(), "u_shadowMatrix", light.matrix);
-    setWarpUniforms(shadowTranslucent_.id());
-    drawSections(shadowTranslucent_.id(), casters, meshes, MeshLayer::Translucent, false);
-  }
-  glDisable(GL_DEPTH_CLAMP);
-}
-
-// The maps' centre stays put until the camera has moved kRecentreTexels (of the finest layer) from it.
-// Snapping to whole texels alone keeps an unwarped map stable in exact arithmetic, but the warp around a
-// centre that steps moves world points by fractions of a texel, and even unwarped casters' float
-// vertices round differently after a step, so every step flips a few shadow edges. Re-centring rarely
-// turns that crawl into an occasional step. (Cascades are picked with a 10 % margin, far more.)
-glm::dvec3 DeferredRenderer::mapCentre(glm::dvec3 wanted) {
-  constexpr double kRecentreTexels = 8.0;
-  const ShadowSettings& settings = options_.shadow;
-  const double texel = 2.0 * cascadeDistance(settings, 0) / std::max(settings.resolution, 1);
-  if (!warpCentre_ || glm::length(wanted - *warpCentre_) > kRecentreTexels * texel) warpCentre_ = wanted;
-  return *warpCentre_;
-}
-
-// Cascades are never warped.
-void DeferredRenderer::setWarpUniforms(GLuint program) const {
-  const bool warped = options_.shadow.mode == ShadowMode::Warped;
-  glProgramUniform1i(program, glGetUniformLocation(program, "u_shadowWarp"),
-                     warped ? static_cast<int>(options_.shadow.warp) : static_cast<int>(ShadowWarp::None));
-  glProgramUniform1f(program, glGetUniformLocation(program, "u_shadowWarpStrength"),
-                     std::clamp(options_.shadow.warpStrength, 0.0f, 0.999f));
-}
-
 void DeferredRenderer::setLightingUniforms(GLuint program, const View& view) const {
   const DayState& day = view.day;
   setVec3(program, "u_toLight", day.toShadowLight);
@@ -386,32 +220,7 @@ void DeferredRenderer::setLightingUniforms(GLuint program, const View& view) con
   setVec3(program, "u_ambientTint", ambientTint(day.skyZenith));
   glProgramUniform1i(program, glGetUniformLocation(program, "u_materialAo"), view.materialAo ? 1 : 0);
   glBindTextureUnit(slots::kUnitLightmap, lightmap_.id());
-  if (!options_.shadow.enabled) return;
-  const ShadowSettings& settings = options_.shadow;
-  setWarpUniforms(program);
-  const int layers = shadowLayers(settings);
-  std::array<glm::mat4, kMaxShadowCascades> matrices{};
-  std::array<float, kMaxShadowCascades> texels{}, ranges{};
-  for (int i = 0; i < layers; ++i) {
-    const ShadowView& v = shadowViews_[static_cast<std::size_t>(i)];
-    matrices[static_cast<std::size_t>(i)] = v.matrix;
-    texels[static_cast<std::size_t>(i)] = v.texelWorld;
-    ranges[static_cast<std::size_t>(i)] = v.depthRange;
-  }
-  glProgramUniform1i(program, glGetUniformLocation(program, "u_cascades"), layers);
-  glProgramUniformMatrix4fv(program, glGetUniformLocation(program, "u_shadowMatrices"), layers, GL_FALSE,
-                            glm::value_ptr(matrices[0]));
-  glProgramUniform1fv(program, glGetUniformLocation(program, "u_shadowTexelWorlds"), layers, texels.data());
-  glProgramUniform1fv(program, glGetUniformLocation(program, "u_shadowDepthRanges"), layers, ranges.data());
-  glProgramUniform1f(program, glGetUniformLocation(program, "u_shadowResolution"), static_cast<float>(settings.resolution));
-  glProgramUniform1i(program, glGetUniformLocation(program, "u_pcfSamples"), std::clamp(settings.pcfSamples, 0, 8));
-  glProgramUniform1f(program, glGetUniformLocation(program, "u_pcfRadius"), std::max(settings.pcfRadius, 0.0f));
-  glProgramUniform1i(program, glGetUniformLocation(program, "u_pcfRadiusInBlocks"), settings.pcfRadiusInBlocks ? 1 : 0);
-  glProgramUniform1i(program, glGetUniformLocation(program, "u_pcfPattern"), static_cast<int>(settings.pcfPattern));
-  glProgramUniform1i(program, glGetUniformLocation(program, "u_shadowLive"), view.shadowLive ? 1 : 0);
-  glBindTextureUnit(slots::kUnitShadowMap, shadowMap_.depth());
-  glBindTextureUnit(slots::kUnitTranslucentDepth, shadowMap_.translucentDepth());
-  glBindTextureUnit(slots::kUnitTranslucentTint, shadowMap_.transmittance());
+  if (options_.shadow.enabled) setShadowUniforms(program, view.shadowLive);
 }
 
 // The sky and the fog that fades distant surfaces into it (lighting and translucent passes).

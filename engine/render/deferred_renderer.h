@@ -17,7 +17,9 @@
 
 #include "assets/shader_source.h"
 #include "render/block_textures.h"
+#include "render/frustum.h"
 #include "render/gbuffer.h"
+#include "render/pass_clock.h"
 #include "render/section_meshes.h"
 #include "render/shadow_map.h"
 
@@ -47,11 +49,6 @@ struct FrameInputs {
 struct RendererOptions {
   bool ggxSpecular = false;  // GGX/Smith instead of energy-conserving Blinn-Phong
   ShadowSettings shadow;
-};
-
-struct PassTiming {
-  std::string pass;
-  double ms;
 };
 
 // Where the last frame looked from, for reports that check it against the world.
@@ -106,6 +103,10 @@ class DeferredRenderer {
                     MeshLayer layer, bool backToFront);
   void shadowPass(const View& view, const SectionMeshes& meshes);
   void setWarpUniforms(GLuint program) const;
+  void setShadowUniforms(GLuint program, bool live) const;
+  // The sections with a mesh whose box is inside `planes` (camera-relative); counts the others.
+  static std::vector<Visible> sectionsInside(const FrustumPlanes& planes, glm::dvec3 camera,
+                                             const SectionMeshes& meshes, int* outside = nullptr);
   glm::dvec3 mapCentre(glm::dvec3 wanted);
   std::size_t visibleQuads(MeshLayer layer) const;
   void setLightingUniforms(GLuint program, const View& view) const;

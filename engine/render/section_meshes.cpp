@@ -33,12 +33,6 @@ void SectionMeshes::upload(const SectionMesh& mesh) {
 
 void SectionMeshes::remove(SectionPos pos) { sections_.erase(pos); }
 
-std::size_t SectionMeshes::quads(MeshLayer layer) const {
-  std::size_t total = 0;
-  for (const auto& [pos, section] : sections_) total += static_cast<std::size_t>(section.layers[static_cast<std::size_t>(layer)].quads);
-  return total;
-}
-
 void SectionMeshes::bindLayer(const Layer& layer) const {
   glVertexArrayVertexBuffer(layout_.id(), 0, layer.vertices.id(), 0, sizeof(PackedVertex));
 }

@@ -29,7 +29,6 @@ class SectionMeshes {
   };
   // In a fixed order, so frames are reproducible.
   const std::map<SectionPos, Section>& sections() const { return sections_; }
-  std::size_t quads(MeshLayer layer) const;
 
   // The vertex array: attribute ATTRIB_PACKED from binding 0, and the quad index buffer. Point
   // binding 0 at a layer's buffer with bindLayer() before drawing it.

@@ -447,6 +447,10 @@ SceneFile parseChecked(const nlohmann::json& root, const std::filesystem::path& 
 
 }  // namespace
 
+std::string sceneError(const SceneFile& scene, std::string_view key, std::string_view what) {
+  return withFile(scene.file, join({key, ": ", what}));
+}
+
 SceneFile parseScene(std::string_view json, const std::filesystem::path& file) {
   return parseChecked(parseJson(json, file), file);
 }

@@ -98,6 +98,10 @@ inline constexpr std::array<std::string_view, 9> kDebugViews = {
 // in messages and is the base for relative pack paths (may be empty: then messages start with the key).
 SceneFile parseScene(std::string_view json, const std::filesystem::path& file);
 
+// "<file>: <key>: <what>", the form of every error about a scene's content, also for problems found
+// after parsing (an unknown block name, a pack that cannot be opened).
+std::string sceneError(const SceneFile& scene, std::string_view key, std::string_view what);
+
 // Reads the file (Error naming it if missing or unreadable), then parseScene. `overrides` are
 // "key.path=value" settings applied to the JSON first, as terrasol-render's --set: the value is read as
 // JSON when it parses (640, true, [1,2,3], "x") and as a string otherwise; a number in the path indexes

@@ -10,16 +10,6 @@
 namespace terrasol {
 namespace {
 
-// "FILE: KEY: what" like the scene parser's own errors.
-[[noreturn]] void fail(const SceneFile& scene, const std::string& key, const std::string& what) {
-  std::string message = scene.file.string();
-  message += ": ";
-  message += key;
-  message += ": ";
-  message += what;
-  throw Error(message);
-}
-
 ChunkPos cameraChunk(const SceneFile& scene) {
   // Clamped so a camera far outside the world border still names a valid chunk.
   const double limit = 30'000'000.0;
@@ -41,7 +31,7 @@ SceneWorld::SceneWorld(const SceneFile& scene, const BlockRegistry& blocks)
   try {
     generator_ = makeGenerator(generatorSettings(scene), blocks);
   } catch (const Error& e) {
-    fail(scene, "world.generator", e.what());
+    throw Error(sceneError(scene, "world.generator", e.what()));
   }
   const int load = viewDistance_ + 1;
   for (int dz = -load; dz <= load; ++dz)
@@ -53,7 +43,7 @@ SceneWorld::SceneWorld(const SceneFile& scene, const BlockRegistry& blocks)
   for (const SceneEdit& edit : scene.edits) {
     bool found = false;
     const BlockId block = blocks.find(edit.block, &found);
-    if (!found) fail(scene, edit.key + ".block", "unknown block \"" + edit.block + "\"");
+    if (!found) throw Error(sceneError(scene, edit.key + ".block", "unknown block \"" + edit.block + "\""));
     const bool now = edit.atFrame < 0;
     if (now) forEachCell(edit, [&](const BlockPos& p) { world_.setBlock(p, block); });
     edits_.push_back({edit, block, now});

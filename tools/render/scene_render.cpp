@@ -13,22 +13,13 @@
 namespace terrasol {
 namespace {
 
-std::string keyError(const SceneFile& scene, const std::string& key, const std::string& what) {
-  std::string message = scene.file.string();
-  message += ": ";
-  message += key;
-  message += ": ";
-  message += what;
-  return message;
-}
-
 PackStack openPacks(const SceneFile& scene) {
   PackStack packs;
   for (std::size_t i = 0; i < scene.packs.size(); ++i) {
     try {
       packs.push(ResourcePack::open(scene.packs[i]));
     } catch (const Error& e) {
-      throw Error(keyError(scene, "packs[" + std::to_string(i) + "]", e.what()));
+      throw Error(sceneError(scene, "packs[" + std::to_string(i) + "]", e.what()));
     }
   }
   return packs;
@@ -61,7 +52,7 @@ DebugView debugViewOf(const SceneFile& scene) {
   for (std::size_t i = 0; i < std::size(kDebugViewNames); ++i) {
     if (scene.debugView == kDebugViewNames[i]) return static_cast<DebugView>(i);
   }
-  throw Error(keyError(scene, "render.debug_view", "unknown view \"" + scene.debugView + "\""));
+  throw Error(sceneError(scene, "render.debug_view", "unknown view \"" + scene.debugView + "\""));
 }
 
 // The CPU side: blocks, atlas, the mesher's table and the world, kept for edits keyed to frames.

@@ -1,0 +1,114 @@
+#include <algorithm>
+#include <array>
+
+#include "render/deferred_renderer.h"
+#include "render/deferred_view.h"
+#include "render/gl/uniforms.h"
+#include "render/gl_slots.h"
+
+// The deferred renderer's shadow pass and the shadow lookup's uniforms (lib/shadow.glsl).
+
+namespace terrasol {
+
+using gl::setMat4;
+
+// The light's view, a layer per cascade: casters inside the layer's box (culled per section), opaque
+// then alpha-tested.
+void DeferredRenderer::shadowPass(const View& view, const SectionMeshes& meshes) {
+  const ShadowSettings& settings = options_.shadow;
+  const int layers = shadowLayers(settings);
+  shadowMap_.ensure(settings.resolution, layers);
+  glViewport(0, 0, settings.resolution, settings.resolution);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDepthMask(GL_TRUE);
+  glDisable(GL_CULL_FACE);   // single faces (the mesher drops hidden ones) must cast from both sides
+  glEnable(GL_DEPTH_CLAMP);  // casters above the near plane still cast, flattened onto it
+  glDisable(GL_BLEND);
+  stats_.shadowCasters = 0;
+  // Cascades are picked by distance from the camera, so only the single warped map moves ahead.
+  const glm::dvec3 forward(view.forward.x, 0.0, view.forward.z);
+  const double along = glm::length(forward);
+  const glm::dvec3 ahead = settings.mode == ShadowMode::Warped && along > 1e-6
+                               ? forward / along * static_cast<double>(settings.shiftAhead * settings.distance)
+                               : glm::dvec3(0.0);
+  const glm::dvec3 centre = mapCentre(view.camera + view.shadowCentreOffset + ahead);
+  for (int layer = 0; layer < layers; ++layer) {
+    ShadowView& light = shadowViews_[static_cast<std::size_t>(layer)];
+    light = shadowViewFor(settings.resolution, cascadeDistance(settings, layer), view.day.toShadowLight, view.camera,
+                          centre);
+    const std::vector<Visible> casters = sectionsInside(frustumPlanes(light.matrix), view.camera, meshes);
+    stats_.shadowCasters += static_cast<int>(casters.size());
+    glBindFramebuffer(GL_FRAMEBUFFER, shadowMap_.framebuffer(layer));
+    const float farDepth = 1.0f;
+    glClearNamedFramebufferfv(shadowMap_.framebuffer(layer), GL_DEPTH, 0, &farDepth);
+    for (const GLuint program : {shadow_.id(), shadowCutout_.id()}) {
+      setMat4(program, "u_shadowMatrix", light.matrix);
+      setWarpUniforms(program);
+    }
+    drawSections(shadow_.id(), casters, meshes, MeshLayer::Opaque, false);
+    drawSections(shadowCutout_.id(), casters, meshes, MeshLayer::Cutout, false);
+    // Translucent casters into their own depth and colour: the nearest one filters the light.
+    const GLuint translucent = shadowMap_.translucentFramebuffer(layer);
+    const float clear[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+    glClearNamedFramebufferfv(translucent, GL_COLOR, 0, clear);
+    glClearNamedFramebufferfv(translucent, GL_DEPTH, 0, &farDepth);
+    glBindFramebuffer(GL_FRAMEBUFFER, translucent);
+    setMat4(shadowTranslucent_.id(), "u_shadowMatrix", light.matrix);
+    setWarpUniforms(shadowTranslucent_.id());
+    drawSections(shadowTranslucent_.id(), casters, meshes, MeshLayer::Translucent, false);
+  }
+  glDisable(GL_DEPTH_CLAMP);
+}
+
+// The maps' centre stays put until the camera has moved kRecentreTexels (of the finest layer) from it.
+// Snapping to whole texels alone keeps an unwarped map stable in exact arithmetic, but the warp around a
+// centre that steps moves world points by fractions of a texel, and even unwarped casters' float
+// vertices round differently after a step, so every step flips a few shadow edges. Re-centring rarely
+// turns that crawl into an occasional step. (Cascades are picked with a 10 % margin, far more.)
+glm::dvec3 DeferredRenderer::mapCentre(glm::dvec3 wanted) {
+  constexpr double kRecentreTexels = 8.0;
+  const ShadowSettings& settings = options_.shadow;
+  const double texel = 2.0 * cascadeDistance(settings, 0) / std::max(settings.resolution, 1);
+  if (!warpCentre_ || glm::length(wanted - *warpCentre_) > kRecentreTexels * texel) warpCentre_ = wanted;
+  return *warpCentre_;
+}
+
+// Cascades are never warped.
+void DeferredRenderer::setWarpUniforms(GLuint program) const {
+  const bool warped = options_.shadow.mode == ShadowMode::Warped;
+  glProgramUniform1i(program, glGetUniformLocation(program, "u_shadowWarp"),
+                     warped ? static_cast<int>(options_.shadow.warp) : static_cast<int>(ShadowWarp::None));
+  glProgramUniform1f(program, glGetUniformLocation(program, "u_shadowWarpStrength"),
+                     std::clamp(options_.shadow.warpStrength, 0.0f, 0.999f));
+}
+
+void DeferredRenderer::setShadowUniforms(GLuint program, bool live) const {
+  const ShadowSettings& settings = options_.shadow;
+  setWarpUniforms(program);
+  const int layers = shadowLayers(settings);
+  std::array<glm::mat4, kMaxShadowCascades> matrices{};
+  std::array<float, kMaxShadowCascades> texels{}, ranges{};
+  for (int i = 0; i < layers; ++i) {
+    const ShadowView& v = shadowViews_[static_cast<std::size_t>(i)];
+    matrices[static_cast<std::size_t>(i)] = v.matrix;
+    texels[static_cast<std::size_t>(i)] = v.texelWorld;
+    ranges[static_cast<std::size_t>(i)] = v.depthRange;
+  }
+  glProgramUniform1i(program, glGetUniformLocation(program, "u_cascades"), layers);
+  glProgramUniformMatrix4fv(program, glGetUniformLocation(program, "u_shadowMatrices"), layers, GL_FALSE,
+                            glm::value_ptr(matrices[0]));
+  glProgramUniform1fv(program, glGetUniformLocation(program, "u_shadowTexelWorlds"), layers, texels.data());
+  glProgramUniform1fv(program, glGetUniformLocation(program, "u_shadowDepthRanges"), layers, ranges.data());
+  glProgramUniform1f(program, glGetUniformLocation(program, "u_shadowResolution"), static_cast<float>(settings.resolution));
+  glProgramUniform1i(program, glGetUniformLocation(program, "u_pcfSamples"), std::clamp(settings.pcfSamples, 0, 8));
+  glProgramUniform1f(program, glGetUniformLocation(program, "u_pcfRadius"), std::max(settings.pcfRadius, 0.0f));
+  glProgramUniform1i(program, glGetUniformLocation(program, "u_pcfRadiusInBlocks"), settings.pcfRadiusInBlocks ? 1 : 0);
+  glProgramUniform1i(program, glGetUniformLocation(program, "u_pcfPattern"), static_cast<int>(settings.pcfPattern));
+  glProgramUniform1i(program, glGetUniformLocation(program, "u_shadowLive"), live ? 1 : 0);
+  glBindTextureUnit(slots::kUnitShadowMap, shadowMap_.depth());
+  glBindTextureUnit(slots::kUnitTranslucentDepth, shadowMap_.translucentDepth());
+  glBindTextureUnit(slots::kUnitTranslucentTint, shadowMap_.transmittance());
+}
+
+}  // namespace terrasol
