@@ -1,5 +1,8 @@
 #include "core/error.h"
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <fstream>
 #include <sstream>
 
@@ -23,6 +26,18 @@ std::string readTextFile(const std::filesystem::path& file) {
   text << in.rdbuf();
   if (in.bad()) throw Error(locate(file, 0, "read failed"));
   return std::move(text).str();
+}
+
+void writeFileAtomically(const std::filesystem::path& file, std::string_view text) {
+  const std::filesystem::path tmp = file.string() + ".tmp";
+  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd < 0) throw Error(locate(tmp, 0, "cannot create"));
+  const bool ok = ::write(fd, text.data(), text.size()) == static_cast<ssize_t>(text.size()) && ::fsync(fd) == 0;
+  ::close(fd);
+  if (!ok) throw Error(locate(tmp, 0, "cannot write"));
+  std::error_code ec;
+  std::filesystem::rename(tmp, file, ec);
+  if (ec) throw Error(locate(file, 0, "cannot replace: " + ec.message()));
 }
 
 }  // namespace terrasol

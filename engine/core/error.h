@@ -18,5 +18,8 @@ std::string locate(const std::filesystem::path& file, int line, std::string_view
 
 // Reads a whole file; throws Error naming the file when it cannot.
 std::string readTextFile(const std::filesystem::path& file);
+// Writes FILE.tmp, syncs it and renames it over FILE, so a crash leaves the old or the new file, never
+// half of one. Throws Error naming the file.
+void writeFileAtomically(const std::filesystem::path& file, std::string_view text);
 
 }  // namespace terrasol

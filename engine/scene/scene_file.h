@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <glm/vec3.hpp>
+#include <nlohmann/json_fwd.hpp>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -100,6 +101,10 @@ SceneFile parseScene(std::string_view json, const std::filesystem::path& file);
 
 // "<file>: <key>: <what>", the form of every error about a scene's content, also for problems found
 // after parsing (an unknown block name, a pack that cannot be opened).
+// A "render.shadow" object (also the game's settings) at key path `key`, over `shadow`'s values; and back.
+void parseShadow(const nlohmann::json& value, const std::string& key, SceneShadow& shadow);
+nlohmann::json shadowJson(const SceneShadow& shadow);
+
 std::string sceneError(const SceneFile& scene, std::string_view key, std::string_view what);
 
 // Reads the file (Error naming it if missing or unreadable), then parseScene. `overrides` are

@@ -2,6 +2,7 @@
 
 #include "core/log.h"
 
+#include <algorithm>
 #include <cstdlib>
 #include <exception>
 #include <string>
@@ -18,13 +19,25 @@ ChunkStreamer::ChunkStreamer(World& world, const ChunkGenerator& generator, Worl
                              int radius)
     : world_(world), storage_(storage), radius_(radius), loader_(generator, storage, threads) {}
 
-std::vector<ChunkPos> ChunkStreamer::update(ChunkPos center) {
+std::vector<ChunkPos> ChunkStreamer::update(ChunkPos center, const std::function<bool()>& more) {
   loader_.setCenter(center);
+  for (auto& chunk : loader_.takeFinished()) ready_.push_back(std::move(chunk));
+  std::erase_if(ready_, [&](const std::unique_ptr<Chunk>& c) {
+    const bool drop = chebyshev(c->pos(), center) > radius_ + 1;  // no longer wanted
+    if (drop) requested_.erase(c->pos());
+    return drop;
+  });
+  // Farthest first in the vector, so the closest is taken from the back.
+  std::sort(ready_.begin(), ready_.end(), [&](const auto& a, const auto& b) {
+    return chebyshev(a->pos(), center) > chebyshev(b->pos(), center);
+  });
   std::vector<ChunkPos> added;
-  for (auto& chunk : loader_.takeFinished()) {
+  while (!ready_.empty() && (!more || added.empty() || more())) {
+    std::unique_ptr<Chunk> chunk = std::move(ready_.back());
+    ready_.pop_back();
     const ChunkPos pos = chunk->pos();
     requested_.erase(pos);
-    if (chebyshev(pos, center) > radius_ + 1 || world_.isLoaded(pos)) continue;  // no longer wanted
+    if (world_.isLoaded(pos)) continue;
     world_.insertChunk(std::move(chunk));
     if (loaded_) loaded_(pos);
     added.push_back(pos);

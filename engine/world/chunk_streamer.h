@@ -25,14 +25,18 @@ class ChunkStreamer {
     unloading_ = std::move(unloading);
   }
 
-  // Call once a frame. Never blocks on generation. Returns the chunks added to the world. An edited
-  // chunk whose save fails stays loaded (the error is logged) and is tried again next time.
-  std::vector<ChunkPos> update(ChunkPos center);
+  // Call once a frame. Never blocks on generation. Returns the chunks added to the world, closest to
+  // the centre first, while `more()` says yes (each added chunk is lit by the hook: a frame's budget
+  // for that work); finished chunks left over wait for the next call. An edited chunk whose save
+  // fails stays loaded (the error is logged) and is tried again next time.
+  std::vector<ChunkPos> update(ChunkPos center, const std::function<bool()>& more = {});
   // Saves every edited chunk (e.g. before quitting).
   void saveAll();
 
   int radius() const { return radius_; }
-  std::size_t pending() const { return loader_.pending(); }
+  // Requested chunks not in the world yet (being loaded, or finished and waiting to be added).
+  std::size_t pending() const { return loader_.pending() + ready_.size(); }
+  void setRadius(int radius) { radius_ = radius; }
 
  private:
   World& world_;
@@ -40,6 +44,7 @@ class ChunkStreamer {
   std::function<void(ChunkPos)> loaded_, unloading_;
   int radius_;
   std::unordered_set<ChunkPos> requested_;
+  std::vector<std::unique_ptr<Chunk>> ready_;  // finished, not added yet
   ChunkLoader loader_;  // last: its workers stop before the rest is destroyed
 };
 

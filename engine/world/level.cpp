@@ -1,8 +1,5 @@
 #include "world/level.h"
 
-#include <fcntl.h>
-#include <unistd.h>
-
 #include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -62,14 +59,7 @@ void saveLevel(const std::filesystem::path& file, const Level& level) {
         {"yaw", level.playerYaw},
         {"pitch", level.playerPitch}}},
   };
-  const std::string text = root.dump(2) + "\n";
-  const std::filesystem::path tmp = file.string() + ".tmp";
-  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (fd < 0) throw Error(locate(tmp, 0, "cannot create"));
-  const bool ok = ::write(fd, text.data(), text.size()) == static_cast<ssize_t>(text.size()) && ::fsync(fd) == 0;
-  ::close(fd);
-  if (!ok) throw Error(locate(tmp, 0, "cannot write"));
-  std::filesystem::rename(tmp, file);
+  writeFileAtomically(file, root.dump(2) + "\n");
 }
 
 }  // namespace terrasol

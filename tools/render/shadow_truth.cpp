@@ -6,6 +6,8 @@
 #include <glm/geometric.hpp>
 #include <glm/mat4x4.hpp>
 
+#include "world/voxel_ray.h"
+
 namespace terrasol {
 namespace {
 
@@ -17,33 +19,22 @@ constexpr float kFlipMargin = 0.01f;
 // Casters beyond this along the ray are outside the shadow map too (shadow_map.cpp's reach).
 constexpr double kReachBeyondDistance = 256.0;
 
-// Amanatides and Woo's grid traversal from `origin` along unit `dir`.
+// The first block along unit `dir` from `origin` decides: an opaque cube shadows, anything else drawn
+// (cutout, translucent) is ambiguous.
 Ray march(const World& world, glm::dvec3 origin, glm::dvec3 dir, double maxDistance) {
-  glm::ivec3 cell(glm::floor(origin));
-  glm::ivec3 step;
-  glm::dvec3 tMax, tDelta;
-  for (int a = 0; a < 3; ++a) {
-    step[a] = dir[a] > 0.0 ? 1 : -1;
-    const double d = std::abs(dir[a]);
-    tDelta[a] = d > 1e-12 ? 1.0 / d : 1e300;
-    const double boundary = dir[a] > 0.0 ? std::floor(origin[a]) + 1.0 - origin[a] : origin[a] - std::floor(origin[a]);
-    tMax[a] = d > 1e-12 ? boundary / d : 1e300;
-  }
   const BlockRegistry& blocks = world.blocks();
-  double t = 0.0;
-  while (t <= maxDistance) {
-    if (cell.y >= kMaxY) return Ray::Lit;  // out of the top of the world: open sky
-    if (cell.y < kMinY) return Ray::Shadowed;
-    const BlockPos pos{cell.x, cell.y, cell.z};
-    if (!world.isLoaded(ChunkPos::of(pos))) return Ray::Lit;  // nothing there to cast, in the map either
+  Ray ray = Ray::Lit;
+  walkVoxels(origin, dir, maxDistance, [&](const VoxelStep& s) {
+    if (s.cell.y >= kMaxY) return true;  // out of the top of the world: open sky
+    if (s.cell.y < kMinY) return ray = Ray::Shadowed, true;
+    const BlockPos pos{s.cell.x, s.cell.y, s.cell.z};
+    if (!world.isLoaded(ChunkPos::of(pos))) return true;  // nothing there to cast, in the map either
     const BlockId id = world.getBlock(pos);
-    if (id != kAir) return blocks[id].isOpaqueCube() ? Ray::Shadowed : Ray::Ambiguous;
-    const int a = tMax.x < tMax.y ? (tMax.x < tMax.z ? 0 : 2) : (tMax.y < tMax.z ? 1 : 2);
-    t = tMax[a];
-    tMax[a] += tDelta[a];
-    cell[a] += step[a];
-  }
-  return Ray::Lit;
+    if (id == kAir) return false;
+    ray = blocks[id].isOpaqueCube() ? Ray::Shadowed : Ray::Ambiguous;
+    return true;
+  });
+  return ray;
 }
 
 // The ray from the point and from four points 0.05 blocks beside it: if they disagree, the ray grazes

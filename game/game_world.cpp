@@ -1,0 +1,129 @@
+#include "game_world.h"
+
+#include <algorithm>
+
+#include "core/log.h"
+
+namespace terrasol {
+namespace {
+
+constexpr std::size_t kSnapshotsPerFrame = 96;
+
+Level openLevel(const std::filesystem::path& dir, std::uint64_t seed, bool& isNew) {
+  const std::filesystem::path file = dir / "level.json";
+  isNew = !std::filesystem::exists(file);
+  if (!isNew) return loadLevel(file);
+  Level level;
+  level.seed = seed;
+  level.time = 1000;  // morning, as Minecraft starts
+  return level;
+}
+
+GeneratorSettings generatorOf(const Level& level) {
+  GeneratorSettings g;
+  g.type = level.generator;
+  g.seed = level.seed;
+  return g;
+}
+
+}  // namespace
+
+GameWorld::GameWorld(const std::filesystem::path& dir, std::uint64_t seed, const BlockRegistry& blocks,
+                     const BlockMeshTable& table, int viewDistance, int threads)
+    : level_(openLevel(dir, seed, isNew_)),
+      world_(blocks),
+      storage_(dir, blocks),
+      generator_(makeGenerator(generatorOf(level_), blocks)),
+      light_(world_),
+      threads_(threads),
+      mesher_(std::make_unique<MeshScheduler>(table, threads)),
+      streamer_(world_, *generator_, &storage_, threads, viewDistance + 1) {
+  streamer_.setHooks([this](ChunkPos p) { chunkAdded(p); }, [this](ChunkPos p) { chunkRemoved(p); });
+  if (isNew_) saveLevel(storage_.levelFile(), level_);  // the directory is a world from now on
+}
+
+GameWorld::~GameWorld() = default;
+
+bool GameWorld::allNeighboursLoaded(ChunkPos pos) const {
+  for (int dz = -1; dz <= 1; ++dz)
+    for (int dx = -1; dx <= 1; ++dx)
+      if (!world_.isLoaded({pos.x + dx, pos.z + dz})) return false;
+  return true;
+}
+
+void GameWorld::markChunkDirty(ChunkPos pos) {
+  for (int s = 0; s < kSectionCount; ++s) mesher_->markDirty({pos.x, s, pos.z});
+}
+
+void GameWorld::chunkAdded(ChunkPos pos) {
+  light_.chunkLoaded(pos);
+  // The chunk and each neighbour become meshable once all their neighbours are here.
+  for (int dz = -1; dz <= 1; ++dz)
+    for (int dx = -1; dx <= 1; ++dx) {
+      const ChunkPos c{pos.x + dx, pos.z + dz};
+      if (!meshable_.contains(c) && world_.isLoaded(c) && allNeighboursLoaded(c)) {
+        meshable_.insert(c);
+        markChunkDirty(c);
+      }
+    }
+}
+
+void GameWorld::chunkRemoved(ChunkPos pos) {
+  light_.chunkUnloading(pos);
+  for (int dz = -1; dz <= 1; ++dz)
+    for (int dx = -1; dx <= 1; ++dx) {
+      const ChunkPos c{pos.x + dx, pos.z + dz};
+      if (!meshable_.erase(c)) continue;
+      for (int s = 0; s < kSectionCount; ++s) removed_.push_back(SectionMesh{{c.x, s, c.z}, {}});
+    }
+}
+
+std::vector<SectionMesh> GameWorld::update(ChunkPos centre, std::chrono::steady_clock::time_point deadline) {
+  streamer_.update(centre, [&] { return std::chrono::steady_clock::now() < deadline; });
+  for (const SectionPos& s : light_.takeChangedSections()) {
+    if (meshable_.contains({s.x, s.z})) mesher_->markDirty(s);
+  }
+  std::vector<SectionMesh> out = std::move(removed_);
+  removed_.clear();
+  for (SectionMesh& mesh : mesher_->update(world_, kSnapshotsPerFrame)) {
+    // A job that finished after its chunk left must not bring the chunk back.
+    if (meshable_.contains({mesh.pos.x, mesh.pos.z})) out.push_back(std::move(mesh));
+  }
+  return out;
+}
+
+std::optional<BlockChange> GameWorld::setBlock(const BlockPos& pos, BlockId id) {
+  std::optional<BlockChange> change = world_.setBlock(pos, id);
+  if (!change) return change;
+  light_.blockChanged(*change);
+  mesher_->markBlockChanged(pos);
+  return change;
+}
+
+void GameWorld::setViewDistance(int chunks) { streamer_.setRadius(chunks + 1); }
+
+void GameWorld::remeshAll(const BlockMeshTable& table) {
+  mesher_.reset();  // joins its workers before the old table goes
+  mesher_ = std::make_unique<MeshScheduler>(table, threads_);
+  for (ChunkPos c : meshable_) markChunkDirty(c);
+}
+
+std::optional<int> GameWorld::surfaceY(int x, int z) const {
+  if (!world_.isLoaded(ChunkPos::of({x, 0, z}))) return std::nullopt;
+  for (int y = kMaxY - 1; y >= kMinY; --y) {
+    const BlockType& type = world_.blocks()[world_.getBlock({x, y, z})];
+    if (type.shape == BlockShape::Cube || type.shape == BlockShape::Liquid) return y;
+  }
+  return kMinY;
+}
+
+void GameWorld::save() {
+  streamer_.saveAll();
+  saveLevel(storage_.levelFile(), level_);
+}
+
+WorldCounts GameWorld::counts() const {
+  return {world_.chunkCount(), streamer_.pending(), meshable_.size(), mesher_->dirty(), mesher_->inFlight()};
+}
+
+}  // namespace terrasol

@@ -1,0 +1,95 @@
+#include "settings.h"
+
+#include <cstdlib>
+
+#include "core/error.h"
+#include "scene/json_check.h"
+
+namespace terrasol {
+namespace {
+
+using namespace json_check;
+
+std::vector<PackChoice> parsePacks(const json& value, const path& dir) {
+  if (!value.is_array()) expected("packs", "an array", value);
+  std::vector<PackChoice> packs;
+  for (std::size_t i = 0; i < value.size(); ++i) {
+    const std::string key = element("packs", i);
+    checkObject(value[i], key, {"path", "enabled"});
+    const json* p = field(value[i], "path");
+    if (!p) fail(key, "missing \"path\"");
+    PackChoice pack;
+    pack.path = nonEmptyString(*p, member(key, "path"));
+    if (pack.path.is_relative()) pack.path = dir / pack.path;
+    if (const json* e = field(value[i], "enabled")) pack.enabled = boolean(*e, member(key, "enabled"));
+    packs.push_back(std::move(pack));
+  }
+  return packs;
+}
+
+void parseKeys(const json& value, KeyBindings& keys) {
+  if (!value.is_object()) expected("keys", "an object", value);
+  for (const auto& [name, k] : value.items()) {
+    const std::string key = member("keys", name);
+    const auto action = actionNamed(name);
+    if (!action) fail(key, "unknown action");
+    const std::string keyText = nonEmptyString(k, key);
+    const auto code = keyNamed(keyText);
+    if (!code) fail(key, join({"unknown key \"", keyText, "\""}));
+    if (*code == kEscapeKey) fail(key, "ESCAPE always opens the menu");
+    keys.bind(*action, *code);
+  }
+}
+
+GameSettings parseRoot(const json& root, const path& dir) {
+  checkObject(root, "", {"view_distance", "fov", "mouse_sensitivity", "sun_path_rotation", "shadow", "packs", "keys", "vsync"});
+  GameSettings s;
+  if (const json* v = field(root, "view_distance")) s.viewDistance = static_cast<int>(wholeNumber(*v, "view_distance", 2, 32));
+  if (const json* v = field(root, "fov")) s.fov = numberIn(*v, "fov", 30.0, 110.0, false);
+  if (const json* v = field(root, "mouse_sensitivity")) s.mouseSensitivity = numberIn(*v, "mouse_sensitivity", 0.01, 2.0, false);
+  if (const json* v = field(root, "sun_path_rotation")) s.sunPathRotation = numberIn(*v, "sun_path_rotation", -90.0, 90.0, false);
+  if (const json* v = field(root, "shadow")) parseShadow(*v, "shadow", s.shadow);
+  if (const json* v = field(root, "packs")) s.packs = parsePacks(*v, dir);
+  if (const json* v = field(root, "keys")) parseKeys(*v, s.keys);
+  if (const json* v = field(root, "vsync")) s.vsync = boolean(*v, "vsync");
+  return s;
+}
+
+}  // namespace
+
+GameSettings parseSettings(std::string_view text, const std::filesystem::path& file) {
+  const json root = parseJson(text, file);
+  try {
+    return parseRoot(root, file.parent_path());
+  } catch (const Error& e) {
+    throw Error(withFile(file, e.what()));
+  }
+}
+
+GameSettings loadSettings(const std::filesystem::path& file) {
+  if (!std::filesystem::exists(file)) return {};
+  return parseSettings(readTextFile(file), file);
+}
+
+void saveSettings(const std::filesystem::path& file, const GameSettings& s) {
+  json packs = json::array();
+  for (const PackChoice& p : s.packs) packs.push_back({{"path", p.path.string()}, {"enabled", p.enabled}});
+  json keys = json::object();
+  for (std::size_t i = 0; i < kActionCount; ++i) {
+    const auto a = static_cast<Action>(i);
+    keys[std::string(actionName(a))] = keyName(s.keys.key(a));
+  }
+  const json root = {{"view_distance", s.viewDistance}, {"fov", s.fov},
+                     {"mouse_sensitivity", s.mouseSensitivity}, {"sun_path_rotation", s.sunPathRotation},
+                     {"shadow", shadowJson(s.shadow)}, {"packs", packs}, {"keys", keys}, {"vsync", s.vsync}};
+  if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path());
+  writeFileAtomically(file, root.dump(2) + "\n");
+}
+
+std::filesystem::path defaultSettingsFile() {
+  if (const char* xdg = std::getenv("XDG_CONFIG_HOME"); xdg && *xdg) return std::filesystem::path(xdg) / "terrasol" / "settings.json";
+  if (const char* home = std::getenv("HOME"); home && *home) return std::filesystem::path(home) / ".config" / "terrasol" / "settings.json";
+  return "terrasol-settings.json";
+}
+
+}  // namespace terrasol

@@ -1,0 +1,45 @@
+#pragma once
+// The player's settings, kept in a JSON file (default ~/.config/terrasol/settings.json) and applied
+// live from the menu. A missing file means the defaults; a malformed one is an error naming the file
+// and the key (never silently replaced: the player's settings are not thrown away).
+
+#include <filesystem>
+#include <string_view>
+#include <vector>
+
+#include "controls.h"
+#include "scene/scene_file.h"
+
+namespace terrasol {
+
+struct PackChoice {
+  std::filesystem::path path;
+  bool enabled = true;
+  friend bool operator==(const PackChoice&, const PackChoice&) = default;
+};
+
+struct GameSettings {
+  int viewDistance = 6;             // chunks, 2..32
+  float fov = 70.0f;                // degrees, 30..110
+  float mouseSensitivity = 0.15f;   // degrees per pixel, 0.01..2
+  float sunPathRotation = -25.0f;   // degrees, -90..90
+  SceneShadow shadow = defaultShadow();
+  std::vector<PackChoice> packs;    // stacked bottom to top over the default pack
+  KeyBindings keys;
+  bool vsync = true;
+
+  static SceneShadow defaultShadow() {
+    SceneShadow s;
+    s.resolution = 1024;  // a 1024^2 map over 96 blocks, warped: sharp near, cheap on llvmpipe
+    s.distance = 96.0f;
+    return s;
+  }
+};
+
+GameSettings parseSettings(std::string_view json, const std::filesystem::path& file);
+// The defaults when the file does not exist; throws Error when it is malformed.
+GameSettings loadSettings(const std::filesystem::path& file);
+void saveSettings(const std::filesystem::path& file, const GameSettings& settings);
+std::filesystem::path defaultSettingsFile();
+
+}  // namespace terrasol

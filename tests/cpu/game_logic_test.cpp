@@ -1,0 +1,433 @@
+// The game's plain-C++ parts: player physics against Minecraft's numbers, block picking, controls,
+// input scripts, settings files, and a world that saves and reopens with its edits and their light.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <thread>
+
+#include "controls.h"
+#include "core/error.h"
+#include "game_world.h"
+#include "input_script.h"
+#include "player.h"
+#include "settings.h"
+#include "support/world_support.h"
+#include "targeting.h"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+namespace terrasol {
+namespace {
+
+using testing::defaultBlocks;
+using testing::scratchDir;
+
+// Loaded chunks around the origin: stone up to y = 63 (the floor's top face at y = 64).
+World flatWorld(int radius = 3) {
+  World world(defaultBlocks());
+  const BlockId stone = defaultBlocks().id("stone");
+  for (int cz = -radius; cz <= radius; ++cz)
+    for (int cx = -radius; cx <= radius; ++cx) {
+      auto chunk = std::make_unique<Chunk>(ChunkPos{cx, cz});
+      for (int z = 0; z < 16; ++z)
+        for (int x = 0; x < 16; ++x)
+          for (int y = 0; y < 64; ++y) chunk->set(x, y, z, stone);
+      world.insertChunk(std::move(chunk));
+    }
+  return world;
+}
+
+void runTicks(Player& p, const World& w, const MoveInput& in, int ticks) {
+  for (int i = 0; i < ticks; ++i) p.tick(w, in);
+}
+
+TEST(PlayerTest, StandsOnTheFloorAndJumpsMinecraftsHeight) {
+  const World world = flatWorld();
+  Player p({0.5, 70.0, 0.5});
+  runTicks(p, world, {}, 60);
+  EXPECT_TRUE(p.onGround());
+  EXPECT_NEAR(p.position().y, 64.0, 1e-6);
+  MoveInput jump;
+  jump.jump = true;
+  p.tick(world, jump);
+  double top = 0.0;
+  for (int i = 0; i < 30; ++i) {
+    p.tick(world, {});
+    top = std::max(top, p.position().y - 64.0);
+  }
+  EXPECT_NEAR(top, 1.2522, 0.01);  // Minecraft's jump apex
+  EXPECT_TRUE(p.onGround());
+}
+
+TEST(PlayerTest, WalksSprintsSneaksAndFliesAtMinecraftsSpeeds) {
+  const World world = flatWorld(7);
+  const auto speed = [&](MoveInput in, bool fly) {
+    Player p({0.5, fly ? 80.0 : 64.0, 0.5});
+    p.flying = fly;
+    runTicks(p, world, {}, 5);
+    runTicks(p, world, in, 100);  // reach steady speed
+    const double z0 = p.position().z;
+    runTicks(p, world, in, 20);
+    return (p.position().z - z0);  // blocks in one second (yaw 0 looks +z)
+  };
+  MoveInput walk;
+  walk.forward = 1.0f;
+  EXPECT_NEAR(speed(walk, false), 4.317, 0.02);
+  MoveInput sprint = walk;
+  sprint.sprint = true;
+  EXPECT_NEAR(speed(sprint, false), 5.612, 0.02);
+  MoveInput sneak = walk;
+  sneak.sneak = true;
+  EXPECT_NEAR(speed(sneak, false), 1.295, 0.02);
+  EXPECT_NEAR(speed(walk, true), 10.89, 0.05);
+  EXPECT_NEAR(speed(sprint, true), 21.78, 0.1);
+}
+
+TEST(PlayerTest, FallsAtTerminalSpeedWithoutTunnelling) {
+  const World world = flatWorld();
+  Player p({0.5, 300.0, 0.5});
+  double fastest = 0.0;
+  for (int i = 0; i < 400 && !p.onGround(); ++i) {
+    p.tick(world, {});
+    fastest = std::max(fastest, -p.velocity().y);
+    ASSERT_GE(p.position().y, 64.0 - 1e-9) << "fell into the floor at tick " << i;
+  }
+  EXPECT_TRUE(p.onGround());
+  EXPECT_NEAR(p.position().y, 64.0, 1e-6);
+  // Minecraft's fall: v(n) = 3.92 (1 - 0.98^n) blocks a tick, never above 78.4 blocks/s; 236 blocks
+  // take 101 ticks, reaching 68 blocks/s.
+  EXPECT_GT(fastest, 66.0);
+  EXPECT_LT(fastest, 78.4);
+}
+
+TEST(PlayerTest, NoSpeedGoesThroughAOneBlockWall) {
+  World world = flatWorld();
+  for (int y = 64; y < 70; ++y)
+    for (int x = -8; x < 8; ++x) world.setBlock({x, y, 5}, defaultBlocks().id("glass"));
+  for (const double speed : {200.0, 600.0, 1e6}) {  // 10 blocks a tick and more: the wall is 4.2 away
+    Player p({0.5, 64.0, 0.5});
+    p.push({0.0, 0.0, speed});
+    p.tick(world, {});
+    EXPECT_NEAR(p.box().max.z, 5.0, 1e-6) << speed << " blocks/s";
+  }
+}
+
+TEST(PlayerTest, AThinWallStopsAnyHorizontalSpeed) {
+  World world = flatWorld();
+  for (int y = 64; y < 70; ++y)
+    for (int x = -8; x < 8; ++x) world.setBlock({x, y, 5}, defaultBlocks().id("glass"));
+  Player p({0.5, 64.0, 0.5});
+  p.flying = true;
+  MoveInput fast;
+  fast.forward = 1.0f;
+  fast.sprint = true;
+  runTicks(p, world, fast, 100);
+  EXPECT_NEAR(p.box().max.z, 5.0, 1e-6);  // touching the wall, not through it
+}
+
+TEST(PlayerTest, WallsOneBlockHighAreNotSteppedOnto) {
+  World world = flatWorld();
+  for (int x = -8; x < 8; ++x) world.setBlock({x, 64, 3}, defaultBlocks().id("stone"));
+  Player p({0.5, 64.0, 0.5});
+  MoveInput walk;
+  walk.forward = 1.0f;
+  runTicks(p, world, walk, 40);
+  EXPECT_NEAR(p.position().y, 64.0, 1e-6);
+  EXPECT_NEAR(p.box().max.z, 3.0, 1e-6);
+  MoveInput walkJump = walk;
+  walkJump.jump = true;
+  runTicks(p, world, walkJump, 8);
+  runTicks(p, world, {}, 20);
+  EXPECT_NEAR(p.position().y, 65.0, 1e-6) << "jumping gets on top";
+}
+
+TEST(PlayerTest, SneakingStopsAtTheEdge) {
+  World world = flatWorld();
+  for (int y = 60; y < 64; ++y)
+    for (int x = -8; x < 8; ++x) world.setBlock({x, y, 3}, kAir);  // a trench at z = 3
+  Player p({0.5, 64.0, 0.5});
+  MoveInput sneak;
+  sneak.forward = 1.0f;
+  sneak.sneak = true;
+  runTicks(p, world, {}, 5);
+  runTicks(p, world, sneak, 100);
+  EXPECT_NEAR(p.position().y, 64.0, 1e-6);
+  EXPECT_LE(p.box().min.z, 3.0) << "still over the edge's block";
+  MoveInput walk;
+  walk.forward = 1.0f;
+  runTicks(p, world, walk, 40);
+  EXPECT_LT(p.position().y, 64.0) << "walking falls in";
+}
+
+TEST(PlayerTest, WaterSlowsWalking) {
+  World world = flatWorld();
+  for (int y = 64; y < 66; ++y)
+    for (int z = -8; z < 40; ++z)
+      for (int x = -8; x < 8; ++x) world.setBlock({x, y, z}, defaultBlocks().id("water"));
+  Player p({0.5, 64.0, 0.5});
+  MoveInput walk;
+  walk.forward = 1.0f;
+  runTicks(p, world, walk, 20);
+  const double z0 = p.position().z;
+  runTicks(p, world, walk, 20);
+  EXPECT_TRUE(p.inWater());
+  EXPECT_LT(p.position().z - z0, 4.317 * 0.5);
+  EXPECT_GT(p.position().z - z0, 0.5);
+}
+
+TEST(PlayerTest, FlyingEndsOnLandingAndUnloadedGroundHoldsStill) {
+  const World world = flatWorld(1);
+  Player p({0.5, 66.0, 0.5});
+  p.flying = true;
+  MoveInput down;
+  down.sneak = true;
+  runTicks(p, world, down, 40);
+  EXPECT_FALSE(p.flying);
+  EXPECT_NEAR(p.position().y, 64.0, 1e-6);
+  Player far({1000.5, 100.0, 1000.5});
+  runTicks(far, world, {}, 20);
+  EXPECT_EQ(far.position(), glm::dvec3(1000.5, 100.0, 1000.5));
+}
+
+TEST(PlayerTest, SlowFramesRunAtMostTenTicks) {
+  double acc = 0.0;
+  EXPECT_EQ(Player::ticksFor(acc, 0.049), 0);
+  EXPECT_EQ(Player::ticksFor(acc, 0.002), 1);
+  EXPECT_EQ(Player::ticksFor(acc, 5.0), 10);
+  EXPECT_EQ(acc, 0.0);
+  EXPECT_EQ(Player::ticksFor(acc, -1.0), 0);
+}
+
+TEST(PlayerTest, LookClampsPitchAndFacesMinecraftsWay) {
+  Player p;
+  p.look(0.0f, 500.0f);
+  EXPECT_EQ(p.pitch, 90.0f);
+  EXPECT_NEAR(p.forward().y, -1.0, 1e-9);
+  p.pitch = 0.0f;
+  p.yaw = 90.0f;
+  EXPECT_NEAR(p.forward().x, -1.0, 1e-9);  // yaw 90 faces west
+}
+
+TEST(TargetingTest, PicksTheFirstBlockAndTheFaceWithinReach) {
+  World world = flatWorld();
+  const auto hit = targetBlock(world, {0.5, 65.62, 0.5}, {0.0, -1.0, 0.0});
+  ASSERT_TRUE(hit);
+  EXPECT_EQ(hit->block, (BlockPos{0, 63, 0}));
+  EXPECT_EQ(hit->normal, glm::ivec3(0, 1, 0));
+  EXPECT_EQ(hit->place, (BlockPos{0, 64, 0}));
+  EXPECT_FALSE(targetBlock(world, {0.5, 70.0, 0.5}, {0.0, -1.0, 0.0})) << "6 blocks is out of reach";
+  world.setBlock({0, 64, 0}, defaultBlocks().id("water"));
+  const auto throughWater = targetBlock(world, {0.5, 65.62, 0.5}, {0.0, -1.0, 0.0});
+  ASSERT_TRUE(throughWater);
+  EXPECT_EQ(throughWater->block, (BlockPos{0, 63, 0})) << "water is not targeted";
+  EXPECT_FALSE(targetBlock(world, {0.5, 65.62, 0.5}, {0.0, 0.0, 0.0})) << "no direction, no target";
+}
+
+TEST(ControlsTest, PressesCountOnceAndHoldsCarryOver) {
+  KeyBindings keys;
+  Controls c(keys);
+  c.key(GLFW_KEY_W, true);
+  c.key(GLFW_KEY_W, true);  // key repeat
+  FrameInput a = c.take();
+  EXPECT_TRUE(a.isHeld(Action::Forward));
+  EXPECT_TRUE(a.wasPressed(Action::Forward));
+  FrameInput b = c.take();
+  EXPECT_TRUE(b.isHeld(Action::Forward));
+  EXPECT_FALSE(b.wasPressed(Action::Forward));
+  keys.bind(Action::Jump, GLFW_KEY_W);  // rebound: one key, two actions
+  c.key(GLFW_KEY_W, false);
+  c.key(GLFW_KEY_W, true);
+  FrameInput d = c.take();
+  EXPECT_TRUE(d.wasPressed(Action::Jump));
+  EXPECT_TRUE(d.wasPressed(Action::Forward));
+  c.key(kEscapeKey, true);
+  EXPECT_TRUE(c.take().menuPressed);
+}
+
+TEST(ControlsTest, KeyNamesRoundTrip) {
+  for (int key : {GLFW_KEY_W, GLFW_KEY_1, GLFW_KEY_F3, GLFW_KEY_F12, GLFW_KEY_SPACE, GLFW_KEY_LEFT_SHIFT}) {
+    EXPECT_EQ(keyNamed(keyName(key)), key) << keyName(key);
+  }
+  EXPECT_FALSE(keyNamed("HYPER"));
+  EXPECT_FALSE(keyNamed("F99"));
+  for (std::size_t i = 0; i < kActionCount; ++i) {
+    EXPECT_EQ(actionNamed(actionName(static_cast<Action>(i))), static_cast<Action>(i));
+  }
+}
+
+TEST(InputScriptTest, ParsesSortsAndPlaysInTimeOrder) {
+  const InputScript script = parseInputScript(R"({ "step": 0.05, "events": [
+      { "t": 1.0, "key": "W", "down": false },
+      { "t": 0.0, "key": "W", "down": true },
+      { "t": 0.5, "button": "left" },
+      { "t": 0.5, "look": [90, 45] },
+      { "t": 2.0, "command": "quit" } ] })", "s.json");
+  ASSERT_EQ(script.events.size(), 5u);
+  EXPECT_NEAR(script.step, 0.05, 1e-6);
+  ScriptPlayer player(script);
+  EXPECT_EQ(player.due(0.0).size(), 1u);
+  const auto half = player.due(0.5);
+  ASSERT_EQ(half.size(), 2u);
+  EXPECT_EQ(half[0].kind, ScriptEvent::Kind::Button);  // file order among equal times
+  EXPECT_FALSE(half[0].down);
+  EXPECT_EQ(half[1].value, glm::dvec2(90, 45));
+  EXPECT_EQ(player.due(1.9).size(), 1u);
+  EXPECT_FALSE(player.finished());
+  EXPECT_EQ(player.due(2.0)[0].command, "quit");
+  EXPECT_TRUE(player.finished());
+}
+
+TEST(InputScriptTest, BadScriptsNameTheFileAndTheEvent) {
+  const auto error = [](const std::string& text) {
+    try {
+      parseInputScript(text, "script.json");
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_NE(error(R"({"events": [{"t": 0, "key": "HYPER"}]})").find("script.json: events[0].key: unknown key"), std::string::npos);
+  EXPECT_NE(error(R"({"events": [{"key": "W"}]})").find("events[0]: missing \"t\""), std::string::npos);
+  EXPECT_NE(error(R"({"events": [{"t": 0, "key": "W", "button": "left"}]})").find("exactly one of"), std::string::npos);
+  EXPECT_NE(error(R"({"events": [{"t": 0, "look": [0, 91]}]})").find("events[0].look[1]"), std::string::npos);
+  EXPECT_NE(error(R"({"events": [{"t": 0, "command": "dance"}]})").find("events[0].command"), std::string::npos);
+  EXPECT_NE(error(R"({"events": [{"t": 0, "scroll": 1, "down": true}]})").find("events[0].down"), std::string::npos);
+  EXPECT_NE(error(R"({"events": [)").find("script.json:1:"), std::string::npos);
+  EXPECT_NE(error(R"({"step": 0})").find("step"), std::string::npos);
+}
+
+TEST(SettingsTest, SaveAndLoadRoundTripAndMissingMeansDefaults) {
+  const auto dir = scratchDir("settings");
+  const auto file = dir / "sub" / "settings.json";
+  std::filesystem::remove_all(dir / "sub");
+  const GameSettings defaults = loadSettings(file);
+  EXPECT_EQ(defaults.viewDistance, 6);
+  GameSettings s;
+  s.viewDistance = 12;
+  s.fov = 90.0f;
+  s.shadow.mode = "cascaded";
+  s.shadow.pcfSamples = 3;
+  s.packs = {{dir / "packs" / "a", true}, {dir / "packs" / "b", false}};
+  s.keys.bind(Action::Jump, GLFW_KEY_J);
+  saveSettings(file, s);
+  const GameSettings back = loadSettings(file);
+  EXPECT_EQ(back.viewDistance, 12);
+  EXPECT_EQ(back.fov, 90.0f);
+  EXPECT_EQ(back.shadow.mode, "cascaded");
+  EXPECT_EQ(back.shadow.pcfSamples, 3);
+  EXPECT_EQ(back.packs, s.packs);
+  EXPECT_EQ(back.keys.key(Action::Jump), GLFW_KEY_J);
+  EXPECT_EQ(back.keys.key(Action::Forward), GLFW_KEY_W);
+}
+
+TEST(SettingsTest, MalformedSettingsNameTheKey) {
+  const auto error = [](const std::string& text) {
+    try {
+      parseSettings(text, "settings.json");
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_NE(error(R"({"view_distance": 99})").find("settings.json: view_distance"), std::string::npos);
+  EXPECT_NE(error(R"({"shadow": {"mode": "fancy"}})").find("shadow.mode"), std::string::npos);
+  EXPECT_NE(error(R"({"keys": {"jump": "HYPER"}})").find("keys.jump: unknown key"), std::string::npos);
+  EXPECT_NE(error(R"({"keys": {"fly": "F"}})").find("keys.fly: unknown action"), std::string::npos);
+  EXPECT_NE(error(R"({"keys": {"jump": "ESCAPE"}})").find("keys.jump"), std::string::npos);
+  EXPECT_NE(error(R"({"packs": [{"enabled": true}]})").find("packs[0]"), std::string::npos);
+  EXPECT_NE(error(R"({"fov": )").find("settings.json:1:"), std::string::npos);
+}
+
+// Streams until the chunks around the origin are in and meshed.
+void settle(GameWorld& w) {
+  for (int i = 0; i < 20000; ++i) {
+    w.update({0, 0}, std::chrono::steady_clock::now() + std::chrono::milliseconds(50));
+    const WorldCounts c = w.counts();
+    if (c.pending == 0 && c.meshDirty == 0 && c.meshInFlight == 0 && c.loaded > 0) return;
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  FAIL() << "the world never settled";
+}
+
+TEST(GameWorldTest, EditsTheirLightTimeAndPlayerSurviveSavingAndReopening) {
+  const auto dir = scratchDir("game_world");
+  std::filesystem::remove_all(dir);
+  const BlockMeshTable table(defaultBlocks(), [](BlockId, int) { return std::uint16_t(0); });
+  const BlockId torch = defaultBlocks().id("torch");
+  BlockPos broken, placed;
+  std::vector<std::uint8_t> lightBefore;
+  const auto lightAround = [](const GameWorld& w, BlockPos at) {
+    std::vector<std::uint8_t> out;
+    for (int dz = -3; dz <= 3; ++dz)
+      for (int dy = -3; dy <= 3; ++dy)
+        for (int dx = -3; dx <= 3; ++dx) out.push_back(w.light().lightAt(at.offset(dx, dy, dz), LightChannel::Block));
+    return out;
+  };
+  {
+    GameWorld w(dir, 42, defaultBlocks(), table, 2, 2);
+    EXPECT_TRUE(w.isNew());
+    settle(w);
+    const auto y = w.surfaceY(3, 3);
+    ASSERT_TRUE(y);
+    broken = {3, *y, 3};
+    placed = {5, *y + 1, 3};
+    ASSERT_TRUE(w.setBlock(broken, kAir));
+    w.setBlock(placed, kAir);
+    ASSERT_TRUE(w.setBlock(placed, torch));
+    EXPECT_EQ(w.light().lightAt(placed, LightChannel::Block), 14);
+    lightBefore = lightAround(w, placed);
+    w.level().time = 12345;
+    w.level().playerPosition = {1.5, 90.0, 2.5};
+    w.level().playerYaw = 33.0f;
+    w.save();
+  }
+  GameWorld w(dir, 7, defaultBlocks(), table, 2, 2);
+  EXPECT_FALSE(w.isNew());
+  EXPECT_EQ(w.level().seed, 42u) << "an existing world keeps its seed";
+  EXPECT_EQ(w.level().time, 12345);
+  EXPECT_EQ(w.level().playerPosition, glm::dvec3(1.5, 90.0, 2.5));
+  EXPECT_EQ(w.level().playerYaw, 33.0f);
+  settle(w);
+  EXPECT_EQ(w.world().getBlock(broken), kAir);
+  EXPECT_EQ(w.world().getBlock(placed), torch);
+  EXPECT_EQ(w.light().lightAt(placed, LightChannel::Block), 14);
+  EXPECT_EQ(lightAround(w, placed), lightBefore);
+}
+
+TEST(GameWorldTest, MeshesOnlyChunksWithAllNeighboursAndDropsThemWhenTheyLeave) {
+  const auto dir = scratchDir("game_world_stream");
+  std::filesystem::remove_all(dir);
+  const BlockMeshTable table(defaultBlocks(), [](BlockId, int) { return std::uint16_t(0); });
+  GameWorld w(dir, 1, defaultBlocks(), table, 2, 2);
+  settle(w);
+  EXPECT_EQ(w.counts().loaded, 49u);    // view distance 2 + 1 ring: 7 x 7
+  EXPECT_EQ(w.counts().meshable, 25u);  // the inner 5 x 5
+  w.setViewDistance(0);  // loads 1 ring, unloads beyond 2
+  std::vector<SectionMesh> out = w.update({0, 0}, std::chrono::steady_clock::now());
+  EXPECT_EQ(w.counts().loaded, 25u);
+  EXPECT_EQ(w.counts().meshable, 9u);
+  std::size_t removed = 0;
+  for (const SectionMesh& m : out) removed += m.empty() && (std::abs(m.pos.x) == 2 || std::abs(m.pos.z) == 2);
+  EXPECT_EQ(removed, 16u * kSectionCount);
+}
+
+TEST(GameWorldTest, AMalformedLevelFileIsAClearErrorAndIsNotOverwritten) {
+  const auto dir = scratchDir("game_world_bad");
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  { std::ofstream(dir / "level.json") << "{ \"seed\": "; }
+  const BlockMeshTable table(defaultBlocks(), [](BlockId, int) { return std::uint16_t(0); });
+  try {
+    GameWorld w(dir, 1, defaultBlocks(), table, 2, 1);
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("level.json"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(readTextFile(dir / "level.json"), "{ \"seed\": ");
+}
+
+}  // namespace
+}  // namespace terrasol
