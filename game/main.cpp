@@ -1,45 +1,25 @@
-// terrasol: the game. For now it flies over the generated world (demo.h) in a window; with no display
-// it says so and renders a few frames of that flight headless instead.
+// terrasol: the game. Opens (or creates) a world and plays it in a window; with no display it says so
+// and renders a few frames of a flight over the generated world headless instead.
 
 #include <cstdio>
 #include <exception>
 
 #include "core/log.h"
-#include "core/paths.h"
 #include "demo.h"
+#include "game.h"
 #include "options.h"
 #include "platform/glfw/glfw_window.h"
-#include "render/gl/render_target.h"
-#include "scene_render.h"
 
 namespace terrasol {
 namespace {
 
-int runWindowed(GlfwWindow& window, const GameOptions& options) {
-  logInfo("OpenGL: " + window.description());
-  SceneRenderer scene(demoScene(window.framebufferSize()));
-  for (int frame = 0; !window.shouldClose(); ++frame) {
-    window.pollEvents();
-    // A fixed step when the frame count is fixed, so smoke-test screenshots are reproducible.
-    const double seconds = options.frames ? frame * kFixedStep : window.time();
-    scene.draw(demoFrame(seconds), 0, window.framebufferSize());
-    window.checkErrors("frame");
-    const bool last = options.frames && frame + 1 >= *options.frames;
-    if (last && !options.screenshot.empty()) {
-      saveImage(options.screenshot, readFramebuffer(0, window.framebufferSize()));
-      logInfo("screenshot saved to " + options.screenshot.string());
-    }
-    window.swapBuffers();
-    if (last) break;
-  }
-  return 0;
-}
-
 int run(const GameOptions& options) {
   try {
     GlfwWindow window("Terrasol", options.size);
-    return runWindowed(window, options);
+    logInfo("OpenGL: " + window.description());
+    return playGame(window, options);
   } catch (const NoDisplayError& e) {
+    if (options.benchmark || !options.inputScript.empty()) throw;  // these need the real game
     constexpr int kDemoFrames = 8;
     std::printf("terrasol: %s.\nNo window can be opened here, so rendering a %d-frame demo headless instead...\n",
                 e.what(), kDemoFrames);

@@ -1,6 +1,7 @@
 #include "options.h"
 
 #include <charconv>
+#include <cstdlib>
 
 #include "core/error.h"
 #include "core/paths.h"
@@ -23,10 +24,53 @@ glm::ivec2 parseSize(const std::string& option, const std::string& text) {
   return {parseInt(option, text.substr(0, x), 1), parseInt(option, text.substr(x + 1), 1)};
 }
 
+std::uint64_t parseSeed(const std::string& option, const std::string& text) {
+  std::uint64_t value = 0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (ec != std::errc() || end != text.data() + text.size()) {
+    throw Error(option + ": expected a whole number from 0 to 18446744073709551615, got '" + text + "'");
+  }
+  return value;
+}
+
+BlockPos parseBlock(const std::string& option, const std::string& text) {
+  int v[3] = {0, 0, 0};
+  const char* p = text.data();
+  const char* end = text.data() + text.size();
+  for (int i = 0; i < 3; ++i) {
+    const auto [next, ec] = std::from_chars(p, end, v[i]);
+    const bool last = i == 2;
+    if (ec != std::errc() || (last ? next != end : (next == end || *next != ','))) {
+      throw Error(option + ": expected X,Y,Z in whole blocks, got '" + text + "'");
+    }
+    p = next + 1;
+  }
+  return {v[0], v[1], v[2]};
+}
+
+double parseSeconds(const std::string& option, const std::string& text) {
+  char* end = nullptr;
+  const double v = std::strtod(text.c_str(), &end);
+  if (text.empty() || *end != '\0' || !(v > 0.0) || v > 3600.0) {
+    throw Error(option + ": expected seconds from 0 to 3600, got '" + text + "'");
+  }
+  return v;
+}
+
 }  // namespace
 
 std::string gameUsage() {
   return "usage: terrasol [options]\n"
+         "  --world DIR       the world to open, created when missing (default: worlds/world)\n"
+         "  --seed N          a new world's seed (default: from the clock)\n"
+         "  --pack PATH       a resource pack (folder or .zip) over the default one; repeat to stack,\n"
+         "                    last on top (this run; the menu's list is saved in the settings)\n"
+         "  --settings FILE   the settings file (default: ~/.config/terrasol/settings.json)\n"
+         "  --input-script F  replay timed key and mouse events from JSON (see game/input_script.h)\n"
+         "  --benchmark [S]   fly a fixed path for S seconds (default 20) at the current settings and\n"
+         "                    print frames per second (median and 1% low); nothing is saved\n"
+         "  --report FILE     write the player, the edits and the probes as JSON at exit\n"
+         "  --probe X,Y,Z     a block whose id and light go into the report (repeatable)\n"
          "  --frames N        quit after N frames (for smoke tests)\n"
          "  --size WxH        window size in pixels (default 1280x720)\n"
          "  --screenshot FILE save the last frame as an image (with --frames)\n"
@@ -38,6 +82,7 @@ std::string gameUsage() {
 GameOptions parseGameOptions(const std::vector<std::string>& args) {
   GameOptions options;
   options.demoDir = executableDir() / "demo";
+  options.world = "worlds/world";
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& arg = args[i];
     auto value = [&]() -> const std::string& {
@@ -46,6 +91,23 @@ GameOptions parseGameOptions(const std::vector<std::string>& args) {
     };
     if (arg == "--help" || arg == "-h") {
       options.help = true;
+    } else if (arg == "--world") {
+      options.world = value();
+    } else if (arg == "--seed") {
+      options.seed = parseSeed(arg, value());
+    } else if (arg == "--pack") {
+      options.packs.emplace_back(value());
+    } else if (arg == "--settings") {
+      options.settings = value();
+    } else if (arg == "--input-script") {
+      options.inputScript = value();
+    } else if (arg == "--benchmark") {
+      const bool hasValue = i + 1 < args.size() && !args[i + 1].starts_with("--");
+      options.benchmark = hasValue ? parseSeconds(arg, value()) : 20.0;
+    } else if (arg == "--report") {
+      options.report = value();
+    } else if (arg == "--probe") {
+      options.probes.push_back(parseBlock(arg, value()));
     } else if (arg == "--frames") {
       options.frames = parseInt(arg, value(), 1);
     } else if (arg == "--size") {

@@ -1,6 +1,7 @@
 #pragma once
 // Command line of the `terrasol` executable.
 
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -8,10 +9,20 @@
 
 #include <glm/vec2.hpp>
 
+#include "world/coords.h"
+
 namespace terrasol {
 
 struct GameOptions {
+  std::filesystem::path world;               // the save directory (created when missing)
+  std::optional<std::uint64_t> seed;         // a new world's seed (default: from the clock)
+  std::vector<std::filesystem::path> packs;  // stacked over the default pack, bottom first (this run)
+  std::filesystem::path settings;            // the settings file
   std::optional<int> frames;                 // quit after this many frames (smoke tests)
+  std::filesystem::path inputScript;         // replay these events (a fixed time step)
+  std::optional<double> benchmark;           // seconds of the fixed benchmark flight
+  std::filesystem::path report;              // JSON at exit: player, edits, probes
+  std::vector<BlockPos> probes;              // blocks whose block and light go into the report
   glm::ivec2 size{1280, 720};                // window size
   std::filesystem::path demoDir;             // where the headless demo goes when there is no display
   std::filesystem::path screenshot;          // with --frames: the last frame is saved here

@@ -16,6 +16,8 @@ packages=(
   libzstd-dev libxxhash-dev
   # resource packs shipped as .zip
   libzip-dev
+  # the HUD, debug overlay and menus (Dear ImGui with its GLFW and OpenGL 3 backends)
+  libimgui-dev
   # tests and benchmarks
   libgtest-dev libgmock-dev libbenchmark-dev
   # a virtual display for windowed smoke tests

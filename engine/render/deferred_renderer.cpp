@@ -59,6 +59,7 @@ DeferredRenderer::DeferredRenderer(const ShaderPreprocessor& shaders, const Atla
                                                 : gl::Program()),
       final_(build(shaders, "fullscreen.vert", "final.frag")),
       debug_(build(shaders, "fullscreen.vert", "debug_view.frag")),
+      outline_(build(shaders, "outline.vert", "outline.frag")),
       textures_(atlas, tints),
       lightmap_(gl::Texture::create(GL_TEXTURE_2D)),
       empty_(gl::VertexArray::create()),
@@ -123,18 +124,22 @@ void DeferredRenderer::render(const FrameInputs& frame, const SectionMeshes& mes
     for (const char* pass : {"lighting", "translucent", "final"}) {
       stats_.passesSkipped.push_back({pass, "a debug view shows the G-buffer instead"});
     }
-    return;
-  }
-  lightingPass(view);
-  clock.lap("lighting");
-  if (visibleQuads(MeshLayer::Translucent) > 0) {
-    translucentPass(view, meshes);
-    clock.lap("translucent");
   } else {
-    stats_.passesSkipped.push_back({"translucent", "no translucent geometry in view"});
+    lightingPass(view);
+    clock.lap("lighting");
+    if (visibleQuads(MeshLayer::Translucent) > 0) {
+      translucentPass(view, meshes);
+      clock.lap("translucent");
+    } else {
+      stats_.passesSkipped.push_back({"translucent", "no translucent geometry in view"});
+    }
+    finalPass(framebuffer, size);
+    clock.lap("final");
   }
-  finalPass(framebuffer, size);
-  clock.lap("final");
+  if (frame.outline) {
+    outlinePass(view, *frame.outline, framebuffer, size);
+    clock.lap("outline");
+  }
 }
 
 void DeferredRenderer::geometryPass(const View& view, const SectionMeshes& meshes) {
@@ -284,6 +289,26 @@ void DeferredRenderer::finalPass(GLuint framebuffer, glm::ivec2 size) {
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glBindVertexArray(0);
   glUseProgram(0);
+}
+
+void DeferredRenderer::outlinePass(const View& view, const WorldBox& box, GLuint framebuffer, glm::ivec2 size) {
+  constexpr double kGrow = 0.002;  // Minecraft's: keeps the edges off the block's faces
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+  glViewport(0, 0, size.x, size.y);
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_CULL_FACE);
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+  glBindTextureUnit(0, gbuffer_->depth());
+  gl::setVec3(outline_.id(), "u_min", glm::vec3(box.min - kGrow - view.camera));
+  gl::setVec3(outline_.id(), "u_max", glm::vec3(box.max + kGrow - view.camera));
+  gl::setMat4(outline_.id(), "u_viewProjection", view.viewProjection);
+  glUseProgram(outline_.id());
+  glBindVertexArray(empty_.id());
+  glDrawArrays(GL_LINES, 0, 24);
+  glBindVertexArray(0);
+  glUseProgram(0);
+  glDisable(GL_BLEND);
 }
 
 void DeferredRenderer::debugPass(const View& view, GLuint framebuffer, glm::ivec2 size) {

@@ -30,6 +30,11 @@ enum class DebugView { None, Albedo, Normal, VertexNormal, Specular, Lightmap, D
 inline constexpr const char* kDebugViewNames[] = {"none",     "albedo", "normal", "vertex_normal", "specular",
                                                   "lightmap", "depth",  "ao",     "emission"};
 
+// A box in world coordinates (blocks).
+struct WorldBox {
+  glm::dvec3 min{0.0}, max{0.0};
+};
+
 struct FrameInputs {
   glm::dvec3 cameraPosition{0.0};
   glm::dvec3 cameraLookAt{0.0, 0.0, -1.0};
@@ -43,6 +48,8 @@ struct FrameInputs {
   // Moves the shadow map's centre as if the camera had moved, keeping the view: the flicker
   // measurement compares the same pixels (the same world points) under two map placements.
   glm::dvec3 shadowCentreOffset{0.0};
+  // The targeted block: its edges are drawn over the image where nothing nearer hides them.
+  std::optional<WorldBox> outline;
 };
 
 // Choices that pick shader variants, fixed for the renderer's life.
@@ -99,6 +106,7 @@ class DeferredRenderer {
   void translucentPass(const View& view, const SectionMeshes& meshes);
   void finalPass(GLuint framebuffer, glm::ivec2 size);
   void debugPass(const View& view, GLuint framebuffer, glm::ivec2 size);
+  void outlinePass(const View& view, const WorldBox& box, GLuint framebuffer, glm::ivec2 size);
   void drawSections(GLuint program, const std::vector<Visible>& sections, const SectionMeshes& meshes,
                     MeshLayer layer, bool backToFront);
   void shadowPass(const View& view, const SectionMeshes& meshes);
@@ -112,7 +120,7 @@ class DeferredRenderer {
   void setLightingUniforms(GLuint program, const View& view) const;
   void setSkyUniforms(GLuint program, const View& view) const;
 
-  gl::Program geometry_, cutout_, lighting_, translucent_, shadow_, shadowCutout_, shadowTranslucent_, final_, debug_;
+  gl::Program geometry_, cutout_, lighting_, translucent_, shadow_, shadowCutout_, shadowTranslucent_, final_, debug_, outline_;
   BlockTextures textures_;
   gl::Texture lightmap_;
   gl::VertexArray empty_;  // full-screen passes make their vertices from gl_VertexID

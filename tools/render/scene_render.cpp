@@ -25,6 +25,12 @@ PackStack openPacks(const SceneFile& scene) {
   return packs;
 }
 
+double msSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
 ShadowSettings shadowSettingsOf(const SceneShadow& s) {
   ShadowSettings out;
   out.enabled = s.enabled;
@@ -41,12 +47,6 @@ ShadowSettings shadowSettingsOf(const SceneShadow& s) {
   out.shiftAhead = s.shiftAhead;
   return out;
 }
-
-double msSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-}
-
-}  // namespace
 
 DebugView debugViewOf(const SceneFile& scene) {
   for (std::size_t i = 0; i < std::size(kDebugViewNames); ++i) {

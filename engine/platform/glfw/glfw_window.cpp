@@ -62,5 +62,6 @@ void GlfwWindow::pollEvents() { glfwPollEvents(); }
 bool GlfwWindow::shouldClose() const { return glfwWindowShouldClose(window_); }
 void GlfwWindow::requestClose() { glfwSetWindowShouldClose(window_, GLFW_TRUE); }
 double GlfwWindow::time() const { return glfwGetTime(); }
+void GlfwWindow::setVsync(bool on) { glfwSwapInterval(on ? 1 : 0); }
 
 }  // namespace terrasol

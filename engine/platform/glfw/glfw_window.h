@@ -30,6 +30,8 @@ class GlfwWindow final : public GlContext {
   bool shouldClose() const;
   void requestClose();
   double time() const;  // seconds since the window opened
+  void setVsync(bool on);
+  GLFWwindow* handle() const { return window_; }  // for input callbacks and the HUD
 
  private:
   GLFWwindow* window_ = nullptr;

@@ -1,0 +1,71 @@
+#include "game_renderer.h"
+
+#include "core/error.h"
+#include "core/paths.h"
+
+#include <nlohmann/json.hpp>
+#include "scene_render.h"
+
+namespace terrasol {
+namespace {
+
+PackStack openPacks(const std::vector<PackChoice>& packs, std::vector<std::string>& names) {
+  PackStack stack;
+  stack.push(ResourcePack::open(resourcePackDir() / "default"));
+  names.push_back("default");
+  for (const PackChoice& p : packs) {
+    if (!p.enabled) continue;
+    stack.push(ResourcePack::open(p.path));
+    names.push_back(p.path.filename().string());
+  }
+  return stack;
+}
+
+std::unique_ptr<DeferredRenderer> makeRenderer(const BlockAssets& assets, const SceneShadow& shadow) {
+  RendererOptions options;
+  options.shadow = shadowSettingsOf(shadow);
+  return std::make_unique<DeferredRenderer>(ShaderPreprocessor(shaderDir()), assets.atlas.atlas, assets.tints, options);
+}
+
+}  // namespace
+
+std::unique_ptr<BlockAssets> BlockAssets::load(const BlockRegistry& blocks, const std::vector<PackChoice>& packs) {
+  std::vector<std::string> names;
+  const PackStack stack = openPacks(packs, names);
+  return std::make_unique<BlockAssets>(blocks, stack, std::move(names));
+}
+
+BlockAssets::BlockAssets(const BlockRegistry& blocks, const PackStack& stack, std::vector<std::string> names)
+    : atlas(buildBlockAtlas(blocks, stack)),
+      tints(loadTints(stack, atlas.problems)),
+      table(blocks, [this](BlockId id, int face) { return atlas.textureOf(id, face); }),
+      packNames(std::move(names)) {}
+
+GameRenderer::GameRenderer(const BlockRegistry& blocks, const GameSettings& settings)
+    : blocks_(blocks),
+      assets_(BlockAssets::load(blocks, settings.packs)),
+      renderer_(makeRenderer(*assets_, settings.shadow)),
+      shadow_(settings.shadow) {}
+
+std::unique_ptr<BlockAssets> GameRenderer::loadPacks(const std::vector<PackChoice>& packs) const {
+  return BlockAssets::load(blocks_, packs);
+}
+
+void GameRenderer::commit(std::unique_ptr<BlockAssets> assets) {
+  assets_ = std::move(assets);
+  renderer_ = makeRenderer(*assets_, shadow_);
+  meshes_.clear();  // their tiles index the old atlas; the remeshed sections come back
+}
+
+void GameRenderer::applySettings(const GameSettings& settings) {
+  const SceneShadow& s = settings.shadow;
+  if (shadowJson(s) == shadowJson(shadow_)) return;
+  shadow_ = s;
+  renderer_ = makeRenderer(*assets_, shadow_);
+}
+
+void GameRenderer::render(const FrameInputs& frame, glm::ivec2 size, std::vector<PassTiming>* timings) {
+  renderer_->render(frame, meshes_, 0, size, timings);
+}
+
+}  // namespace terrasol

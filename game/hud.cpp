@@ -1,0 +1,252 @@
+#include "hud.h"
+
+#include <algorithm>
+#include <array>
+#include <cstdio>
+#include <span>
+
+#include <imgui.h>
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_opengl3.h>
+
+namespace terrasol {
+namespace {
+
+constexpr ImGuiWindowFlags kOverlayFlags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoInputs |
+                                           ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
+                                           ImGuiWindowFlags_NoNav | ImGuiWindowFlags_AlwaysAutoResize;
+
+// A combo over fixed names; true when the choice changed.
+bool comboOf(const char* label, std::string& value, std::span<const std::string_view> names) {
+  bool changed = false;
+  if (ImGui::BeginCombo(label, value.c_str())) {
+    for (std::string_view n : names) {
+      const bool selected = value == n;
+      if (ImGui::Selectable(std::string(n).c_str(), selected) && !selected) {
+        value = std::string(n);
+        changed = true;
+      }
+    }
+    ImGui::EndCombo();
+  }
+  return changed;
+}
+
+// Sliders apply when let go (a new shadow map per drag step would stall the menu).
+bool released() { return ImGui::IsItemDeactivatedAfterEdit(); }
+
+}  // namespace
+
+Hud::Hud(GLFWwindow* window) {
+  IMGUI_CHECKVERSION();
+  ImGui::CreateContext();
+  ImGuiIO& io = ImGui::GetIO();
+  io.IniFilename = nullptr;  // our settings file holds what matters; no imgui.ini beside the game
+  ImGui::StyleColorsDark();
+  ImGui_ImplGlfw_InitForOpenGL(window, true);
+  ImGui_ImplOpenGL3_Init("#version 450 core");
+}
+
+Hud::~Hud() {
+  ImGui_ImplOpenGL3_Shutdown();
+  ImGui_ImplGlfw_Shutdown();
+  ImGui::DestroyContext();
+}
+
+void Hud::beginFrame() {
+  ImGui_ImplOpenGL3_NewFrame();
+  ImGui_ImplGlfw_NewFrame();
+  ImGui::NewFrame();
+}
+
+void Hud::endFrame() {
+  ImGui::Render();
+  ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+}
+
+void Hud::crosshair() {
+  ImDrawList* draw = ImGui::GetForegroundDrawList();
+  const ImVec2 c(ImGui::GetIO().DisplaySize.x * 0.5f, ImGui::GetIO().DisplaySize.y * 0.5f);
+  const float r = 8.0f;
+  for (const auto& [colour, width] : {std::pair{IM_COL32(0, 0, 0, 160), 4.0f}, std::pair{IM_COL32(255, 255, 255, 230), 2.0f}}) {
+    draw->AddLine({c.x - r, c.y}, {c.x + r, c.y}, colour, width);
+    draw->AddLine({c.x, c.y - r}, {c.x, c.y + r}, colour, width);
+  }
+}
+
+void Hud::hotbar(const std::vector<std::string>& slots, int selected) {
+  ImDrawList* draw = ImGui::GetForegroundDrawList();
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  const float slot = std::clamp(display.x / 14.0f, 24.0f, 64.0f);
+  const float x0 = display.x * 0.5f - slot * 4.5f, y0 = display.y - slot - 4.0f;
+  for (int i = 0; i < static_cast<int>(slots.size()); ++i) {
+    const ImVec2 a(x0 + slot * i, y0), b(a.x + slot, a.y + slot);
+    draw->AddRectFilled(a, b, IM_COL32(0, 0, 0, 110));
+    draw->AddRect(a, b, i == selected ? IM_COL32(255, 255, 255, 255) : IM_COL32(130, 130, 130, 200), 0.0f, 0,
+                  i == selected ? 3.0f : 1.0f);
+    std::string label = slots[static_cast<std::size_t>(i)].substr(0, slot >= 48.0f ? 7 : 4);
+    draw->AddText({a.x + 3.0f, a.y + slot * 0.5f - 7.0f}, IM_COL32(255, 255, 255, 255), label.c_str());
+  }
+  if (selected >= 0 && selected < static_cast<int>(slots.size())) {
+    const std::string& name = slots[static_cast<std::size_t>(selected)];
+    const ImVec2 size = ImGui::CalcTextSize(name.c_str());
+    draw->AddText({display.x * 0.5f - size.x * 0.5f, y0 - size.y - 6.0f}, IM_COL32(255, 255, 255, 255), name.c_str());
+  }
+}
+
+void Hud::overlay(const std::vector<std::string>& left, const std::vector<std::string>& right) {
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  ImGui::SetNextWindowPos({4.0f, 4.0f});
+  ImGui::SetNextWindowBgAlpha(0.45f);
+  if (ImGui::Begin("##debug_left", nullptr, kOverlayFlags)) {
+    for (const std::string& line : left) ImGui::TextUnformatted(line.c_str());
+  }
+  ImGui::End();
+  ImGui::SetNextWindowPos({display.x - 4.0f, 4.0f}, 0, {1.0f, 0.0f});
+  ImGui::SetNextWindowBgAlpha(0.45f);
+  if (ImGui::Begin("##debug_right", nullptr, kOverlayFlags)) {
+    for (const std::string& line : right) ImGui::TextUnformatted(line.c_str());
+  }
+  ImGui::End();
+}
+
+MenuResult Hud::menu(GameSettings& settings, const std::vector<std::string>& loadedPacks) {
+  MenuResult out;
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  ImGui::SetNextWindowPos({display.x * 0.5f, display.y * 0.5f}, ImGuiCond_Always, {0.5f, 0.5f});
+  ImGui::SetNextWindowSize({std::min(display.x - 20.0f, 560.0f), std::min(display.y - 20.0f, 520.0f)}, ImGuiCond_Always);
+  if (ImGui::Begin("Game menu", nullptr, ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings)) {
+    out.resume = ImGui::Button("Back to game");
+    ImGui::SameLine();
+    out.save = ImGui::Button("Save");
+    ImGui::SameLine();
+    out.quit = ImGui::Button("Save and quit");
+    if (ImGui::BeginTabBar("tabs")) {
+      if (ImGui::BeginTabItem("Settings")) {
+        settingsTab(settings, out);
+        ImGui::EndTabItem();
+      }
+      if (ImGui::BeginTabItem("Resource packs")) {
+        packsTab(settings, loadedPacks, out);
+        ImGui::EndTabItem();
+      }
+      if (ImGui::BeginTabItem("Controls")) {
+        keysTab(settings);
+        ImGui::EndTabItem();
+      }
+      ImGui::EndTabBar();
+    }
+  }
+  ImGui::End();
+  out.settingsChanged |= out.viewChanged || out.rendererChanged || out.packsChanged;
+  return out;
+}
+
+void Hud::settingsTab(GameSettings& s, MenuResult& out) {
+  ImGui::SliderInt("View distance (chunks)", &s.viewDistance, 2, 32);
+  out.viewChanged |= released();
+  ImGui::SliderFloat("FOV", &s.fov, 30.0f, 110.0f, "%.0f");
+  out.settingsChanged |= released();
+  ImGui::SliderFloat("Mouse sensitivity", &s.mouseSensitivity, 0.01f, 2.0f, "%.2f deg/px");
+  out.settingsChanged |= released();
+  ImGui::SliderFloat("Sun path rotation", &s.sunPathRotation, -90.0f, 90.0f, "%.0f deg");
+  out.settingsChanged |= released();
+  out.settingsChanged |= ImGui::Checkbox("VSync", &s.vsync);
+  ImGui::Separator();
+  ImGui::TextUnformatted("Shadows");
+  SceneShadow& sh = s.shadow;
+  out.rendererChanged |= ImGui::Checkbox("Shadows", &sh.enabled);
+  out.rendererChanged |= comboOf("Mode", sh.mode, kShadowModes);
+  if (sh.mode == "cascaded") {
+    ImGui::SliderInt("Cascades", &sh.cascades, 2, 4);
+    out.rendererChanged |= released();
+  } else {
+    out.rendererChanged |= comboOf("Warp", sh.warp, kShadowWarps);
+  }
+  static constexpr std::array<int, 5> kResolutions = {512, 1024, 2048, 4096, 8192};
+  const std::string res = std::to_string(sh.resolution);
+  if (ImGui::BeginCombo("Resolution", res.c_str())) {
+    for (int r : kResolutions) {
+      if (ImGui::Selectable(std::to_string(r).c_str(), r == sh.resolution) && r != sh.resolution) {
+        sh.resolution = r;
+        out.rendererChanged = true;
+      }
+    }
+    ImGui::EndCombo();
+  }
+  ImGui::SliderFloat("Distance (blocks)", &sh.distance, 16.0f, 512.0f, "%.0f");
+  out.rendererChanged |= released();
+  ImGui::SliderInt("PCF samples (N: (2N+1)^2 grid or disk)", &sh.pcfSamples, 0, 8);
+  out.rendererChanged |= released();
+  ImGui::SliderFloat("PCF radius", &sh.pcfRadius, 0.0f, 8.0f, "%.1f");
+  out.rendererChanged |= released();
+  out.rendererChanged |= comboOf("PCF pattern", sh.pcfPattern, kPcfPatterns);
+}
+
+void Hud::packsTab(GameSettings& s, const std::vector<std::string>& loadedPacks, MenuResult& out) {
+  ImGui::TextWrapped("Loaded now, bottom to top: ");
+  for (const std::string& name : loadedPacks) {
+    ImGui::SameLine();
+    ImGui::TextUnformatted(name.c_str());
+  }
+  ImGui::TextUnformatted("Top of the list wins. The default pack is always at the bottom.");
+  bool changed = false;
+  // Shown top first, stored bottom first.
+  for (int i = static_cast<int>(s.packs.size()) - 1; i >= 0; --i) {
+    ImGui::PushID(i);
+    PackChoice& p = s.packs[static_cast<std::size_t>(i)];
+    changed |= ImGui::Checkbox("##on", &p.enabled);
+    ImGui::SameLine();
+    if (ImGui::ArrowButton("up", ImGuiDir_Up) && i + 1 < static_cast<int>(s.packs.size())) {
+      std::swap(s.packs[static_cast<std::size_t>(i)], s.packs[static_cast<std::size_t>(i + 1)]);
+      changed = true;
+    }
+    ImGui::SameLine();
+    if (ImGui::ArrowButton("down", ImGuiDir_Down) && i > 0) {
+      std::swap(s.packs[static_cast<std::size_t>(i)], s.packs[static_cast<std::size_t>(i - 1)]);
+      changed = true;
+    }
+    ImGui::SameLine();
+    if (ImGui::SmallButton("remove")) {
+      s.packs.erase(s.packs.begin() + i);
+      changed = true;
+      ImGui::PopID();
+      break;
+    }
+    ImGui::SameLine();
+    ImGui::TextUnformatted(s.packs[static_cast<std::size_t>(std::min<int>(i, static_cast<int>(s.packs.size()) - 1))].path.string().c_str());
+    ImGui::PopID();
+  }
+  char buffer[512];
+  std::snprintf(buffer, sizeof buffer, "%s", newPack_.c_str());
+  if (ImGui::InputText("Pack path (folder or .zip)", buffer, sizeof buffer)) newPack_ = buffer;
+  if (ImGui::Button("Add on top") && !newPack_.empty()) {
+    s.packs.push_back({newPack_, true});
+    newPack_.clear();
+    changed = true;
+  }
+  ImGui::SameLine();
+  out.packsChanged |= ImGui::Button("Reload packs");
+  out.packsChanged |= changed;
+}
+
+void Hud::keysTab(GameSettings& s) {
+  for (std::size_t i = 0; i < kActionCount; ++i) {
+    const auto a = static_cast<Action>(i);
+    ImGui::PushID(static_cast<int>(i));
+    const std::string label = rebinding_ == a ? "> press a key <" : keyName(s.keys.key(a));
+    if (ImGui::Button(label.c_str(), {140.0f, 0.0f})) rebinding_ = a;
+    ImGui::SameLine();
+    ImGui::TextUnformatted(std::string(actionName(a)).c_str());
+    ImGui::PopID();
+  }
+}
+
+bool Hud::takeKey(int key, GameSettings& settings) {
+  if (!rebinding_) return false;
+  if (key != kEscapeKey) settings.keys.bind(*rebinding_, key);
+  rebinding_.reset();
+  return true;
+}
+
+}  // namespace terrasol
