@@ -108,6 +108,7 @@ class Game {
   std::vector<std::string> overlayLeft() const;
   std::vector<std::string> overlayRight() const;
   glm::dvec3 benchmarkEye(double t) const;
+  bool worldReady() const;
   int runBenchmark();
 
   GlfwWindow& window_;
@@ -141,6 +142,8 @@ class Game {
   std::vector<PassTiming> timings_;
   std::vector<double> frameTimes_;  // seconds, the last second's
   bool screenshotRequested_ = false;
+  bool scriptStarted_ = false;
+  double scriptClock_ = 0.0;  // script time: starts when the world is ready
   std::string glRenderer_;
 };
 
@@ -341,7 +344,8 @@ void Game::useBlocks(const FrameInput& in, double dt) {
   const bool placeNow = in.wasPressed(MouseButton::Right) || (in.isHeld(MouseButton::Right) && placeCooldown_ <= 0.0);
   if (!placeNow) return;
   placeCooldown_ = kPlaceRepeat;
-  const BlockPos at = target_->place;
+  // A plant under the crosshair is replaced, as in Minecraft; anything else gets the block beside it.
+  const BlockPos at = replaceable(blocks_[world_.world().getBlock(target_->block)]) ? target_->block : target_->place;
   const BlockId block = hotbar_[static_cast<std::size_t>(selected_)];
   const BlockType& type = blocks_[block];
   if (!inWorldHeight(at.y) || !replaceable(blocks_[world_.world().getBlock(at)])) return;
@@ -554,7 +558,11 @@ int Game::run() {
     const double dt = fixed ? step : std::clamp(now - last, 0.0, 0.25);
     last = now;
     gameClock_ += dt;
-    if (script_) playScript(gameClock_);
+    // A script starts once the world around the player is in, as a player waits for it to load.
+    if (script_ && (scriptStarted_ || (scriptStarted_ = worldReady()))) {
+      playScript(scriptClock_);
+      scriptClock_ += dt;
+    }
     const FrameInput in = controls_.take();
     handleInput(in, dt);
     tickWorld(in, Player::ticksFor(tickAccumulator_, dt));
@@ -589,6 +597,11 @@ int Game::run() {
   return 0;
 }
 
+bool Game::worldReady() const {
+  const WorldCounts c = world_.counts();
+  return !spawnPending_ && c.loaded > 0 && c.pending == 0 && c.meshDirty == 0 && c.meshInFlight == 0;
+}
+
 // A circle of 96 blocks around the spawn at 40 blocks above sea level, at sprint-flying speed.
 glm::dvec3 Game::benchmarkEye(double t) const {
   constexpr double kRadius = 96.0, kSpeed = 21.6;
@@ -617,8 +630,7 @@ int Game::runBenchmark() {
     stream(start);
     draw(false);
     window_.swapBuffers();
-    const WorldCounts c = world_.counts();
-    if (c.pending == 0 && c.meshDirty == 0 && c.meshInFlight == 0 && c.loaded > 0) break;
+    if (worldReady()) break;
   }
   std::vector<double> frames;
   const Clock::time_point begin = Clock::now();

@@ -9,15 +9,37 @@
 #include "game.h"
 #include "options.h"
 #include "platform/glfw/glfw_window.h"
+#include "render/gl/render_target.h"
+#include "scene_render.h"
 
 namespace terrasol {
 namespace {
+
+// The demo flight in the window (also what the window test compares with the headless render).
+int flyDemo(GlfwWindow& window, const GameOptions& options) {
+  SceneRenderer scene(demoScene(window.framebufferSize()));
+  for (int frame = 0; !window.shouldClose(); ++frame) {
+    window.pollEvents();
+    // A fixed step when the frame count is fixed, so smoke-test screenshots are reproducible.
+    const double seconds = options.frames ? frame * kFixedStep : window.time();
+    scene.draw(demoFrame(seconds), 0, window.framebufferSize());
+    window.checkErrors("frame");
+    const bool last = options.frames && frame + 1 >= *options.frames;
+    if (last && !options.screenshot.empty()) {
+      saveImage(options.screenshot, readFramebuffer(0, window.framebufferSize()));
+      logInfo("screenshot saved to " + options.screenshot.string());
+    }
+    window.swapBuffers();
+    if (last) break;
+  }
+  return 0;
+}
 
 int run(const GameOptions& options) {
   try {
     GlfwWindow window("Terrasol", options.size);
     logInfo("OpenGL: " + window.description());
-    return playGame(window, options);
+    return options.demo ? flyDemo(window, options) : playGame(window, options);
   } catch (const NoDisplayError& e) {
     if (options.benchmark || !options.inputScript.empty()) throw;  // these need the real game
     constexpr int kDemoFrames = 8;

@@ -72,6 +72,7 @@ std::string gameUsage() {
          "  --report FILE     write the player, the edits and the probes as JSON at exit\n"
          "  --probe X,Y,Z     a block whose id and light go into the report (repeatable)\n"
          "  --frames N        quit after N frames (for smoke tests)\n"
+         "  --demo            fly the built-in demo path over seed 1 instead of playing\n"
          "  --size WxH        window size in pixels (default 1280x720)\n"
          "  --screenshot FILE save the last frame as an image (with --frames)\n"
          "  --demo-dir DIR    where to write the headless demo when there is no display\n"
@@ -108,6 +109,8 @@ GameOptions parseGameOptions(const std::vector<std::string>& args) {
       options.report = value();
     } else if (arg == "--probe") {
       options.probes.push_back(parseBlock(arg, value()));
+    } else if (arg == "--demo") {
+      options.demo = true;
     } else if (arg == "--frames") {
       options.frames = parseInt(arg, value(), 1);
     } else if (arg == "--size") {

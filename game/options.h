@@ -26,6 +26,7 @@ struct GameOptions {
   glm::ivec2 size{1280, 720};                // window size
   std::filesystem::path demoDir;             // where the headless demo goes when there is no display
   std::filesystem::path screenshot;          // with --frames: the last frame is saved here
+  bool demo = false;                         // fly the built-in demo path instead of playing
   bool help = false;
 };
 

@@ -1,8 +1,16 @@
-// The game in a real window (GLX under Xvfb): `terrasol --frames N` exits 0, and its last frame is
-// the same picture the headless EGL path renders for the same moment of the flight.
+// The game in a real window (GLX under Xvfb). `terrasol --demo --frames N` shows the same picture the
+// headless EGL path renders for that moment of the flight; a scripted play walks, breaks a block,
+// places a torch, saves and quits, and a second run of the same world finds both edits and the
+// torch's light.
 
 #include <cstdlib>
+#include <algorithm>
+#include <fstream>
+#include <map>
 
+#include <nlohmann/json.hpp>
+
+#include "core/error.h"
 #include "demo.h"
 #include "scene_render.h"
 #include "support/gl_test.h"
@@ -13,14 +21,17 @@ namespace {
 
 class GameWindowTest : public testing::GlTest {};
 
+int runGame(const std::string& arguments) {
+  const std::string command = std::string(TERRASOL_XVFB_RUN) + " -a -s '-screen 0 640x480x24' " + TERRASOL_GAME_EXE +
+                              " " + arguments;
+  return std::system(command.c_str());
+}
+
 TEST_F(GameWindowTest, WindowShowsWhatHeadlessRenders) {
   constexpr int kFrames = 5;
   const auto screenshot = testing::testOutputDir() / "game_window.png";
   std::filesystem::remove(screenshot);
-  const std::string command = std::string(TERRASOL_XVFB_RUN) + " -a -s '-screen 0 640x480x24' " +
-                              TERRASOL_GAME_EXE + " --frames " + std::to_string(kFrames) +
-                              " --size 320x180 --screenshot " + screenshot.string();
-  ASSERT_EQ(std::system(command.c_str()), 0) << command;
+  ASSERT_EQ(runGame("--demo --frames " + std::to_string(kFrames) + " --size 320x180 --screenshot " + screenshot.string()), 0);
   const Image window = loadImage(screenshot);
 
   SceneRenderer scene(demoScene({320, 180}));
@@ -28,6 +39,56 @@ TEST_F(GameWindowTest, WindowShowsWhatHeadlessRenders) {
 
   const ImageComparison cmp = compareImages(window, headless, {});
   EXPECT_TRUE(cmp.matches) << cmp.failingPercent << " % of pixels differ, max " << cmp.maxError * 255.0;
+}
+
+nlohmann::json readJson(const std::filesystem::path& file) { return nlohmann::json::parse(readTextFile(file)); }
+
+TEST_F(GameWindowTest, ScriptedPlayEditsSavesAndTheNextRunFindsTheEditsAndTheLight) {
+  const auto dir = testing::testOutputDir() / "game_smoke";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const auto settings = dir / "settings.json";
+  // Small and quick: 2 chunks of view, a small shadow map.
+  std::ofstream(settings) << R"({ "view_distance": 2, "shadow": { "resolution": 512, "distance": 32 } })";
+  const std::string common = "--world " + (dir / "world").string() + " --settings " + settings.string() + " --size 320x180";
+
+  const auto first = dir / "first.json";
+  ASSERT_EQ(runGame(common + " --seed 1 --input-script " + std::string(TERRASOL_SOURCE_DIR) +
+                    "/tests/scripts/game_smoke.json --report " + first.string()), 0);
+  const nlohmann::json played = readJson(first);
+  const auto& pos = played["player"]["position"];
+  EXPECT_GT(std::hypot(pos[0].get<double>() - 0.5, pos[2].get<double>() - 0.5), 2.0) << "the player walked from the spawn";
+  // The last edit of each cell is what the world must hold.
+  std::map<std::array<int, 3>, std::string> edited;
+  for (const auto& e : played["edits"]) {
+    edited[{e["pos"][0].get<int>(), e["pos"][1].get<int>(), e["pos"][2].get<int>()}] = e["block"].get<std::string>();
+  }
+  const auto count = [&](const std::string& block) {
+    return std::count_if(edited.begin(), edited.end(), [&](const auto& e) { return e.second == block; });
+  };
+  ASSERT_GE(count("air"), 1) << played.dump();
+  ASSERT_EQ(count("torch"), 1) << played.dump();
+
+  const auto second = dir / "second.json";
+  std::string probes;
+  for (const auto& [p, block] : edited) {
+    probes += " --probe " + std::to_string(p[0]) + "," + std::to_string(p[1]) + "," + std::to_string(p[2]);
+  }
+  ASSERT_EQ(runGame(common + " --seed 99 --frames 3" + probes + " --report " + second.string()), 0);
+  const nlohmann::json reopened = readJson(second);
+  ASSERT_EQ(reopened["probes"].size(), edited.size());
+  auto expected = edited.begin();
+  for (const auto& probe : reopened["probes"]) {
+    EXPECT_TRUE(probe["loaded"].get<bool>());
+    EXPECT_EQ(probe["block"], expected->second) << probe.dump();
+    if (expected->second == "torch") {
+      EXPECT_EQ(probe["block_light"], 14) << "the torch's light is back";
+    }
+    ++expected;
+  }
+  const auto& back = reopened["player"]["position"];
+  for (int i = 0; i < 3; ++i) EXPECT_NEAR(back[i].get<double>(), pos[i].get<double>(), 0.01) << "the player is where they saved";
+  EXPECT_EQ(reopened["time"].get<std::int64_t>() / 20, played["time"].get<std::int64_t>() / 20) << "the world time is kept";
 }
 
 }  // namespace
