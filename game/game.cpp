@@ -403,6 +403,7 @@ void Game::draw(bool timed) {
   frame.sunPathRotation = settings_.sunPathRotation;
   frame.viewDistance = static_cast<float>(settings_.viewDistance * 16);
   frame.debugView = static_cast<DebugView>(debugView_);
+  frame.reuseShadowMap = true;
   if (target_ && !menuOpen_ && showHud_) {
     const BlockPos b = target_->block;
     frame.outline = WorldBox{glm::dvec3(b.x, b.y, b.z), glm::dvec3(b.x + 1, b.y + 1, b.z + 1)};

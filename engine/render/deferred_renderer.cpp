@@ -107,8 +107,11 @@ void DeferredRenderer::render(const FrameInputs& frame, const SectionMeshes& mes
   // Below 0.1 % of its strength the light can show nothing (it is 0 at and under the horizon).
   view.shadowLive = options_.shadow.enabled && view.day.directStrength > 1e-3f;
   if (view.shadowLive) {
-    shadowPass(view, meshes);
-    clock.lap("shadow");
+    if (shadowPass(view, meshes, frame.reuseShadowMap)) {
+      clock.lap("shadow");
+    } else {
+      stats_.passesSkipped.push_back({"shadow", "kept: the light, the map's centre and the meshes did not change"});
+    }
   } else {
     stats_.passesSkipped.push_back({"shadow", options_.shadow.enabled ? "neither sun nor moon is above the horizon"
                                                                       : "shadows are off"});

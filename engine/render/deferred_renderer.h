@@ -48,6 +48,9 @@ struct FrameInputs {
   // Moves the shadow map's centre as if the camera had moved, keeping the view: the flicker
   // measurement compares the same pixels (the same world points) under two map placements.
   glm::dvec3 shadowCentreOffset{0.0};
+  // Keep last frame's shadow map while its centre, the meshes and (within 0.05 degrees) the light's
+  // direction are unchanged: the game standing still pays no shadow pass. Off for measured renders.
+  bool reuseShadowMap = false;
   // The targeted block: its edges are drawn over the image where nothing nearer hides them.
   std::optional<WorldBox> outline;
 };
@@ -109,7 +112,8 @@ class DeferredRenderer {
   void outlinePass(const View& view, const WorldBox& box, GLuint framebuffer, glm::ivec2 size);
   void drawSections(GLuint program, const std::vector<Visible>& sections, const SectionMeshes& meshes,
                     MeshLayer layer, bool backToFront);
-  void shadowPass(const View& view, const SectionMeshes& meshes);
+  // Returns false when the last frame's map was kept (FrameInputs::reuseShadowMap).
+  bool shadowPass(const View& view, const SectionMeshes& meshes, bool mayReuse);
   void setWarpUniforms(GLuint program) const;
   void setShadowUniforms(GLuint program, bool live) const;
   // The sections with a mesh whose box is inside `planes` (camera-relative); counts the others.
@@ -129,6 +133,12 @@ class DeferredRenderer {
   ShadowMap shadowMap_;
   std::array<ShadowView, kMaxShadowCascades> shadowViews_{};  // this frame's, one per layer
   std::optional<glm::dvec3> warpCentre_;  // where the warped map is centred, kept between frames
+  struct ShadowKey {                      // what the maps were drawn for
+    glm::dvec3 centre{0.0};
+    glm::vec3 toLight{0.0f};
+    std::uint64_t meshes = 0;
+    bool valid = false;
+  } shadowKey_;
   bool gpuTimer_;  // timer queries for pass timings (a real GPU); else glFinish and the wall clock
   std::vector<Visible> visible_;  // this frame's sections inside the frustum
   FrameStats stats_;

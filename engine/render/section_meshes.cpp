@@ -13,6 +13,7 @@ SectionMeshes::SectionMeshes() : layout_(gl::VertexArray::create()) {
 }
 
 void SectionMeshes::upload(const SectionMesh& mesh) {
+  ++generation_;
   if (mesh.empty()) {
     remove(mesh.pos);
     return;
@@ -31,7 +32,10 @@ void SectionMeshes::upload(const SectionMesh& mesh) {
   sections_[mesh.pos] = std::move(section);
 }
 
-void SectionMeshes::remove(SectionPos pos) { sections_.erase(pos); }
+void SectionMeshes::remove(SectionPos pos) {
+  sections_.erase(pos);
+  ++generation_;
+}
 
 void SectionMeshes::bindLayer(const Layer& layer) const {
   glVertexArrayVertexBuffer(layout_.id(), 0, layer.vertices.id(), 0, sizeof(PackedVertex));

@@ -4,6 +4,7 @@
 // GL thread only.
 
 #include <array>
+#include <cstdint>
 #include <map>
 
 #include "mesh/mesh_data.h"
@@ -18,7 +19,12 @@ class SectionMeshes {
   // Replaces the section's mesh; an empty mesh removes it.
   void upload(const SectionMesh& mesh);
   void remove(SectionPos pos);
-  void clear() { sections_.clear(); }
+  void clear() {
+    sections_.clear();
+    ++generation_;
+  }
+  // Changes with every upload, removal or clear: what was drawn from the meshes may be reused until then.
+  std::uint64_t generation() const { return generation_; }
 
   struct Layer {
     gl::Buffer vertices;
@@ -42,6 +48,7 @@ class SectionMeshes {
   gl::VertexArray layout_;
   gl::Buffer indices_;
   GLsizei indexQuads_ = 0;
+  std::uint64_t generation_ = 0;
 };
 
 }  // namespace terrasol

@@ -14,7 +14,8 @@ using gl::setMat4;
 
 // The light's view, a layer per cascade: casters inside the layer's box (culled per section), opaque
 // then alpha-tested.
-void DeferredRenderer::shadowPass(const View& view, const SectionMeshes& meshes) {
+bool DeferredRenderer::shadowPass(const View& view, const SectionMeshes& meshes, bool mayReuse) {
+  constexpr float kReuseCos = 0.99999962f;  // cos(0.05 degrees): 5 cm of edge movement 60 blocks away
   const ShadowSettings& settings = options_.shadow;
   const int layers = shadowLayers(settings);
   shadowMap_.ensure(settings.resolution, layers);
@@ -22,7 +23,6 @@ void DeferredRenderer::shadowPass(const View& view, const SectionMeshes& meshes)
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   glDepthMask(GL_TRUE);
-  glDisable(GL_CULL_FACE);   // single faces (the mesher drops hidden ones) must cast from both sides
   glEnable(GL_DEPTH_CLAMP);  // casters above the near plane still cast, flattened onto it
   glDisable(GL_BLEND);
   stats_.shadowCasters = 0;
@@ -33,6 +33,18 @@ void DeferredRenderer::shadowPass(const View& view, const SectionMeshes& meshes)
                                ? forward / along * static_cast<double>(settings.shiftAhead * settings.distance)
                                : glm::dvec3(0.0);
   const glm::dvec3 centre = mapCentre(view.camera + view.shadowCentreOffset + ahead);
+  const bool reuse = mayReuse && shadowKey_.valid && shadowKey_.centre == centre &&
+                     shadowKey_.meshes == meshes.generation() &&
+                     glm::dot(shadowKey_.toLight, view.day.toShadowLight) > kReuseCos;
+  if (reuse) {
+    // The same maps, their matrices rebased on this frame's camera (they are camera-relative).
+    for (int layer = 0; layer < layers; ++layer) {
+      shadowViews_[static_cast<std::size_t>(layer)] = shadowViewFor(
+          settings.resolution, cascadeDistance(settings, layer), shadowKey_.toLight, view.camera, centre);
+    }
+    return false;
+  }
+  shadowKey_ = {centre, view.day.toShadowLight, meshes.generation(), true};
   for (int layer = 0; layer < layers; ++layer) {
     ShadowView& light = shadowViews_[static_cast<std::size_t>(layer)];
     light = shadowViewFor(settings.resolution, cascadeDistance(settings, layer), view.day.toShadowLight, view.camera,
@@ -46,7 +58,12 @@ void DeferredRenderer::shadowPass(const View& view, const SectionMeshes& meshes)
       setMat4(program, "u_shadowMatrix", light.matrix);
       setWarpUniforms(program);
     }
+    // Opaque cubes bound closed solids, whose faces turned from the light are never nearest to it:
+    // culling them leaves the map unchanged and rasterises half the triangles. Cutout and translucent
+    // faces may stand alone (a plant, a pane) and must cast from both sides.
+    glEnable(GL_CULL_FACE);
     drawSections(shadow_.id(), casters, meshes, MeshLayer::Opaque, false);
+    glDisable(GL_CULL_FACE);
     drawSections(shadowCutout_.id(), casters, meshes, MeshLayer::Cutout, false);
     // Translucent casters into their own depth and colour: the nearest one filters the light.
     const GLuint translucent = shadowMap_.translucentFramebuffer(layer);
@@ -59,6 +76,7 @@ void DeferredRenderer::shadowPass(const View& view, const SectionMeshes& meshes)
     drawSections(shadowTranslucent_.id(), casters, meshes, MeshLayer::Translucent, false);
   }
   glDisable(GL_DEPTH_CLAMP);
+  return true;
 }
 
 // The maps' centre stays put until the camera has moved kRecentreTexels (of the finest layer) from it.

@@ -1,12 +1,14 @@
 // Shadows measured against ray-traced truth (tools/render/shadow_truth.h): stiff and extreme settings
 // stay NaN-free with sane error figures, and a sealed cave never sees the sun.
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 
 #include "scene_render.h"
 #include "shadow_truth.h"
 #include "support/gl_test.h"
+#include "support/golden.h"
 
 namespace terrasol {
 namespace {
@@ -162,6 +164,28 @@ TEST_F(ShadowTest, ASealedCaveUnderAOneBlockRoofHasNoLeaks) {
   const Result r = measure(scene);
   EXPECT_EQ(r.error.caveLeakPixels, 0u);
   EXPECT_EQ(r.nan, 0u);
+}
+
+bool shadowSkipped(const RenderedFrame& f) {
+  return std::any_of(f.stats.passesSkipped.begin(), f.stats.passesSkipped.end(),
+                     [](const FrameStats::Skipped& s) { return s.pass == "shadow"; });
+}
+
+TEST_F(ShadowTest, AKeptMapLooksTheSameAndIsRedrawnWhenItsCentreMoves) {
+  const SceneFile scene = loadScene(kScenes / "shadow_noon.json");
+  SceneRenderer renderer(scene);
+  FrameRequest request;
+  request.reuseShadowMap = true;
+  const RenderedFrame drawn = renderer.renderFrame(0, request);
+  EXPECT_FALSE(shadowSkipped(drawn));
+  const RenderedFrame kept = renderer.renderFrame(0, request);
+  EXPECT_TRUE(shadowSkipped(kept)) << "nothing changed: the map is kept";
+  EXPECT_TRUE(compareImages(kept.image, drawn.image, {0.0f, 0.0f}).matches) << "and the image is the same";
+  request.shadowCentreOffset = glm::dvec3(40.0, 0.0, 25.0) * static_cast<double>(drawn.geometry.shadowTexelWorld);
+  EXPECT_FALSE(shadowSkipped(renderer.renderFrame(0, request))) << "a re-centred map is drawn again";
+  request.reuseShadowMap = false;
+  request.shadowCentreOffset = glm::dvec3(0.0);
+  EXPECT_FALSE(shadowSkipped(renderer.renderFrame(0, request))) << "measured renders always draw it";
 }
 
 TEST_F(ShadowTest, NoShadowPassWhenNoLightIsAboveTheHorizon) {

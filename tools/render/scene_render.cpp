@@ -125,6 +125,7 @@ RenderedFrame SceneRenderer::renderFrame(int frame, const FrameRequest& request)
   FrameInputs inputs = inputsFor(frame);
   if (request.debugView) inputs.debugView = *request.debugView;
   inputs.shadowCentreOffset = request.shadowCentreOffset;
+  inputs.reuseShadowMap = request.reuseShadowMap;
   RenderedFrame out;
   const GLuint fbo = gpu_->target.framebuffer();
   gpu_->renderer.render(inputs, gpu_->meshes, fbo, gpu_->target.size(), request.timed ? &out.timings : nullptr);

@@ -35,6 +35,7 @@ struct FrameRequest {
   bool readBack = false;            // keep the G-buffer's pixels (shadow-error report)
   glm::dvec3 shadowCentreOffset{0.0};  // moves the shadow map as if the camera had moved (flicker)
   std::optional<DebugView> debugView;  // overrides the scene's
+  bool reuseShadowMap = false;         // FrameInputs::reuseShadowMap
 };
 
 class SceneRenderer {
