@@ -19,13 +19,6 @@ Level openLevel(const std::filesystem::path& dir, std::uint64_t seed, bool& isNe
   return level;
 }
 
-GeneratorSettings generatorOf(const Level& level) {
-  GeneratorSettings g;
-  g.type = level.generator;
-  g.seed = level.seed;
-  return g;
-}
-
 }  // namespace
 
 GameWorld::GameWorld(const std::filesystem::path& dir, std::uint64_t seed, const BlockRegistry& blocks,
@@ -33,7 +26,7 @@ GameWorld::GameWorld(const std::filesystem::path& dir, std::uint64_t seed, const
     : level_(openLevel(dir, seed, isNew_)),
       world_(blocks),
       storage_(dir, blocks),
-      generator_(makeGenerator(generatorOf(level_), blocks)),
+      generator_(makeGenerator({level_.generator, level_.seed, {}}, blocks)),
       light_(world_),
       threads_(threads),
       mesher_(std::make_unique<MeshScheduler>(table, threads)),

@@ -17,19 +17,12 @@ ChunkPos cameraChunk(const SceneFile& scene) {
   return ChunkPos::of({block(scene.cameraPosition.x), 0, block(scene.cameraPosition.z)});
 }
 
-GeneratorSettings generatorSettings(const SceneFile& scene) {
-  GeneratorSettings settings;
-  settings.type = scene.generator;
-  settings.seed = scene.seed;
-  return settings;
-}
-
 }  // namespace
 
 SceneWorld::SceneWorld(const SceneFile& scene, const BlockRegistry& blocks)
     : world_(blocks), light_(world_), centre_(cameraChunk(scene)), viewDistance_(scene.viewDistance) {
   try {
-    generator_ = makeGenerator(generatorSettings(scene), blocks);
+    generator_ = makeGenerator({scene.generator, scene.seed, {}}, blocks);
   } catch (const Error& e) {
     throw Error(sceneError(scene, "world.generator", e.what()));
   }

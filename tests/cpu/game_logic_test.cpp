@@ -40,6 +40,17 @@ World flatWorld(int radius = 3) {
   return world;
 }
 
+// The message of the Error `f` throws, or "no error".
+template <class F>
+std::string errorOf(F&& f) {
+  try {
+    f();
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
 void runTicks(Player& p, const World& w, const MoveInput& in, int ticks) {
   for (int i = 0; i < ticks; ++i) p.tick(w, in);
 }
@@ -281,14 +292,7 @@ TEST(InputScriptTest, ParsesSortsAndPlaysInTimeOrder) {
 }
 
 TEST(InputScriptTest, BadScriptsNameTheFileAndTheEvent) {
-  const auto error = [](const std::string& text) {
-    try {
-      parseInputScript(text, "script.json");
-    } catch (const Error& e) {
-      return std::string(e.what());
-    }
-    return std::string("no error");
-  };
+  const auto error = [](const std::string& text) { return errorOf([&] { parseInputScript(text, "script.json"); }); };
   EXPECT_NE(error(R"({"events": [{"t": 0, "key": "HYPER"}]})").find("script.json: events[0].key: unknown key"), std::string::npos);
   EXPECT_NE(error(R"({"events": [{"key": "W"}]})").find("events[0]: missing \"t\""), std::string::npos);
   EXPECT_NE(error(R"({"events": [{"t": 0, "key": "W", "button": "left"}]})").find("exactly one of"), std::string::npos);
@@ -324,14 +328,7 @@ TEST(SettingsTest, SaveAndLoadRoundTripAndMissingMeansDefaults) {
 }
 
 TEST(SettingsTest, MalformedSettingsNameTheKey) {
-  const auto error = [](const std::string& text) {
-    try {
-      parseSettings(text, "settings.json");
-    } catch (const Error& e) {
-      return std::string(e.what());
-    }
-    return std::string("no error");
-  };
+  const auto error = [](const std::string& text) { return errorOf([&] { parseSettings(text, "settings.json"); }); };
   EXPECT_NE(error(R"({"view_distance": 99})").find("settings.json: view_distance"), std::string::npos);
   EXPECT_NE(error(R"({"shadow": {"mode": "fancy"}})").find("shadow.mode"), std::string::npos);
   EXPECT_NE(error(R"({"keys": {"jump": "HYPER"}})").find("keys.jump: unknown key"), std::string::npos);
