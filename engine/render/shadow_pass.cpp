@@ -23,6 +23,7 @@ bool DeferredRenderer::shadowPass(const View& view, const SectionMeshes& meshes,
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   glDepthMask(GL_TRUE);
+  glDisable(GL_CULL_FACE);   // single faces (the mesher drops hidden ones) must cast from both sides
   glEnable(GL_DEPTH_CLAMP);  // casters above the near plane still cast, flattened onto it
   glDisable(GL_BLEND);
   stats_.shadowCasters = 0;
@@ -58,12 +59,7 @@ bool DeferredRenderer::shadowPass(const View& view, const SectionMeshes& meshes,
       setMat4(program, "u_shadowMatrix", light.matrix);
       setWarpUniforms(program);
     }
-    // Opaque cubes bound closed solids, whose faces turned from the light are never nearest to it:
-    // culling them leaves the map unchanged and rasterises half the triangles. Cutout and translucent
-    // faces may stand alone (a plant, a pane) and must cast from both sides.
-    glEnable(GL_CULL_FACE);
     drawSections(shadow_.id(), casters, meshes, MeshLayer::Opaque, false);
-    glDisable(GL_CULL_FACE);
     drawSections(shadowCutout_.id(), casters, meshes, MeshLayer::Cutout, false);
     // Translucent casters into their own depth and colour: the nearest one filters the light.
     const GLuint translucent = shadowMap_.translucentFramebuffer(layer);
