@@ -161,8 +161,8 @@ void DeferredRenderer::geometryPass(const View& view, const SectionMeshes& meshe
   glEnable(GL_FRAMEBUFFER_SRGB);  // the albedo target stores linear light sRGB-encoded
   setMat4(geometry_.id(), "u_viewProjection", view.viewProjection);
   setMat4(cutout_.id(), "u_viewProjection", view.viewProjection);
-  drawSections(geometry_.id(), visible_, meshes, MeshLayer::Opaque, false);
-  drawSections(cutout_.id(), visible_, meshes, MeshLayer::Cutout, false);
+  drawSections(geometry_.id(), visible_, meshes, MeshLayer::Opaque, DrawOrder::NearestFirst);
+  drawSections(cutout_.id(), visible_, meshes, MeshLayer::Cutout, DrawOrder::NearestFirst);
   glDisable(GL_FRAMEBUFFER_SRGB);
 }
 
@@ -195,19 +195,23 @@ std::size_t DeferredRenderer::visibleQuads(MeshLayer layer) const {
 }
 
 void DeferredRenderer::drawSections(GLuint program, const std::vector<Visible>& sections, const SectionMeshes& meshes,
-                                    MeshLayer layer, bool backToFront) {
+                                    MeshLayer layer, DrawOrder order, glm::vec3 axis) {
   struct Draw {
     const SectionMeshes::Layer* layer;
     glm::vec3 offset;
-    float distance;
+    float key;
   };
+  const bool alongAxis = glm::dot(axis, axis) > 0.0f;
   std::vector<Draw> draws;
   for (const Visible& v : sections) {
     const auto& l = v.section->layers[static_cast<std::size_t>(layer)];
-    if (l.quads > 0) draws.push_back({&l, v.offset, glm::length(v.offset + glm::vec3(8.0f))});
+    const glm::vec3 centre = v.offset + glm::vec3(8.0f);
+    if (l.quads > 0) draws.push_back({&l, v.offset, alongAxis ? glm::dot(centre, axis) : glm::length(centre)});
   }
   if (draws.empty()) return;
-  if (backToFront) std::stable_sort(draws.begin(), draws.end(), [](const Draw& a, const Draw& b) { return a.distance > b.distance; });
+  std::stable_sort(draws.begin(), draws.end(), [&](const Draw& a, const Draw& b) {
+    return order == DrawOrder::NearestFirst ? a.key < b.key : a.key > b.key;
+  });
 
   glUseProgram(program);
   textures_.bind(program);
@@ -274,7 +278,7 @@ void DeferredRenderer::translucentPass(const View& view, const SectionMeshes& me
   // Premultiplied colour; alpha keeps the lighting pass's shadow term of the surface behind.
   glBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
   setMat4(translucent_.id(), "u_viewProjection", view.viewProjection);
-  drawSections(translucent_.id(), visible_, meshes, MeshLayer::Translucent, true);
+  drawSections(translucent_.id(), visible_, meshes, MeshLayer::Translucent, DrawOrder::FarthestFirst);
   glDisable(GL_BLEND);
   glDepthMask(GL_TRUE);
   glDisable(GL_DEPTH_TEST);

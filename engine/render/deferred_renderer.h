@@ -110,8 +110,11 @@ class DeferredRenderer {
   void finalPass(GLuint framebuffer, glm::ivec2 size);
   void debugPass(const View& view, GLuint framebuffer, glm::ivec2 size);
   void outlinePass(const View& view, const WorldBox& box, GLuint framebuffer, glm::ivec2 size);
+  // Sections in order of their centre's distance from the camera, or (with a non-zero `axis`) of how
+  // far along `axis` it lies: nearest first lets the depth test reject hidden fragments before shading.
+  enum class DrawOrder { NearestFirst, FarthestFirst };
   void drawSections(GLuint program, const std::vector<Visible>& sections, const SectionMeshes& meshes,
-                    MeshLayer layer, bool backToFront);
+                    MeshLayer layer, DrawOrder order, glm::vec3 axis = glm::vec3(0.0f));
   // Returns false when the last frame's map was kept (FrameInputs::reuseShadowMap).
   bool shadowPass(const View& view, const SectionMeshes& meshes, bool mayReuse);
   void setWarpUniforms(GLuint program) const;

@@ -59,8 +59,10 @@ bool DeferredRenderer::shadowPass(const View& view, const SectionMeshes& meshes,
       setMat4(program, "u_shadowMatrix", light.matrix);
       setWarpUniforms(program);
     }
-    drawSections(shadow_.id(), casters, meshes, MeshLayer::Opaque, false);
-    drawSections(shadowCutout_.id(), casters, meshes, MeshLayer::Cutout, false);
+    // Nearest the light first: the depth test then rejects what lies behind before it is shaded.
+    const glm::vec3 fromLight = -view.day.toShadowLight;
+    drawSections(shadow_.id(), casters, meshes, MeshLayer::Opaque, DrawOrder::NearestFirst, fromLight);
+    drawSections(shadowCutout_.id(), casters, meshes, MeshLayer::Cutout, DrawOrder::NearestFirst, fromLight);
     // Translucent casters into their own depth and colour: the nearest one filters the light.
     const GLuint translucent = shadowMap_.translucentFramebuffer(layer);
     const float clear[4] = {1.0f, 1.0f, 1.0f, 1.0f};
@@ -69,7 +71,8 @@ bool DeferredRenderer::shadowPass(const View& view, const SectionMeshes& meshes,
     glBindFramebuffer(GL_FRAMEBUFFER, translucent);
     setMat4(shadowTranslucent_.id(), "u_shadowMatrix", light.matrix);
     setWarpUniforms(shadowTranslucent_.id());
-    drawSections(shadowTranslucent_.id(), casters, meshes, MeshLayer::Translucent, false);
+    drawSections(shadowTranslucent_.id(), casters, meshes, MeshLayer::Translucent, DrawOrder::NearestFirst,
+                 -view.day.toShadowLight);
   }
   glDisable(GL_DEPTH_CLAMP);
   return true;
