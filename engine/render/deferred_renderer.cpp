@@ -161,8 +161,8 @@ void DeferredRenderer::geometryPass(const View& view, const SectionMeshes& meshe
   glEnable(GL_FRAMEBUFFER_SRGB);  // the albedo target stores linear light sRGB-encoded
   setMat4(geometry_.id(), "u_viewProjection", view.viewProjection);
   setMat4(cutout_.id(), "u_viewProjection", view.viewProjection);
-  drawSections(geometry_.id(), visible_, meshes, MeshLayer::Opaque, DrawOrder::NearestFirst);
-  drawSections(cutout_.id(), visible_, meshes, MeshLayer::Cutout, DrawOrder::NearestFirst);
+  drawSections(geometry_.id(), visible_, meshes, MeshLayer::Opaque, DrawOrder::NearestFirst, glm::vec3(0.0f), true);
+  drawSections(cutout_.id(), visible_, meshes, MeshLayer::Cutout, DrawOrder::NearestFirst, glm::vec3(0.0f), true);
   glDisable(GL_FRAMEBUFFER_SRGB);
 }
 
@@ -195,7 +195,7 @@ std::size_t DeferredRenderer::visibleQuads(MeshLayer layer) const {
 }
 
 void DeferredRenderer::drawSections(GLuint program, const std::vector<Visible>& sections, const SectionMeshes& meshes,
-                                    MeshLayer layer, DrawOrder order, glm::vec3 axis) {
+                                    MeshLayer layer, DrawOrder order, glm::vec3 axis, bool cullFacesAway) {
   struct Draw {
     const SectionMeshes::Layer* layer;
     glm::vec3 offset;
@@ -220,7 +220,38 @@ void DeferredRenderer::drawSections(GLuint program, const std::vector<Visible>& 
   for (const Draw& d : draws) {
     meshes.bindLayer(*d.layer);
     glProgramUniform3fv(program, offsetLocation, 1, glm::value_ptr(d.offset));
-    glDrawElements(GL_TRIANGLES, d.layer->quads * 6, GL_UNSIGNED_INT, nullptr);
+    if (!cullFacesAway) {
+      glDrawElements(GL_TRIANGLES, d.layer->quads * 6, GL_UNSIGNED_INT, nullptr);
+      if (layer == MeshLayer::Translucent) stats_.quadsDrawn += d.layer->quads;
+      continue;
+    }
+    // Face groups turned away from the camera for the whole section are never drawn: a face of normal
+    // +x lies in a plane at x >= the section's corner, so it faces away from a camera (at 0) whenever
+    // the corner's x >= 0; likewise for every direction. Runs of drawn groups become one range each.
+    const glm::vec3 lo = d.offset, hi = d.offset + glm::vec3(16.0f);
+    const bool away[SectionMeshes::kFaceGroups] = {hi.x <= 0.0f, lo.x >= 0.0f, hi.y <= 0.0f, lo.y >= 0.0f,
+                                                   hi.z <= 0.0f, lo.z >= 0.0f, false};
+    GLsizei counts[SectionMeshes::kFaceGroups];
+    const void* offsets[SectionMeshes::kFaceGroups];
+    GLsizei ranges = 0;
+    const auto& start = d.layer->groupStart;
+    for (int g = 0; g < SectionMeshes::kFaceGroups; ++g) {
+      const GLsizei quads = start[static_cast<std::size_t>(g) + 1] - start[static_cast<std::size_t>(g)];
+      if (quads == 0) continue;
+      if (away[g]) {
+        stats_.quadsFacingAway += quads;
+        continue;
+      }
+      const auto offset = reinterpret_cast<const void*>(static_cast<std::uintptr_t>(start[static_cast<std::size_t>(g)]) * 6 * sizeof(GLuint));
+      if (ranges > 0 && static_cast<const char*>(offsets[ranges - 1]) + counts[ranges - 1] * sizeof(GLuint) == offset) {
+        counts[ranges - 1] += quads * 6;
+      } else {
+        counts[ranges] = quads * 6;
+        offsets[ranges++] = offset;
+      }
+    }
+    for (GLsizei r = 0; r < ranges; ++r) stats_.quadsDrawn += counts[r] / 6;
+    if (ranges > 0) glMultiDrawElements(GL_TRIANGLES, counts, GL_UNSIGNED_INT, offsets, ranges);
   }
   glBindVertexArray(0);
 }

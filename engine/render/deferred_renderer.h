@@ -75,6 +75,8 @@ struct FrameGeometry {
 struct FrameStats {
   int sectionsDrawn = 0, sectionsCulled = 0;  // 16x16x16 sections with a mesh, inside / outside the frustum
   int shadowCasters = 0;                      // sections drawn into the shadow map
+  std::int64_t quadsDrawn = 0;                // by the camera's passes (geometry, translucent)
+  std::int64_t quadsFacingAway = 0;           // opaque and cutout quads left out: their face group faced away
   struct Skipped {
     std::string pass, why;
   };
@@ -113,8 +115,10 @@ class DeferredRenderer {
   // Sections in order of their centre's distance from the camera, or (with a non-zero `axis`) of how
   // far along `axis` it lies: nearest first lets the depth test reject hidden fragments before shading.
   enum class DrawOrder { NearestFirst, FarthestFirst };
+  // With `cullFacesAway` (passes that cull back faces), face groups turned away from the camera for the
+  // whole section are left out before any vertex is shaded.
   void drawSections(GLuint program, const std::vector<Visible>& sections, const SectionMeshes& meshes,
-                    MeshLayer layer, DrawOrder order, glm::vec3 axis = glm::vec3(0.0f));
+                    MeshLayer layer, DrawOrder order, glm::vec3 axis = glm::vec3(0.0f), bool cullFacesAway = false);
   // Returns false when the last frame's map was kept (FrameInputs::reuseShadowMap).
   bool shadowPass(const View& view, const SectionMeshes& meshes, bool mayReuse);
   void setWarpUniforms(GLuint program) const;

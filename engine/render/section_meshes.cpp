@@ -1,10 +1,32 @@
 #include "render/section_meshes.h"
 
+#include <algorithm>
 #include <vector>
 
 #include "render/gl_slots.h"
 
 namespace terrasol {
+
+namespace {
+
+int faceGroup(const PackedVertex& v) { return v.face() < 6 ? v.face() : SectionMeshes::kFaceGroups - 1; }
+
+}  // namespace
+
+// A counting sort of the quads by face group; `start` receives each group's first quad.
+const std::vector<PackedVertex>& SectionMeshes::groupByFace(const MeshData& data,
+                                                            std::array<GLsizei, kFaceGroups + 1>& start) {
+  start.fill(0);
+  for (std::size_t q = 0; q < data.quads(); ++q) ++start[static_cast<std::size_t>(faceGroup(data.vertices[q * 4])) + 1];
+  for (int g = 0; g < kFaceGroups; ++g) start[static_cast<std::size_t>(g) + 1] += start[static_cast<std::size_t>(g)];
+  grouped_.resize(data.vertices.size());
+  std::array<GLsizei, kFaceGroups + 1> next = start;
+  for (std::size_t q = 0; q < data.quads(); ++q) {
+    const auto at = static_cast<std::size_t>(next[static_cast<std::size_t>(faceGroup(data.vertices[q * 4]))]++);
+    std::copy_n(data.vertices.begin() + static_cast<std::ptrdiff_t>(q * 4), 4, grouped_.begin() + static_cast<std::ptrdiff_t>(at * 4));
+  }
+  return grouped_;
+}
 
 SectionMeshes::SectionMeshes() : layout_(gl::VertexArray::create()) {
   glEnableVertexArrayAttrib(layout_.id(), slots::kAttribPacked);
@@ -23,10 +45,17 @@ void SectionMeshes::upload(const SectionMesh& mesh) {
     const MeshData& data = mesh.layers[static_cast<std::size_t>(l)];
     if (data.vertices.empty()) continue;
     Layer& layer = section.layers[static_cast<std::size_t>(l)];
-    layer.vertices = gl::Buffer::create();
-    glNamedBufferStorage(layer.vertices.id(), static_cast<GLsizeiptr>(data.vertices.size() * sizeof(PackedVertex)),
-                         data.vertices.data(), 0);
     layer.quads = static_cast<GLsizei>(data.quads());
+    // Translucent quads keep the mesher's order (blending within a section depends on it): one group.
+    const std::vector<PackedVertex>& vertices =
+        static_cast<MeshLayer>(l) == MeshLayer::Translucent ? data.vertices : groupByFace(data, layer.groupStart);
+    if (static_cast<MeshLayer>(l) == MeshLayer::Translucent) {
+      layer.groupStart.fill(layer.quads);
+      layer.groupStart[0] = 0;
+    }
+    layer.vertices = gl::Buffer::create();
+    glNamedBufferStorage(layer.vertices.id(), static_cast<GLsizeiptr>(vertices.size() * sizeof(PackedVertex)),
+                         vertices.data(), 0);
     ensureIndices(layer.quads);
   }
   sections_[mesh.pos] = std::move(section);

@@ -6,6 +6,7 @@
 #include <array>
 #include <cstdint>
 #include <map>
+#include <vector>
 
 #include "mesh/mesh_data.h"
 #include "render/gl/object.h"
@@ -26,9 +27,13 @@ class SectionMeshes {
   // Changes with every upload, removal or clear: what was drawn from the meshes may be reused until then.
   std::uint64_t generation() const { return generation_; }
 
+  // Opaque and cutout quads are stored grouped by the face they show (Direction order, then everything
+  // else: cross plants), so a pass can leave out whole groups that face away from the camera.
+  static constexpr int kFaceGroups = 7;
   struct Layer {
     gl::Buffer vertices;
     GLsizei quads = 0;
+    std::array<GLsizei, kFaceGroups + 1> groupStart{};  // quad index of each group; [7] = quads
   };
   struct Section {
     std::array<Layer, kMeshLayers> layers;
@@ -43,12 +48,14 @@ class SectionMeshes {
 
  private:
   void ensureIndices(GLsizei quads);
+  const std::vector<PackedVertex>& groupByFace(const MeshData& data, std::array<GLsizei, kFaceGroups + 1>& start);
 
   std::map<SectionPos, Section> sections_;
   gl::VertexArray layout_;
   gl::Buffer indices_;
   GLsizei indexQuads_ = 0;
   std::uint64_t generation_ = 0;
+  std::vector<PackedVertex> grouped_;  // reused by upload
 };
 
 }  // namespace terrasol

@@ -127,6 +127,7 @@ nlohmann::json frameReport(int index, const RenderedFrame& frame) {
           {"ms", ms},
           {"nan_pixels", frame.nanPixels},
           {"chunks", {{"drawn", frame.stats.sectionsDrawn}, {"culled", frame.stats.sectionsCulled}}},
+          {"quads", {{"drawn", frame.stats.quadsDrawn}, {"facing_away", frame.stats.quadsFacingAway}}},
           {"passes_skipped", skipped}};
 }
 
