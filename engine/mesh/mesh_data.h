@@ -74,9 +74,17 @@ struct MeshData {
   std::size_t quads() const { return vertices.size() / 4; }
 };
 
+// Which pairs of a section's six faces (Direction order) are joined by cells that are not opaque cubes:
+// bit a * 6 + b is set, with b * 6 + a, when faces a and b are (section_visibility.h computes it).
+using FaceLinks = std::uint64_t;
+inline constexpr FaceLinks kAllFacesLinked = (FaceLinks{1} << 36) - 1;
+inline constexpr FaceLinks kNoFacesLinked = 0;
+constexpr bool linked(FaceLinks links, int a, int b) { return (links >> (a * 6 + b)) & 1u; }
+
 struct SectionMesh {
   SectionPos pos;
   std::array<MeshData, kMeshLayers> layers;
+  FaceLinks faceLinks = kAllFacesLinked;  // all, when unknown
   std::size_t quads() const { return layers[0].quads() + layers[1].quads() + layers[2].quads(); }
   bool empty() const { return quads() == 0; }
 };

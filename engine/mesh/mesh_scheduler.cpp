@@ -5,6 +5,7 @@
 #include <string>
 
 #include "core/log.h"
+#include "mesh/section_visibility.h"
 
 namespace terrasol {
 
@@ -50,9 +51,12 @@ std::vector<SectionMesh> MeshScheduler::update(const World& world, std::size_t m
     const std::uint64_t generation = nextGeneration_++;
     latest_[key(pos)] = generation;
     auto job = std::make_unique<Job>();
-    if (captureSection(world, pos, job->snapshot) != CaptureResult::Captured) {
+    const CaptureResult captured = captureSection(world, pos, job->snapshot);
+    if (captured != CaptureResult::Captured) {
       latest_.erase(key(pos));  // any older job still running is dropped when it arrives
-      ready.push_back(SectionMesh{pos, {}});  // nothing visible: the old mesh goes
+      SectionMesh nothing{pos, {}};  // nothing visible: the old mesh goes
+      nothing.faceLinks = captured == CaptureResult::Buried ? kNoFacesLinked : kAllFacesLinked;
+      ready.push_back(std::move(nothing));
       continue;
     }
     ++taken;
@@ -96,6 +100,7 @@ void MeshScheduler::work() {
     Done done{SectionMesh{job->snapshot.pos, {}}, job->generation};
     try {
       done.mesh = meshSection(job->snapshot, table_);
+      done.mesh.faceLinks = sectionFaceLinks(job->snapshot);
     } catch (const std::exception& e) {  // out of memory: an empty mesh, and the game goes on
       logError(std::string("meshing failed: ") + e.what());
     }

@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 
 #include <glm/gtc/matrix_inverse.hpp>
 
 #include "core/camera.h"
 #include "core/lightmap.h"
+#include "render/cave_culling.h"
 #include "render/deferred_view.h"
 #include "render/gl/program.h"
 #include "render/gl/uniforms.h"
@@ -174,7 +176,7 @@ std::vector<DeferredRenderer::Visible> DeferredRenderer::sectionsInside(const Fr
     const glm::dvec3 corner(pos.x * 16.0, kMinY + pos.section * 16.0, pos.z * 16.0);
     const glm::vec3 offset(corner - camera);
     if (boxVisible(planes, offset, 16.0f)) {
-      inside.push_back({&section, offset});
+      inside.push_back({&section, offset, pos});
     } else if (outside) {
       ++*outside;
     }
@@ -185,6 +187,14 @@ std::vector<DeferredRenderer::Visible> DeferredRenderer::sectionsInside(const Fr
 void DeferredRenderer::cull(const View& view, const SectionMeshes& meshes) {
   stats_ = {};
   visible_ = sectionsInside(view.frustum, view.camera, meshes, &stats_.sectionsCulled);
+  if (options_.caveCulling) {
+    const int radius = static_cast<int>(std::ceil(view.fogRange.y / 16.0f)) + 2;
+    std::set<SectionPos> reached;
+    for (const SectionPos& s : reachableSections(meshes, view.camera, view.frustum, radius)) reached.insert(s);
+    const auto hidden = std::remove_if(visible_.begin(), visible_.end(), [&](const Visible& v) { return !reached.contains(v.pos); });
+    stats_.sectionsHidden = static_cast<int>(visible_.end() - hidden);
+    visible_.erase(hidden, visible_.end());
+  }
   stats_.sectionsDrawn = static_cast<int>(visible_.size());
 }
 

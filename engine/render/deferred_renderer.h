@@ -58,6 +58,7 @@ struct FrameInputs {
 // Choices that pick shader variants, fixed for the renderer's life.
 struct RendererOptions {
   bool ggxSpecular = false;  // GGX/Smith instead of energy-conserving Blinn-Phong
+  bool caveCulling = true;   // leave out sections hidden behind solid ground (render/cave_culling.h)
   ShadowSettings shadow;
 };
 
@@ -74,6 +75,7 @@ struct FrameGeometry {
 // What the last frame did, for reports.
 struct FrameStats {
   int sectionsDrawn = 0, sectionsCulled = 0;  // 16x16x16 sections with a mesh, inside / outside the frustum
+  int sectionsHidden = 0;                     // inside the frustum, but cave culling left them out
   int shadowCasters = 0;                      // sections drawn into the shadow map
   std::int64_t quadsDrawn = 0;                // by the camera's passes (geometry, translucent)
   std::int64_t quadsFacingAway = 0;           // opaque and cutout quads left out: their face group faced away
@@ -104,6 +106,7 @@ class DeferredRenderer {
   struct Visible {
     const SectionMeshes::Section* section;
     glm::vec3 offset;  // section corner minus camera
+    SectionPos pos;
   };
   void cull(const View& view, const SectionMeshes& meshes);
   void geometryPass(const View& view, const SectionMeshes& meshes);

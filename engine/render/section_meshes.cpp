@@ -36,6 +36,11 @@ SectionMeshes::SectionMeshes() : layout_(gl::VertexArray::create()) {
 
 void SectionMeshes::upload(const SectionMesh& mesh) {
   ++generation_;
+  if (mesh.faceLinks == kAllFacesLinked) {
+    links_.erase(mesh.pos);
+  } else {
+    links_[mesh.pos] = mesh.faceLinks;
+  }
   if (mesh.empty()) {
     remove(mesh.pos);
     return;

@@ -17,11 +17,17 @@ class SectionMeshes {
  public:
   SectionMeshes();
 
-  // Replaces the section's mesh; an empty mesh removes it.
+  // Replaces the section's mesh; an empty mesh removes it. Either way its face links are kept.
   void upload(const SectionMesh& mesh);
+  // The face links of a section (all linked when never told otherwise).
+  FaceLinks faceLinks(SectionPos pos) const {
+    const auto it = links_.find(pos);
+    return it == links_.end() ? kAllFacesLinked : it->second;
+  }
   void remove(SectionPos pos);
   void clear() {
     sections_.clear();
+    links_.clear();
     ++generation_;
   }
   // Changes with every upload, removal or clear: what was drawn from the meshes may be reused until then.
@@ -56,6 +62,7 @@ class SectionMeshes {
   GLsizei indexQuads_ = 0;
   std::uint64_t generation_ = 0;
   std::vector<PackedVertex> grouped_;  // reused by upload
+  std::map<SectionPos, FaceLinks> links_;  // only sections not linked all round
 };
 
 }  // namespace terrasol

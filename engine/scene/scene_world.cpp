@@ -6,6 +6,7 @@
 
 #include "core/error.h"
 #include "mesh/mesh_scheduler.h"
+#include "mesh/section_visibility.h"
 
 namespace terrasol {
 namespace {
@@ -99,9 +100,17 @@ std::vector<SectionMesh> SceneWorld::meshVisible(const BlockMeshTable& table) co
     for (int dx = -viewDistance_; dx <= viewDistance_; ++dx)
       for (int s = 0; s < kSectionCount; ++s) {
         const SectionPos pos{centre_.x + dx, s, centre_.z + dz};
-        if (captureSection(world_, pos, snapshot) != CaptureResult::Captured) continue;
-        SectionMesh mesh = meshSection(snapshot, table);
-        if (!mesh.empty()) meshes.push_back(std::move(mesh));
+        const CaptureResult captured = captureSection(world_, pos, snapshot);
+        if (captured == CaptureResult::Empty) continue;  // nothing drawn, every face sees every other
+        SectionMesh mesh{pos, {}};
+        if (captured == CaptureResult::Buried) {
+          mesh.faceLinks = kNoFacesLinked;
+        } else {
+          mesh = meshSection(snapshot, table);
+          mesh.faceLinks = sectionFaceLinks(snapshot);
+        }
+        // Kept even when empty: a closed section's links still hide what lies behind it.
+        if (!mesh.empty() || mesh.faceLinks != kAllFacesLinked) meshes.push_back(std::move(mesh));
       }
   return meshes;
 }

@@ -19,7 +19,8 @@ class SceneWorld {
   // scene key for an unknown block or generator.
   SceneWorld(const SceneFile& scene, const BlockRegistry& blocks);
 
-  // Meshes of every section that has faces, within the view distance of the camera.
+  // Meshes of every section that has faces, within the view distance of the camera, and the empty
+  // meshes of closed sections (their face links hide what is behind them).
   std::vector<SectionMesh> meshVisible(const BlockMeshTable& table) const;
 
   // Applies the edits keyed to frames up to `frame` not applied yet, block by block through the light

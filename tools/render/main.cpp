@@ -126,7 +126,8 @@ nlohmann::json frameReport(int index, const RenderedFrame& frame) {
   return {{"frame", index},
           {"ms", ms},
           {"nan_pixels", frame.nanPixels},
-          {"chunks", {{"drawn", frame.stats.sectionsDrawn}, {"culled", frame.stats.sectionsCulled}}},
+          {"chunks", {{"drawn", frame.stats.sectionsDrawn}, {"culled", frame.stats.sectionsCulled},
+                      {"hidden", frame.stats.sectionsHidden}}},
           {"quads", {{"drawn", frame.stats.quadsDrawn}, {"facing_away", frame.stats.quadsFacingAway}}},
           {"passes_skipped", skipped}};
 }

@@ -95,8 +95,8 @@ SceneRenderer::SceneRenderer(const SceneFile& scene) : scene_(scene), debugView_
   for (const auto& mesh : meshes) {
     gpu_->meshes.upload(mesh);
     stats_.quads += mesh.quads();
+    stats_.sections += mesh.empty() ? 0 : 1;
   }
-  stats_.sections = meshes.size();
 }
 
 SceneRenderer::~SceneRenderer() = default;

@@ -1,0 +1,69 @@
+#include "render/cave_culling.h"
+
+#include <cmath>
+#include <deque>
+
+namespace terrasol {
+namespace {
+
+constexpr glm::ivec3 kSteps[6] = {{-1, 0, 0}, {1, 0, 0}, {0, -1, 0}, {0, 1, 0}, {0, 0, -1}, {0, 0, 1}};
+constexpr int kDown = 2, kUp = 3;
+
+struct Step {
+  glm::ivec3 at;       // section x, index, z
+  int entered;         // the face it was entered through, -1 for the camera's
+  unsigned travelled;  // directions taken from the camera (bit d): never go back against one
+};
+
+}  // namespace
+
+std::vector<SectionPos> reachableSections(const SectionMeshes& meshes, glm::dvec3 camera, const FrustumPlanes& planes,
+                                          int radius) {
+  const glm::ivec3 eye(static_cast<int>(std::floor(camera.x / 16.0)),
+                       static_cast<int>(std::floor((camera.y - kMinY) / 16.0)),
+                       static_cast<int>(std::floor(camera.z / 16.0)));
+  const int side = 2 * radius + 1;
+  std::vector<std::uint8_t> seen(static_cast<std::size_t>(side * side * kSectionCount), 0);
+  const auto slot = [&](glm::ivec3 s) -> std::uint8_t* {
+    const int dx = s.x - eye.x + radius, dz = s.z - eye.z + radius;
+    if (dx < 0 || dx >= side || dz < 0 || dz >= side || s.y < 0 || s.y >= kSectionCount) return nullptr;
+    return &seen[static_cast<std::size_t>((s.y * side + dz) * side + dx)];
+  };
+  const auto inView = [&](glm::ivec3 s) {
+    const glm::dvec3 corner(s.x * 16.0, kMinY + s.y * 16.0, s.z * 16.0);
+    return boxVisible(planes, glm::vec3(corner - camera), 16.0f);
+  };
+
+  std::deque<Step> queue;
+  std::vector<SectionPos> out;
+  const auto reach = [&](glm::ivec3 s, int entered, unsigned travelled) {
+    std::uint8_t* mark = slot(s);
+    if (!mark || *mark || !inView(s)) return;
+    *mark = 1;
+    queue.push_back({s, entered, travelled});
+    out.push_back({s.x, s.y, s.z});
+  };
+  if (eye.y >= 0 && eye.y < kSectionCount) {
+    reach(eye, -1, 0u);
+  } else {
+    // Above or below the world: every section of the nearest layer, entered from outside.
+    const bool above = eye.y >= kSectionCount;
+    for (int dz = -radius; dz <= radius; ++dz)
+      for (int dx = -radius; dx <= radius; ++dx) {
+        reach({eye.x + dx, above ? kSectionCount - 1 : 0, eye.z + dz}, above ? kUp : kDown, 1u << (above ? kDown : kUp));
+      }
+  }
+  while (!queue.empty()) {
+    const Step step = queue.front();
+    queue.pop_front();
+    const FaceLinks links = meshes.faceLinks({step.at.x, step.at.y, step.at.z});
+    for (int d = 0; d < 6; ++d) {
+      if (step.travelled & (1u << (d ^ 1))) continue;  // back towards the camera
+      if (step.entered >= 0 && !linked(links, step.entered, d)) continue;
+      reach(step.at + kSteps[d], d ^ 1, step.travelled | (1u << d));
+    }
+  }
+  return out;
+}
+
+}  // namespace terrasol

@@ -1,0 +1,21 @@
+#pragma once
+// Minecraft's cave culling: sections are walked outward from the camera's, entering a section through
+// one face and leaving through another only when the section links the two (open cells join them;
+// mesh/section_visibility.h), never turning back towards the camera, and only into sections inside the
+// frustum. Sections the walk never reaches are hidden behind solid ground however the frustum sees them.
+
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "render/frustum.h"
+#include "render/section_meshes.h"
+
+namespace terrasol {
+
+// The reachable sections within `radius` sections (horizontally) of the camera's. `planes` are
+// camera-relative, like every box test in the renderer.
+std::vector<SectionPos> reachableSections(const SectionMeshes& meshes, glm::dvec3 camera, const FrustumPlanes& planes,
+                                          int radius);
+
+}  // namespace terrasol
