@@ -181,6 +181,8 @@ void Hud::settingsTab(GameSettings& s, MenuResult& out) {
   ImGui::SliderFloat("PCF radius", &sh.pcfRadius, 0.0f, 8.0f, "%.1f");
   out.rendererChanged |= released();
   out.rendererChanged |= comboOf("PCF pattern", sh.pcfPattern, kPcfPatterns);
+  ImGui::SliderInt("Update over frames", &sh.updateFrames, 1, 16);
+  out.rendererChanged |= released();
 }
 
 void Hud::packsTab(GameSettings& s, const std::vector<std::string>& loadedPacks, MenuResult& out) {

@@ -123,7 +123,9 @@ GameOptions parseGameOptions(const std::vector<std::string>& args) {
       throw Error("unknown option '" + arg + "' (see --help)");
     }
   }
-  if (!options.screenshot.empty() && !options.frames) throw Error("--screenshot needs --frames");
+  if (!options.screenshot.empty() && !options.frames && !options.benchmark) {
+    throw Error("--screenshot needs --frames or --benchmark");
+  }
   return options;
 }
 

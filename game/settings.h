@@ -32,6 +32,7 @@ struct GameSettings {
     SceneShadow s;
     s.resolution = 1024;  // a 1024^2 map over 96 blocks, warped: sharp near, cheap on llvmpipe
     s.distance = 96.0f;
+    s.updateFrames = 8;   // Luanti's default: a changed map is spread over 8 frames
     return s;
   }
 };

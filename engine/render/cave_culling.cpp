@@ -66,4 +66,52 @@ std::vector<SectionPos> reachableSections(const SectionMeshes& meshes, glm::dvec
   return out;
 }
 
+std::vector<SectionPos> sectionsLitFrom(const SectionMeshes& meshes, glm::vec3 toLight, glm::dvec3 centre, int radius) {
+  const glm::ivec3 mid(static_cast<int>(std::floor(centre.x / 16.0)), 0, static_cast<int>(std::floor(centre.z / 16.0)));
+  const int side = 2 * radius + 1;
+  // Per section: the faces it has been entered by (bits 0..5), and bit 6 once it is in the output.
+  std::vector<std::uint8_t> entered(static_cast<std::size_t>(side * side * kSectionCount), 0);
+  const auto slot = [&](glm::ivec3 s) -> std::uint8_t* {
+    const int dx = s.x - mid.x + radius, dz = s.z - mid.z + radius;
+    if (dx < 0 || dx >= side || dz < 0 || dz >= side || s.y < 0 || s.y >= kSectionCount) return nullptr;
+    return &entered[static_cast<std::size_t>((s.y * side + dz) * side + dx)];
+  };
+  // The ways a ray moves: along each axis where -toLight has a component.
+  unsigned along = 0;
+  for (int d = 0; d < 6; ++d) {
+    if (glm::dot(glm::vec3(kSteps[d]), -toLight) > 0.0f) along |= 1u << d;
+  }
+  std::deque<Step> queue;
+  std::vector<SectionPos> out;
+  const auto enter = [&](glm::ivec3 s, int face) {
+    std::uint8_t* mark = slot(s);
+    if (!mark || (*mark & (1u << face))) return;
+    *mark |= static_cast<std::uint8_t>(1u << face);
+    if (!(*mark & 64u)) {
+      *mark |= 64u;
+      out.push_back({s.x, s.y, s.z});
+    }
+    queue.push_back({s, face, 0u});
+  };
+  // Rays come in through every face of the square's boundary that looks towards the light.
+  for (int y = 0; y < kSectionCount; ++y)
+    for (int dz = -radius; dz <= radius; ++dz)
+      for (int dx = -radius; dx <= radius; ++dx) {
+        const glm::ivec3 s(mid.x + dx, y, mid.z + dz);
+        for (int d = 0; d < 6; ++d) {
+          if (!(along & (1u << (d ^ 1)))) continue;  // face d looks towards the light when rays move along d ^ 1
+          if (!slot(s + kSteps[d])) enter(s, d);
+        }
+      }
+  while (!queue.empty()) {
+    const Step step = queue.front();
+    queue.pop_front();
+    const FaceLinks links = meshes.faceLinks({step.at.x, step.at.y, step.at.z});
+    for (int d = 0; d < 6; ++d) {
+      if ((along & (1u << d)) && linked(links, step.entered, d)) enter(step.at + kSteps[d], d ^ 1);
+    }
+  }
+  return out;
+}
+
 }  // namespace terrasol

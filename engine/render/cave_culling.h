@@ -18,4 +18,11 @@ namespace terrasol {
 std::vector<SectionPos> reachableSections(const SectionMeshes& meshes, glm::dvec3 camera, const FrustumPlanes& planes,
                                           int radius);
 
+// The same walk for a directional light shining along -`toLight`: from the sky and from the sides of
+// the square of `radius` sections around `centre` that face the light, moving only the ways its rays
+// move, through linked faces. The sections it never reaches hold no face its rays can meet first (a
+// ray meets its first face after open cells only), so they cast nothing. A section is walked once per
+// face it is entered by (rays enter it by different faces), so no ray's path is cut short.
+std::vector<SectionPos> sectionsLitFrom(const SectionMeshes& meshes, glm::vec3 toLight, glm::dvec3 centre, int radius);
+
 }  // namespace terrasol

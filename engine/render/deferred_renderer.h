@@ -77,6 +77,7 @@ struct FrameStats {
   int sectionsDrawn = 0, sectionsCulled = 0;  // 16x16x16 sections with a mesh, inside / outside the frustum
   int sectionsHidden = 0;                     // inside the frustum, but cave culling left them out
   int shadowCasters = 0;                      // sections drawn into the shadow map
+  int shadowCastersHidden = 0;                // inside the light's box, but no ray of it reaches them
   std::int64_t quadsDrawn = 0;                // by the camera's passes (geometry, translucent)
   std::int64_t quadsFacingAway = 0;           // opaque and cutout quads left out: their face group faced away
   struct Skipped {
@@ -124,6 +125,7 @@ class DeferredRenderer {
                     MeshLayer layer, DrawOrder order, glm::vec3 axis = glm::vec3(0.0f), bool cullFacesAway = false);
   // Returns false when the last frame's map was kept (FrameInputs::reuseShadowMap).
   bool shadowPass(const View& view, const SectionMeshes& meshes, bool mayReuse);
+  void rebaseShadowViews(const View& view);
   void setWarpUniforms(GLuint program) const;
   void setShadowUniforms(GLuint program, bool live) const;
   // The sections with a mesh whose box is inside `planes` (camera-relative); counts the others.
@@ -149,6 +151,14 @@ class DeferredRenderer {
     std::uint64_t meshes = 0;
     bool valid = false;
   } shadowKey_;
+  struct ShadowBuild {                    // a map being rebuilt a slice a frame (update_frames > 1)
+    ShadowKey key;
+    int slice = 0;
+  };
+  std::optional<ShadowBuild> build_;
+  ShadowMap building_;
+  void drawShadowCasters(ShadowMap& map, const ShadowKey& key, const View& view, const SectionMeshes& meshes,
+                         int slice, int slices);
   bool gpuTimer_;  // timer queries for pass timings (a real GPU); else glFinish and the wall clock
   std::vector<Visible> visible_;  // this frame's sections inside the frustum
   FrameStats stats_;

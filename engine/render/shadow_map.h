@@ -37,6 +37,8 @@ struct ShadowSettings {
   PcfPattern pcfPattern = PcfPattern::Disk;
   float shiftAhead = 0.0f;      // warped mode: the map's centre moves this fraction of `distance` ahead
                                 // of the camera (horizontally), as Luanti does: more map where one looks
+  int updateFrames = 1;         // with FrameInputs::reuseShadowMap: a changed map is redrawn over this
+                                // many frames into a second map (1..16; Luanti's shadow_update_frames)
 };
 
 // The light's orthographic view of the camera's surroundings.

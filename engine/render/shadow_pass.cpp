@@ -1,6 +1,9 @@
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <set>
 
+#include "render/cave_culling.h"
 #include "render/deferred_renderer.h"
 #include "render/deferred_view.h"
 #include "render/gl/uniforms.h"
@@ -12,20 +15,16 @@ namespace terrasol {
 
 using gl::setMat4;
 
-// The light's view, a layer per cascade: casters inside the layer's box (culled per section), opaque
-// then alpha-tested.
+// The light's view, a layer per cascade: casters inside the layer's box (culled per section, and left
+// out when no ray of the light reaches them), opaque then alpha-tested, then translucent casters into
+// their own depth and colour. With `mayReuse` (the game) the maps are kept while nothing they show
+// changed, and with update_frames N > 1 a changed map is rebuilt a slice of its casters a frame into a
+// second map, swapped in when complete (Luanti's spread updates: no frame pays the whole pass).
 bool DeferredRenderer::shadowPass(const View& view, const SectionMeshes& meshes, bool mayReuse) {
   constexpr float kReuseCos = 0.99999962f;  // cos(0.05 degrees): 5 cm of edge movement 60 blocks away
   const ShadowSettings& settings = options_.shadow;
   const int layers = shadowLayers(settings);
   shadowMap_.ensure(settings.resolution, layers);
-  glViewport(0, 0, settings.resolution, settings.resolution);
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LESS);
-  glDepthMask(GL_TRUE);
-  glDisable(GL_CULL_FACE);   // single faces (the mesher drops hidden ones) must cast from both sides
-  glEnable(GL_DEPTH_CLAMP);  // casters above the near plane still cast, flattened onto it
-  glDisable(GL_BLEND);
   stats_.shadowCasters = 0;
   // Cascades are picked by distance from the camera, so only the single warped map moves ahead.
   const glm::dvec3 forward(view.forward.x, 0.0, view.forward.z);
@@ -34,48 +33,106 @@ bool DeferredRenderer::shadowPass(const View& view, const SectionMeshes& meshes,
                                ? forward / along * static_cast<double>(settings.shiftAhead * settings.distance)
                                : glm::dvec3(0.0);
   const glm::dvec3 centre = mapCentre(view.camera + view.shadowCentreOffset + ahead);
-  const bool reuse = mayReuse && shadowKey_.valid && shadowKey_.centre == centre &&
-                     shadowKey_.meshes == meshes.generation() &&
-                     glm::dot(shadowKey_.toLight, view.day.toShadowLight) > kReuseCos;
-  if (reuse) {
-    // The same maps, their matrices rebased on this frame's camera (they are camera-relative).
-    for (int layer = 0; layer < layers; ++layer) {
-      shadowViews_[static_cast<std::size_t>(layer)] = shadowViewFor(
-          settings.resolution, cascadeDistance(settings, layer), shadowKey_.toLight, view.camera, centre);
-    }
+  const ShadowKey wanted{centre, view.day.toShadowLight, meshes.generation(), true};
+  const bool unchanged = shadowKey_.valid && shadowKey_.centre == centre && shadowKey_.meshes == wanted.meshes &&
+                         glm::dot(shadowKey_.toLight, wanted.toLight) > kReuseCos;
+  const int slices = mayReuse ? std::max(settings.updateFrames, 1) : 1;
+  // A kept map must still cover the camera well; a jump (a teleport) redraws it whole at once.
+  const bool near = shadowKey_.valid && glm::length(centre - shadowKey_.centre) < 0.25 * settings.distance;
+  if (mayReuse && unchanged && !build_) {
+    rebaseShadowViews(view);
     return false;
   }
-  shadowKey_ = {centre, view.day.toShadowLight, meshes.generation(), true};
+  if (slices > 1 && near) {
+    if (!build_) build_ = ShadowBuild{wanted, 0};
+    building_.ensure(settings.resolution, layers);
+    drawShadowCasters(building_, build_->key, view, meshes, build_->slice, slices);
+    if (++build_->slice == slices) {
+      std::swap(shadowMap_, building_);
+      shadowKey_ = build_->key;
+      build_.reset();
+    }
+    rebaseShadowViews(view);
+    return true;
+  }
+  build_.reset();
+  shadowKey_ = wanted;
+  drawShadowCasters(shadowMap_, wanted, view, meshes, 0, 1);
+  rebaseShadowViews(view);
+  return true;
+}
+
+// The kept maps' matrices for this frame's camera (they are camera-relative).
+void DeferredRenderer::rebaseShadowViews(const View& view) {
+  const ShadowSettings& settings = options_.shadow;
+  for (int layer = 0; layer < shadowLayers(settings); ++layer) {
+    shadowViews_[static_cast<std::size_t>(layer)] = shadowViewFor(
+        settings.resolution, cascadeDistance(settings, layer), shadowKey_.toLight, view.camera, shadowKey_.centre);
+  }
+}
+
+// Slice `slice` of `slices` of the casters (by a hash of their position, so each is in exactly one)
+// into `map`, cleared first by slice 0.
+void DeferredRenderer::drawShadowCasters(ShadowMap& map, const ShadowKey& key, const View& view,
+                                         const SectionMeshes& meshes, int slice, int slices) {
+  const ShadowSettings& settings = options_.shadow;
+  const int layers = shadowLayers(settings);
+  glViewport(0, 0, settings.resolution, settings.resolution);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDepthMask(GL_TRUE);
+  glDisable(GL_CULL_FACE);   // single faces (the mesher drops hidden ones) must cast from both sides
+  glEnable(GL_DEPTH_CLAMP);  // casters above the near plane still cast, flattened onto it
+  glDisable(GL_BLEND);
+  // Sections no ray of the light can reach through open cells cast nothing (render/cave_culling.h).
+  std::set<SectionPos> lit;
+  if (options_.caveCulling) {
+    const float reach = cascadeDistance(settings, layers - 1);
+    for (const SectionPos& s : sectionsLitFrom(meshes, key.toLight, key.centre, static_cast<int>(std::ceil(reach / 16.0f)) + 2)) {
+      lit.insert(s);
+    }
+  }
+  const auto inSlice = [&](SectionPos p) {
+    const auto h = static_cast<std::uint32_t>(p.x * 73856093) ^ static_cast<std::uint32_t>(p.section * 19349663) ^
+                   static_cast<std::uint32_t>(p.z * 83492791);
+    return static_cast<int>(h % static_cast<std::uint32_t>(slices)) == slice;
+  };
+  const float farDepth = 1.0f;
+  const glm::vec3 fromLight = -key.toLight;
   for (int layer = 0; layer < layers; ++layer) {
-    ShadowView& light = shadowViews_[static_cast<std::size_t>(layer)];
-    light = shadowViewFor(settings.resolution, cascadeDistance(settings, layer), view.day.toShadowLight, view.camera,
-                          centre);
-    const std::vector<Visible> casters = sectionsInside(frustumPlanes(light.matrix), view.camera, meshes);
+    const ShadowView light =
+        shadowViewFor(settings.resolution, cascadeDistance(settings, layer), key.toLight, view.camera, key.centre);
+    std::vector<Visible> casters = sectionsInside(frustumPlanes(light.matrix), view.camera, meshes);
+    if (options_.caveCulling) {
+      const auto dark = std::remove_if(casters.begin(), casters.end(), [&](const Visible& v) { return !lit.contains(v.pos); });
+      stats_.shadowCastersHidden += static_cast<int>(casters.end() - dark);
+      casters.erase(dark, casters.end());
+    }
+    if (slices > 1) {
+      casters.erase(std::remove_if(casters.begin(), casters.end(), [&](const Visible& v) { return !inSlice(v.pos); }),
+                    casters.end());
+    }
     stats_.shadowCasters += static_cast<int>(casters.size());
-    glBindFramebuffer(GL_FRAMEBUFFER, shadowMap_.framebuffer(layer));
-    const float farDepth = 1.0f;
-    glClearNamedFramebufferfv(shadowMap_.framebuffer(layer), GL_DEPTH, 0, &farDepth);
-    for (const GLuint program : {shadow_.id(), shadowCutout_.id()}) {
+    const GLuint opaque = map.framebuffer(layer), translucent = map.translucentFramebuffer(layer);
+    if (slice == 0) {
+      const float clear[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+      glClearNamedFramebufferfv(opaque, GL_DEPTH, 0, &farDepth);
+      glClearNamedFramebufferfv(translucent, GL_COLOR, 0, clear);
+      glClearNamedFramebufferfv(translucent, GL_DEPTH, 0, &farDepth);
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, opaque);
+    for (const GLuint program : {shadow_.id(), shadowCutout_.id(), shadowTranslucent_.id()}) {
       setMat4(program, "u_shadowMatrix", light.matrix);
       setWarpUniforms(program);
     }
     // Nearest the light first: the depth test then rejects what lies behind before it is shaded.
-    const glm::vec3 fromLight = -view.day.toShadowLight;
     drawSections(shadow_.id(), casters, meshes, MeshLayer::Opaque, DrawOrder::NearestFirst, fromLight);
     drawSections(shadowCutout_.id(), casters, meshes, MeshLayer::Cutout, DrawOrder::NearestFirst, fromLight);
     // Translucent casters into their own depth and colour: the nearest one filters the light.
-    const GLuint translucent = shadowMap_.translucentFramebuffer(layer);
-    const float clear[4] = {1.0f, 1.0f, 1.0f, 1.0f};
-    glClearNamedFramebufferfv(translucent, GL_COLOR, 0, clear);
-    glClearNamedFramebufferfv(translucent, GL_DEPTH, 0, &farDepth);
     glBindFramebuffer(GL_FRAMEBUFFER, translucent);
-    setMat4(shadowTranslucent_.id(), "u_shadowMatrix", light.matrix);
-    setWarpUniforms(shadowTranslucent_.id());
-    drawSections(shadowTranslucent_.id(), casters, meshes, MeshLayer::Translucent, DrawOrder::NearestFirst,
-                 -view.day.toShadowLight);
+    drawSections(shadowTranslucent_.id(), casters, meshes, MeshLayer::Translucent, DrawOrder::NearestFirst, fromLight);
   }
   glDisable(GL_DEPTH_CLAMP);
-  return true;
 }
 
 // The maps' centre stays put until the camera has moved kRecentreTexels (of the finest layer) from it.

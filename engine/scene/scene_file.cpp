@@ -107,7 +107,8 @@ void parsePcf(const json& pcf, const std::string& key, SceneShadow& shadow) {
 
 void parseShadow(const nlohmann::json& value, const std::string& key, SceneShadow& shadow) {
   checkObject(value, key,
-              {"enabled", "mode", "cascades", "resolution", "distance", "warp", "warp_strength", "pcf", "shift_ahead"});
+              {"enabled", "mode", "cascades", "resolution", "distance", "warp", "warp_strength", "pcf", "shift_ahead",
+               "update_frames"});
   if (const json* v = field(value, "enabled")) shadow.enabled = boolean(*v, member(key, "enabled"));
   if (const json* v = field(value, "mode")) shadow.mode = oneOf(*v, member(key, "mode"), kShadowModes);
   if (const json* v = field(value, "cascades")) {
@@ -125,6 +126,9 @@ void parseShadow(const nlohmann::json& value, const std::string& key, SceneShado
   }
   if (const json* v = field(value, "pcf")) parsePcf(*v, member(key, "pcf"), shadow);
   if (const json* v = field(value, "shift_ahead")) shadow.shiftAhead = numberIn(*v, member(key, "shift_ahead"), 0.0, 0.9, false);
+  if (const json* v = field(value, "update_frames")) {
+    shadow.updateFrames = static_cast<int>(wholeNumber(*v, member(key, "update_frames"), 1, 16));
+  }
 }
 
 nlohmann::json shadowJson(const SceneShadow& s) {
@@ -136,6 +140,7 @@ nlohmann::json shadowJson(const SceneShadow& s) {
           {"warp", s.warp},
           {"warp_strength", s.warpStrength},
           {"shift_ahead", s.shiftAhead},
+          {"update_frames", s.updateFrames},
           {"pcf", {{"samples", s.pcfSamples}, {"radius", s.pcfRadius}, {"radius_unit", s.pcfRadiusUnit},
                    {"pattern", s.pcfPattern}}}};
 }
@@ -143,7 +148,8 @@ nlohmann::json shadowJson(const SceneShadow& s) {
 namespace {
 
 void parseRender(const json& render, SceneFile& scene) {
-  checkObject(render, "render", {"width", "height", "view_distance", "debug_view", "specular", "material_ao", "shadow"});
+  checkObject(render, "render",
+              {"width", "height", "view_distance", "debug_view", "specular", "material_ao", "cave_culling", "shadow"});
   if (const json* v = field(render, "width")) {
     scene.width = static_cast<int>(wholeNumber(*v, "render.width", 1, 8192));
   }
@@ -158,6 +164,7 @@ void parseRender(const json& render, SceneFile& scene) {
   }
   if (const json* v = field(render, "specular")) scene.specular = oneOf(*v, "render.specular", kSpecularModels);
   if (const json* v = field(render, "material_ao")) scene.materialAo = boolean(*v, "render.material_ao");
+  if (const json* v = field(render, "cave_culling")) scene.caveCulling = boolean(*v, "render.cave_culling");
   if (const json* v = field(render, "shadow")) parseShadow(*v, "render.shadow", scene.shadow);
 }
 

@@ -50,6 +50,7 @@ struct SceneShadow {
   std::string pcfRadiusUnit = "texels";  // one of kPcfRadiusUnits
   std::string pcfPattern = "disk";  // one of kPcfPatterns
   float shiftAhead = 0.0f;       // 0..0.9 of distance (warped mode)
+  int updateFrames = 1;          // 1..16: frames a changed map is spread over (the game; renders draw it whole)
 };
 inline constexpr std::array<std::string_view, 2> kShadowModes = {"warped", "cascaded"};
 inline constexpr std::array<std::string_view, 3> kShadowWarps = {"none", "square", "radial"};
@@ -77,6 +78,7 @@ struct SceneFile {
   std::string debugView = "none";  // "render.debug_view": one of kDebugViews
   std::string specular = "blinn_phong";  // "render.specular": one of kSpecularModels
   bool materialAo = true;          // "render.material_ao": LabPBR _n blue darkens ambient light
+  bool caveCulling = true;         // "render.cave_culling": leave out sections hidden behind solid ground
   SceneShadow shadow;              // "render.shadow"
   glm::dvec3 cameraPosition{0.0, 80.0, 0.0};
   glm::dvec3 cameraLookAt{0.0, 80.0, -1.0};

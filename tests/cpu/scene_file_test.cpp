@@ -203,7 +203,7 @@ TEST(SceneFile, SpecularModelAndMaterialAo) {
 TEST(SceneFile, ShadowSettings) {
   const SceneFile scene = parseScene(R"({"render": {"shadow": {"enabled": false, "mode": "cascaded", "cascades": 3,
       "resolution": 512, "distance": 64, "warp": "square", "warp_strength": 0.5, "shift_ahead": 0.3,
-      "pcf": {"samples": 2, "radius": 0.5, "radius_unit": "blocks", "pattern": "grid"}}}})",
+      "update_frames": 8, "pcf": {"samples": 2, "radius": 0.5, "radius_unit": "blocks", "pattern": "grid"}}}})",
                                      "scenes/a.json");
   const SceneShadow& s = scene.shadow;
   EXPECT_FALSE(s.enabled);
@@ -214,6 +214,7 @@ TEST(SceneFile, ShadowSettings) {
   EXPECT_EQ(s.warp, "square");
   EXPECT_FLOAT_EQ(s.warpStrength, 0.5f);
   EXPECT_FLOAT_EQ(s.shiftAhead, 0.3f);
+  EXPECT_EQ(s.updateFrames, 8);
   EXPECT_EQ(s.pcfSamples, 2);
   EXPECT_FLOAT_EQ(s.pcfRadius, 0.5f);
   EXPECT_EQ(s.pcfRadiusUnit, "blocks");
@@ -225,6 +226,14 @@ TEST(SceneFile, ShadowSettings) {
                         "render.shadow.pcf.radius_unit: expected one of"));
   EXPECT_TRUE(failsWith(R"({"render": {"shadow": {"mode": "ray_traced"}}})", "render.shadow.mode: expected one of"));
   EXPECT_TRUE(failsWith(R"({"render": {"shadow": {"softness": 1}}})", "render.shadow.softness: unknown key"));
+  EXPECT_TRUE(failsWith(R"({"render": {"shadow": {"update_frames": 0}}})", "render.shadow.update_frames: expected"));
+  EXPECT_TRUE(failsWith(R"({"render": {"shadow": {"update_frames": 17}}})", "render.shadow.update_frames: expected"));
+}
+
+TEST(SceneFile, CaveCulling) {
+  EXPECT_TRUE(parseScene("{}", "scenes/a.json").caveCulling);
+  EXPECT_FALSE(parseScene(R"({"render": {"cave_culling": false}})", "scenes/a.json").caveCulling);
+  EXPECT_TRUE(failsWith(R"({"render": {"cave_culling": "no"}})", "render.cave_culling: expected true or false"));
 }
 
 TEST(SceneFile, WrongArrayLengthsNameTheKey) {

@@ -7,6 +7,7 @@
 #include "core/paths.h"
 #include "light/light_engine.h"
 #include "mesh/mesher.h"
+#include "mesh/section_visibility.h"
 #include "world/generator.h"
 #include "world/terrain_generator.h"
 
@@ -65,6 +66,18 @@ void BM_MeshCave(benchmark::State& state) {
   meshBenchmark(state, t, {0, best, 0}, CaptureResult::Captured);
 }
 BENCHMARK(BM_MeshCave)->Unit(benchmark::kMicrosecond);
+
+// Cave culling's face links of the surface section (computed on the mesh workers beside the mesh).
+void BM_SectionFaceLinks(benchmark::State& state) {
+  Terrain t;
+  SectionSnapshot snapshot;
+  if (captureSection(t.world, {0, sectionOf(t.gen->surfaceHeight(8, 8)), 0}, snapshot) != CaptureResult::Captured) {
+    state.SkipWithError("the surface section has nothing to mesh");
+    return;
+  }
+  for (auto _ : state) benchmark::DoNotOptimize(sectionFaceLinks(snapshot));
+}
+BENCHMARK(BM_SectionFaceLinks)->Unit(benchmark::kMicrosecond);
 
 void BM_MeshEmpty(benchmark::State& state) {
   Terrain t;

@@ -127,7 +127,8 @@ nlohmann::json frameReport(int index, const RenderedFrame& frame) {
           {"ms", ms},
           {"nan_pixels", frame.nanPixels},
           {"chunks", {{"drawn", frame.stats.sectionsDrawn}, {"culled", frame.stats.sectionsCulled},
-                      {"hidden", frame.stats.sectionsHidden}}},
+                      {"hidden", frame.stats.sectionsHidden}, {"shadow_casters", frame.stats.shadowCasters},
+                      {"shadow_casters_hidden", frame.stats.shadowCastersHidden}}},
           {"quads", {{"drawn", frame.stats.quadsDrawn}, {"facing_away", frame.stats.quadsFacingAway}}},
           {"passes_skipped", skipped}};
 }

@@ -45,6 +45,7 @@ ShadowSettings shadowSettingsOf(const SceneShadow& s) {
   out.pcfPattern = s.pcfPattern == "grid" ? PcfPattern::Grid : PcfPattern::Disk;
   out.pcfRadiusInBlocks = s.pcfRadiusUnit == "blocks";
   out.shiftAhead = s.shiftAhead;
+  out.updateFrames = s.updateFrames;
   return out;
 }
 
@@ -91,6 +92,7 @@ SceneRenderer::SceneRenderer(const SceneFile& scene) : scene_(scene), debugView_
   RendererOptions options;
   options.ggxSpecular = scene.specular == "ggx";
   options.shadow = shadowSettingsOf(scene.shadow);
+  options.caveCulling = scene.caveCulling;
   gpu_ = std::make_unique<Gpu>(shaders, world_->atlas.atlas, tints, options, glm::ivec2(scene.width, scene.height));
   for (const auto& mesh : meshes) {
     gpu_->meshes.upload(mesh);

@@ -1,0 +1,83 @@
+// What the renderer leaves out, rule by rule: each rule must leave something out on a scene that has
+// it to leave, and the picture must not change by a single pixel for it.
+
+#include <filesystem>
+
+#include "scene_render.h"
+#include "support/gl_test.h"
+#include "support/golden.h"
+
+namespace terrasol {
+namespace {
+
+const std::filesystem::path kScenes = std::filesystem::path(TERRASOL_SOURCE_DIR) / "tests" / "scenes";
+
+class LeaveOutTest : public testing::GlTest {};
+
+bool identical(const Image& a, const Image& b) { return compareImages(a, b, {0.0f, 0.0f}).matches; }
+
+TEST_F(LeaveOutTest, CaveCullingHidesSectionsAndCastersButNoPixel) {
+  for (const char* name : {"noon_terrain", "shadow_cave_mouth", "night_cave_torches"}) {
+    SceneFile scene = loadScene(kScenes / (std::string(name) + ".json"));
+    const RenderedFrame culled = SceneRenderer(scene).renderFrame(0);
+    scene.caveCulling = false;
+    const RenderedFrame all = SceneRenderer(scene).renderFrame(0);
+    EXPECT_GT(culled.stats.sectionsHidden, 0) << name;
+    EXPECT_EQ(all.stats.sectionsHidden, 0) << name;
+    EXPECT_EQ(culled.stats.sectionsDrawn + culled.stats.sectionsHidden, all.stats.sectionsDrawn) << name;
+    EXPECT_LT(culled.stats.shadowCasters, all.stats.shadowCasters + 1) << name;
+    EXPECT_TRUE(identical(culled.image, all.image)) << name << ": leaving hidden sections out changed the image";
+  }
+  context_->checkErrors("cave culling");
+}
+
+TEST_F(LeaveOutTest, SunlessSectionsCastNoShadowAndChangeNoPixel) {
+  SceneFile scene = loadScene(kScenes / "noon_terrain.json");
+  const RenderedFrame culled = SceneRenderer(scene).renderFrame(0);
+  scene.caveCulling = false;
+  const RenderedFrame all = SceneRenderer(scene).renderFrame(0);
+  EXPECT_GT(culled.stats.shadowCastersHidden, 0);
+  EXPECT_EQ(culled.stats.shadowCasters + culled.stats.shadowCastersHidden, all.stats.shadowCasters);
+  EXPECT_TRUE(identical(culled.image, all.image));
+}
+
+TEST_F(LeaveOutTest, FacesTurnedAwayAreNotDrawnAndChangeNoPixel) {
+  const SceneFile scene = loadScene(kScenes / "noon_terrain.json");
+  const RenderedFrame frame = SceneRenderer(scene).renderFrame(0);
+  EXPECT_GT(frame.stats.quadsFacingAway, 0);
+  EXPECT_GT(frame.stats.quadsDrawn, 0);
+  // The faces left out are back faces, which GL culling would drop anyway: the golden still matches.
+  EXPECT_TRUE(testing::matchesGolden(frame.image, "scene_noon_terrain"));
+}
+
+TEST_F(LeaveOutTest, ASpreadShadowUpdateEndsWithTheMapAWholeUpdateDraws) {
+  SceneFile scene = loadScene(kScenes / "shadow_noon.json");
+  scene.shadow.updateFrames = 4;
+  SceneRenderer spread(scene);
+  FrameRequest request;
+  request.reuseShadowMap = true;
+  const RenderedFrame first = spread.renderFrame(0, request);  // nothing kept yet: drawn whole
+  const int whole = first.stats.shadowCasters;
+  // Moved past the re-centring distance, well inside a quarter of the map: rebuilt over 4 frames.
+  request.shadowCentreOffset = glm::dvec3(12.0, 0.0, 0.0) * static_cast<double>(first.geometry.shadowTexelWorld);
+  int drawn = 0;
+  RenderedFrame last;
+  for (int i = 0; i < 4; ++i) {
+    last = spread.renderFrame(0, request);
+    EXPECT_LT(last.stats.shadowCasters, whole) << "frame " << i << " draws a slice";
+    drawn += last.stats.shadowCasters;
+  }
+  EXPECT_EQ(drawn, whole) << "every caster once over the four frames";
+  const RenderedFrame kept = spread.renderFrame(0, request);
+  EXPECT_EQ(kept.stats.shadowCasters, 0) << "complete and unchanged: kept";
+
+  SceneRenderer once(scene);
+  FrameRequest wholeRequest;
+  wholeRequest.shadowCentreOffset = request.shadowCentreOffset;
+  const RenderedFrame reference = once.renderFrame(0, wholeRequest);
+  EXPECT_TRUE(identical(last.image, reference.image)) << "the finished map is the map a whole update draws";
+  context_->checkErrors("spread shadow update");
+}
+
+}  // namespace
+}  // namespace terrasol
