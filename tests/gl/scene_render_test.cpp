@@ -127,6 +127,24 @@ TEST_F(SceneRenderTest, NoFloatTargetHoldsNanOrInf) {
 }
 
 // The real third-party pack stacked over the default one shows its own textures.
+// A window minimised to 0 x 0 asks for frames of no size: nothing is drawn, no GL error, and the next
+// frame at a real size is whole.
+TEST_F(SceneRenderTest, AZeroSizedFrameDrawsNothingAndRaisesNoGlError) {
+  SceneFile scene = loadScene(kScenes / "noon_terrain.json");
+  scene.width = 64;
+  scene.height = 36;
+  SceneRenderer renderer(scene);
+  renderer.draw(0, 0, {0, 0});
+  renderer.draw(0, 0, {0, 5});
+  context_->checkErrors("a zero-sized frame");
+  FrameRequest request;
+  request.checkNan = true;
+  const RenderedFrame frame = renderer.renderFrame(0, request);
+  context_->checkErrors("the frame after it");
+  EXPECT_EQ(frame.nanPixels, 0u);
+  EXPECT_EQ(frame.image.width, 64);
+}
+
 TEST_F(SceneRenderTest, AStackedPackReplacesTheDefaultTextures) {
   SceneFile stacked = loadScene(kScenes / "pack_pixel_perfection.json");
   ASSERT_TRUE(std::filesystem::exists(stacked.packs.back()))
