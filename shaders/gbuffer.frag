@@ -13,9 +13,9 @@ void main() {
 #ifdef CUTOUT
   if (albedo.a < 0.5) discard;
 #endif
-  vec4 normalTexel = texture(u_atlasNormal, v_uv);
+  vec4 normalTexel = normalTexelAt(v_uv);
   o_albedo = vec4(albedo.rgb * v_tint * vertexAo(), normalTexel.b);
   o_normals = vec4(octEncode(mappedNormal(normalTexel)), octEncode(vertexNormal()));
-  o_specular = texture(u_atlasSpecular, v_uv);
+  o_specular = specularTexelAt(v_uv);
   o_light = vec4(v_light, 1.0);
 }

@@ -43,7 +43,11 @@ void main() {
   s.materialAo = albedo.a;
   s.normal = octDecode(normals.xy);
   s.vertexNormal = octDecode(normals.zw);
+#ifdef NO_SPECULAR_MAPS
+  s.spec = vec4(0.0);  // every texel holds LabPBR's default _s: nothing to read
+#else
   s.spec = texelFetch(g_specular, pixel, 0);
+#endif
   s.blockLight = light.x;
   s.skyLight = light.y;
   float visibility = 1.0;

@@ -13,12 +13,12 @@ layout(location = OUT_COLOR) out vec4 o_color;
 
 void main() {
   vec4 albedo = texture(u_atlasAlbedo, v_uv);
-  vec4 normalTexel = texture(u_atlasNormal, v_uv);
+  vec4 normalTexel = normalTexelAt(v_uv);
   Surface s;
   s.albedo = albedo.rgb * v_tint * vertexAo();
   s.normal = mappedNormal(normalTexel);
   s.vertexNormal = vertexNormal();
-  s.spec = texture(u_atlasSpecular, v_uv);
+  s.spec = specularTexelAt(v_uv);
   s.blockLight = v_light.x;
   s.skyLight = v_light.y;
   s.materialAo = normalTexel.b;

@@ -82,6 +82,8 @@ Atlas buildAtlas(const std::vector<LoadedTexture>& textures) {
   std::vector<bool> cutoutTiles;
   int tile = 0;
   for (const auto& t : textures) {
+    atlas.anyNormalMap = atlas.anyNormalMap || t.hasNormalMap;
+    atlas.anySpecularMap = atlas.anySpecularMap || t.hasSpecularMap;
     AtlasTexture entry{t.name, tile, static_cast<int>(t.albedo.size()), t.animation, t.missing, false};
     for (std::size_t f = 0; f < t.albedo.size(); ++f, ++tile) {
       const int sx = (tile % atlas.columns) * atlas.slotSize, sy = (tile / atlas.columns) * atlas.slotSize;

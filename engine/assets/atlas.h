@@ -33,6 +33,8 @@ struct Atlas {
   std::vector<Image> albedo, normal, specular;  // one image per mip level, level 0 first
   std::vector<AtlasTexture> textures;
   std::unordered_map<std::string, int> byName;
+  // Whether any texture came with a _n / _s companion (else those atlases hold only the defaults).
+  bool anyNormalMap = false, anySpecularMap = false;
 
   int levels() const { return static_cast<int>(albedo.size()); }
   // UV rectangle (u0, v0, u1, v1) of a tile's texels, with v = 0 at the top row of the image.

@@ -26,17 +26,34 @@ namespace {
 // sunlit surface shows about its texture colour, as in vanilla.
 constexpr float kExposure = 0.3f;
 
-gl::Program build(const ShaderPreprocessor& shaders, const char* vertex, const char* fragment,
-                  std::vector<ShaderDefine> extra = {}) {
+// Builds a program and names its variant in `names`: the fragment stage and the defines that chose it.
+gl::Program build(const ShaderPreprocessor& shaders, std::vector<std::string>& names, const char* vertex,
+                  const char* fragment, std::vector<ShaderDefine> extra = {}) {
+  std::string name = std::string(fragment).substr(0, std::string(fragment).find('.'));
+  for (const ShaderDefine& d : extra) name += "+" + d.name;
+  names.push_back(name);
   std::vector<ShaderDefine> defines = rendererDefines();
   for (auto& d : extra) defines.push_back(std::move(d));
   return buildProgram(shaders, {{GL_VERTEX_SHADER, vertex}, {GL_FRAGMENT_SHADER, fragment}}, defines);
+}
+
+std::vector<ShaderDefine> with(std::vector<ShaderDefine> a, const std::vector<ShaderDefine>& b) {
+  a.insert(a.end(), b.begin(), b.end());
+  return a;
 }
 
 std::vector<ShaderDefine> lightingDefines(const RendererOptions& options) {
   std::vector<ShaderDefine> defines;
   if (options.ggxSpecular) defines.push_back({"SPECULAR_GGX", "1"});
   if (options.shadow.enabled) defines.push_back({"SHADOWS", "1"});
+  return defines;
+}
+
+// The maps no loaded pack has: nothing to sample (block_surface.glsl).
+std::vector<ShaderDefine> mapDefines(const Atlas& atlas, const RendererOptions& options, bool normals) {
+  std::vector<ShaderDefine> defines;
+  if (normals && options.leaveOutAbsentMaps && !atlas.anyNormalMap) defines.push_back({"NO_NORMAL_MAPS", "1"});
+  if (options.leaveOutAbsentMaps && !atlas.anySpecularMap) defines.push_back({"NO_SPECULAR_MAPS", "1"});
   return defines;
 }
 
@@ -51,17 +68,22 @@ glm::vec3 ambientTint(glm::vec3 zenith) {
 
 DeferredRenderer::DeferredRenderer(const ShaderPreprocessor& shaders, const Atlas& atlas, const BiomeTints& tints,
                                    const RendererOptions& options)
-    : geometry_(build(shaders, "gbuffer.vert", "gbuffer.frag")),
-      cutout_(build(shaders, "gbuffer.vert", "gbuffer.frag", {{"CUTOUT", "1"}})),
-      lighting_(build(shaders, "fullscreen.vert", "lighting.frag", lightingDefines(options))),
-      translucent_(build(shaders, "gbuffer.vert", "translucent.frag", lightingDefines(options))),
-      shadow_(options.shadow.enabled ? build(shaders, "shadow.vert", "shadow.frag") : gl::Program()),
-      shadowCutout_(options.shadow.enabled ? build(shaders, "shadow.vert", "shadow.frag", {{"CUTOUT", "1"}}) : gl::Program()),
-      shadowTranslucent_(options.shadow.enabled ? build(shaders, "shadow.vert", "shadow.frag", {{"TRANSLUCENT", "1"}})
-                                                : gl::Program()),
-      final_(build(shaders, "fullscreen.vert", "final.frag")),
-      debug_(build(shaders, "fullscreen.vert", "debug_view.frag")),
-      outline_(build(shaders, "outline.vert", "outline.frag")),
+    : geometry_(build(shaders, variants_, "gbuffer.vert", "gbuffer.frag", mapDefines(atlas, options, true))),
+      cutout_(build(shaders, variants_, "gbuffer.vert", "gbuffer.frag",
+                    with({{"CUTOUT", "1"}}, mapDefines(atlas, options, true)))),
+      lighting_(build(shaders, variants_, "fullscreen.vert", "lighting.frag",
+                      with(lightingDefines(options), mapDefines(atlas, options, false)))),
+      translucent_(build(shaders, variants_, "gbuffer.vert", "translucent.frag",
+                         with(lightingDefines(options), mapDefines(atlas, options, true)))),
+      shadow_(options.shadow.enabled ? build(shaders, variants_, "shadow.vert", "shadow.frag") : gl::Program()),
+      shadowCutout_(options.shadow.enabled ? build(shaders, variants_, "shadow.vert", "shadow.frag", {{"CUTOUT", "1"}})
+                                           : gl::Program()),
+      shadowTranslucent_(options.shadow.enabled
+                             ? build(shaders, variants_, "shadow.vert", "shadow.frag", {{"TRANSLUCENT", "1"}})
+                             : gl::Program()),
+      final_(build(shaders, variants_, "fullscreen.vert", "final.frag")),
+      debug_(build(shaders, variants_, "fullscreen.vert", "debug_view.frag")),
+      outline_(build(shaders, variants_, "outline.vert", "outline.frag")),
       textures_(atlas, tints),
       lightmap_(gl::Texture::create(GL_TEXTURE_2D)),
       empty_(gl::VertexArray::create()),

@@ -59,6 +59,8 @@ struct FrameInputs {
 struct RendererOptions {
   bool ggxSpecular = false;  // GGX/Smith instead of energy-conserving Blinn-Phong
   bool caveCulling = true;   // leave out sections hidden behind solid ground (render/cave_culling.h)
+  // With no _n (_s) in any loaded pack, the shaders use LabPBR's default instead of sampling it.
+  bool leaveOutAbsentMaps = true;
   ShadowSettings shadow;
 };
 
@@ -100,6 +102,8 @@ class DeferredRenderer {
   // The targets of the last frame (for tests and reports), null before the first.
   const GBuffer* gbuffer() const { return gbuffer_ ? &*gbuffer_ : nullptr; }
   const FrameStats& lastFrame() const { return stats_; }
+  // The shader variants built: each program's name with the defines that chose it ("gbuffer+CUTOUT").
+  const std::vector<std::string>& shaderVariants() const { return variants_; }
   const FrameGeometry& lastGeometry() const { return lastGeometry_; }
 
  private:
@@ -136,6 +140,7 @@ class DeferredRenderer {
   void setLightingUniforms(GLuint program, const View& view) const;
   void setSkyUniforms(GLuint program, const View& view) const;
 
+  std::vector<std::string> variants_;  // before the programs: building each one names it here
   gl::Program geometry_, cutout_, lighting_, translucent_, shadow_, shadowCutout_, shadowTranslucent_, final_, debug_, outline_;
   BlockTextures textures_;
   gl::Texture lightmap_;

@@ -7,6 +7,24 @@ layout(binding = UNIT_ATLAS_ALBEDO) uniform sampler2D u_atlasAlbedo;    // sRGB:
 layout(binding = UNIT_ATLAS_NORMAL) uniform sampler2D u_atlasNormal;    // LabPBR _n
 layout(binding = UNIT_ATLAS_SPECULAR) uniform sampler2D u_atlasSpecular;  // LabPBR _s, nearest
 
+// With NO_NORMAL_MAPS / NO_SPECULAR_MAPS (no loaded pack has any _n / _s) the atlases hold only
+// LabPBR's defaults, so those constants stand in and nothing is sampled: the same values, no fetch.
+vec4 normalTexelAt(vec2 uv) {
+#ifdef NO_NORMAL_MAPS
+  return vec4(127.0 / 255.0, 127.0 / 255.0, 1.0, 1.0);  // labpbr::kDefaultNormal
+#else
+  return texture(u_atlasNormal, uv);
+#endif
+}
+
+vec4 specularTexelAt(vec2 uv) {
+#ifdef NO_SPECULAR_MAPS
+  return vec4(0.0);  // labpbr::kDefaultSpecular
+#else
+  return texture(u_atlasSpecular, uv);
+#endif
+}
+
 in vec3 v_position;
 in vec2 v_uv;
 in vec3 v_tint;

@@ -1,6 +1,7 @@
 // What the renderer leaves out, rule by rule: each rule must leave something out on a scene that has
 // it to leave, and the picture must not change by a single pixel for it.
 
+#include <algorithm>
 #include <filesystem>
 
 #include "scene_render.h"
@@ -48,6 +49,29 @@ TEST_F(LeaveOutTest, FacesTurnedAwayAreNotDrawnAndChangeNoPixel) {
   EXPECT_GT(frame.stats.quadsDrawn, 0);
   // The faces left out are back faces, which GL culling would drop anyway: the golden still matches.
   EXPECT_TRUE(testing::matchesGolden(frame.image, "scene_noon_terrain"));
+}
+
+bool hasVariant(SceneRenderer& r, const std::string& name) {
+  const auto& v = r.renderer().shaderVariants();
+  return std::find(v.begin(), v.end(), name) != v.end();
+}
+
+TEST_F(LeaveOutTest, MapsNoPackHasAreNotSampledAndChangeNoPixel) {
+  // Pixel Perfection CE alone: no _n, no _s anywhere.
+  SceneFile scene = loadScene(kScenes / "pack_pixel_perfection.json");
+  scene.packs = {std::filesystem::path(TERRASOL_SOURCE_DIR) / ".." / "shared" / "testdata" / "packs" / "pixel_perfection_ce"};
+  SceneRenderer lean(scene);
+  EXPECT_TRUE(hasVariant(lean, "gbuffer+NO_NORMAL_MAPS+NO_SPECULAR_MAPS"));
+  EXPECT_TRUE(hasVariant(lean, "lighting+SHADOWS+NO_SPECULAR_MAPS"));
+  scene.leaveOutAbsentMaps = false;
+  SceneRenderer full(scene);
+  EXPECT_TRUE(hasVariant(full, "gbuffer"));
+  EXPECT_TRUE(identical(lean.renderFrame(0).image, full.renderFrame(0).image));
+  // With the default pack (which has both) nothing is left out.
+  SceneRenderer pbr(loadScene(kScenes / "pack_pixel_perfection.json"));
+  EXPECT_TRUE(hasVariant(pbr, "gbuffer"));
+  EXPECT_TRUE(hasVariant(pbr, "lighting+SHADOWS"));
+  context_->checkErrors("absent maps");
 }
 
 TEST_F(LeaveOutTest, ASpreadShadowUpdateEndsWithTheMapAWholeUpdateDraws) {

@@ -196,7 +196,10 @@ int renderScene(const Options& o, const SceneFile& scene, SceneRenderer& rendere
   }
   progress.finish();
   if (!o.report.empty()) {
-    std::ofstream(o.report) << nlohmann::json{{"scene", scene.file.string()}, {"frames", frames}}.dump(2) << "\n";
+    std::ofstream(o.report) << nlohmann::json{{"scene", scene.file.string()},
+                                              {"shader_variants", renderer.renderer().shaderVariants()},
+                                              {"frames", frames}}.dump(2)
+                            << "\n";
   }
   const SceneRenderStats& stats = renderer.stats();
   std::printf("terrasol-render: %s: %d frame(s), %zu sections, %zu quads, loaded in %.0f ms; wrote %s\n",

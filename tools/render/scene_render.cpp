@@ -93,6 +93,7 @@ SceneRenderer::SceneRenderer(const SceneFile& scene) : scene_(scene), debugView_
   options.ggxSpecular = scene.specular == "ggx";
   options.shadow = shadowSettingsOf(scene.shadow);
   options.caveCulling = scene.caveCulling;
+  options.leaveOutAbsentMaps = scene.leaveOutAbsentMaps;
   gpu_ = std::make_unique<Gpu>(shaders, world_->atlas.atlas, tints, options, glm::ivec2(scene.width, scene.height));
   for (const auto& mesh : meshes) {
     gpu_->meshes.upload(mesh);
