@@ -185,8 +185,9 @@ void DeferredRenderer::geometryPass(const View& view, const SectionMeshes& meshe
   glEnable(GL_FRAMEBUFFER_SRGB);  // the albedo target stores linear light sRGB-encoded
   setMat4(geometry_.id(), "u_viewProjection", view.viewProjection);
   setMat4(cutout_.id(), "u_viewProjection", view.viewProjection);
-  drawSections(geometry_.id(), visible_, meshes, MeshLayer::Opaque, DrawOrder::NearestFirst, glm::vec3(0.0f), true);
-  drawSections(cutout_.id(), visible_, meshes, MeshLayer::Cutout, DrawOrder::NearestFirst, glm::vec3(0.0f), true);
+  const bool away = options_.cullFacesAway;
+  drawSections(geometry_.id(), visible_, meshes, MeshLayer::Opaque, DrawOrder::NearestFirst, glm::vec3(0.0f), away);
+  drawSections(cutout_.id(), visible_, meshes, MeshLayer::Cutout, DrawOrder::NearestFirst, glm::vec3(0.0f), away);
   glDisable(GL_FRAMEBUFFER_SRGB);
 }
 
@@ -254,7 +255,9 @@ void DeferredRenderer::drawSections(GLuint program, const std::vector<Visible>& 
     glProgramUniform3fv(program, offsetLocation, 1, glm::value_ptr(d.offset));
     if (!cullFacesAway) {
       glDrawElements(GL_TRIANGLES, d.layer->quads * 6, GL_UNSIGNED_INT, nullptr);
-      if (layer == MeshLayer::Translucent) stats_.quadsDrawn += d.layer->quads;
+      if (program == geometry_.id() || program == cutout_.id() || program == translucent_.id()) {
+        stats_.quadsDrawn += d.layer->quads;
+      }
       continue;
     }
     // Face groups turned away from the camera for the whole section are never drawn: a face of normal

@@ -59,6 +59,7 @@ struct FrameInputs {
 struct RendererOptions {
   bool ggxSpecular = false;  // GGX/Smith instead of energy-conserving Blinn-Phong
   bool caveCulling = true;   // leave out sections hidden behind solid ground (render/cave_culling.h)
+  bool cullFacesAway = true;  // leave out face groups turned away from the camera for a whole section
   // With no _n (_s) in any loaded pack, the shaders use LabPBR's default instead of sampling it.
   bool leaveOutAbsentMaps = true;
   ShadowSettings shadow;

@@ -80,6 +80,7 @@ struct SceneFile {
   bool materialAo = true;          // "render.material_ao": LabPBR _n blue darkens ambient light
   bool caveCulling = true;         // "render.cave_culling": leave out sections hidden behind solid ground
   bool leaveOutAbsentMaps = true;  // "render.leave_out_absent_maps": no _n/_s sampling when no pack has them
+  bool cullFacesAway = true;       // "render.cull_faces_away": face groups turned away are not drawn
   SceneShadow shadow;              // "render.shadow"
   glm::dvec3 cameraPosition{0.0, 80.0, 0.0};
   glm::dvec3 cameraLookAt{0.0, 80.0, -1.0};

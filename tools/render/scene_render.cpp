@@ -94,6 +94,7 @@ SceneRenderer::SceneRenderer(const SceneFile& scene) : scene_(scene), debugView_
   options.shadow = shadowSettingsOf(scene.shadow);
   options.caveCulling = scene.caveCulling;
   options.leaveOutAbsentMaps = scene.leaveOutAbsentMaps;
+  options.cullFacesAway = scene.cullFacesAway;
   gpu_ = std::make_unique<Gpu>(shaders, world_->atlas.atlas, tints, options, glm::ivec2(scene.width, scene.height));
   for (const auto& mesh : meshes) {
     gpu_->meshes.upload(mesh);
