@@ -573,10 +573,14 @@ int Game::run() {
     drawHud();
     window_.checkErrors("frame");
     const bool final = options_.frames && frame + 1 >= *options_.frames;
-    if (screenshotRequested_ || (final && !options_.screenshot.empty())) {
+    const glm::ivec2 size = window_.framebufferSize();
+    if ((screenshotRequested_ || (final && !options_.screenshot.empty())) && (size.x <= 0 || size.y <= 0)) {
+      logWarning("no screenshot: the window has no pixels (minimised)");
+      screenshotRequested_ = false;
+    } else if (screenshotRequested_ || (final && !options_.screenshot.empty())) {
       const std::filesystem::path file = final && !options_.screenshot.empty() ? options_.screenshot : screenshotName();
       if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path());
-      saveImage(file, readFramebuffer(0, window_.framebufferSize()));
+      saveImage(file, readFramebuffer(0, size));
       logInfo("screenshot saved to " + file.string());
       screenshotRequested_ = false;
     }

@@ -59,7 +59,7 @@ std::vector<ChunkPos> ChunkLoader::takeFailed() {
 
 std::size_t ChunkLoader::pending() const {
   std::lock_guard lock(mutex_);
-  return queue_.size() + inProgress_;
+  return queue_.size() + inProgress_ + finished_.size() + failed_.size();
 }
 
 void ChunkLoader::work() {

@@ -34,7 +34,7 @@ class ChunkLoader {
   std::vector<std::unique_ptr<Chunk>> takeFinished();
   // Chunks that could not be loaded (their region is unreadable) since the last call; ask again later.
   std::vector<ChunkPos> takeFailed();
-  // Requests queued or in progress.
+  // Requests not handed back yet: queued, in progress, or finished (or failed) and not taken.
   std::size_t pending() const;
 
  private:
