@@ -1,7 +1,8 @@
-// Runs the texture fuzz target over seeds and deterministic mutations of them (truncations, byte
-// flips, header fields set to extremes), without libFuzzer, so every CI run exercises it. Seeds: the
-// default pack's PNGs and animations, and the palette PNGs of ../shared/testdata when present.
-//   terrasol-fuzz-corpus SEED_DIR...
+// Runs a fuzz target over seeds and deterministic mutations of them (truncations, byte flips, header
+// fields set to extremes), without libFuzzer, so every CI run exercises it. Texture seeds: the default
+// pack's PNGs and animations, and the palette PNGs of ../shared/testdata when present; model seeds:
+// the glTF samples there.
+//   terrasol-fuzz-corpus [--ext=.gltf,.glb] SEED_DIR...   (default --ext=.png)
 
 #include <cstdint>
 #include <cstdio>
@@ -28,11 +29,19 @@ void run(const std::string& input, long& count) {
 
 int main(int argc, char** argv) {
   std::vector<std::string> seeds;
-  for (int i = 1; i < argc; ++i) {
+  std::string extensions = ".png";
+  int first = 1;
+  if (argc > 1 && std::string(argv[1]).starts_with("--ext=")) {
+    extensions = std::string(argv[1]).substr(6);
+    first = 2;
+  }
+  const bool textures = extensions == ".png";
+  for (int i = first; i < argc; ++i) {
     std::error_code ec;
-    for (const auto& entry : std::filesystem::directory_iterator(argv[i], ec)) {
+    for (const auto& entry : std::filesystem::recursive_directory_iterator(argv[i], ec)) {
       const auto path = entry.path();
-      if (path.extension() != ".png" || seeds.size() > 60) continue;
+      const std::string ext = path.extension().string();
+      if (ext.empty() || ("," + extensions + ",").find("," + ext + ",") == std::string::npos || seeds.size() > 60) continue;
       std::string seed = readFile(path);
       const auto meta = path.string() + ".mcmeta";
       if (std::filesystem::exists(meta)) seed += "\n--mcmeta--\n" + readFile(meta);
@@ -40,8 +49,10 @@ int main(int argc, char** argv) {
     }
   }
   seeds.push_back("");
-  seeds.push_back("\n--mcmeta--\n{\"animation\": {\"frames\": [0, {\"index\": 99999999999}], \"frametime\": -1}}");
-  seeds.push_back("\n--mcmeta--\n{\"animation\": {\"width\": 0, \"height\": 18446744073709551615}}");
+  if (textures) {
+    seeds.push_back("\n--mcmeta--\n{\"animation\": {\"frames\": [0, {\"index\": 99999999999}], \"frametime\": -1}}");
+    seeds.push_back("\n--mcmeta--\n{\"animation\": {\"width\": 0, \"height\": 18446744073709551615}}");
+  }
   long count = 0;
   std::uint64_t state = 0x9E3779B97F4A7C15ull;
   auto next = [&] { return state = state * 6364136223846793005ull + 1442695040888963407ull; };
@@ -53,7 +64,7 @@ int main(int argc, char** argv) {
       for (int k = 0; k < 1 + static_cast<int>(next() % 4); ++k) mutated[next() % mutated.size()] = static_cast<char>(next());
       run(mutated, count);
     }
-    if (seed.size() > 24) {  // the IHDR width and height fields set to extremes
+    if (textures && seed.size() > 24) {  // the IHDR width and height fields set to extremes
       for (const char fill : {'\x00', '\x7f', '\xff'}) {
         std::string mutated = seed;
         for (int k = 16; k < 24; ++k) mutated[static_cast<std::size_t>(k)] = fill;
