@@ -3,11 +3,32 @@
 #include <cmath>
 #include <deque>
 
+#include <glm/vec2.hpp>
+
 namespace terrasol {
 namespace {
 
 constexpr glm::ivec3 kSteps[6] = {{-1, 0, 0}, {1, 0, 0}, {0, -1, 0}, {0, 1, 0}, {0, 0, -1}, {0, 0, 1}};
 constexpr int kDown = 2, kUp = 3;
+
+// One byte per section of the square of `radius` sections around `centre`'s chunk, the world's height.
+class SectionGrid {
+ public:
+  SectionGrid(glm::ivec2 centre, int radius)
+      : centre_(centre), radius_(radius), side_(2 * radius + 1),
+        cells_(static_cast<std::size_t>(side_ * side_ * kSectionCount), 0) {}
+  // Null outside the grid.
+  std::uint8_t* at(glm::ivec3 s) {
+    const int dx = s.x - centre_.x + radius_, dz = s.z - centre_.y + radius_;
+    if (dx < 0 || dx >= side_ || dz < 0 || dz >= side_ || s.y < 0 || s.y >= kSectionCount) return nullptr;
+    return &cells_[static_cast<std::size_t>((s.y * side_ + dz) * side_ + dx)];
+  }
+
+ private:
+  glm::ivec2 centre_;
+  int radius_, side_;
+  std::vector<std::uint8_t> cells_;
+};
 
 struct Step {
   glm::ivec3 at;       // section x, index, z
@@ -22,13 +43,7 @@ std::vector<SectionPos> reachableSections(const SectionMeshes& meshes, glm::dvec
   const glm::ivec3 eye(static_cast<int>(std::floor(camera.x / 16.0)),
                        static_cast<int>(std::floor((camera.y - kMinY) / 16.0)),
                        static_cast<int>(std::floor(camera.z / 16.0)));
-  const int side = 2 * radius + 1;
-  std::vector<std::uint8_t> seen(static_cast<std::size_t>(side * side * kSectionCount), 0);
-  const auto slot = [&](glm::ivec3 s) -> std::uint8_t* {
-    const int dx = s.x - eye.x + radius, dz = s.z - eye.z + radius;
-    if (dx < 0 || dx >= side || dz < 0 || dz >= side || s.y < 0 || s.y >= kSectionCount) return nullptr;
-    return &seen[static_cast<std::size_t>((s.y * side + dz) * side + dx)];
-  };
+  SectionGrid seen({eye.x, eye.z}, radius);
   const auto inView = [&](glm::ivec3 s) {
     const glm::dvec3 corner(s.x * 16.0, kMinY + s.y * 16.0, s.z * 16.0);
     return boxVisible(planes, glm::vec3(corner - camera), 16.0f);
@@ -37,7 +52,7 @@ std::vector<SectionPos> reachableSections(const SectionMeshes& meshes, glm::dvec
   std::deque<Step> queue;
   std::vector<SectionPos> out;
   const auto reach = [&](glm::ivec3 s, int entered, unsigned travelled) {
-    std::uint8_t* mark = slot(s);
+    std::uint8_t* mark = seen.at(s);
     if (!mark || *mark || !inView(s)) return;
     *mark = 1;
     queue.push_back({s, entered, travelled});
@@ -68,14 +83,8 @@ std::vector<SectionPos> reachableSections(const SectionMeshes& meshes, glm::dvec
 
 std::vector<SectionPos> sectionsLitFrom(const SectionMeshes& meshes, glm::vec3 toLight, glm::dvec3 centre, int radius) {
   const glm::ivec3 mid(static_cast<int>(std::floor(centre.x / 16.0)), 0, static_cast<int>(std::floor(centre.z / 16.0)));
-  const int side = 2 * radius + 1;
   // Per section: the faces it has been entered by (bits 0..5), and bit 6 once it is in the output.
-  std::vector<std::uint8_t> entered(static_cast<std::size_t>(side * side * kSectionCount), 0);
-  const auto slot = [&](glm::ivec3 s) -> std::uint8_t* {
-    const int dx = s.x - mid.x + radius, dz = s.z - mid.z + radius;
-    if (dx < 0 || dx >= side || dz < 0 || dz >= side || s.y < 0 || s.y >= kSectionCount) return nullptr;
-    return &entered[static_cast<std::size_t>((s.y * side + dz) * side + dx)];
-  };
+  SectionGrid entered({mid.x, mid.z}, radius);
   // The ways a ray moves: along each axis where -toLight has a component.
   unsigned along = 0;
   for (int d = 0; d < 6; ++d) {
@@ -84,7 +93,7 @@ std::vector<SectionPos> sectionsLitFrom(const SectionMeshes& meshes, glm::vec3 t
   std::deque<Step> queue;
   std::vector<SectionPos> out;
   const auto enter = [&](glm::ivec3 s, int face) {
-    std::uint8_t* mark = slot(s);
+    std::uint8_t* mark = entered.at(s);
     if (!mark || (*mark & (1u << face))) return;
     *mark |= static_cast<std::uint8_t>(1u << face);
     if (!(*mark & 64u)) {
@@ -100,7 +109,7 @@ std::vector<SectionPos> sectionsLitFrom(const SectionMeshes& meshes, glm::vec3 t
         const glm::ivec3 s(mid.x + dx, y, mid.z + dz);
         for (int d = 0; d < 6; ++d) {
           if (!(along & (1u << (d ^ 1)))) continue;  // face d looks towards the light when rays move along d ^ 1
-          if (!slot(s + kSteps[d])) enter(s, d);
+          if (!entered.at(s + kSteps[d])) enter(s, d);
         }
       }
   while (!queue.empty()) {

@@ -38,6 +38,16 @@ std::filesystem::path copyOf(const std::string& sample, const std::string& name)
 nlohmann::json readJson(const std::filesystem::path& file) { return nlohmann::json::parse(readTextFile(file)); }
 void writeJson(const std::filesystem::path& file, const nlohmann::json& j) { std::ofstream(file) << j.dump(); }
 
+// The error loading the textured box (separate files) after `edit` changed its JSON.
+template <class Edit>
+std::string errorAfter(const std::string& name, Edit&& edit) {
+  const auto dir = copyOf("BoxTextured/glTF", name);
+  nlohmann::json j = readJson(dir / "BoxTextured.gltf");
+  edit(j);
+  writeJson(dir / "BoxTextured.gltf", j);
+  return errorOf(dir / "BoxTextured.gltf");
+}
+
 TEST(GltfModel, TheBoxLoadsThroughItsNodeHierarchy) {
   const Model box = loadModel(kModels / "Box" / "glTF-Embedded" / "Box.gltf");
   ASSERT_EQ(box.meshes.size(), 1u);
@@ -121,20 +131,13 @@ TEST(GltfModel, BadFilesNameTheFileAndThePlace) {
     EXPECT_NE(e.find("BoxTextured0.bin"), std::string::npos) << e;
   }
   {  // an accessor reaching past its buffer view
-    const auto dir = copyOf("BoxTextured/glTF", "long_accessor");
-    nlohmann::json j = readJson(dir / "BoxTextured.gltf");
-    j["accessors"][2]["count"] = 100000;
-    writeJson(dir / "BoxTextured.gltf", j);
-    const std::string e = errorOf(dir / "BoxTextured.gltf");
+    const std::string e = errorAfter("long_accessor", [](nlohmann::json& j) { j["accessors"][2]["count"] = 100000; });
     EXPECT_NE(e.find("accessors[2]"), std::string::npos) << e;
   }
-  {  // an index past the vertices
-    const auto dir = copyOf("BoxTextured/glTF", "bad_index");
-    nlohmann::json j = readJson(dir / "BoxTextured.gltf");
-    // Every vertex attribute 3 long: the indices still go up to 23.
-    for (std::size_t a : {1u, 2u, 3u}) j["accessors"][a]["count"] = 3;
-    writeJson(dir / "BoxTextured.gltf", j);
-    const std::string e = errorOf(dir / "BoxTextured.gltf");
+  {  // an index past the vertices: every vertex attribute 3 long, the indices still up to 23
+    const std::string e = errorAfter("bad_index", [](nlohmann::json& j) {
+      for (std::size_t a : {1u, 2u, 3u}) j["accessors"][a]["count"] = 3;
+    });
     EXPECT_NE(e.find("indices"), std::string::npos) << e;
     EXPECT_NE(e.find("past the 3 vertices"), std::string::npos) << e;
   }
@@ -146,21 +149,15 @@ TEST(GltfModel, BadFilesNameTheFileAndThePlace) {
     EXPECT_NE(e.find("images[0]"), std::string::npos) << e;
   }
   {  // a required extension we do not have
-    const auto dir = copyOf("BoxTextured/glTF", "required_extension");
-    nlohmann::json j = readJson(dir / "BoxTextured.gltf");
-    j["extensionsUsed"] = {"KHR_draco_mesh_compression"};
-    j["extensionsRequired"] = {"KHR_draco_mesh_compression"};
-    writeJson(dir / "BoxTextured.gltf", j);
-    const std::string e = errorOf(dir / "BoxTextured.gltf");
+    const std::string e = errorAfter("required_extension", [](nlohmann::json& j) {
+      j["extensionsUsed"] = {"KHR_draco_mesh_compression"};
+      j["extensionsRequired"] = {"KHR_draco_mesh_compression"};
+    });
     EXPECT_NE(e.find("KHR_draco_mesh_compression"), std::string::npos) << e;
     EXPECT_NE(e.find("not supported"), std::string::npos) << e;
   }
   {  // a node that is its own ancestor
-    const auto dir = copyOf("BoxTextured/glTF", "cycle");
-    nlohmann::json j = readJson(dir / "BoxTextured.gltf");
-    j["nodes"][1]["children"] = {0};
-    writeJson(dir / "BoxTextured.gltf", j);
-    const std::string e = errorOf(dir / "BoxTextured.gltf");
+    const std::string e = errorAfter("cycle", [](nlohmann::json& j) { j["nodes"][1]["children"] = {0}; });
     EXPECT_NE(e.find("nodes["), std::string::npos) << e;
   }
   {  // malformed JSON and a truncated .glb
