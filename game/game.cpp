@@ -189,7 +189,12 @@ Game::Game(GlfwWindow& window, const GameOptions& options)
     player_.teleport(level.playerPosition);
     player_.yaw = level.playerYaw;
     player_.pitch = level.playerPitch;
+    player_.flying = level.playerFlying;  // a player saved in mid-air stays there
     logInfo("opened " + world_.dir().string());
+    if (options.seed && *options.seed != level.seed) {
+      logWarning("--seed " + std::to_string(*options.seed) + " ignored: the world has its own seed " +
+                 std::to_string(level.seed));
+    }
   }
   if (!options.inputScript.empty()) script_.emplace(loadInputScript(options.inputScript));
   glRenderer_ = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
@@ -455,6 +460,7 @@ void Game::save() {
   level.playerPosition = player_.position();
   level.playerYaw = player_.yaw;
   level.playerPitch = player_.pitch;
+  level.playerFlying = player_.flying;
   try {
     world_.save();
     logInfo("saved " + world_.dir().string());

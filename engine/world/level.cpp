@@ -45,6 +45,7 @@ Level loadLevel(const std::filesystem::path& file) {
   level.playerPosition = {position[0], position[1], position[2]};
   level.playerYaw = required<float>(player, "yaw", name + ": player");
   level.playerPitch = required<float>(player, "pitch", name + ": player");
+  if (player.contains("flying")) level.playerFlying = required<bool>(player, "flying", name + ": player");
   return level;
 }
 
@@ -57,7 +58,8 @@ void saveLevel(const std::filesystem::path& file, const Level& level) {
       {"player",
        {{"position", {level.playerPosition.x, level.playerPosition.y, level.playerPosition.z}},
         {"yaw", level.playerYaw},
-        {"pitch", level.playerPitch}}},
+        {"pitch", level.playerPitch},
+        {"flying", level.playerFlying}}},
   };
   writeFileAtomically(file, root.dump(2) + "\n");
 }

@@ -16,6 +16,7 @@ struct Level {
   std::int64_t time = 0;                 // world time in ticks (24000 a day)
   glm::dvec3 playerPosition{0.0, 0.0, 0.0};
   float playerYaw = 0.0f, playerPitch = 0.0f;  // degrees
+  bool playerFlying = false;             // "flying" (absent in older files: false)
 };
 
 // Throws Error naming the file and the key that is missing or wrong.

@@ -188,8 +188,10 @@ TEST(Level, RoundTripsAndBadFilesNameTheKey) {
   level.time = 1'000'000'007;
   level.playerPosition = {29'999'000.5, 70.25, -12.75};
   level.playerYaw = 90.0f;
+  level.playerFlying = true;
   saveLevel(dir / "level.json", level);
   const Level back = loadLevel(dir / "level.json");
+  EXPECT_TRUE(back.playerFlying);
   EXPECT_EQ(back.seed, level.seed);
   EXPECT_EQ(back.time, level.time);
   EXPECT_EQ(back.playerPosition, level.playerPosition);
