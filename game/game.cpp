@@ -422,9 +422,27 @@ void Game::drawHud() {
   hud_->beginFrame();
   if (showHud_ && !menuOpen_) {
     hud_->crosshair();
-    std::vector<std::string> names;
-    for (BlockId id : hotbar_) names.push_back(blocks_[id].name);
-    hud_->hotbar(names, selected_);
+    std::vector<Hud::Slot> slots;
+    const BlockAssets& assets = renderer_.assets();
+    const GLuint icons = renderer_.iconTexture();
+    for (BlockId id : hotbar_) {
+      Hud::Slot slot;
+      slot.name = blocks_[id].name;
+      slot.texture = icons;
+      const int face = blocks_[id].shape == BlockShape::Cube ? static_cast<int>(Direction::Up) : 0;
+      const int texture = assets.atlas.textureOf(id, face);
+      const Atlas& atlas = assets.atlas.atlas;
+      if (texture >= 0 && static_cast<std::size_t>(texture) < atlas.textures.size()) {
+        const glm::vec4 rect = atlas.tileRect(atlas.textures[static_cast<std::size_t>(texture)].firstTile);
+        slot.u0 = rect.x, slot.v0 = rect.y, slot.u1 = rect.z, slot.v1 = rect.w;
+      }
+      const Tint tint = blocks_[id].tint;
+      const glm::vec3 colour = tint == Tint::Grass ? assets.tints.grass : tint == Tint::Foliage ? assets.tints.foliage
+                               : tint == Tint::Water ? assets.tints.water : glm::vec3(1.0f);
+      slot.r = colour.r, slot.g = colour.g, slot.b = colour.b;
+      slots.push_back(std::move(slot));
+    }
+    hud_->hotbar(slots, selected_);
   }
   if (showOverlay_) hud_->overlay(overlayLeft(), overlayRight());
   if (menuOpen_) applyMenu(hud_->menu(settings_, renderer_.assets().packNames));

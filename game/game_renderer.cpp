@@ -53,6 +53,7 @@ std::unique_ptr<BlockAssets> GameRenderer::loadPacks(const std::vector<PackChoic
 
 void GameRenderer::commit(std::unique_ptr<BlockAssets> assets) {
   assets_ = std::move(assets);
+  icons_.reset();
   renderer_ = makeRenderer(*assets_, shadow_);
   meshes_.clear();  // their tiles index the old atlas; the remeshed sections come back
 }
@@ -61,7 +62,17 @@ void GameRenderer::applySettings(const GameSettings& settings) {
   const SceneShadow& s = settings.shadow;
   if (shadowJson(s) == shadowJson(shadow_)) return;
   shadow_ = s;
+  icons_.reset();
   renderer_ = makeRenderer(*assets_, shadow_);
+}
+
+GLuint GameRenderer::iconTexture() {
+  if (!icons_) {
+    icons_ = gl::TextureView::create(GL_TEXTURE_2D, renderer_->atlasAlbedo(), GL_RGBA8, 0, 1, 0, 1);
+    glTextureParameteri(icons_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTextureParameteri(icons_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  }
+  return icons_.id();
 }
 
 void GameRenderer::render(const FrameInputs& frame, glm::ivec2 size, std::vector<PassTiming>* timings) {

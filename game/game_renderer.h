@@ -40,6 +40,9 @@ class GameRenderer {
   void render(const FrameInputs& frame, glm::ivec2 size, std::vector<PassTiming>* timings);
   const FrameStats& lastFrame() const { return renderer_->lastFrame(); }
   std::size_t sectionsOnGpu() const { return meshes_.sections().size(); }
+  // The atlas's level 0 as plain RGBA8 (the HUD draws into a non-sRGB target: the stored sRGB bytes
+  // are what should reach the screen).
+  GLuint iconTexture();
 
  private:
   const BlockRegistry& blocks_;
@@ -47,6 +50,7 @@ class GameRenderer {
   std::unique_ptr<DeferredRenderer> renderer_;
   SceneShadow shadow_;
   SectionMeshes meshes_;
+  gl::TextureView icons_;  // of renderer_'s atlas; remade with it
 };
 
 }  // namespace terrasol

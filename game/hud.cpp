@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdint>
 #include <cstdio>
 #include <span>
 
@@ -74,21 +75,24 @@ void Hud::crosshair() {
   }
 }
 
-void Hud::hotbar(const std::vector<std::string>& slots, int selected) {
+void Hud::hotbar(const std::vector<Slot>& slots, int selected) {
   ImDrawList* draw = ImGui::GetForegroundDrawList();
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   const float slot = std::clamp(display.x / 14.0f, 24.0f, 64.0f);
   const float x0 = display.x * 0.5f - slot * 4.5f, y0 = display.y - slot - 4.0f;
   for (int i = 0; i < static_cast<int>(slots.size()); ++i) {
+    const Slot& s = slots[static_cast<std::size_t>(i)];
     const ImVec2 a(x0 + slot * i, y0), b(a.x + slot, a.y + slot);
     draw->AddRectFilled(a, b, IM_COL32(0, 0, 0, 110));
+    const float inset = slot * 0.18f;
+    const ImU32 tint = IM_COL32(static_cast<int>(s.r * 255), static_cast<int>(s.g * 255), static_cast<int>(s.b * 255), 255);
+    draw->AddImage(reinterpret_cast<ImTextureID>(static_cast<std::uintptr_t>(s.texture)), {a.x + inset, a.y + inset},
+                   {b.x - inset, b.y - inset}, {s.u0, s.v0}, {s.u1, s.v1}, tint);
     draw->AddRect(a, b, i == selected ? IM_COL32(255, 255, 255, 255) : IM_COL32(130, 130, 130, 200), 0.0f, 0,
                   i == selected ? 3.0f : 1.0f);
-    std::string label = slots[static_cast<std::size_t>(i)].substr(0, slot >= 48.0f ? 7 : 4);
-    draw->AddText({a.x + 3.0f, a.y + slot * 0.5f - 7.0f}, IM_COL32(255, 255, 255, 255), label.c_str());
   }
   if (selected >= 0 && selected < static_cast<int>(slots.size())) {
-    const std::string& name = slots[static_cast<std::size_t>(selected)];
+    const std::string& name = slots[static_cast<std::size_t>(selected)].name;
     const ImVec2 size = ImGui::CalcTextSize(name.c_str());
     draw->AddText({display.x * 0.5f - size.x * 0.5f, y0 - size.y - 6.0f}, IM_COL32(255, 255, 255, 255), name.c_str());
   }
@@ -98,13 +102,22 @@ void Hud::overlay(const std::vector<std::string>& left, const std::vector<std::s
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   ImGui::SetNextWindowPos({4.0f, 4.0f});
   ImGui::SetNextWindowBgAlpha(0.45f);
+  float leftBottom = 4.0f, leftRight = 4.0f;
+  // Small windows get smaller text, so both panels and the hotbar fit.
+  const float scale = std::clamp(display.y / 540.0f, 0.7f, 1.0f);
   if (ImGui::Begin("##debug_left", nullptr, kOverlayFlags)) {
+    ImGui::SetWindowFontScale(scale);
     for (const std::string& line : left) ImGui::TextUnformatted(line.c_str());
+    leftBottom = ImGui::GetWindowPos().y + ImGui::GetWindowSize().y;
+    leftRight = ImGui::GetWindowPos().x + ImGui::GetWindowSize().x;
   }
   ImGui::End();
-  ImGui::SetNextWindowPos({display.x - 4.0f, 4.0f}, 0, {1.0f, 0.0f});
+  // Beside the left panel when the window is wide enough, under it otherwise.
+  const bool besideFits = display.x - leftRight > 360.0f * scale;
+  ImGui::SetNextWindowPos({display.x - 4.0f, besideFits ? 4.0f : leftBottom + 4.0f}, 0, {1.0f, 0.0f});
   ImGui::SetNextWindowBgAlpha(0.45f);
   if (ImGui::Begin("##debug_right", nullptr, kOverlayFlags)) {
+    ImGui::SetWindowFontScale(scale);
     for (const std::string& line : right) ImGui::TextUnformatted(line.c_str());
   }
   ImGui::End();

@@ -31,7 +31,14 @@ class Hud {
 
   void beginFrame();
   void crosshair();
-  void hotbar(const std::vector<std::string>& slots, int selected);
+  // A hotbar slot: the block's name and its icon (a tile of `texture`, uv from the top left, tinted).
+  struct Slot {
+    std::string name;
+    unsigned texture = 0;
+    float u0 = 0, v0 = 0, u1 = 0, v1 = 0;
+    float r = 1, g = 1, b = 1;
+  };
+  void hotbar(const std::vector<Slot>& slots, int selected);
   void overlay(const std::vector<std::string>& left, const std::vector<std::string>& right);
   MenuResult menu(GameSettings& settings, const std::vector<std::string>& loadedPacks);
   void endFrame();  // draws into the bound framebuffer

@@ -24,6 +24,7 @@ class BlockTextures {
   void update(std::int64_t ticks);
   // Binds the atlases and the tile buffer, and sets the atlas and tint uniforms of `program`.
   void bind(GLuint program) const;
+  const AtlasTextures& atlas() const { return textures_; }
 
  private:
   AtlasTextures textures_;

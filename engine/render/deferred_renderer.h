@@ -103,6 +103,8 @@ class DeferredRenderer {
   // The targets of the last frame (for tests and reports), null before the first.
   const GBuffer* gbuffer() const { return gbuffer_ ? &*gbuffer_ : nullptr; }
   const FrameStats& lastFrame() const { return stats_; }
+  // The block atlas's albedo (sRGB, with mipmaps): for the HUD's block icons.
+  GLuint atlasAlbedo() const { return textures_.atlas().albedo(); }
   // The shader variants built: each program's name with the defines that chose it ("gbuffer+CUTOUT").
   const std::vector<std::string>& shaderVariants() const { return variants_; }
   const FrameGeometry& lastGeometry() const { return lastGeometry_; }

@@ -58,6 +58,9 @@ class Object {
 TERRASOL_GL_TRAITS(Buffer, glCreateBuffers(1, &id), glDeleteBuffers(1, &id))
 TERRASOL_GL_TRAITS(VertexArray, glCreateVertexArrays(1, &id), glDeleteVertexArrays(1, &id))
 TERRASOL_GL_TRAITS(Texture, glCreateTextures(args..., 1, &id), glDeleteTextures(1, &id))
+// A view of another texture's storage in a compatible format (arguments as glTextureView's after the
+// name): the same texels read another way, e.g. an sRGB atlas as plain RGBA8.
+TERRASOL_GL_TRAITS(TextureView, glGenTextures(1, &id); glTextureView(id, args...), glDeleteTextures(1, &id))
 TERRASOL_GL_TRAITS(Renderbuffer, glCreateRenderbuffers(1, &id), glDeleteRenderbuffers(1, &id))
 TERRASOL_GL_TRAITS(Framebuffer, glCreateFramebuffers(1, &id), glDeleteFramebuffers(1, &id))
 TERRASOL_GL_TRAITS(Query, glCreateQueries(args..., 1, &id), glDeleteQueries(1, &id))
