@@ -1,22 +1,17 @@
 #include "game.h"
+#include "game_session.h"
 
 #include <epoxy/gl.h>
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <ctime>
-#include <fstream>
-#include <map>
 #include <random>
 #include <thread>
-
-#include <glm/trigonometric.hpp>
-#include <nlohmann/json.hpp>
 
 #include "core/error.h"
 #include "core/log.h"
@@ -30,40 +25,15 @@
 #include "render/gl/render_target.h"
 #include "targeting.h"
 
-namespace terrasol {
+namespace terrasol::session {
 namespace {
-
-using Clock = std::chrono::steady_clock;
 
 constexpr const char* kHotbar[9] = {"stone", "dirt",  "grass_block", "cobblestone", "oak_planks",
                                     "oak_log", "glass", "torch",       "glowstone"};
 constexpr double kAutosaveSeconds = 300.0;
-constexpr double kDoubleTapSeconds = 0.3;                     // two jump presses this close toggle flight
-constexpr double kBreakRepeat = 0.25, kPlaceRepeat = 0.2;     // Minecraft's creative delays (5 and 4 ticks)
-constexpr auto kWorldBudget = std::chrono::milliseconds(4);   // main-thread light work per frame
-constexpr int kTimeSpeeds[] = {1, 10, 100};
+constexpr double kDoubleTapSeconds = 0.3;                  // two jump presses this close toggle flight
+constexpr double kBreakRepeat = 0.25, kPlaceRepeat = 0.2;  // Minecraft's creative delays (5 and 4 ticks)
 constexpr std::int64_t kTimePresets[] = {1000, 6000, 12000, 18000};  // morning, noon, sunset, midnight
-
-std::size_t residentBytes() {
-  std::ifstream statm("/proc/self/statm");
-  std::size_t pages = 0, resident = 0;
-  statm >> pages >> resident;
-  return resident * static_cast<std::size_t>(sysconf(_SC_PAGESIZE));
-}
-
-std::string format(const char* fmt, auto... args) {
-  char buffer[256];
-  std::snprintf(buffer, sizeof buffer, fmt, args...);
-  return buffer;
-}
-
-const char* facingName(float yaw) {
-  const float y = std::fmod(std::fmod(yaw, 360.0f) + 360.0f, 360.0f);
-  if (y < 45.0f || y >= 315.0f) return "south (towards +Z)";
-  if (y < 135.0f) return "west (towards -X)";
-  if (y < 225.0f) return "north (towards -Z)";
-  return "east (towards +X)";
-}
 
 bool replaceable(const BlockType& type) {
   return type.shape == BlockShape::None || type.shape == BlockShape::Liquid || type.shape == BlockShape::Cross;
@@ -80,80 +50,6 @@ std::filesystem::path screenshotName() {
   return file;
 }
 
-struct Edit {
-  BlockPos pos;
-  std::string block;
-};
-
-class Game {
- public:
-  Game(GlfwWindow& window, const GameOptions& options);
-  ~Game();
-  int run();
-
- private:
-  static Game& of(GLFWwindow* w) { return *static_cast<Game*>(glfwGetWindowUserPointer(w)); }
-  void installCallbacks();
-  void setMenu(bool open);
-  void playScript(double now);
-  void handleInput(const FrameInput& in, double dt);
-  void useBlocks(const FrameInput& in, double dt);
-  void tickWorld(const FrameInput& in, int ticks);
-  void stream(Clock::time_point frameStart);
-  void draw(bool timed);
-  void drawHud();
-  void applyMenu(const MenuResult& r);
-  void reloadPacks();
-  void save();
-  void writeReport();
-  std::vector<std::string> overlayLeft() const;
-  std::vector<std::string> overlayRight() const;
-  glm::dvec3 benchmarkEye(double t) const;
-  bool worldReady() const;
-  int runBenchmark();
-
-  GlfwWindow& window_;
-  GameOptions options_;
-  std::filesystem::path settingsFile_;
-  GameSettings settings_;
-  BlockRegistry blocks_;
-  GameRenderer renderer_;
-  std::filesystem::path benchmarkDir_;  // a throwaway world for --benchmark
-  GameWorld world_;
-  Player player_;
-  Controls controls_;
-  std::optional<Hud> hud_;
-  std::optional<ScriptPlayer> script_;
-  std::vector<int> scriptTaps_;       // keys tapped this frame: released next frame
-  std::vector<MouseButton> buttonTaps_;
-
-  bool menuOpen_ = false, showHud_ = true, showOverlay_ = false, quit_ = false;
-  bool spawnPending_ = false;
-  int selected_ = 0;
-  std::array<BlockId, 9> hotbar_{};
-  int debugView_ = 0;
-  int timeSpeed_ = 0;  // index into kTimeSpeeds
-  bool timeStopped_ = false;
-  double tickAccumulator_ = 0.0, gameClock_ = 0.0, lastJumpPress_ = -1.0, sinceSave_ = 0.0;
-  double breakCooldown_ = 0.0, placeCooldown_ = 0.0;
-  glm::dvec2 lastCursor_{0.0};
-  bool cursorKnown_ = false;
-  std::optional<Target> target_;
-  std::vector<Edit> edits_;
-  std::vector<PassTiming> timings_;
-  std::vector<double> frameTimes_;  // seconds, the last second's
-  bool screenshotRequested_ = false;
-  bool scriptStarted_ = false;
-  double scriptClock_ = 0.0;  // script time: starts when the world is ready
-  std::string glRenderer_;
-};
-
-std::filesystem::path benchmarkWorldDir() {
-  std::string pattern = (std::filesystem::temp_directory_path() / "terrasol-benchmark-XXXXXX").string();
-  if (!mkdtemp(pattern.data())) throw Error("cannot create a temporary world for --benchmark");
-  return pattern;
-}
-
 GameSettings settingsFor(const GameOptions& options, const std::filesystem::path& file) {
   GameSettings s = loadSettings(file);
   if (!options.packs.empty()) {
@@ -168,6 +64,14 @@ std::uint64_t seedOf(const GameOptions& options) {
   return options.seed ? *options.seed : std::random_device{}();
 }
 
+// Threads in each world pool (chunk loading, meshing): 2, or 3 where there are cores to spare.
+int workerThreads() {
+  const int cores = static_cast<int>(std::thread::hardware_concurrency());
+  return std::clamp(cores - 1, 2, 3);
+}
+
+}  // namespace
+
 Game::Game(GlfwWindow& window, const GameOptions& options)
     : window_(window),
       options_(options),
@@ -177,7 +81,7 @@ Game::Game(GlfwWindow& window, const GameOptions& options)
       renderer_(blocks_, settings_),
       benchmarkDir_(options.benchmark ? benchmarkWorldDir() : std::filesystem::path()),
       world_(options.benchmark ? benchmarkDir_ : options.world, seedOf(options), blocks_, renderer_.assets().table,
-             settings_.viewDistance, std::max(1u, std::thread::hardware_concurrency()) > 2 ? 3 : 2),
+             settings_.viewDistance, workerThreads()),
       controls_(settings_.keys) {
   for (std::size_t i = 0; i < hotbar_.size(); ++i) hotbar_[i] = blocks_.id(kHotbar[i]);
   const Level& level = world_.level();
@@ -211,6 +115,8 @@ Game::~Game() {
     std::filesystem::remove_all(benchmarkDir_, ec);
   }
 }
+
+Game& Game::of(GLFWwindow* w) { return *static_cast<Game*>(glfwGetWindowUserPointer(w)); }
 
 void Game::installCallbacks() {
   GLFWwindow* w = window_.handle();
@@ -488,87 +394,9 @@ void Game::save() {
   sinceSave_ = 0.0;
 }
 
-std::vector<std::string> Game::overlayLeft() const {
-  double total = 0.0;
-  for (double t : frameTimes_) total += t;
-  const double frameMs = frameTimes_.empty() ? 0.0 : 1000.0 * total / static_cast<double>(frameTimes_.size());
-  std::vector<std::string> out;
-  out.push_back(format("Terrasol  %.0f fps (%.1f ms a frame)", frameMs > 0.0 ? 1000.0 / frameMs : 0.0, frameMs));
-  std::string passes = "ms per pass:";
-  for (const PassTiming& t : timings_) passes += format(" %s %.2f", t.pass.c_str(), t.ms);
-  out.push_back(passes);
-  const glm::dvec3 p = player_.position();
-  const BlockPos b{static_cast<int>(std::floor(p.x)), static_cast<int>(std::floor(p.y)), static_cast<int>(std::floor(p.z))};
-  out.push_back(format("XYZ: %.3f / %.5f / %.3f", p.x, p.y, p.z));
-  out.push_back(format("Block: %d %d %d  [%d %d %d in chunk %d %d, section %d]", b.x, b.y, b.z, localOf(b.x),
-                       localOf(b.y), localOf(b.z), chunkOf(b.x), chunkOf(b.z), inWorldHeight(b.y) ? sectionOf(b.y) : -1));
-  out.push_back(format("Facing: %s (%.1f / %.1f)", facingName(player_.yaw), player_.yaw, player_.pitch));
-  const BlockPos eye{b.x, static_cast<int>(std::floor(player_.eye().y)), b.z};
-  out.push_back(format("Light at the eye: %d block, %d sky", world_.light().lightAt(eye, LightChannel::Block),
-                       world_.light().lightAt(eye, LightChannel::Sky)));
-  out.push_back(format("%s%s%s", player_.flying ? "flying" : player_.onGround() ? "on ground" : "in the air",
-                       player_.inWater() ? ", in water" : "", player_.sprinting() ? ", sprinting" : ""));
-  const std::int64_t t = world_.level().time;
-  out.push_back(format("Time: day %lld, %02lld:%02lld (tick %lld), x%d%s", static_cast<long long>(t / 24000),
-                       static_cast<long long>((t % 24000 / 1000 + 6) % 24), static_cast<long long>(t % 1000 * 60 / 1000),
-                       static_cast<long long>(t), kTimeSpeeds[timeSpeed_], timeStopped_ ? ", stopped" : ""));
+bool Game::worldReady() const {
   const WorldCounts c = world_.counts();
-  const FrameStats& f = renderer_.lastFrame();
-  out.push_back(format("Chunks: %zu loaded, %zu pending, %zu meshable", c.loaded, c.pending, c.meshable));
-  out.push_back(format("Sections: %zu dirty, %zu meshing, %zu on GPU, %d drawn, %d culled, %d shadow casters",
-                       c.meshDirty, c.meshInFlight, renderer_.sectionsOnGpu(), f.sectionsDrawn, f.sectionsCulled,
-                       f.shadowCasters));
-  return out;
-}
-
-std::vector<std::string> Game::overlayRight() const {
-  std::vector<std::string> out;
-  out.push_back(format("Memory: %.0f MB resident", static_cast<double>(residentBytes()) / (1024.0 * 1024.0)));
-  out.push_back("GL: " + glRenderer_);
-  const glm::ivec2 size = window_.framebufferSize();
-  out.push_back(format("Display: %dx%d, view %d chunks, fov %.0f", size.x, size.y, settings_.viewDistance, settings_.fov));
-  const SceneShadow& s = settings_.shadow;
-  out.push_back(s.enabled ? format("Shadows: %s %d^2, %.0f blocks, pcf %d", s.mode.c_str(), s.resolution, s.distance, s.pcfSamples)
-                          : std::string("Shadows: off"));
-  out.push_back(format("Debug view (F4): %s", kDebugViewNames[debugView_]));
-  if (target_) {
-    const BlockPos b = target_->block;
-    out.push_back(format("Targeted block: %d %d %d", b.x, b.y, b.z));
-    out.push_back(blocks_[world_.world().getBlock(b)].name);
-    out.push_back(format("Light at its face: %d block, %d sky", world_.light().lightAt(target_->place, LightChannel::Block),
-                         world_.light().lightAt(target_->place, LightChannel::Sky)));
-  }
-  return out;
-}
-
-void Game::writeReport() {
-  if (options_.report.empty()) return;
-  // Probes need their chunks: stream around each until it is loaded and lit (at most 30 s).
-  nlohmann::json probes = nlohmann::json::array();
-  for (const BlockPos& p : options_.probes) {
-    const auto deadline = Clock::now() + std::chrono::seconds(30);
-    const ChunkPos chunk = ChunkPos::of(p);
-    while (Clock::now() < deadline && !(world_.world().isLoaded(chunk) && world_.counts().pending == 0)) {
-      world_.update(chunk, Clock::now() + kWorldBudget);
-      std::this_thread::sleep_for(std::chrono::milliseconds(2));
-    }
-    const bool loaded = world_.world().isLoaded(chunk);
-    probes.push_back({{"pos", {p.x, p.y, p.z}},
-                      {"loaded", loaded},
-                      {"block", blocks_[world_.world().getBlock(p)].name},
-                      {"block_light", world_.light().lightAt(p, LightChannel::Block)},
-                      {"sky_light", world_.light().lightAt(p, LightChannel::Sky)}});
-  }
-  nlohmann::json edits = nlohmann::json::array();
-  for (const Edit& e : edits_) edits.push_back({{"pos", {e.pos.x, e.pos.y, e.pos.z}}, {"block", e.block}});
-  const glm::dvec3 p = player_.position();
-  const nlohmann::json report = {
-      {"world", world_.dir().string()},
-      {"time", world_.level().time},
-      {"player", {{"position", {p.x, p.y, p.z}}, {"yaw", player_.yaw}, {"pitch", player_.pitch}, {"flying", player_.flying}}},
-      {"edits", edits},
-      {"probes", probes}};
-  writeFileAtomically(options_.report, report.dump(2) + "\n");
+  return !spawnPending_ && c.loaded > 0 && c.pending == 0 && c.meshDirty == 0 && c.meshInFlight == 0;
 }
 
 int Game::run() {
@@ -627,112 +455,12 @@ int Game::run() {
   return 0;
 }
 
-bool Game::worldReady() const {
-  const WorldCounts c = world_.counts();
-  return !spawnPending_ && c.loaded > 0 && c.pending == 0 && c.meshDirty == 0 && c.meshInFlight == 0;
-}
+}  // namespace terrasol::session
 
-// A circle of 96 blocks around the spawn at 40 blocks above sea level, at sprint-flying speed.
-glm::dvec3 Game::benchmarkEye(double t) const {
-  constexpr double kRadius = 96.0, kSpeed = 21.6;
-  const double a = t * kSpeed / kRadius;
-  return {kRadius * std::cos(a), 0.0, kRadius * std::sin(a)};
-}
-
-int Game::runBenchmark() {
-  const double seconds = *options_.benchmark;
-  world_.level().time = 6000;  // noon: the sun casts shadows the whole run
-  timeStopped_ = true;
-  showHud_ = true;
-  // 20 blocks over the ground below, followed smoothly (over the hills, never into them).
-  double altitude = 0.0, lastT = 0.0;
-  const auto place = [&](double t) {
-    glm::dvec3 eye = benchmarkEye(t);
-    const glm::dvec3 ahead = benchmarkEye(t + 0.5);
-    const auto ground = world_.surfaceY(static_cast<int>(std::floor(eye.x)), static_cast<int>(std::floor(eye.z)));
-    const double target = ground ? *ground + 20.0 : std::max(altitude, 100.0);
-    altitude = altitude == 0.0 ? target : altitude + (target - altitude) * std::min(1.0, (t - lastT) * 2.0);
-    lastT = t;
-    eye.y = altitude;
-    player_.teleport(eye - glm::dvec3(0.0, Player::kEyeHeight, 0.0));
-    player_.yaw = static_cast<float>(glm::degrees(std::atan2(-(ahead.x - eye.x), ahead.z - eye.z)));
-    player_.pitch = 20.0f;
-    player_.flying = true;
-  };
-  // The start is loaded and meshed before the clock runs (a player waits for the world to load too).
-  place(0.0);
-  altitude = 0.0;  // placed again once the ground there is known
-  const auto loadDeadline = Clock::now() + std::chrono::seconds(120);
-  while (Clock::now() < loadDeadline && !window_.shouldClose()) {
-    const Clock::time_point start = Clock::now();
-    window_.pollEvents();
-    stream(start);
-    draw(false);
-    window_.swapBuffers();
-    if (worldReady()) break;
-  }
-  std::vector<double> frames;
-  const Clock::time_point begin = Clock::now();
-  double t = 0.0;
-  while (t < seconds && !window_.shouldClose()) {
-    const Clock::time_point start = Clock::now();
-    window_.pollEvents();
-    place(t);
-    stream(start);
-    draw(false);
-    drawHud();
-    window_.swapBuffers();
-    glFinish();  // the frame is done when it is on screen, not when it is queued
-    frames.push_back(std::chrono::duration<double>(Clock::now() - start).count());
-    t = std::chrono::duration<double>(Clock::now() - begin).count();
-  }
-  if (frames.empty()) throw Error("--benchmark: no frame was drawn");
-  std::vector<double> sorted = frames;
-  std::sort(sorted.begin(), sorted.end());
-  const double median = sorted[sorted.size() / 2];
-  const double p99 = sorted[std::min(sorted.size() - 1, static_cast<std::size_t>(std::ceil(0.99 * static_cast<double>(sorted.size()))) - 1)];
-  const glm::ivec2 size = window_.framebufferSize();
-  const SceneShadow& s = settings_.shadow;
-  std::printf("benchmark: %zu frames in %.1f s at %dx%d, view %d chunks, shadows %s\n", frames.size(), t, size.x, size.y,
-              settings_.viewDistance,
-              s.enabled ? format("%s %d^2 over %.0f blocks, pcf %d", s.mode.c_str(), s.resolution, s.distance, s.pcfSamples).c_str()
-                        : "off");
-  std::printf("benchmark: median %.1f fps (%.2f ms), 1%% low %.1f fps (%.2f ms), mean %.1f fps\n", 1.0 / median,
-              median * 1000.0, 1.0 / p99, p99 * 1000.0, static_cast<double>(frames.size()) / t);
-  // Then where the time goes: the same flight on, with a glFinish after each pass (slower frames).
-  std::map<std::string, double> passMs;
-  constexpr int kTimedFrames = 40;
-  for (int i = 0; i < kTimedFrames && !window_.shouldClose(); ++i) {
-    const Clock::time_point start = Clock::now();
-    window_.pollEvents();
-    place(t + i / 20.0);
-    stream(start);
-    const Clock::time_point streamed = Clock::now();
-    draw(true);
-    const Clock::time_point drawn = Clock::now();
-    drawHud();
-    glFinish();
-    const Clock::time_point hud = Clock::now();
-    window_.swapBuffers();
-    glFinish();
-    const auto ms = [](Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double, std::milli>(b - a).count(); };
-    passMs["~world"] += ms(start, streamed) / kTimedFrames;
-    passMs["~hud"] += ms(drawn, hud) / kTimedFrames;
-    passMs["~swap"] += ms(hud, Clock::now()) / kTimedFrames;
-    for (const PassTiming& p : timings_) passMs[p.pass] += p.ms / kTimedFrames;
-  }
-  if (!options_.screenshot.empty()) saveImage(options_.screenshot, readFramebuffer(0, window_.framebufferSize()));
-  std::string passes;
-  for (const auto& [pass, ms] : passMs) passes += format(" %s %.1f", pass.c_str(), ms);
-  std::printf("benchmark: mean ms per pass over %d more frames:%s\n", kTimedFrames, passes.c_str());
-  std::printf("benchmark: GL %s\n", glRenderer_.c_str());
-  return 0;
-}
-
-}  // namespace
+namespace terrasol {
 
 int playGame(GlfwWindow& window, const GameOptions& options) {
-  Game game(window, options);
+  session::Game game(window, options);
   return game.run();
 }
 

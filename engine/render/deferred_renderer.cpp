@@ -185,9 +185,9 @@ void DeferredRenderer::geometryPass(const View& view, const SectionMeshes& meshe
   glEnable(GL_FRAMEBUFFER_SRGB);  // the albedo target stores linear light sRGB-encoded
   setMat4(geometry_.id(), "u_viewProjection", view.viewProjection);
   setMat4(cutout_.id(), "u_viewProjection", view.viewProjection);
-  const bool away = options_.cullFacesAway;
-  drawSections(geometry_.id(), visible_, meshes, MeshLayer::Opaque, DrawOrder::NearestFirst, glm::vec3(0.0f), away);
-  drawSections(cutout_.id(), visible_, meshes, MeshLayer::Cutout, DrawOrder::NearestFirst, glm::vec3(0.0f), away);
+  const SectionDraw how{DrawOrder::NearestFirst, glm::vec3(0.0f), options_.cullFacesAway, true};
+  drawSections(geometry_.id(), visible_, meshes, MeshLayer::Opaque, how);
+  drawSections(cutout_.id(), visible_, meshes, MeshLayer::Cutout, how);
   glDisable(GL_FRAMEBUFFER_SRGB);
 }
 
@@ -228,22 +228,22 @@ std::size_t DeferredRenderer::visibleQuads(MeshLayer layer) const {
 }
 
 void DeferredRenderer::drawSections(GLuint program, const std::vector<Visible>& sections, const SectionMeshes& meshes,
-                                    MeshLayer layer, DrawOrder order, glm::vec3 axis, bool cullFacesAway) {
+                                    MeshLayer layer, const SectionDraw& how) {
   struct Draw {
     const SectionMeshes::Layer* layer;
     glm::vec3 offset;
     float key;
   };
-  const bool alongAxis = glm::dot(axis, axis) > 0.0f;
+  const bool alongAxis = glm::dot(how.axis, how.axis) > 0.0f;
   std::vector<Draw> draws;
   for (const Visible& v : sections) {
     const auto& l = v.section->layers[static_cast<std::size_t>(layer)];
     const glm::vec3 centre = v.offset + glm::vec3(8.0f);
-    if (l.quads > 0) draws.push_back({&l, v.offset, alongAxis ? glm::dot(centre, axis) : glm::length(centre)});
+    if (l.quads > 0) draws.push_back({&l, v.offset, alongAxis ? glm::dot(centre, how.axis) : glm::length(centre)});
   }
   if (draws.empty()) return;
   std::stable_sort(draws.begin(), draws.end(), [&](const Draw& a, const Draw& b) {
-    return order == DrawOrder::NearestFirst ? a.key < b.key : a.key > b.key;
+    return how.order == DrawOrder::NearestFirst ? a.key < b.key : a.key > b.key;
   });
 
   glUseProgram(program);
@@ -253,11 +253,9 @@ void DeferredRenderer::drawSections(GLuint program, const std::vector<Visible>& 
   for (const Draw& d : draws) {
     meshes.bindLayer(*d.layer);
     glProgramUniform3fv(program, offsetLocation, 1, glm::value_ptr(d.offset));
-    if (!cullFacesAway) {
+    if (!how.cullFacesAway) {
       glDrawElements(GL_TRIANGLES, d.layer->quads * 6, GL_UNSIGNED_INT, nullptr);
-      if (program == geometry_.id() || program == cutout_.id() || program == translucent_.id()) {
-        stats_.quadsDrawn += d.layer->quads;
-      }
+      if (how.countQuads) stats_.quadsDrawn += d.layer->quads;
       continue;
     }
     // Face groups turned away from the camera for the whole section are never drawn: a face of normal
@@ -274,7 +272,7 @@ void DeferredRenderer::drawSections(GLuint program, const std::vector<Visible>& 
       const GLsizei quads = start[static_cast<std::size_t>(g) + 1] - start[static_cast<std::size_t>(g)];
       if (quads == 0) continue;
       if (away[g]) {
-        stats_.quadsFacingAway += quads;
+        if (how.countQuads) stats_.quadsFacingAway += quads;
         continue;
       }
       const auto offset = reinterpret_cast<const void*>(static_cast<std::uintptr_t>(start[static_cast<std::size_t>(g)]) * 6 * sizeof(GLuint));
@@ -285,7 +283,9 @@ void DeferredRenderer::drawSections(GLuint program, const std::vector<Visible>& 
         offsets[ranges++] = offset;
       }
     }
-    for (GLsizei r = 0; r < ranges; ++r) stats_.quadsDrawn += counts[r] / 6;
+    if (how.countQuads) {
+      for (GLsizei r = 0; r < ranges; ++r) stats_.quadsDrawn += counts[r] / 6;
+    }
     if (ranges > 0) glMultiDrawElements(GL_TRIANGLES, counts, GL_UNSIGNED_INT, offsets, ranges);
   }
   glBindVertexArray(0);
@@ -344,7 +344,8 @@ void DeferredRenderer::translucentPass(const View& view, const SectionMeshes& me
   // Premultiplied colour; alpha keeps the lighting pass's shadow term of the surface behind.
   glBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
   setMat4(translucent_.id(), "u_viewProjection", view.viewProjection);
-  drawSections(translucent_.id(), visible_, meshes, MeshLayer::Translucent, DrawOrder::FarthestFirst);
+  drawSections(translucent_.id(), visible_, meshes, MeshLayer::Translucent,
+               {DrawOrder::FarthestFirst, glm::vec3(0.0f), false, true});
   glDisable(GL_BLEND);
   glDepthMask(GL_TRUE);
   glDisable(GL_DEPTH_TEST);

@@ -123,13 +123,20 @@ class DeferredRenderer {
   void finalPass(GLuint framebuffer, glm::ivec2 size);
   void debugPass(const View& view, GLuint framebuffer, glm::ivec2 size);
   void outlinePass(const View& view, const WorldBox& box, GLuint framebuffer, glm::ivec2 size);
-  // Sections in order of their centre's distance from the camera, or (with a non-zero `axis`) of how
-  // far along `axis` it lies: nearest first lets the depth test reject hidden fragments before shading.
+  // How drawSections orders and trims: sections by their centre's distance from the camera, or (with
+  // a non-zero `axis`) by how far along `axis` it lies, nearest first so the depth test can reject
+  // hidden fragments before shading. `cullFacesAway` (passes that cull back faces) leaves out face
+  // groups turned away from the camera for a whole section before any vertex is shaded; `countQuads`
+  // adds what is drawn and left out to the frame's stats (the camera's passes).
   enum class DrawOrder { NearestFirst, FarthestFirst };
-  // With `cullFacesAway` (passes that cull back faces), face groups turned away from the camera for the
-  // whole section are left out before any vertex is shaded.
+  struct SectionDraw {
+    DrawOrder order = DrawOrder::NearestFirst;
+    glm::vec3 axis{0.0f};
+    bool cullFacesAway = false;
+    bool countQuads = false;
+  };
   void drawSections(GLuint program, const std::vector<Visible>& sections, const SectionMeshes& meshes,
-                    MeshLayer layer, DrawOrder order, glm::vec3 axis = glm::vec3(0.0f), bool cullFacesAway = false);
+                    MeshLayer layer, const SectionDraw& how);
   // Returns false when the last frame's map was kept (FrameInputs::reuseShadowMap).
   bool shadowPass(const View& view, const SectionMeshes& meshes, bool mayReuse);
   void rebaseShadowViews(const View& view);

@@ -126,11 +126,12 @@ void DeferredRenderer::drawShadowCasters(ShadowMap& map, const ShadowKey& key, c
       setWarpUniforms(program);
     }
     // Nearest the light first: the depth test then rejects what lies behind before it is shaded.
-    drawSections(shadow_.id(), casters, meshes, MeshLayer::Opaque, DrawOrder::NearestFirst, fromLight);
-    drawSections(shadowCutout_.id(), casters, meshes, MeshLayer::Cutout, DrawOrder::NearestFirst, fromLight);
+    const SectionDraw how{DrawOrder::NearestFirst, fromLight, false, false};
+    drawSections(shadow_.id(), casters, meshes, MeshLayer::Opaque, how);
+    drawSections(shadowCutout_.id(), casters, meshes, MeshLayer::Cutout, how);
     // Translucent casters into their own depth and colour: the nearest one filters the light.
     glBindFramebuffer(GL_FRAMEBUFFER, translucent);
-    drawSections(shadowTranslucent_.id(), casters, meshes, MeshLayer::Translucent, DrawOrder::NearestFirst, fromLight);
+    drawSections(shadowTranslucent_.id(), casters, meshes, MeshLayer::Translucent, how);
   }
   glDisable(GL_DEPTH_CLAMP);
 }

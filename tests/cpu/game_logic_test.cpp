@@ -8,6 +8,7 @@
 #include <thread>
 
 #include "controls.h"
+#include "frame_rate.h"
 #include "core/error.h"
 #include "game_world.h"
 #include "input_script.h"
@@ -220,6 +221,22 @@ TEST(PlayerTest, LookClampsPitchAndFacesMinecraftsWay) {
   p.pitch = 0.0f;
   p.yaw = 90.0f;
   EXPECT_NEAR(p.forward().x, -1.0, 1e-9);  // yaw 90 faces west
+}
+
+TEST(FrameRateTest, MedianOnePercentLowAndMean) {
+  std::vector<double> frames(198, 0.010);  // 10 ms frames
+  frames.push_back(0.100);                 // and the two slowest: the 1 % of 200
+  frames.push_back(0.050);
+  const FrameRateSummary s = summarizeFrames(frames);
+  EXPECT_EQ(s.frames, 200u);
+  EXPECT_NEAR(s.medianFps, 100.0, 1e-9);
+  EXPECT_NEAR(s.onePercentLowMs, 75.0, 1e-9);  // the mean of 100 and 50 ms
+  EXPECT_NEAR(s.onePercentLowFps, 1.0 / 0.075, 1e-9);
+  EXPECT_NEAR(s.seconds, 198 * 0.010 + 0.150, 1e-9);
+  EXPECT_NEAR(s.meanFps, 200.0 / s.seconds, 1e-9);
+  const FrameRateSummary one = summarizeFrames({0.020});
+  EXPECT_NEAR(one.onePercentLowFps, 50.0, 1e-9) << "fewer than 100 frames: the slowest one";
+  EXPECT_EQ(summarizeFrames({}).frames, 0u);
 }
 
 TEST(TargetingTest, PicksTheFirstBlockAndTheFaceWithinReach) {

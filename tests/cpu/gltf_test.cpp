@@ -48,7 +48,33 @@ std::string errorAfter(const std::string& name, Edit&& edit) {
   return errorOf(dir / "BoxTextured.gltf");
 }
 
-TEST(GltfModel, TheBoxLoadsThroughItsNodeHierarchy) {
+TEST(GltfModel, ParentNodesMoveTheirChildren) {
+  // The textured box's root node turns it; a translation added to that node moves the child's mesh.
+  const auto dir = copyOf("BoxTextured/glTF", "moved");
+  nlohmann::json j = readJson(dir / "BoxTextured.gltf");
+  j["nodes"][0]["matrix"][12] = 10.0;
+  j["nodes"][0]["matrix"][13] = -4.0;
+  writeJson(dir / "BoxTextured.gltf", j);
+  const Model moved = loadModel(dir / "BoxTextured.gltf");
+  EXPECT_NEAR(moved.min.x, 9.5f, 1e-5f);
+  EXPECT_NEAR(moved.max.x, 10.5f, 1e-5f);
+  EXPECT_NEAR(moved.min.y, -4.5f, 1e-5f);
+  // The root's rotation (y up to z) turns the child's normals: the box's +y face points along -z or +z.
+  const Model box = loadModel(kModels / "BoxTextured" / "glTF" / "BoxTextured.gltf");
+  const Model raw = [&] {
+    nlohmann::json r = readJson(dir / "BoxTextured.gltf");
+    r["nodes"][0].erase("matrix");
+    writeJson(dir / "BoxTextured.gltf", r);
+    return loadModel(dir / "BoxTextured.gltf");
+  }();
+  for (std::size_t i = 0; i < 24; ++i) {
+    const glm::vec3 n = raw.meshes[0].vertices[i].normal, turned = box.meshes[0].vertices[i].normal;
+    EXPECT_NEAR(turned.x, n.x, 1e-5f);
+    EXPECT_NEAR(std::abs(turned.z), std::abs(n.y), 1e-5f) << "vertex " << i;
+  }
+}
+
+TEST(GltfModel, TheBoxLoadsWithItsMaterialAndRightAngledTangents) {
   const Model box = loadModel(kModels / "Box" / "glTF-Embedded" / "Box.gltf");
   ASSERT_EQ(box.meshes.size(), 1u);
   EXPECT_EQ(box.meshes[0].vertices.size(), 24u);

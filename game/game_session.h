@@ -1,0 +1,117 @@
+#pragma once
+// The game session behind playGame (game.h), shared by its source files: game.cpp (input, physics,
+// editing, the frame loop, saves), game_overlay.cpp (the F3 overlay and --report), game_benchmark.cpp
+// (--benchmark). Internal to the game; nothing outside game/ includes it.
+
+#include <array>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "controls.h"
+#include "game_renderer.h"
+#include "game_world.h"
+#include "hud.h"
+#include "input_script.h"
+#include "options.h"
+#include "player.h"
+#include "settings.h"
+#include "targeting.h"
+
+struct GLFWwindow;
+
+namespace terrasol {
+
+class GlfwWindow;
+
+namespace session {
+
+using Clock = std::chrono::steady_clock;
+
+inline constexpr auto kWorldBudget = std::chrono::milliseconds(4);  // main-thread light work per frame
+inline constexpr int kTimeSpeeds[] = {1, 10, 100};
+
+// A fresh temporary directory for --benchmark's throwaway world.
+std::filesystem::path benchmarkWorldDir();
+
+// printf into a std::string (overlay lines are short).
+template <class... Args>
+std::string format(const char* fmt, Args... args) {
+  char buffer[256];
+  std::snprintf(buffer, sizeof buffer, fmt, args...);
+  return buffer;
+}
+
+struct Edit {
+  BlockPos pos;
+  std::string block;
+};
+
+class Game {
+ public:
+  Game(GlfwWindow& window, const GameOptions& options);
+  ~Game();
+  int run();
+
+ private:
+  static Game& of(GLFWwindow* w);  // the Game a window callback belongs to
+  void installCallbacks();
+  void setMenu(bool open);
+  void playScript(double now);
+  void handleInput(const FrameInput& in, double dt);
+  void useBlocks(const FrameInput& in, double dt);
+  void tickWorld(const FrameInput& in, int ticks);
+  void stream(Clock::time_point frameStart);
+  void draw(bool timed);
+  void drawHud();
+  void applyMenu(const MenuResult& r);
+  void reloadPacks();
+  void save();
+  void writeReport();
+  std::vector<std::string> overlayLeft() const;
+  std::vector<std::string> overlayRight() const;
+  glm::dvec3 benchmarkEye(double t) const;
+  bool worldReady() const;
+  int runBenchmark();
+
+  GlfwWindow& window_;
+  GameOptions options_;
+  std::filesystem::path settingsFile_;
+  GameSettings settings_;
+  BlockRegistry blocks_;
+  GameRenderer renderer_;
+  std::filesystem::path benchmarkDir_;  // a throwaway world for --benchmark
+  GameWorld world_;
+  Player player_;
+  Controls controls_;
+  std::optional<Hud> hud_;
+  std::optional<ScriptPlayer> script_;
+  std::vector<int> scriptTaps_;       // keys tapped this frame: released next frame
+  std::vector<MouseButton> buttonTaps_;
+
+  bool menuOpen_ = false, showHud_ = true, showOverlay_ = false, quit_ = false;
+  bool spawnPending_ = false;
+  int selected_ = 0;
+  std::array<BlockId, 9> hotbar_{};
+  int debugView_ = 0;
+  int timeSpeed_ = 0;  // index into kTimeSpeeds
+  bool timeStopped_ = false;
+  double tickAccumulator_ = 0.0, gameClock_ = 0.0, lastJumpPress_ = -1.0, sinceSave_ = 0.0;
+  double breakCooldown_ = 0.0, placeCooldown_ = 0.0;
+  glm::dvec2 lastCursor_{0.0};
+  bool cursorKnown_ = false;
+  std::optional<Target> target_;
+  std::vector<Edit> edits_;
+  std::vector<PassTiming> timings_;
+  std::vector<double> frameTimes_;  // seconds, the last second's
+  bool screenshotRequested_ = false;
+  bool scriptStarted_ = false;
+  double scriptClock_ = 0.0;  // script time: starts when the world is ready
+  std::string glRenderer_;
+};
+
+}  // namespace session
+}  // namespace terrasol
