@@ -336,7 +336,7 @@ void LightEngine::relightSection(const SectionPos& s) {
       const std::uint8_t level = Propagator::light(r, i);
       if (noSources && level == 0) continue;
       const std::uint32_t pos = Propagator::posOf(origin.pos, i);
-      const std::uint8_t own = noSources ? 0 : p.source(r, i, pos);
+      const std::uint8_t own = noSources ? 0 : p.source(r, i);
       if (level == own) continue;
       p.setLight(r, i, own);
       if (level > own) p.decrease(pos, level, kAllDirections);

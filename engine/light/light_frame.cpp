@@ -23,8 +23,14 @@ void LightFrame::reset(const ChunkWindow& window, LightChannel channel) {
   minZ_ = window.min.z;
   width_ = window.width;
   depth_ = window.depth;
-  const auto chunks = static_cast<std::size_t>(width_ * depth_);
-  if (refs_.size() < chunks * kSectionCount) refs_.resize(chunks * kSectionCount);
+  stride_ = width_ + 2;
+  // Across a face the ref index moves by one section, chunk or row and the cell wraps to the far side.
+  const std::int32_t section = 1 << 12, chunk = kRefSections << 12, row = stride_ * chunk;
+  const std::int32_t steps[6] = {-chunk + 15, chunk - 15, -section + 15 * 256, section - 15 * 256,
+                                 -row + 15 * 16, row - 15 * 16};
+  std::copy(std::begin(steps), std::end(steps), across_);
+  const auto chunks = static_cast<std::size_t>(stride_ * (depth_ + 2));
+  if (refs_.size() < chunks * kRefSections) refs_.resize(chunks * kRefSections);
   resolved_.assign(chunks, 0);
   resolvedList_.clear();
 }
@@ -32,25 +38,24 @@ void LightFrame::reset(const ChunkWindow& window, LightChannel channel) {
 void LightFrame::resolve(int index) {
   resolved_[static_cast<std::size_t>(index)] = 1;
   resolvedList_.push_back(index);
-  Chunk* chunk = window_->chunks[static_cast<std::size_t>(index)];
   SectionRef* refs = chunkRefs(index);
-  if (!chunk) {
-    std::fill(refs, refs + kSectionCount, SectionRef{});  // not loaded
-    return;
-  }
+  std::fill(refs, refs + kRefSections, SectionRef{});
+  const int x = index % stride_ - 1, z = index / stride_ - 1;
+  if (x < 0 || x >= width_ || z < 0 || z >= depth_) return;  // the ring around the window
+  Chunk* chunk = window_->chunks[static_cast<std::size_t>(z * width_ + x)];
+  if (!chunk) return;  // not loaded
   ChunkLight& light = chunk->light();
   for (int s = 0; s < kSectionCount; ++s) {
-    SectionRef& r = refs[s];
+    SectionRef& r = refs[s + 1];
     r.layer = channel_ == LightChannel::Block ? &light.block[static_cast<std::size_t>(s)]
                                               : &light.sky[static_cast<std::size_t>(s)];
     r.light = r.layer->bytes();
-    r.write = nullptr;
     const Section& section = chunk->section(s);
     r.uniform = section.uniformBlock();
     r.blocks = section.blocks() ? section.blocks()->data() : &r.uniform;
     r.blockMask = section.blocks() ? Section::kVolume - 1 : 0;
-    r.marks = 0;
     r.skyTop = light.skyTop.data();
+    r.minY = kMinY + s * 16;
   }
 }
 

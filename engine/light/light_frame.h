@@ -1,10 +1,13 @@
 #pragma once
 // The block of the world one light update can touch, addressed without hashing: chunks around the
 // update's seeds (an update reaches at most 30 blocks from them: 15 steps of removal, then 15 of
-// refill, so +-2 chunks), with every cell named by one packed 32-bit frame position
-//   x (0..255) | z (0..255) << 8 | y - kMinY (0..383) << 16
-// and every section by a SectionRef holding raw pointers to its light and blocks. Internal to
-// engine/light.
+// refill, so +-2 chunks). Every section gets a SectionRef with raw pointers to its light and blocks,
+// and every cell one packed 32-bit frame position
+//   Section::index (12 bits) | ref index << 12
+// so a step inside a section adds the index step, a step across a face adds a per-frame constant,
+// and neither needs a bounds check: the refs form a grid with a ring of chunks and a section above
+// and below the world that are never loaded, so every step out of the frame lands on an empty ref.
+// Internal to engine/light.
 
 #include <array>
 #include <cstdint>
@@ -14,10 +17,11 @@
 
 namespace terrasol::light {
 
-inline constexpr int kMaxFrameChunks = 16;  // x and z get 8 bits each
+inline constexpr int kMaxFrameChunks = 16;
+inline constexpr int kRefSections = kSectionCount + 2;  // sections per chunk, with the empty ones
 
 struct SectionRef {
-  NibbleArray* layer = nullptr;         // null: the chunk is not loaded (acts opaque)
+  NibbleArray* layer = nullptr;         // null: not loaded, or outside the world (acts opaque)
   const std::uint8_t* light = nullptr;  // layer->bytes()
   std::uint8_t* write = nullptr;        // layer->writableBytes() once written, null before
   const BlockId* blocks = nullptr;      // blocks[index & blockMask]: the dense array, or &uniform
@@ -25,6 +29,7 @@ struct SectionRef {
   BlockId uniform = kAir;
   std::uint8_t marks = 0;  // kFaceMarks of the cells written: whose halos changed
   const std::int16_t* skyTop = nullptr;  // the chunk's heightmap
+  int minY = 0;                          // world y of the section's bottom layer
 };
 
 // Per Section::index: bit d set when the cell lies on the section's face in Direction d, bit 7 always.
@@ -61,42 +66,25 @@ class LightFrame {
         static_cast<unsigned>(fy) >= static_cast<unsigned>(kMaxY - kMinY)) {
       return false;
     }
-    pos = static_cast<std::uint32_t>(fx | fz << 8 | fy << 16);
+    const int ref = (((fz >> 4) + 1) * stride_ + (fx >> 4) + 1) * kRefSections + (fy >> 4) + 1;
+    pos = static_cast<std::uint32_t>(ref << 12 | Section::index(fx & 15, fy & 15, fz & 15));
     return true;
   }
-  int worldX(std::uint32_t pos) const { return static_cast<int>(pos & 255) + minX_ * 16; }
-  int worldZ(std::uint32_t pos) const { return static_cast<int>((pos >> 8) & 255) + minZ_ * 16; }
-  static int worldY(std::uint32_t pos) { return static_cast<int>(pos >> 16) + kMinY; }
+  static int refIndex(std::uint32_t pos) { return static_cast<int>(pos >> 12); }
+  static int local(std::uint32_t pos) { return static_cast<int>(pos & 4095); }
+  // The position one step across the section's face in Direction d.
+  std::uint32_t across(std::uint32_t pos, int d) const { return pos + static_cast<std::uint32_t>(across_[d]); }
 
-  // Index of the section holding `pos`, and the cell's Section::index inside it.
-  int refIndex(std::uint32_t pos) const {
-    return ((static_cast<int>((pos >> 12) & 15) * width_) + static_cast<int>((pos >> 4) & 15)) * kSectionCount +
-           static_cast<int>(pos >> 20);
-  }
-  static int local(std::uint32_t pos) {
-    return static_cast<int>(((pos >> 8) & 0xF00) | ((pos >> 4) & 0xF0) | (pos & 15));
-  }
   SectionRef& ref(int index) {
-    const int chunk = index / kSectionCount;
+    const int chunk = index / kRefSections;
     if (!resolved_[static_cast<std::size_t>(chunk)]) resolve(chunk);
     return refs_[static_cast<std::size_t>(index)];
   }
-  // Chunk indices (z * width + x) resolved so far, and their sections' refs.
+  // Grid chunk indices resolved so far, their sections' refs (kRefSections each, the first and last
+  // empty), and their chunk positions.
   const std::vector<int>& resolvedChunks() const { return resolvedList_; }
-  SectionRef* chunkRefs(int chunk) { return &refs_[static_cast<std::size_t>(chunk * kSectionCount)]; }
-
-  // Bit d set: the neighbour in Direction d is inside the frame.
-  std::uint8_t insideMask(std::uint32_t pos) const {
-    const unsigned fx = pos & 255, fz = (pos >> 8) & 255, fy = pos >> 16;
-    return static_cast<std::uint8_t>((fx != 0) | (fx + 1 != static_cast<unsigned>(width_ * 16)) << 1 | (fy != 0) << 2 |
-                                     (fy + 1 != static_cast<unsigned>(kMaxY - kMinY)) << 3 | (fz != 0) << 4 |
-                                     (fz + 1 != static_cast<unsigned>(depth_ * 16)) << 5);
-  }
-
-  int minX() const { return minX_; }
-  int minZ() const { return minZ_; }
-  int width() const { return width_; }
-  int depth() const { return depth_; }
+  SectionRef* chunkRefs(int chunk) { return &refs_[static_cast<std::size_t>(chunk * kRefSections)]; }
+  ChunkPos chunkPos(int chunk) const { return {minX_ + chunk % stride_ - 1, minZ_ + chunk / stride_ - 1}; }
 
  private:
   void resolve(int chunk);
@@ -104,6 +92,8 @@ class LightFrame {
   const ChunkWindow* window_ = nullptr;
   LightChannel channel_ = LightChannel::Block;
   int minX_ = 0, minZ_ = 0, width_ = 0, depth_ = 0;
+  int stride_ = 0;  // grid chunks per row: width_ + 2
+  std::int32_t across_[6] = {};
   std::vector<SectionRef> refs_;
   std::vector<std::uint8_t> resolved_;
   std::vector<int> resolvedList_;

@@ -18,8 +18,6 @@ Propagator::Propagator(LightFrame& frame, const ChunkWindow& window, LightChanne
       stats_(stats),
       changed_(changed) {
   frame_.reset(window, channel);
-  decrease_.clear();
-  increase_.clear();
 }
 
 Propagator::~Propagator() {
@@ -27,15 +25,19 @@ Propagator::~Propagator() {
   stats_.lightWrites += lightWrites_;
 }
 
-std::uint8_t Propagator::source(const SectionRef& r, int index, std::uint32_t pos) {
+std::uint8_t Propagator::source(const BlockId* blocks, int mask, const std::int16_t* skyTop, int minY, int index,
+                                std::uint64_t& reads) const {
   if (channel_ == LightChannel::Block) {
-    ++blockReads_;
-    return emission_[r.blocks[index & r.blockMask]];
+    ++reads;
+    return emission_[blocks[index & mask]];
   }
-  const int y = LightFrame::worldY(pos);
-  if (y > r.skyTop[index & 255]) return 15;
+  const int y = minY + (index >> 8);
+  if (y > skyTop[index & 255]) return 15;
   // The top layer of the world is lit from the sky above it, through its own opacity.
-  if (y == kMaxY - 1) return static_cast<std::uint8_t>(15 - std::max<int>(1, opacity(r, index)));
+  if (y == kMaxY - 1) {
+    ++reads;
+    return static_cast<std::uint8_t>(15 - std::max<int>(1, opacity_[blocks[index & mask]]));
+  }
   return 0;
 }
 
@@ -43,11 +45,12 @@ std::uint8_t Propagator::source(const SectionRef& r, int index, std::uint32_t po
 void Propagator::flushChanged() {
   for (const int chunk : frame_.resolvedChunks()) {
     SectionRef* refs = frame_.chunkRefs(chunk);
-    const int cx = frame_.minX() + chunk % frame_.width(), cz = frame_.minZ() + chunk / frame_.width();
+    const ChunkPos at = frame_.chunkPos(chunk);
+    const int cx = at.x, cz = at.z;
     for (int s = 0; s < kSectionCount; ++s) {
-      const std::uint8_t m = refs[s].marks;
+      const std::uint8_t m = refs[s + 1].marks;
       if (!m) continue;
-      refs[s].marks = 0;
+      refs[s + 1].marks = 0;
       const int y0 = (m & 4) && s > 0 ? -1 : 0, y1 = (m & 8) && s < kSectionCount - 1 ? 1 : 0;
       for (int dz = -(m >> 4 & 1); dz <= (m >> 5 & 1); ++dz)
         for (int dx = -(m & 1); dx <= (m >> 1 & 1); ++dx)
@@ -62,54 +65,123 @@ void Propagator::run() {
   flushChanged();
 }
 
-void Propagator::runDecrease() {
-  for (std::size_t head = 0; head < decrease_.size(); ++head) {
-    const LightEngine::Entry e = decrease_[head];
-    // The cell itself may be in a chunk being unloaded: its position still leads to its neighbours.
-    Cell c{&frame_.ref(frame_.refIndex(e.pos)), LightFrame::local(e.pos), e.pos};
-    const bool here = c.ref->layer != nullptr;
-    // A cell of a chunk being unloaded: no in-section shortcut, every step is looked up.
-    const std::uint8_t inSection = here ? kInSection[static_cast<std::size_t>(c.index)] : 0;
-    for (unsigned dirs = e.directions; dirs != 0; dirs &= dirs - 1) {
+namespace {
+
+// A section's arrays copied into locals for one queue entry: the compiler keeps them in registers,
+// where a SectionRef's fields would be reloaded after every light byte written (uint8_t stores may
+// alias anything). flush() writes back what changed.
+struct Cursor {
+  explicit Cursor(SectionRef& r)
+      : ref(r), bytes(r.light), write(r.write), blocks(r.blocks), mask(r.blockMask), skyTop(r.skyTop), minY(r.minY) {}
+  void flush() {
+    ref.light = bytes;
+    ref.write = write;
+    ref.marks |= marks;
+  }
+  std::uint8_t light(int i) const { return static_cast<std::uint8_t>((bytes[i >> 1] >> ((i & 1) * 4)) & 15); }
+  BlockId block(int i) const { return blocks[i & mask]; }
+  void set(int i, std::uint8_t level) {
+    if (!write) bytes = write = ref.layer->writableBytes();  // once per section and update
+    NibbleArray::set(write, i, level);
+    marks |= kFaceMarks[static_cast<std::size_t>(i)];
+  }
+
+  SectionRef& ref;
+  const std::uint8_t* bytes;
+  std::uint8_t* write;
+  const BlockId* blocks;
+  int mask;
+  const std::int16_t* skyTop;
+  int minY;
+  std::uint8_t marks = 0;
+};
+
+}  // namespace
+
+// Calls visit(cursor, index, pos, d) for each neighbour of the entry's cell in `directions` that is
+// in the frame and loaded: those in the cell's own section through one cursor, the others each
+// through their own. A cell that is not loaded (a chunk being unloaded) still leads across its faces.
+template <class Visit>
+void Propagator::forNeighbours(SectionRef& r, int index, std::uint32_t pos, std::uint8_t inSection,
+                               unsigned directions, Visit&& visit) {
+  if (const unsigned near = directions & inSection; near && r.layer) {
+    Cursor c(r);
+    for (unsigned dirs = near; dirs != 0; dirs &= dirs - 1) {
       const int d = std::countr_zero(dirs);
-      Cell n;
-      if (!step(c, inSection, d, n)) continue;
-      const std::uint8_t level = light(n);
-      if (level == 0) continue;
-      if (level < e.level) {
-        const std::uint8_t own = source(n);
-        if (own < level) {
-          // Its light may have come through the removed cell: clear it and keep removing from it.
-          setLight(n, own);
-          decrease_.push_back({n.pos, level, allBut(opposite(d))});
-          if (own > 0) increase_.push_back({n.pos, own, kAllDirections});
-          continue;
-        }
-      }
-      // Light of its own or from elsewhere: it refills the cleared cells afterwards.
-      increase_.push_back({n.pos, level, kAllDirections});
+      visit(c, index + kIndexStep[d], pos + static_cast<std::uint32_t>(kIndexStep[d]), d);
     }
+    c.flush();
+  }
+  for (unsigned dirs = directions & ~inSection & kAllDirections; dirs != 0; dirs &= dirs - 1) {
+    const int d = std::countr_zero(dirs);
+    Cell n;
+    if (!locate(frame_.across(pos, d), n)) continue;
+    Cursor c(*n.ref);
+    visit(c, n.index, n.pos, d);
+    c.flush();
   }
 }
 
+void Propagator::runDecrease() {
+  std::uint64_t reads = 0, writes = 0;
+  for (std::size_t head = 0; head < decrease_.size(); ++head) {
+    const LightEngine::Entry e = decrease_[head];
+    // The cell itself may be in a chunk being unloaded: its position still leads to its neighbours,
+    // each looked up on its own.
+    SectionRef& r = frame_.ref(frame_.refIndex(e.pos));
+    const int index = LightFrame::local(e.pos);
+    const std::uint8_t inSection = kInSection[static_cast<std::size_t>(index)];
+    LightEngine::Entry* darker = decrease_.room(6);
+    LightEngine::Entry* refill = increase_.room(6);
+    std::size_t darkerCount = 0, refillCount = 0;
+    forNeighbours(r, index, e.pos, inSection, e.directions, [&](Cursor& c, int i, std::uint32_t pos, int d) {
+      const std::uint8_t level = c.light(i);
+      if (level == 0) return;
+      if (level < e.level) {
+        const std::uint8_t own = source(c.blocks, c.mask, c.skyTop, c.minY, i, reads);
+        if (own < level) {
+          // Its light may have come through the removed cell: clear it and keep removing from it.
+          c.set(i, own);
+          ++writes;
+          darker[darkerCount++] = {pos, level, allBut(opposite(d))};
+          if (own > 0) refill[refillCount++] = {pos, own, kAllDirections};
+          return;
+        }
+      }
+      // Light of its own or from elsewhere: it refills the cleared cells afterwards.
+      refill[refillCount++] = {pos, level, kAllDirections};
+    });
+    decrease_.commit(darkerCount);
+    increase_.commit(refillCount);
+  }
+  blockReads_ += reads;
+  lightWrites_ += writes;
+}
+
 void Propagator::runIncrease() {
+  std::uint64_t reads = 0, writes = 0;
   for (std::size_t head = 0; head < increase_.size(); ++head) {
     const LightEngine::Entry e = increase_[head];
-    Cell c;
-    if (!locate(e.pos, c) || light(c) != e.level) continue;  // superseded since it was queued
-    const std::uint8_t inSection = kInSection[static_cast<std::size_t>(c.index)];
-    for (unsigned dirs = e.directions; dirs != 0; dirs &= dirs - 1) {
-      const int d = std::countr_zero(dirs);
-      Cell n;
-      if (!step(c, inSection, d, n)) continue;
-      const std::uint8_t current = light(n);
-      if (current + 1 >= e.level) continue;  // cannot improve even through air: no block read needed
-      const int level = e.level - std::max<int>(1, opacity(*n.ref, n.index));
-      if (level <= current) continue;
-      setLight(n, static_cast<std::uint8_t>(level));
-      if (level > 1) increase_.push_back({n.pos, static_cast<std::uint8_t>(level), allBut(opposite(d))});
-    }
+    SectionRef& r = frame_.ref(frame_.refIndex(e.pos));
+    const int index = LightFrame::local(e.pos);
+    if (!r.layer || light(r, index) != e.level) continue;  // superseded since it was queued
+    LightEngine::Entry* out = increase_.room(6);
+    std::size_t count = 0;
+    forNeighbours(r, index, e.pos, kInSection[static_cast<std::size_t>(index)], e.directions,
+                  [&](Cursor& c, int i, std::uint32_t pos, int d) {
+                    const std::uint8_t current = c.light(i);
+                    if (current + 1 >= e.level) return;  // cannot improve even through air: no block read
+                    ++reads;
+                    const int level = e.level - std::max<int>(1, opacity_[c.block(i)]);
+                    if (level <= current) return;
+                    c.set(i, static_cast<std::uint8_t>(level));
+                    ++writes;
+                    if (level > 1) out[count++] = {pos, static_cast<std::uint8_t>(level), allBut(opposite(d))};
+                  });
+    increase_.commit(count);
   }
+  blockReads_ += reads;
+  lightWrites_ += writes;
 }
 
 }  // namespace terrasol::light

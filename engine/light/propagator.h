@@ -2,6 +2,7 @@
 // The flood fill shared by every light update: one channel, a decrease queue, then an increase queue.
 // Internal to engine/light.
 
+#include <algorithm>
 #include <array>
 #include <vector>
 
@@ -13,8 +14,7 @@ inline constexpr std::uint8_t kAllDirections = 0x3F;
 constexpr std::uint8_t allBut(int direction) { return static_cast<std::uint8_t>(kAllDirections & ~(1 << direction)); }
 constexpr int opposite(int direction) { return direction ^ 1; }  // West<->East, Down<->Up, North<->South
 
-// Steps per Direction: of a frame position, and of Section::index within a section.
-inline constexpr std::int32_t kPosStep[6] = {-1, 1, -(1 << 16), 1 << 16, -(1 << 8), 1 << 8};
+// Steps per Direction of Section::index within a section, and so of a frame position there.
 inline constexpr int kIndexStep[6] = {-1, 1, -256, 256, -16, 16};
 
 // Per Section::index: bit d set when the neighbour in Direction d is in the same section; bit 6 when
@@ -28,6 +28,30 @@ inline const std::array<std::uint8_t, Section::kVolume> kInSection = [] {
   }
   return masks;
 }();
+
+// A queue over storage reused between updates. The hot loops reserve room for an entry's six
+// neighbours once and write through a local pointer: stores through the light bytes (uint8_t) may
+// alias anything, so a push_back would reload the vector's pointers after every light write.
+class EntryQueue {
+ public:
+  using Entry = LightEngine::Entry;
+  explicit EntryQueue(std::vector<Entry>& storage) : items_(storage) {
+    if (items_.size() < 1024) items_.resize(1024);
+  }
+  std::size_t size() const { return size_; }
+  const Entry& operator[](std::size_t i) const { return items_[i]; }
+  void push(const Entry& e) { *room(1) = e; ++size_; }
+  // Room for `n` entries at the end; commit(k) keeps the first k written there.
+  Entry* room(std::size_t n) {
+    if (size_ + n > items_.size()) items_.resize(std::max(items_.size() * 2, size_ + n));
+    return items_.data() + size_;
+  }
+  void commit(std::size_t k) { size_ += k; }
+
+ private:
+  std::vector<Entry>& items_;
+  std::size_t size_ = 0;
+};
 
 // A cell of the frame: its section and its index there.
 struct Cell {
@@ -64,21 +88,21 @@ class Propagator {
   }
   void setLight(const Cell& c, std::uint8_t level) { setLight(*c.ref, c.index, level); }
   // The level a cell has by itself: its emission (block light) or 15 in the open sky column (sky light).
-  std::uint8_t source(const Cell& c) { return source(*c.ref, c.index, c.pos); }
+  std::uint8_t source(const Cell& c) { return source(*c.ref, c.index); }
 
   void decrease(int x, int y, int z, std::uint8_t level, std::uint8_t directions) {
     std::uint32_t pos;
-    if (frame_.toFrame(x, y, z, pos)) decrease_.push_back({pos, level, directions});
+    if (frame_.toFrame(x, y, z, pos)) decrease_.push({pos, level, directions});
   }
   void increase(int x, int y, int z, std::uint8_t level, std::uint8_t directions) {
     std::uint32_t pos;
-    if (frame_.toFrame(x, y, z, pos)) increase_.push_back({pos, level, directions});
+    if (frame_.toFrame(x, y, z, pos)) increase_.push({pos, level, directions});
   }
   void decrease(std::uint32_t pos, std::uint8_t level, std::uint8_t directions) {
-    decrease_.push_back({pos, level, directions});
+    decrease_.push({pos, level, directions});
   }
   void increase(std::uint32_t pos, std::uint8_t level, std::uint8_t directions) {
-    increase_.push_back({pos, level, directions});
+    increase_.push({pos, level, directions});
   }
   void setLight(SectionRef& r, int index, std::uint8_t level) {
     if (!r.write) r.light = r.write = r.layer->writableBytes();  // once per section and update
@@ -86,29 +110,22 @@ class Propagator {
     r.marks |= kFaceMarks[static_cast<std::size_t>(index)];
     ++lightWrites_;
   }
-  std::uint8_t source(const SectionRef& r, int index, std::uint32_t pos);
-  // Frame position of Section::index `index` in the section whose cell 0 is at `origin`.
-  static std::uint32_t posOf(std::uint32_t origin, int index) {
-    return origin + static_cast<std::uint32_t>((index & 15) | ((index >> 4) & 15) << 8 | (index >> 8) << 16);
+  std::uint8_t source(const SectionRef& r, int index) {
+    return source(r.blocks, r.blockMask, r.skyTop, r.minY, index, blockReads_);
   }
+  std::uint8_t source(const BlockId* blocks, int mask, const std::int16_t* skyTop, int minY, int index,
+                      std::uint64_t& reads) const;
+  // Frame position of Section::index `index` in the section whose cell 0 is at `origin`.
+  static std::uint32_t posOf(std::uint32_t origin, int index) { return origin + static_cast<std::uint32_t>(index); }
 
 
   // Runs the decrease queue, then the increase queue (which the decreases add to), to the end.
   void run();
 
  private:
-  // Where the neighbour of `c` in `direction` is; false outside the frame or the loaded chunks.
-  // `inSection` is kInSection[c.index], looked up once per queue entry.
-  bool step(const Cell& c, std::uint8_t inSection, int direction, Cell& n) {
-    n.pos = c.pos + static_cast<std::uint32_t>(kPosStep[direction]);
-    if (inSection >> direction & 1) {
-      n.ref = c.ref;
-      n.index = c.index + kIndexStep[direction];
-      return true;
-    }
-    if (!(frame_.insideMask(c.pos) >> direction & 1)) return false;  // only on section faces
-    return locate(n.pos, n);
-  }
+  template <class Visit>
+  void forNeighbours(SectionRef& r, int index, std::uint32_t pos, std::uint8_t inSection, unsigned directions,
+                     Visit&& visit);
   void flushChanged();
   void runDecrease();
   void runIncrease();
@@ -117,8 +134,8 @@ class Propagator {
   LightChannel channel_;
   const std::uint8_t* opacity_;
   const std::uint8_t* emission_;
-  std::vector<LightEngine::Entry>& decrease_;
-  std::vector<LightEngine::Entry>& increase_;
+  EntryQueue decrease_;
+  EntryQueue increase_;
   LightStats& stats_;
   std::uint64_t blockReads_ = 0, lightWrites_ = 0;
   std::unordered_set<std::uint64_t>& changed_;
