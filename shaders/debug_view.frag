@@ -21,12 +21,20 @@ void main() {
   float depth = texelFetch(g_depth, p, 0).r;
   vec4 albedo = texelFetch(g_albedo, p, 0);
   vec4 normals = texelFetch(g_normals, p, 0);
+#ifdef NO_SPECULAR_MAPS
+  vec4 spec = vec4(0.0);  // no _s target: every texel is LabPBR's default
+#else
   vec4 spec = texelFetch(g_specular, p, 0);
+#endif
   vec4 light = texelFetch(g_light, p, 0);
   vec3 c = vec3(0.0);
   if (u_view == 1) c = linearToSrgb(albedo.rgb);
   else if (u_view == 2) c = octDecode(normals.xy) * 0.5 + 0.5;
+#ifdef NO_NORMAL_MAPS
+  else if (u_view == 3) c = octDecode(normals.xy) * 0.5 + 0.5;  // RG16F: the vertex normal only
+#else
   else if (u_view == 3) c = octDecode(normals.zw) * 0.5 + 0.5;
+#endif
   else if (u_view == 4) c = spec.rgb;
   else if (u_view == 5) c = vec3(light.x, light.y, 0.0);
   else if (u_view == 6) {

@@ -5,7 +5,9 @@
 
 layout(location = GB_ALBEDO) out vec4 o_albedo;
 layout(location = GB_NORMALS) out vec4 o_normals;
+#ifndef NO_SPECULAR_MAPS
 layout(location = GB_SPECULAR) out vec4 o_specular;
+#endif
 layout(location = GB_LIGHT) out vec4 o_light;
 
 void main() {
@@ -15,7 +17,13 @@ void main() {
 #endif
   vec4 normalTexel = normalTexelAt(v_uv);
   o_albedo = vec4(albedo.rgb * v_tint * vertexAo(), normalTexel.b);
+#ifdef NO_NORMAL_MAPS
+  o_normals = vec4(octEncode(vertexNormal()), 0.0, 0.0);  // RG16F: the surface normal is the vertex normal
+#else
   o_normals = vec4(octEncode(mappedNormal(normalTexel)), octEncode(vertexNormal()));
+#endif
+#ifndef NO_SPECULAR_MAPS
   o_specular = specularTexelAt(v_uv);
+#endif
   o_light = vec4(v_light, 1.0);
 }

@@ -41,8 +41,12 @@ void main() {
   Surface s;
   s.albedo = albedo.rgb;
   s.materialAo = albedo.a;
+#ifdef NO_NORMAL_MAPS
+  s.normal = s.vertexNormal = octDecode(normals.xy);  // the only normal kept (gbuffer_layout.h)
+#else
   s.normal = octDecode(normals.xy);
   s.vertexNormal = octDecode(normals.zw);
+#endif
 #ifdef NO_SPECULAR_MAPS
   s.spec = vec4(0.0);  // every texel holds LabPBR's default _s: nothing to read
 #else

@@ -16,7 +16,11 @@ void main() {
   vec4 normalTexel = normalTexelAt(v_uv);
   Surface s;
   s.albedo = albedo.rgb * v_tint * vertexAo();
+#ifdef NO_NORMAL_MAPS
+  s.normal = vertexNormal();
+#else
   s.normal = mappedNormal(normalTexel);
+#endif
   s.vertexNormal = vertexNormal();
   s.spec = specularTexelAt(v_uv);
   s.blockLight = v_light.x;

@@ -31,8 +31,10 @@ std::uint8_t toByte(float v) { return static_cast<std::uint8_t>(std::lround(std:
 }  // namespace
 
 NormalTexel decodeNormal(const std::uint8_t rgba[4], bool openGlConvention) {
-  float x = unorm(rgba[0]) * 2.0f - 1.0f;
-  float y = unorm(rgba[1]) * 2.0f - 1.0f;
+  // 8 bits cannot hold the centre (127.5): 127 and 128 both mean flat, exactly (as labpbr.glsl).
+  auto component = [](std::uint8_t v) { return v == 127 || v == 128 ? 0.0f : unorm(v) * 2.0f - 1.0f; };
+  float x = component(rgba[0]);
+  float y = component(rgba[1]);
   if (!openGlConvention) y = -y;  // DirectX: green points down the texture
   const float xy2 = x * x + y * y;
   float z = 0.0f;

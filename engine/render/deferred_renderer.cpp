@@ -49,12 +49,9 @@ std::vector<ShaderDefine> lightingDefines(const RendererOptions& options) {
   return defines;
 }
 
-// The maps no loaded pack has: nothing to sample (block_surface.glsl).
-std::vector<ShaderDefine> mapDefines(const Atlas& atlas, const RendererOptions& options, bool normals) {
-  std::vector<ShaderDefine> defines;
-  if (normals && options.leaveOutAbsentMaps && !atlas.anyNormalMap) defines.push_back({"NO_NORMAL_MAPS", "1"});
-  if (options.leaveOutAbsentMaps && !atlas.anySpecularMap) defines.push_back({"NO_SPECULAR_MAPS", "1"});
-  return defines;
+// The maps no loaded pack has: nothing to sample (block_surface.glsl) and nothing to keep for them.
+GBufferContents contentsFor(const Atlas& atlas, const RendererOptions& options) {
+  return {!options.leaveOutAbsentMaps || atlas.anyNormalMap, !options.leaveOutAbsentMaps || atlas.anySpecularMap};
 }
 
 // Sky light's colour: the zenith's hue at a fixed brightness (the lightmap carries the brightness).
@@ -68,13 +65,13 @@ glm::vec3 ambientTint(glm::vec3 zenith) {
 
 DeferredRenderer::DeferredRenderer(const ShaderPreprocessor& shaders, const Atlas& atlas, const BiomeTints& tints,
                                    const RendererOptions& options)
-    : geometry_(build(shaders, variants_, "gbuffer.vert", "gbuffer.frag", mapDefines(atlas, options, true))),
-      cutout_(build(shaders, variants_, "gbuffer.vert", "gbuffer.frag",
-                    with({{"CUTOUT", "1"}}, mapDefines(atlas, options, true)))),
+    : contents_(contentsFor(atlas, options)),
+      geometry_(build(shaders, variants_, "gbuffer.vert", "gbuffer.frag", contents_.defines())),
+      cutout_(build(shaders, variants_, "gbuffer.vert", "gbuffer.frag", with({{"CUTOUT", "1"}}, contents_.defines()))),
       lighting_(build(shaders, variants_, "fullscreen.vert", "lighting.frag",
-                      with(lightingDefines(options), mapDefines(atlas, options, false)))),
+                      with(lightingDefines(options), contents_.defines()))),
       translucent_(build(shaders, variants_, "gbuffer.vert", "translucent.frag",
-                         with(lightingDefines(options), mapDefines(atlas, options, true)))),
+                         with(lightingDefines(options), contents_.defines()))),
       shadow_(options.shadow.enabled ? build(shaders, variants_, "shadow.vert", "shadow.frag") : gl::Program()),
       shadowCutout_(options.shadow.enabled ? build(shaders, variants_, "shadow.vert", "shadow.frag", {{"CUTOUT", "1"}})
                                            : gl::Program()),
@@ -82,7 +79,7 @@ DeferredRenderer::DeferredRenderer(const ShaderPreprocessor& shaders, const Atla
                              ? build(shaders, variants_, "shadow.vert", "shadow.frag", {{"TRANSLUCENT", "1"}})
                              : gl::Program()),
       final_(build(shaders, variants_, "fullscreen.vert", "final.frag")),
-      debug_(build(shaders, variants_, "fullscreen.vert", "debug_view.frag")),
+      debug_(build(shaders, variants_, "fullscreen.vert", "debug_view.frag", contents_.defines())),
       outline_(build(shaders, variants_, "outline.vert", "outline.frag")),
       textures_(atlas, tints),
       lightmap_(gl::Texture::create(GL_TEXTURE_2D)),
@@ -99,7 +96,7 @@ DeferredRenderer::DeferredRenderer(const ShaderPreprocessor& shaders, const Atla
 void DeferredRenderer::render(const FrameInputs& frame, const SectionMeshes& meshes, GLuint framebuffer,
                               glm::ivec2 size, std::vector<PassTiming>* timings) {
   if (size.x <= 0 || size.y <= 0) return;  // a minimised window: nothing to draw
-  if (!gbuffer_ || gbuffer_->size() != size) gbuffer_.emplace(size);
+  if (!gbuffer_ || gbuffer_->size() != size) gbuffer_.emplace(size, contents_);
 
   View view;
   view.camera = frame.cameraPosition;

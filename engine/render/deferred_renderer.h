@@ -107,6 +107,7 @@ class DeferredRenderer {
   GLuint atlasAlbedo() const { return textures_.atlas().albedo(); }
   // The shader variants built: each program's name with the defines that chose it ("gbuffer+CUTOUT").
   const std::vector<std::string>& shaderVariants() const { return variants_; }
+  const GBufferContents& gbufferContents() const { return contents_; }
   const FrameGeometry& lastGeometry() const { return lastGeometry_; }
 
  private:
@@ -151,6 +152,7 @@ class DeferredRenderer {
   void setSkyUniforms(GLuint program, const View& view) const;
 
   std::vector<std::string> variants_;  // before the programs: building each one names it here
+  GBufferContents contents_;           // likewise: the programs are built for it
   gl::Program geometry_, cutout_, lighting_, translucent_, shadow_, shadowCutout_, shadowTranslucent_, final_, debug_, outline_;
   BlockTextures textures_;
   gl::Texture lightmap_;

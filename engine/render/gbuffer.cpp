@@ -29,8 +29,9 @@ void checkComplete(GLuint framebuffer, const char* name) {
 
 }  // namespace
 
-GBuffer::GBuffer(glm::ivec2 size)
+GBuffer::GBuffer(glm::ivec2 size, GBufferContents contents)
     : size_(size),
+      contents_(contents),
       geometry_(gl::Framebuffer::create()),
       lighting_(gl::Framebuffer::create()),
       translucent_(gl::Framebuffer::create()) {
@@ -41,7 +42,9 @@ GBuffer::GBuffer(glm::ivec2 size)
   }
   std::array<GLenum, gbuffer::kTargets> drawBuffers{};
   for (int i = 0; i < gbuffer::kTargets; ++i) {
-    targets_[static_cast<std::size_t>(i)] = makeTarget(gbuffer::kFormats[static_cast<std::size_t>(i)], size);
+    const GLenum format = contents.format(i);
+    if (format == GL_NONE) continue;  // left out: its draw buffer stays GL_NONE, writes go nowhere
+    targets_[static_cast<std::size_t>(i)] = makeTarget(format, size);
     glNamedFramebufferTexture(geometry_.id(), GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(i), target(i), 0);
     drawBuffers[static_cast<std::size_t>(i)] = GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(i);
   }
@@ -75,7 +78,7 @@ GBufferPixels GBuffer::read() const {
 }
 
 void GBuffer::bindForReading() const {
-  for (int i = 0; i < gbuffer::kTargets; ++i) glBindTextureUnit(static_cast<GLuint>(i), target(i));
+  for (int i = 0; i < gbuffer::kTargets; ++i) glBindTextureUnit(static_cast<GLuint>(i), target(i));  // 0 if left out
   glBindTextureUnit(gbuffer::kDepthUnit, depth_.id());
 }
 

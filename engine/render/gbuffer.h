@@ -19,7 +19,7 @@ namespace terrasol {
 struct GBufferPixels {
   glm::ivec2 size{0};
   std::vector<float> depth;         // 0..1, 1 = sky
-  std::vector<glm::vec4> normals;   // octahedral surface xy, vertex zw
+  std::vector<glm::vec4> normals;   // octahedral surface xy, vertex zw (vertex xy without surface normals)
   std::vector<glm::vec4> scene;     // linear HDR; alpha = the direct light's shadow term (lighting.glsl)
   std::vector<glm::u8vec4> light;   // block, sky, vertex AO
 };
@@ -27,9 +27,10 @@ struct GBufferPixels {
 class GBuffer {
  public:
   // Throws Error for a non-positive size or an incomplete framebuffer.
-  explicit GBuffer(glm::ivec2 size);
+  explicit GBuffer(glm::ivec2 size, GBufferContents contents = {});
 
   glm::ivec2 size() const { return size_; }
+  const GBufferContents& contents() const { return contents_; }
   GLuint target(int index) const { return targets_[static_cast<std::size_t>(index)].id(); }
   GLuint depth() const { return depth_.id(); }
   GLuint scene() const { return scene_.id(); }  // RGBA16F, linear HDR
@@ -45,6 +46,7 @@ class GBuffer {
 
  private:
   glm::ivec2 size_;
+  GBufferContents contents_;
   std::array<gl::Texture, gbuffer::kTargets> targets_;
   gl::Texture depth_, scene_;
   gl::Framebuffer geometry_, lighting_, translucent_;

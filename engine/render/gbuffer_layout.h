@@ -10,6 +10,9 @@
 //   depth   DEPTH32F        hardware depth (1 = nothing drawn: sky)
 //
 // Normals are in world space (y up). Light levels are the mesher's smooth (quarter-step) levels / 15.
+// When no loaded pack has normal maps (NO_NORMAL_MAPS) the surface normal is the vertex normal, so
+// target 1 shrinks to RG16F holding only that; when none has specular maps (NO_SPECULAR_MAPS) target 2
+// is not made at all (GBufferContents).
 
 #include <array>
 #include <vector>
@@ -27,6 +30,7 @@ inline constexpr int kLight = 3;
 inline constexpr int kTargets = 4;
 
 inline constexpr std::array<GLenum, kTargets> kFormats = {GL_SRGB8_ALPHA8, GL_RGBA16F, GL_RGBA8, GL_RGBA8};
+inline constexpr GLenum kVertexNormalOnlyFormat = GL_RG16F;  // target 1 without normal maps
 inline constexpr GLenum kDepthFormat = GL_DEPTH_COMPONENT32F;
 
 // Texture units the lighting and debug passes read the targets from (depth after the colour targets).
@@ -35,6 +39,21 @@ inline constexpr int kDepthUnit = kTargets;
 }  // namespace terrasol::gbuffer
 
 namespace terrasol {
+
+// What a scene's G-buffer holds: only the data some loaded pack can fill.
+struct GBufferContents {
+  bool surfaceNormals = true;  // a normal-mapped normal besides the vertex normal
+  bool specular = true;        // the _s target
+
+  GLenum format(int target) const {
+    if (target == gbuffer::kNormals && !surfaceNormals) return gbuffer::kVertexNormalOnlyFormat;
+    if (target == gbuffer::kSpecular && !specular) return GL_NONE;
+    return gbuffer::kFormats[static_cast<std::size_t>(target)];
+  }
+  int bytesPerPixel() const;  // colour targets and depth
+  // NO_NORMAL_MAPS / NO_SPECULAR_MAPS for what is left out; the shaders' one switch for both.
+  std::vector<ShaderDefine> defines() const;
+};
 
 // GB_ALBEDO, GB_NORMALS, GB_SPECULAR, GB_LIGHT (output locations and texture units), GB_DEPTH_UNIT.
 std::vector<ShaderDefine> gbufferDefines();

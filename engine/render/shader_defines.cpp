@@ -47,6 +47,25 @@ std::vector<ShaderDefine> gbufferDefines() {
           define("GB_DEPTH_UNIT", gbuffer::kDepthUnit)};
 }
 
+int GBufferContents::bytesPerPixel() const {
+  int bytes = 4;  // DEPTH32F
+  for (int i = 0; i < gbuffer::kTargets; ++i) {
+    switch (format(i)) {
+      case GL_RGBA16F: bytes += 8; break;
+      case GL_NONE: break;
+      default: bytes += 4; break;  // SRGB8_ALPHA8, RGBA8, RG16F
+    }
+  }
+  return bytes;
+}
+
+std::vector<ShaderDefine> GBufferContents::defines() const {
+  std::vector<ShaderDefine> defines;
+  if (!surfaceNormals) defines.push_back({"NO_NORMAL_MAPS", "1"});
+  if (!specular) defines.push_back({"NO_SPECULAR_MAPS", "1"});
+  return defines;
+}
+
 std::vector<ShaderDefine> rendererDefines() {
   std::vector<ShaderDefine> defines = slotDefines();
   for (auto& d : gbufferDefines()) defines.push_back(std::move(d));

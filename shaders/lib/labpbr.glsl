@@ -4,6 +4,9 @@
 // Returns the tangent-space normal with +y up the texture and z >= 0; |xy| > 1 lands on the rim.
 vec3 labpbrNormal(vec4 texel) {
   vec2 xy = texel.rg * 2.0 - 1.0;
+  // 8 bits cannot hold the centre (127.5): 127 and 128 both mean flat, exactly, as a pack's
+  // default _n (127, 127) and NO_NORMAL_MAPS's vertex normal do.
+  xy = mix(xy, vec2(0.0), lessThan(abs(xy), vec2(1.5 / 255.0)));
   xy.y = -xy.y;
   float xy2 = dot(xy, xy);
   if (xy2 > 1.0) return vec3(xy * inversesqrt(xy2), 0.0);

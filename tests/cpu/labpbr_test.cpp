@@ -14,9 +14,12 @@ bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y
 
 TEST(LabPbrNormal, DefaultsAndConventions) {
   const auto flat = decodeNormal(kDefaultNormal);
-  EXPECT_NEAR(flat.normal.x, 0.0f, 0.005f);
-  EXPECT_NEAR(flat.normal.y, 0.0f, 0.005f);
-  EXPECT_NEAR(flat.normal.z, 1.0f, 1e-4f);
+  EXPECT_EQ(flat.normal, glm::vec3(0.0f, 0.0f, 1.0f)) << "the default _n is exactly flat";
+  const std::uint8_t other[4] = {128, 128, 255, 255};
+  EXPECT_EQ(decodeNormal(other).normal, glm::vec3(0.0f, 0.0f, 1.0f)) << "so is the other centre code";
+  const std::uint8_t tilted[4] = {126, 129, 255, 255};
+  EXPECT_LT(decodeNormal(tilted).normal.x, 0.0f);
+  EXPECT_LT(decodeNormal(tilted).normal.y, 0.0f);
   EXPECT_FLOAT_EQ(flat.ao, 1.0f);
   EXPECT_FLOAT_EQ(flat.depth, 0.0f);
   // LabPBR is DirectX: green 0 points up the texture (+y here); an OpenGL-convention pack flips it.

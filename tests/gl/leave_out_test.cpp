@@ -65,11 +65,30 @@ TEST_F(LeaveOutTest, MapsNoPackHasAreNotSampledAndChangeNoPixel) {
   scene.packs = {std::filesystem::path(TERRASOL_SOURCE_DIR) / ".." / "shared" / "testdata" / "packs" / "pixel_perfection_ce"};
   SceneRenderer lean(scene);
   EXPECT_TRUE(hasVariant(lean, "gbuffer+NO_NORMAL_MAPS+NO_SPECULAR_MAPS"));
-  EXPECT_TRUE(hasVariant(lean, "lighting+SHADOWS+NO_SPECULAR_MAPS"));
+  EXPECT_TRUE(hasVariant(lean, "lighting+SHADOWS+NO_NORMAL_MAPS+NO_SPECULAR_MAPS"));
   scene.leaveOutAbsentMaps = false;
   SceneRenderer full(scene);
   EXPECT_TRUE(hasVariant(full, "gbuffer"));
-  EXPECT_TRUE(identical(lean.renderFrame(0).image, full.renderFrame(0).image));
+  const Image leanImage = lean.renderFrame(0).image, fullImage = full.renderFrame(0).image;
+  EXPECT_TRUE(identical(leanImage, fullImage));
+  // The G-buffer keeps only the vertex normal (RG16F) and no _s target: 16 of 24 bytes a pixel.
+  const GBuffer& g = *lean.renderer().gbuffer();
+  EXPECT_FALSE(g.contents().surfaceNormals);
+  EXPECT_FALSE(g.contents().specular);
+  EXPECT_EQ(g.target(gbuffer::kSpecular), 0u);
+  GLint format = 0;
+  glGetTextureLevelParameteriv(g.target(gbuffer::kNormals), 0, GL_TEXTURE_INTERNAL_FORMAT, &format);
+  EXPECT_EQ(format, GL_RG16F);
+  EXPECT_EQ(g.contents().bytesPerPixel(), 16);
+  EXPECT_EQ(full.renderer().gbuffer()->contents().bytesPerPixel(), 24);
+  // So does every debug view that reads them: the normals and the (default) specular data.
+  for (const char* view : {"normal", "vertex_normal", "specular"}) {
+    SceneFile viewScene = scene;
+    viewScene.debugView = view;
+    const Image a = SceneRenderer(viewScene).renderFrame(0).image;
+    viewScene.leaveOutAbsentMaps = true;
+    EXPECT_TRUE(identical(a, SceneRenderer(viewScene).renderFrame(0).image)) << view;
+  }
   // With the default pack (which has both) nothing is left out.
   SceneRenderer pbr(loadScene(kScenes / "pack_pixel_perfection.json"));
   EXPECT_TRUE(hasVariant(pbr, "gbuffer"));

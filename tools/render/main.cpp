@@ -198,6 +198,7 @@ int renderScene(const Options& o, const SceneFile& scene, SceneRenderer& rendere
   if (!o.report.empty()) {
     std::ofstream(o.report) << nlohmann::json{{"scene", scene.file.string()},
                                               {"shader_variants", renderer.renderer().shaderVariants()},
+                                              {"gbuffer_bytes_per_pixel", renderer.renderer().gbufferContents().bytesPerPixel()},
                                               {"frames", frames}}.dump(2)
                             << "\n";
   }
