@@ -195,6 +195,8 @@ void Game::playScript(double now) {
         if (e.command == "save") save();
         if (e.command == "screenshot") screenshotRequested_ = true;
         if (e.command == "quit") quit_ = true;
+        if (e.command == "minimise") window_.minimise();
+        if (e.command == "restore") window_.restore();
         break;
     }
   }
@@ -321,7 +323,7 @@ void Game::draw(bool timed) {
     frame.outline = WorldBox{glm::dvec3(b.x, b.y, b.z), glm::dvec3(b.x + 1, b.y + 1, b.z + 1)};
   }
   timings_.clear();
-  renderer_.render(frame, window_.framebufferSize(), timed ? &timings_ : nullptr);
+  renderer_.render(frame, drawableSize(), timed ? &timings_ : nullptr);
 }
 
 void Game::drawHud() {
@@ -394,6 +396,10 @@ void Game::save() {
   sinceSave_ = 0.0;
 }
 
+glm::ivec2 Game::drawableSize() const {
+  return window_.minimised() ? glm::ivec2(0) : window_.framebufferSize();
+}
+
 bool Game::worldReady() const {
   const WorldCounts c = world_.counts();
   return !spawnPending_ && c.loaded > 0 && c.pending == 0 && c.meshDirty == 0 && c.meshInFlight == 0;
@@ -421,11 +427,20 @@ int Game::run() {
     handleInput(in, dt);
     tickWorld(in, Player::ticksFor(tickAccumulator_, dt));
     stream(frameStart);
-    draw(showOverlay_);
-    drawHud();
+    const glm::ivec2 size = drawableSize();
+    if (const bool hidden = size.x <= 0 || size.y <= 0; hidden != hidden_) {
+      hidden_ = hidden;
+      logInfo(hidden ? "window minimised: drawing paused, the world goes on" : "window restored: drawing again");
+    }
+    ++(hidden_ ? framesHidden_ : framesDrawn_);
+    if (!hidden_) {
+      draw(showOverlay_);
+      drawHud();
+    } else if (!fixed) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(16));  // no swap to pace the loop
+    }
     window_.checkErrors("frame");
     const bool final = options_.frames && frame + 1 >= *options_.frames;
-    const glm::ivec2 size = window_.framebufferSize();
     if ((screenshotRequested_ || (final && !options_.screenshot.empty())) && (size.x <= 0 || size.y <= 0)) {
       logWarning("no screenshot: the window has no pixels (minimised)");
       screenshotRequested_ = false;

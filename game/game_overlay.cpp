@@ -70,7 +70,7 @@ std::vector<std::string> Game::overlayRight() const {
   std::vector<std::string> out;
   out.push_back(format("Memory: %.0f MB resident", static_cast<double>(residentBytes()) / (1024.0 * 1024.0)));
   out.push_back("GL: " + glRenderer_);
-  const glm::ivec2 size = window_.framebufferSize();
+  const glm::ivec2 size = drawableSize();
   out.push_back(format("Display: %dx%d, view %d chunks, fov %.0f", size.x, size.y, settings_.viewDistance, settings_.fov));
   const SceneShadow& s = settings_.shadow;
   out.push_back(s.enabled ? format("Shadows: %s %d^2, %.0f blocks, pcf %d", s.mode.c_str(), s.resolution, s.distance, s.pcfSamples)
@@ -110,6 +110,7 @@ void Game::writeReport() {
   const nlohmann::json report = {
       {"world", world_.dir().string()},
       {"time", world_.level().time},
+      {"frames", {{"drawn", framesDrawn_}, {"minimised", framesHidden_}}},
       {"player", {{"position", {p.x, p.y, p.z}}, {"yaw", player_.yaw}, {"pitch", player_.pitch}, {"flying", player_.flying}}},
       {"edits", edits},
       {"probes", probes}};

@@ -76,6 +76,8 @@ class Game {
   glm::dvec3 benchmarkEye(double t) const;
   bool worldReady() const;
   int runBenchmark();
+  // The pixels there are to draw: none while minimised (GlfwWindow::minimised), whatever X11 says.
+  glm::ivec2 drawableSize() const;
 
   GlfwWindow& window_;
   GameOptions options_;
@@ -93,6 +95,8 @@ class Game {
   std::vector<MouseButton> buttonTaps_;
 
   bool menuOpen_ = false, showHud_ = true, showOverlay_ = false, quit_ = false;
+  bool hidden_ = false;  // the last frame had no pixels to draw
+  int framesDrawn_ = 0, framesHidden_ = 0;
   bool spawnPending_ = false;
   int selected_ = 0;
   std::array<BlockId, 9> hotbar_{};

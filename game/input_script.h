@@ -12,7 +12,7 @@
 //       { "t": 1.2, "button": "right" },    "left" | "right" | "middle", same rules
 //       { "t": 1.3, "mouse_move": [40, 0] }, pixels, scaled by the mouse sensitivity
 //       { "t": 1.4, "scroll": -1 },
-//       { "t": 2.0, "command": "save" } ] } "save" | "screenshot" | "quit"
+//       { "t": 2.0, "command": "save" } ] } "save" | "screenshot" | "quit" | "minimise" | "restore"
 // Events play in time order once the game clock reaches their "t".
 
 #include <filesystem>
@@ -42,7 +42,7 @@ struct InputScript {
   std::vector<ScriptEvent> events;  // sorted by t (stable: equal times keep file order)
 };
 
-inline constexpr std::string_view kScriptCommands[] = {"save", "screenshot", "quit"};
+inline constexpr std::string_view kScriptCommands[] = {"save", "screenshot", "quit", "minimise", "restore"};
 
 // Throws Error naming the file, the event ("events[3].key") and what is wrong.
 InputScript parseInputScript(std::string_view json, const std::filesystem::path& file);

@@ -20,8 +20,8 @@ packages=(
   libimgui-dev
   # tests and benchmarks
   libgtest-dev libgmock-dev libbenchmark-dev
-  # a virtual display for windowed smoke tests
-  xvfb xauth
+  # a virtual display for windowed smoke tests, and a window manager so a test can minimise the game
+  xvfb xauth twm
 )
 
 missing=()

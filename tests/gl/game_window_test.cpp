@@ -91,5 +91,41 @@ TEST_F(GameWindowTest, ScriptedPlayEditsSavesAndTheNextRunFindsTheEditsAndTheLig
   EXPECT_EQ(reopened["time"].get<std::int64_t>() / 20, played["time"].get<std::int64_t>() / 20) << "the world time is kept";
 }
 
+TEST_F(GameWindowTest, AMinimisedWindowDrawsNothingWhileTheWorldGoesOnAndComesBack) {
+  const auto dir = testing::testOutputDir() / "game_minimise";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const auto settings = dir / "settings.json";
+  std::ofstream(settings) << R"({ "view_distance": 2, "shadow": { "resolution": 256, "distance": 16 } })";
+  const auto report = dir / "report.json", log = dir / "log.txt";
+  // Under a window manager (twm), started in the game's virtual display before the game; screenshots
+  // land in the working directory.
+  const std::string command = "cd " + dir.string() + " && " + TERRASOL_XVFB_RUN + " -a -s '-screen 0 640x480x24' sh -c '" +
+                              "LC_ALL=C " + TERRASOL_TWM + " -f " + TERRASOL_SOURCE_DIR +
+                              "/tests/scripts/twmrc 2>/dev/null & sleep 1; exec " +
+                              TERRASOL_GAME_EXE + " --world world --settings " + settings.string() +
+                              " --size 320x180 --seed 3 --input-script " + TERRASOL_SOURCE_DIR +
+                              "/tests/scripts/game_minimise.json --report " + report.string() + "' > " + log.string() + " 2>&1";
+  ASSERT_EQ(std::system(command.c_str()), 0) << readTextFile(log);
+  const std::string output = readTextFile(log);
+  EXPECT_NE(output.find("window minimised"), std::string::npos) << output;
+  EXPECT_NE(output.find("no screenshot: the window has no pixels"), std::string::npos) << output;
+  EXPECT_NE(output.find("window restored"), std::string::npos) << output;
+  EXPECT_EQ(output.find("error: GL:"), std::string::npos) << output;
+  EXPECT_EQ(output.find("warning: GL:"), std::string::npos) << output;
+  const nlohmann::json played = readJson(report);
+  // 0.5 s of 0.05 s steps at least while minimised (the restore takes effect when the manager maps it).
+  EXPECT_GE(played["frames"]["minimised"].get<int>(), 10) << played.dump();
+  EXPECT_GE(played["frames"]["drawn"].get<int>(), 10) << played.dump();
+  EXPECT_GE(played["time"].get<std::int64_t>(), 40) << "2 s of play are 40 ticks, minimised or not";
+  // Only the screenshot after the restore was taken, and it shows the world.
+  std::vector<std::filesystem::path> shots;
+  for (const auto& e : std::filesystem::directory_iterator(dir / "screenshots")) shots.push_back(e.path());
+  ASSERT_EQ(shots.size(), 1u);
+  const Image shot = loadImage(shots[0]);
+  EXPECT_EQ(shot.width, 320);
+  EXPECT_GT(*std::max_element(shot.rgba.begin(), shot.rgba.end()), 50) << "the restored window draws the world again";
+}
+
 }  // namespace
 }  // namespace terrasol

@@ -63,5 +63,8 @@ bool GlfwWindow::shouldClose() const { return glfwWindowShouldClose(window_); }
 void GlfwWindow::requestClose() { glfwSetWindowShouldClose(window_, GLFW_TRUE); }
 double GlfwWindow::time() const { return glfwGetTime(); }
 void GlfwWindow::setVsync(bool on) { glfwSwapInterval(on ? 1 : 0); }
+bool GlfwWindow::minimised() const { return glfwGetWindowAttrib(window_, GLFW_ICONIFIED) == GLFW_TRUE; }
+void GlfwWindow::minimise() { glfwIconifyWindow(window_); }
+void GlfwWindow::restore() { glfwRestoreWindow(window_); }
 
 }  // namespace terrasol

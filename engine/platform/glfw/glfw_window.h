@@ -31,6 +31,11 @@ class GlfwWindow final : public GlContext {
   void requestClose();
   double time() const;  // seconds since the window opened
   void setVsync(bool on);
+  // Minimised (iconified): X11 keeps the framebuffer's size then, Windows reports 0x0; the game
+  // treats both as a window with no pixels.
+  bool minimised() const;
+  void minimise();
+  void restore();
   GLFWwindow* handle() const { return window_; }  // for input callbacks and the HUD
 
  private:
