@@ -50,8 +50,10 @@ std::vector<ShaderDefine> lightingDefines(const RendererOptions& options) {
 }
 
 // The maps no loaded pack has: nothing to sample (block_surface.glsl) and nothing to keep for them.
+// Props always carry a material (metallic-roughness becomes a LabPBR _s texel), and may have normal maps.
 GBufferContents contentsFor(const Atlas& atlas, const RendererOptions& options) {
-  return {!options.leaveOutAbsentMaps || atlas.anyNormalMap, !options.leaveOutAbsentMaps || atlas.anySpecularMap};
+  return {!options.leaveOutAbsentMaps || atlas.anyNormalMap || options.props.normalMaps,
+          !options.leaveOutAbsentMaps || atlas.anySpecularMap || options.props.any};
 }
 
 // Sky light's colour: the zenith's hue at a fixed brightness (the lightmap carries the brightness).
@@ -86,11 +88,31 @@ DeferredRenderer::DeferredRenderer(const ShaderPreprocessor& shaders, const Atla
       empty_(gl::VertexArray::create()),
       options_(options),
       gpuTimer_(!softwareRenderer()) {
+  if (options.props.any) buildPropPrograms(shaders);
   glTextureStorage2D(lightmap_.id(), 1, GL_RGBA16F, Lightmap::kSize, Lightmap::kSize);
   glTextureParameteri(lightmap_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
   glTextureParameteri(lightmap_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
   glTextureParameteri(lightmap_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
   glTextureParameteri(lightmap_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+}
+
+// Only the variants the placed props need: MASK and BLEND materials, shadows.
+void DeferredRenderer::buildPropPrograms(const ShaderPreprocessor& shaders) {
+  const PropNeeds& needs = options_.props;
+  propGeometry_ = build(shaders, variants_, "prop.vert", "prop.frag", contents_.defines());
+  if (needs.mask) {
+    propCutout_ = build(shaders, variants_, "prop.vert", "prop.frag", with({{"CUTOUT", "1"}}, contents_.defines()));
+  }
+  if (needs.blend) {
+    propTranslucent_ = build(shaders, variants_, "prop.vert", "prop_translucent.frag",
+                             with(lightingDefines(options_), contents_.defines()));
+  }
+  if (!options_.shadow.enabled) return;
+  propShadow_ = build(shaders, variants_, "prop_shadow.vert", "prop_shadow.frag");
+  if (needs.mask) propShadowCutout_ = build(shaders, variants_, "prop_shadow.vert", "prop_shadow.frag", {{"CUTOUT", "1"}});
+  if (needs.blend) {
+    propShadowTranslucent_ = build(shaders, variants_, "prop_shadow.vert", "prop_shadow.frag", {{"TRANSLUCENT", "1"}});
+  }
 }
 
 void DeferredRenderer::render(const FrameInputs& frame, const SectionMeshes& meshes, GLuint framebuffer,
@@ -124,6 +146,7 @@ void DeferredRenderer::render(const FrameInputs& frame, const SectionMeshes& mes
   textures_.update(frame.ticks);
 
   PassClock clock(timings, gpuTimer_);
+  props_ = frame.props && !frame.props->empty() && options_.props.any ? frame.props : nullptr;
   cull(view, meshes);
   // Below 0.1 % of its strength the light can show nothing (it is 0 at and under the horizon).
   view.shadowLive = options_.shadow.enabled && view.day.directStrength > 1e-3f;
@@ -151,7 +174,7 @@ void DeferredRenderer::render(const FrameInputs& frame, const SectionMeshes& mes
   } else {
     lightingPass(view);
     clock.lap("lighting");
-    if (visibleQuads(MeshLayer::Translucent) > 0) {
+    if (visibleQuads(MeshLayer::Translucent) > 0 || visibleBlendedProps()) {
       translucentPass(view, meshes);
       clock.lap("translucent");
     } else {
@@ -185,6 +208,14 @@ void DeferredRenderer::geometryPass(const View& view, const SectionMeshes& meshe
   const SectionDraw how{DrawOrder::NearestFirst, glm::vec3(0.0f), options_.cullFacesAway, true};
   drawSections(geometry_.id(), visible_, meshes, MeshLayer::Opaque, how);
   drawSections(cutout_.id(), visible_, meshes, MeshLayer::Cutout, how);
+  if (props_) {
+    setMat4(propGeometry_.id(), "u_viewProjection", view.viewProjection);
+    drawProps(propGeometry_.id(), *props_, visibleProps_, view.camera, AlphaMode::Opaque, true);
+    if (propCutout_.id()) {
+      setMat4(propCutout_.id(), "u_viewProjection", view.viewProjection);
+      drawProps(propCutout_.id(), *props_, visibleProps_, view.camera, AlphaMode::Mask, true);
+    }
+  }
   glDisable(GL_FRAMEBUFFER_SRGB);
 }
 
@@ -216,6 +247,12 @@ void DeferredRenderer::cull(const View& view, const SectionMeshes& meshes) {
     visible_.erase(hidden, visible_.end());
   }
   stats_.sectionsDrawn = static_cast<int>(visible_.size());
+  visibleProps_.clear();
+  if (props_) {
+    visibleProps_ = propsInside(view.frustum, view.camera, *props_);
+    stats_.propsDrawn = static_cast<int>(visibleProps_.size());
+    stats_.propsCulled = static_cast<int>(props_->instances().size() - visibleProps_.size());
+  }
 }
 
 std::size_t DeferredRenderer::visibleQuads(MeshLayer layer) const {
@@ -343,6 +380,13 @@ void DeferredRenderer::translucentPass(const View& view, const SectionMeshes& me
   setMat4(translucent_.id(), "u_viewProjection", view.viewProjection);
   drawSections(translucent_.id(), visible_, meshes, MeshLayer::Translucent,
                {DrawOrder::FarthestFirst, glm::vec3(0.0f), false, true});
+  if (props_ && propTranslucent_.id()) {
+    const GLuint program = propTranslucent_.id();
+    setLightingUniforms(program, view);
+    setSkyUniforms(program, view);
+    setMat4(program, "u_viewProjection", view.viewProjection);
+    drawProps(program, *props_, visibleProps_, view.camera, AlphaMode::Blend, true);
+  }
   glDisable(GL_BLEND);
   glDepthMask(GL_TRUE);
   glDisable(GL_DEPTH_TEST);

@@ -20,6 +20,7 @@
 #include "render/frustum.h"
 #include "render/gbuffer.h"
 #include "render/pass_clock.h"
+#include "render/props.h"
 #include "render/section_meshes.h"
 #include "render/shadow_map.h"
 
@@ -53,6 +54,8 @@ struct FrameInputs {
   bool reuseShadowMap = false;
   // The targeted block: its edges are drawn over the image where nothing nearer hides them.
   std::optional<WorldBox> outline;
+  // glTF props drawn beside the blocks (null: none); the renderer was built for their PropNeeds.
+  const Props* props = nullptr;
 };
 
 // Choices that pick shader variants, fixed for the renderer's life.
@@ -63,6 +66,7 @@ struct RendererOptions {
   // With no _n (_s) in any loaded pack, the shaders use LabPBR's default instead of sampling it.
   bool leaveOutAbsentMaps = true;
   ShadowSettings shadow;
+  PropNeeds props;  // what the props to be drawn need: no prop variant is built for none
 };
 
 // Where the last frame looked from, for reports that check it against the world.
@@ -83,6 +87,8 @@ struct FrameStats {
   int shadowCastersHidden = 0;                // inside the light's box, but no ray of it reaches them
   std::int64_t quadsDrawn = 0;                // by the camera's passes (geometry, translucent)
   std::int64_t quadsFacingAway = 0;           // opaque and cutout quads left out: their face group faced away
+  int propsDrawn = 0, propsCulled = 0;        // placed props inside / outside the frustum
+  int propShadowCasters = 0;                  // props drawn into the shadow map (per layer)
   struct Skipped {
     std::string pass, why;
   };
@@ -150,10 +156,19 @@ class DeferredRenderer {
   std::size_t visibleQuads(MeshLayer layer) const;
   void setLightingUniforms(GLuint program, const View& view) const;
   void setSkyUniforms(GLuint program, const View& view) const;
+  // Props (prop_pass.cpp): the instances inside `planes`, and a draw of the meshes whose material has
+  // alpha mode `mode` (blended ones farthest first).
+  static std::vector<int> propsInside(const FrustumPlanes& planes, glm::dvec3 camera, const Props& props);
+  void drawProps(GLuint program, const Props& props, const std::vector<int>& instances, glm::dvec3 camera,
+                 AlphaMode mode, bool cullBackFaces) const;
+  bool visibleBlendedProps() const;
+  void buildPropPrograms(const ShaderPreprocessor& shaders);
 
   std::vector<std::string> variants_;  // before the programs: building each one names it here
   GBufferContents contents_;           // likewise: the programs are built for it
   gl::Program geometry_, cutout_, lighting_, translucent_, shadow_, shadowCutout_, shadowTranslucent_, final_, debug_, outline_;
+  // Props' variants, each built only when a placed prop needs it (RendererOptions::props).
+  gl::Program propGeometry_, propCutout_, propTranslucent_, propShadow_, propShadowCutout_, propShadowTranslucent_;
   BlockTextures textures_;
   gl::Texture lightmap_;
   gl::VertexArray empty_;  // full-screen passes make their vertices from gl_VertexID
@@ -166,6 +181,7 @@ class DeferredRenderer {
     glm::dvec3 centre{0.0};
     glm::vec3 toLight{0.0f};
     std::uint64_t meshes = 0;
+    std::uint64_t props = 0;
     bool valid = false;
   } shadowKey_;
   struct ShadowBuild {                    // a map being rebuilt a slice a frame (update_frames > 1)
@@ -178,6 +194,8 @@ class DeferredRenderer {
                          int slice, int slices);
   bool gpuTimer_;  // timer queries for pass timings (a real GPU); else glFinish and the wall clock
   std::vector<Visible> visible_;  // this frame's sections inside the frustum
+  std::vector<int> visibleProps_;  // this frame's prop instances inside the frustum
+  const Props* props_ = nullptr;   // this frame's (FrameInputs::props)
   FrameStats stats_;
   FrameGeometry lastGeometry_;
 };

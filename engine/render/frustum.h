@@ -19,10 +19,16 @@ inline FrustumPlanes frustumPlanes(const glm::mat4& m) {
 }
 
 // False when the box from `lo` to `lo + size` is entirely outside one plane.
+inline bool boxVisible(const FrustumPlanes& planes, glm::vec3 lo, glm::vec3 hi);
 inline bool boxVisible(const FrustumPlanes& planes, glm::vec3 lo, float size) {
+  return boxVisible(planes, lo, lo + glm::vec3(size));
+}
+
+// False when the box from `lo` to `hi` is entirely outside one plane: the box corner furthest along
+// each plane's normal is behind it.
+inline bool boxVisible(const FrustumPlanes& planes, glm::vec3 lo, glm::vec3 hi) {
   for (const glm::vec4& p : planes) {
-    // The box corner furthest along the plane's normal.
-    const glm::vec3 far = lo + glm::vec3(p.x > 0.0f ? size : 0.0f, p.y > 0.0f ? size : 0.0f, p.z > 0.0f ? size : 0.0f);
+    const glm::vec3 far(p.x > 0.0f ? hi.x : lo.x, p.y > 0.0f ? hi.y : lo.y, p.z > 0.0f ? hi.z : lo.z);
     if (glm::dot(glm::vec3(p), far) + p.w < 0.0f) return false;
   }
   return true;

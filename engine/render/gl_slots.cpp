@@ -11,6 +11,9 @@ std::vector<ShaderDefine> slotDefines() {
       define("ATTRIB_NORMAL", slots::kAttribNormal),
       define("ATTRIB_COLOR", slots::kAttribColor),
       define("ATTRIB_PACKED", slots::kAttribPacked),
+      define("ATTRIB_TANGENT", slots::kAttribTangent),
+      define("ATTRIB_UV", slots::kAttribUv),
+      define("ATTRIB_LIGHT", slots::kAttribLight),
       define("OUT_COLOR", slots::kOutColor),
       define("UNIT_ATLAS_ALBEDO", slots::kUnitAtlasAlbedo),
       define("UNIT_ATLAS_NORMAL", slots::kUnitAtlasNormal),
@@ -19,6 +22,11 @@ std::vector<ShaderDefine> slotDefines() {
       define("UNIT_SHADOW_MAP", slots::kUnitShadowMap),
       define("UNIT_TRANSLUCENT_DEPTH", slots::kUnitTranslucentDepth),
       define("UNIT_TRANSLUCENT_TINT", slots::kUnitTranslucentTint),
+      define("UNIT_PROP_BASE_COLOR", slots::kUnitPropBaseColor),
+      define("UNIT_PROP_METALLIC_ROUGHNESS", slots::kUnitPropMetallicRoughness),
+      define("UNIT_PROP_NORMAL", slots::kUnitPropNormal),
+      define("UNIT_PROP_EMISSIVE", slots::kUnitPropEmissive),
+      define("UNIT_PROP_OCCLUSION", slots::kUnitPropOcclusion),
       define("STORAGE_TILES", slots::kStorageTiles),
   };
 }

@@ -16,6 +16,11 @@ inline constexpr int kAttribColor = 2;
 // The block vertex (mesh/mesh_data.h PackedVertex) as one uvec4.
 inline constexpr int kAttribPacked = 3;
 
+// A prop's vertex (render/props.h): position and normal above, then these; light from a second buffer.
+inline constexpr int kAttribTangent = 4;
+inline constexpr int kAttribUv = 5;
+inline constexpr int kAttribLight = 6;
+
 // Fragment outputs of the forward passes.
 inline constexpr int kOutColor = 0;
 
@@ -27,6 +32,13 @@ inline constexpr int kUnitLightmap = 5;
 inline constexpr int kUnitShadowMap = 6;
 inline constexpr int kUnitTranslucentDepth = 7;
 inline constexpr int kUnitTranslucentTint = 8;
+
+// A prop material's textures (glTF metallic-roughness), after every unit the passes above use.
+inline constexpr int kUnitPropBaseColor = 9;
+inline constexpr int kUnitPropMetallicRoughness = 10;
+inline constexpr int kUnitPropNormal = 11;
+inline constexpr int kUnitPropEmissive = 12;
+inline constexpr int kUnitPropOcclusion = 13;
 
 // Shader storage buffers.
 inline constexpr int kStorageTiles = 0;  // atlas tile of each texture id for the current frame

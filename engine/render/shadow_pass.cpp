@@ -33,8 +33,9 @@ bool DeferredRenderer::shadowPass(const View& view, const SectionMeshes& meshes,
                                ? forward / along * static_cast<double>(settings.shiftAhead * settings.distance)
                                : glm::dvec3(0.0);
   const glm::dvec3 centre = mapCentre(view.camera + view.shadowCentreOffset + ahead);
-  const ShadowKey wanted{centre, view.day.toShadowLight, meshes.generation(), true};
+  const ShadowKey wanted{centre, view.day.toShadowLight, meshes.generation(), props_ ? props_->generation() : 0, true};
   const bool unchanged = shadowKey_.valid && shadowKey_.centre == centre && shadowKey_.meshes == wanted.meshes &&
+                         shadowKey_.props == wanted.props &&
                          glm::dot(shadowKey_.toLight, wanted.toLight) > kReuseCos;
   const int slices = mayReuse ? std::max(settings.updateFrames, 1) : 1;
   // A kept map must still cover the camera well; a jump (a teleport) redraws it whole at once.
@@ -129,9 +130,25 @@ void DeferredRenderer::drawShadowCasters(ShadowMap& map, const ShadowKey& key, c
     const SectionDraw how{DrawOrder::NearestFirst, fromLight, false, false};
     drawSections(shadow_.id(), casters, meshes, MeshLayer::Opaque, how);
     drawSections(shadowCutout_.id(), casters, meshes, MeshLayer::Cutout, how);
+    // Props cast in the first slice of a spread rebuild (they are few).
+    std::vector<int> propCasters;
+    if (props_ && propShadow_.id() && slice == 0) {
+      propCasters = propsInside(frustumPlanes(light.matrix), view.camera, *props_);
+      stats_.propShadowCasters += static_cast<int>(propCasters.size());
+      for (const GLuint program : {propShadow_.id(), propShadowCutout_.id(), propShadowTranslucent_.id()}) {
+        if (!program) continue;
+        setMat4(program, "u_shadowMatrix", light.matrix);
+        setWarpUniforms(program);
+      }
+      drawProps(propShadow_.id(), *props_, propCasters, view.camera, AlphaMode::Opaque, false);
+      if (propShadowCutout_.id()) drawProps(propShadowCutout_.id(), *props_, propCasters, view.camera, AlphaMode::Mask, false);
+    }
     // Translucent casters into their own depth and colour: the nearest one filters the light.
     glBindFramebuffer(GL_FRAMEBUFFER, translucent);
     drawSections(shadowTranslucent_.id(), casters, meshes, MeshLayer::Translucent, how);
+    if (propShadowTranslucent_.id() && !propCasters.empty()) {
+      drawProps(propShadowTranslucent_.id(), *props_, propCasters, view.camera, AlphaMode::Blend, false);
+    }
   }
   glDisable(GL_DEPTH_CLAMP);
 }

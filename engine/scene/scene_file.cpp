@@ -94,6 +94,26 @@ std::vector<path> parsePacks(const json& value, const path& sceneDir) {
   return packs;
 }
 
+SceneProp parseProp(const json& value, const std::string& key, const path& sceneDir) {
+  checkObject(value, key, {"model", "position", "rotation", "scale"});
+  const json* model = field(value, "model");
+  if (!model) fail(key, "needs \"model\" (a .gltf or .glb file)");
+  SceneProp prop;
+  prop.key = key;
+  const path file = nonEmptyString(*model, member(key, "model"));
+  prop.model = file.is_absolute() || sceneDir.empty() ? file : (sceneDir / file).lexically_normal();
+  if (const json* v = field(value, "position")) prop.position = vec3(*v, member(key, "position"));
+  if (const json* v = field(value, "rotation")) prop.rotation = glm::vec3(vec3(*v, member(key, "rotation")));
+  if (const json* v = field(value, "scale")) prop.scale = numberIn(*v, member(key, "scale"), 0.0, 1000.0, true);
+  return prop;
+}
+
+std::vector<SceneProp> parseProps(const json& value, const path& sceneDir) {
+  if (!value.is_array()) expected("props", "an array of props", value);
+  std::vector<SceneProp> props;
+  for (std::size_t i = 0; i < value.size(); ++i) props.push_back(parseProp(value[i], element("props", i), sceneDir));
+  return props;
+}
 
 void parsePcf(const json& pcf, const std::string& key, SceneShadow& shadow) {
   checkObject(pcf, key, {"samples", "radius", "radius_unit", "pattern"});
@@ -239,13 +259,15 @@ void checkEditFrames(const SceneFile& scene) {
 }
 
 SceneFile parseRoot(const json& root, const path& file) {
-  checkObject(root, "", {"world", "packs", "time", "sun_path_rotation", "render", "camera", "camera_path", "compare"});
+  checkObject(root, "",
+              {"world", "packs", "props", "time", "sun_path_rotation", "render", "camera", "camera_path", "compare"});
   SceneFile scene;
   scene.file = file;
   if (const json* v = field(root, "world")) parseWorld(*v, scene);
   const json* packs = field(root, "packs");
   scene.packs =
       packs ? parsePacks(*packs, file.parent_path()) : std::vector<path>{resourcePackDir() / "default"};
+  if (const json* v = field(root, "props")) scene.props = parseProps(*v, file.parent_path());
   if (const json* v = field(root, "time")) scene.time = wholeNumber(*v, "time", 0, kMaxInt64);
   if (const json* v = field(root, "sun_path_rotation")) {
     scene.sunPathRotation = numberIn(*v, "sun_path_rotation", -90.0, 90.0, false);

@@ -57,6 +57,15 @@ inline constexpr std::array<std::string_view, 3> kShadowWarps = {"none", "square
 inline constexpr std::array<std::string_view, 2> kPcfPatterns = {"grid", "disk"};
 inline constexpr std::array<std::string_view, 2> kPcfRadiusUnits = {"texels", "blocks"};
 
+// "props": a glTF model placed in the world (engine/scene/prop_placement.h turns it into a transform).
+struct SceneProp {
+  std::filesystem::path model;      // .gltf or .glb; relative paths resolve against the scene file
+  glm::dvec3 position{0.0};         // blocks: where the model's origin goes
+  glm::vec3 rotation{0.0f};         // degrees: yaw (about y), pitch (about x), roll (about z)
+  float scale = 1.0f;               // (0, 1000]
+  std::string key;                  // "props[i]", for later error messages
+};
+
 // "compare": how terrasol-render --compare judges a frame against its golden.
 struct CompareSettings {
   float pixelThreshold = 10.0f / 255.0f;  // a pixel fails when any channel differs by more (0..1)
@@ -86,6 +95,7 @@ struct SceneFile {
   glm::dvec3 cameraLookAt{0.0, 80.0, -1.0};
   float fov = 70.0f;  // vertical degrees, in (0, 180)
   std::optional<CameraPath> cameraPath;  // when absent: one frame from `camera`
+  std::vector<SceneProp> props;
   CompareSettings compare;
 
   int frameCount() const { return cameraPath ? cameraPath->frames : 1; }

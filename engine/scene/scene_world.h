@@ -31,6 +31,7 @@ class SceneWorld {
   World& world() { return world_; }
   const World& world() const { return world_; }
   LightEngine& light() { return light_; }
+  const LightEngine& light() const { return light_; }
   ChunkPos centre() const { return centre_; }
   int viewDistance() const { return viewDistance_; }
 

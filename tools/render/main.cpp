@@ -130,6 +130,8 @@ nlohmann::json frameReport(int index, const RenderedFrame& frame) {
                       {"hidden", frame.stats.sectionsHidden}, {"shadow_casters", frame.stats.shadowCasters},
                       {"shadow_casters_hidden", frame.stats.shadowCastersHidden}}},
           {"quads", {{"drawn", frame.stats.quadsDrawn}, {"facing_away", frame.stats.quadsFacingAway}}},
+          {"props", {{"drawn", frame.stats.propsDrawn}, {"culled", frame.stats.propsCulled},
+                     {"shadow_casters", frame.stats.propShadowCasters}}},
           {"passes_skipped", skipped}};
 }
 

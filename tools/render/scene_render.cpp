@@ -1,5 +1,6 @@
 #include "scene_render.h"
 
+#include <algorithm>
 #include <chrono>
 #include <iterator>
 
@@ -8,6 +9,7 @@
 #include "render/gl/render_target.h"
 #include "scene/block_atlas.h"
 #include "scene/camera_path.h"
+#include "scene/prop_placement.h"
 #include "scene/scene_world.h"
 
 namespace terrasol {
@@ -56,26 +58,107 @@ DebugView debugViewOf(const SceneFile& scene) {
   throw Error(sceneError(scene, "render.debug_view", "unknown view \"" + scene.debugView + "\""));
 }
 
+namespace {
+
+// The scene's props on the CPU: each model file loaded once, each placement's transform and box.
+struct PlacedProp {
+  int model;
+  PropTransform transform;
+  WorldBounds bounds;
+};
+struct SceneProps {
+  std::vector<Model> models;
+  std::vector<PlacedProp> placed;
+};
+
+SceneProps loadProps(const SceneFile& scene) {
+  SceneProps out;
+  std::vector<std::filesystem::path> files;
+  for (const SceneProp& prop : scene.props) {
+    const auto known = std::find(files.begin(), files.end(), prop.model);
+    int model = static_cast<int>(known - files.begin());
+    if (known == files.end()) {
+      try {
+        out.models.push_back(loadModel(prop.model));
+      } catch (const Error& e) {
+        throw Error(sceneError(scene, prop.key + ".model", e.what()));
+      }
+      files.push_back(prop.model);
+    }
+    const Model& m = out.models[static_cast<std::size_t>(model)];
+    const PropTransform t = propTransform(prop);
+    out.placed.push_back({model, t, placedBounds(t, m.min, m.max)});
+  }
+  return out;
+}
+
+// The voxel light at each vertex of a placed model, meshes in order (Props::place).
+std::vector<glm::vec2> propLight(const Model& model, const PropTransform& t, const SceneWorld& world) {
+  std::vector<glm::dvec3> points;
+  points.reserve(model.vertexCount());
+  for (const ModelMesh& mesh : model.meshes) {
+    for (const ModelVertex& v : mesh.vertices) points.push_back(toWorld(t, v.position));
+  }
+  return smoothLightAt(world.world(), world.light(), points);
+}
+
+}  // namespace
+
 // The CPU side: blocks, atlas, the mesher's table and the world, kept for edits keyed to frames.
 struct SceneRenderer::World {
   World(const SceneFile& scene, const PackStack& packs)
       : blocks(BlockRegistry::fromFile(resourcePackDir() / "default" / "blocks.json")),
         atlas(buildBlockAtlas(blocks, packs)),
         table(blocks, [this](BlockId id, int face) { return atlas.textureOf(id, face); }),
-        world(scene, blocks) {}
+        world(scene, blocks),
+        props(loadProps(scene)) {}
   BlockRegistry blocks;
   BlockAtlas atlas;
   BlockMeshTable table;
   SceneWorld world;
+  SceneProps props;
 };
+
+namespace {
+
+Props uploadProps(const SceneProps& cpu, const SceneWorld& world) {
+  Props props;
+  std::vector<int> ids;
+  for (const Model& model : cpu.models) ids.push_back(props.addModel(model));
+  for (const PlacedProp& p : cpu.placed) {
+    const Model& model = cpu.models[static_cast<std::size_t>(p.model)];
+    props.place(ids[static_cast<std::size_t>(p.model)],
+                {p.transform.position, p.transform.basis, p.transform.rotation, p.bounds.min, p.bounds.max},
+                propLight(model, p.transform, world));
+  }
+  return props;
+}
+
+RendererOptions withProps(RendererOptions options, const Props& props) {
+  options.props = props.needs();
+  return options;
+}
+
+}  // namespace
 
 struct SceneRenderer::Gpu {
   Gpu(const ShaderPreprocessor& shaders, const Atlas& atlas, const BiomeTints& tints, const RendererOptions& options,
-      glm::ivec2 size)
-      : renderer(shaders, atlas, tints, options), target(size) {}
+      glm::ivec2 size, const SceneRenderer::World& world)
+      : props(uploadProps(world.props, world.world)),
+        renderer(shaders, atlas, tints, withProps(options, props)),
+        target(size) {}
+  Props props;  // before the renderer, which is built for what they need
   DeferredRenderer renderer;
   SectionMeshes meshes;
   RenderTarget target;
+
+  // After edits: the light around the props may have changed.
+  void relightProps(const SceneRenderer::World& world) {
+    for (std::size_t i = 0; i < world.props.placed.size(); ++i) {
+      const PlacedProp& p = world.props.placed[i];
+      props.relight(static_cast<int>(i), propLight(world.props.models[static_cast<std::size_t>(p.model)], p.transform, world.world));
+    }
+  }
 };
 
 SceneRenderer::SceneRenderer(const SceneFile& scene) : scene_(scene), debugView_(debugViewOf(scene)) {
@@ -95,7 +178,7 @@ SceneRenderer::SceneRenderer(const SceneFile& scene) : scene_(scene), debugView_
   options.caveCulling = scene.caveCulling;
   options.leaveOutAbsentMaps = scene.leaveOutAbsentMaps;
   options.cullFacesAway = scene.cullFacesAway;
-  gpu_ = std::make_unique<Gpu>(shaders, world_->atlas.atlas, tints, options, glm::ivec2(scene.width, scene.height));
+  gpu_ = std::make_unique<Gpu>(shaders, world_->atlas.atlas, tints, options, glm::ivec2(scene.width, scene.height), *world_);
   for (const auto& mesh : meshes) {
     gpu_->meshes.upload(mesh);
     stats_.quads += mesh.quads();
@@ -121,11 +204,18 @@ FrameInputs SceneRenderer::inputsFor(int frame) const {
   inputs.viewDistance = static_cast<float>(scene_.viewDistance * 16);
   inputs.debugView = debugView_;
   inputs.materialAo = scene_.materialAo;
+  inputs.props = &gpu_->props;
   return inputs;
 }
 
+void SceneRenderer::advanceTo(int frame) {
+  const std::vector<SectionMesh> changed = world_->world.advanceTo(frame, world_->table);
+  for (const SectionMesh& mesh : changed) gpu_->meshes.upload(mesh);
+  if (!changed.empty()) gpu_->relightProps(*world_);
+}
+
 RenderedFrame SceneRenderer::renderFrame(int frame, const FrameRequest& request) {
-  for (const SectionMesh& mesh : world_->world.advanceTo(frame, world_->table)) gpu_->meshes.upload(mesh);
+  advanceTo(frame);
   FrameInputs inputs = inputsFor(frame);
   if (request.debugView) inputs.debugView = *request.debugView;
   inputs.shadowCentreOffset = request.shadowCentreOffset;
@@ -144,7 +234,7 @@ RenderedFrame SceneRenderer::renderFrame(int frame, const FrameRequest& request)
 }
 
 void SceneRenderer::draw(int frame, GLuint framebuffer, glm::ivec2 size) {
-  for (const SectionMesh& mesh : world_->world.advanceTo(frame, world_->table)) gpu_->meshes.upload(mesh);
+  advanceTo(frame);
   gpu_->renderer.render(inputsFor(frame), gpu_->meshes, framebuffer, size);
 }
 

@@ -65,6 +65,7 @@ class SceneRenderer {
   struct Gpu;
   struct World;
   FrameInputs inputsFor(int frame) const;
+  void advanceTo(int frame);  // edits keyed to frames up to `frame`, their meshes and the props' light
 
   SceneFile scene_;
   DebugView debugView_;
