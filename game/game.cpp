@@ -100,6 +100,17 @@ Game::Game(GlfwWindow& window, const GameOptions& options)
                  std::to_string(level.seed));
     }
   }
+  props_ = std::make_unique<GameProps>(world_.dir());
+  for (const LevelProp& prop : level.props) {
+    try {
+      props_->place(prop, world_.world(), world_.light(), true);  // dark until its chunks load
+    } catch (const Error&) {
+      // Kept in the level, undrawn; place() said why.
+    }
+  }
+  renderer_.setPropNeeds(props_->gpu().needs());
+  const std::vector<std::string> offered = propFiles();
+  if (!offered.empty()) selectedProp_ = offered.front();
   if (!options.inputScript.empty()) script_.emplace(loadInputScript(options.inputScript));
   glRenderer_ = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
   installCallbacks();
@@ -197,6 +208,7 @@ void Game::playScript(double now) {
         if (e.command == "quit") quit_ = true;
         if (e.command == "minimise") window_.minimise();
         if (e.command == "restore") window_.restore();
+        if (e.command == "place_prop") placeProp(e.model);
         break;
     }
   }
@@ -215,6 +227,7 @@ void Game::handleInput(const FrameInput& in, double dt) {
     selected_ = ((selected_ + steps) % 9 + 9) % 9;
   }
   if (in.wasPressed(Action::HideHud)) showHud_ = !showHud_;
+  if (in.wasPressed(Action::PlaceProp)) placeProp(selectedProp_);
   if (in.wasPressed(Action::DebugOverlay)) showOverlay_ = !showOverlay_;
   if (in.wasPressed(Action::Screenshot)) screenshotRequested_ = true;
   if (in.wasPressed(Action::DebugView)) debugView_ = (debugView_ + 1) % static_cast<int>(std::size(kDebugViewNames));
@@ -297,7 +310,12 @@ void Game::stream(Clock::time_point frameStart) {
   const glm::dvec3 p = player_.position();
   const ChunkPos centre = ChunkPos::of({static_cast<int>(std::floor(std::clamp(p.x, -3e7, 3e7))), 0,
                                         static_cast<int>(std::floor(std::clamp(p.z, -3e7, 3e7)))});
-  for (const SectionMesh& mesh : world_.update(centre, frameStart + kWorldBudget)) renderer_.upload(mesh);
+  std::vector<SectionPos> changed;
+  for (const SectionMesh& mesh : world_.update(centre, frameStart + kWorldBudget)) {
+    renderer_.upload(mesh);
+    changed.push_back(mesh.pos);
+  }
+  if (!changed.empty()) props_->relight(changed, world_.world(), world_.light());
   if (spawnPending_) {
     const int x = static_cast<int>(std::floor(p.x)), z = static_cast<int>(std::floor(p.z));
     if (const auto y = world_.surfaceY(x, z)) {
@@ -318,6 +336,7 @@ void Game::draw(bool timed) {
   frame.viewDistance = static_cast<float>(settings_.viewDistance * 16);
   frame.debugView = static_cast<DebugView>(debugView_);
   frame.reuseShadowMap = true;
+  frame.props = &props_->gpu();
   if (target_ && !menuOpen_ && showHud_) {
     const BlockPos b = target_->block;
     frame.outline = WorldBox{glm::dvec3(b.x, b.y, b.z), glm::dvec3(b.x + 1, b.y + 1, b.z + 1)};
@@ -353,7 +372,7 @@ void Game::drawHud() {
     hud_->hotbar(slots, selected_);
   }
   if (showOverlay_) hud_->overlay(overlayLeft(), overlayRight());
-  if (menuOpen_) applyMenu(hud_->menu(settings_, renderer_.assets().packNames));
+  if (menuOpen_) applyMenu(hud_->menu(settings_, renderer_.assets().packNames, propFiles(), selectedProp_));
   hud_->endFrame();
 }
 
@@ -365,9 +384,42 @@ void Game::applyMenu(const MenuResult& r) {
     window_.setVsync(settings_.vsync);
     saveSettings(settingsFile_, settings_);
   }
+  if (r.prop) selectedProp_ = *r.prop;
   if (r.save) save();
   if (r.resume) setMenu(false);
   if (r.quit) quit_ = true;
+}
+
+void Game::placeProp(const std::string& model) {
+  if (model.empty()) {
+    logWarning("no prop to place: put .gltf or .glb files in " + (world_.dir() / "props").string() +
+               " and choose one in the menu's Props tab");
+    return;
+  }
+  if (!target_ || !inWorldHeight(target_->place.y) || !replaceable(blocks_[world_.world().getBlock(target_->place)])) {
+    logWarning("no prop placed: look at a block with room beside it");
+    return;
+  }
+  try {
+    props_->place(props_->standingIn(model, target_->place), world_.world(), world_.light());
+    renderer_.setPropNeeds(props_->gpu().needs());
+    logInfo("placed " + model);
+  } catch (const Error& e) {
+    logError(std::string("prop not placed: ") + e.what());
+  }
+}
+
+std::vector<std::string> Game::propFiles() const {
+  std::vector<std::string> files;
+  std::error_code ec;
+  for (const auto& entry : std::filesystem::directory_iterator(world_.dir() / "props", ec)) {
+    const std::string ext = entry.path().extension().string();
+    if (entry.is_regular_file() && (ext == ".gltf" || ext == ".glb")) {
+      files.push_back((std::filesystem::path("props") / entry.path().filename()).string());
+    }
+  }
+  std::sort(files.begin(), files.end());
+  return files;
 }
 
 void Game::reloadPacks() {
@@ -387,6 +439,7 @@ void Game::save() {
   level.playerYaw = player_.yaw;
   level.playerPitch = player_.pitch;
   level.playerFlying = player_.flying;
+  level.props = props_->level();
   try {
     world_.save();
     logInfo("saved " + world_.dir().string());

@@ -104,6 +104,11 @@ void Game::writeReport() {
                       {"block_light", world_.light().lightAt(p, LightChannel::Block)},
                       {"sky_light", world_.light().lightAt(p, LightChannel::Sky)}});
   }
+  nlohmann::json props = nlohmann::json::array();
+  for (const GameProps::Drawn& d : props_->drawn()) {
+    const glm::dvec3& p = d.prop.position;
+    props.push_back({{"model", d.prop.model}, {"position", {p.x, p.y, p.z}}, {"light", {d.meanLight.x, d.meanLight.y}}});
+  }
   nlohmann::json edits = nlohmann::json::array();
   for (const Edit& e : edits_) edits.push_back({{"pos", {e.pos.x, e.pos.y, e.pos.z}}, {"block", e.block}});
   const glm::dvec3 p = player_.position();
@@ -113,6 +118,7 @@ void Game::writeReport() {
       {"frames", {{"drawn", framesDrawn_}, {"minimised", framesHidden_}}},
       {"player", {{"position", {p.x, p.y, p.z}}, {"yaw", player_.yaw}, {"pitch", player_.pitch}, {"flying", player_.flying}}},
       {"edits", edits},
+      {"props", props},
       {"probes", probes}};
   writeFileAtomically(options_.report, report.dump(2) + "\n");
 }

@@ -21,9 +21,11 @@ PackStack openPacks(const std::vector<PackChoice>& packs, std::vector<std::strin
   return stack;
 }
 
-std::unique_ptr<DeferredRenderer> makeRenderer(const BlockAssets& assets, const SceneShadow& shadow) {
+std::unique_ptr<DeferredRenderer> makeRenderer(const BlockAssets& assets, const SceneShadow& shadow,
+                                               const PropNeeds& props) {
   RendererOptions options;
   options.shadow = shadowSettingsOf(shadow);
+  options.props = props;
   return std::make_unique<DeferredRenderer>(ShaderPreprocessor(shaderDir()), assets.atlas.atlas, assets.tints, options);
 }
 
@@ -44,7 +46,7 @@ BlockAssets::BlockAssets(const BlockRegistry& blocks, const PackStack& stack, st
 GameRenderer::GameRenderer(const BlockRegistry& blocks, const GameSettings& settings)
     : blocks_(blocks),
       assets_(BlockAssets::load(blocks, settings.packs)),
-      renderer_(makeRenderer(*assets_, settings.shadow)),
+      renderer_(makeRenderer(*assets_, settings.shadow, {})),
       shadow_(settings.shadow) {}
 
 std::unique_ptr<BlockAssets> GameRenderer::loadPacks(const std::vector<PackChoice>& packs) const {
@@ -54,7 +56,7 @@ std::unique_ptr<BlockAssets> GameRenderer::loadPacks(const std::vector<PackChoic
 void GameRenderer::commit(std::unique_ptr<BlockAssets> assets) {
   assets_ = std::move(assets);
   icons_.reset();
-  renderer_ = makeRenderer(*assets_, shadow_);
+  renderer_ = makeRenderer(*assets_, shadow_, propNeeds_);
   meshes_.clear();  // their tiles index the old atlas; the remeshed sections come back
 }
 
@@ -63,7 +65,15 @@ void GameRenderer::applySettings(const GameSettings& settings) {
   if (shadowJson(s) == shadowJson(shadow_)) return;
   shadow_ = s;
   icons_.reset();
-  renderer_ = makeRenderer(*assets_, shadow_);
+  renderer_ = makeRenderer(*assets_, shadow_, propNeeds_);
+}
+
+void GameRenderer::setPropNeeds(const PropNeeds& needs) {
+  const PropNeeds& had = propNeeds_;
+  if (needs.any == had.any && needs.mask == had.mask && needs.blend == had.blend && needs.normalMaps == had.normalMaps) return;
+  propNeeds_ = needs;
+  icons_.reset();
+  renderer_ = makeRenderer(*assets_, shadow_, propNeeds_);
 }
 
 GLuint GameRenderer::iconTexture() {

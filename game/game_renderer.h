@@ -35,6 +35,8 @@ class GameRenderer {
   void commit(std::unique_ptr<BlockAssets> assets);
   // New shader variants and shadow maps for changed shadow settings.
   void applySettings(const GameSettings& settings);
+  // The props' needs (render/props.h): new prop variants when they change.
+  void setPropNeeds(const PropNeeds& needs);
 
   void upload(const SectionMesh& mesh) { meshes_.upload(mesh); }
   void render(const FrameInputs& frame, glm::ivec2 size, std::vector<PassTiming>* timings);
@@ -49,6 +51,7 @@ class GameRenderer {
   std::unique_ptr<BlockAssets> assets_;
   std::unique_ptr<DeferredRenderer> renderer_;
   SceneShadow shadow_;
+  PropNeeds propNeeds_;
   SectionMeshes meshes_;
   gl::TextureView icons_;  // of renderer_'s atlas; remade with it
 };

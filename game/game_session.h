@@ -13,6 +13,7 @@
 
 #include "controls.h"
 #include "game_renderer.h"
+#include "game_props.h"
 #include "game_world.h"
 #include "hud.h"
 #include "input_script.h"
@@ -68,6 +69,9 @@ class Game {
   void draw(bool timed);
   void drawHud();
   void applyMenu(const MenuResult& r);
+  // Places `model` (relative to the world folder, or absolute) standing in the targeted free cell.
+  void placeProp(const std::string& model);
+  std::vector<std::string> propFiles() const;  // the world's props/ folder: what the menu offers
   void reloadPacks();
   void save();
   void writeReport();
@@ -87,6 +91,8 @@ class Game {
   GameRenderer renderer_;
   std::filesystem::path benchmarkDir_;  // a throwaway world for --benchmark
   GameWorld world_;
+  std::unique_ptr<GameProps> props_;  // after the world: props light from it
+  std::string selectedProp_;          // the model the place-prop key places
   Player player_;
   Controls controls_;
   std::optional<Hud> hud_;

@@ -123,7 +123,8 @@ void Hud::overlay(const std::vector<std::string>& left, const std::vector<std::s
   ImGui::End();
 }
 
-MenuResult Hud::menu(GameSettings& settings, const std::vector<std::string>& loadedPacks) {
+MenuResult Hud::menu(GameSettings& settings, const std::vector<std::string>& loadedPacks,
+                     const std::vector<std::string>& propFiles, const std::string& selectedProp) {
   MenuResult out;
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   ImGui::SetNextWindowPos({display.x * 0.5f, display.y * 0.5f}, ImGuiCond_Always, {0.5f, 0.5f});
@@ -147,12 +148,25 @@ MenuResult Hud::menu(GameSettings& settings, const std::vector<std::string>& loa
         keysTab(settings);
         ImGui::EndTabItem();
       }
+      if (ImGui::BeginTabItem("Props")) {
+        propsTab(propFiles, selectedProp, out);
+        ImGui::EndTabItem();
+      }
       ImGui::EndTabBar();
     }
   }
   ImGui::End();
   out.settingsChanged |= out.viewChanged || out.rendererChanged || out.packsChanged;
   return out;
+}
+
+void Hud::propsTab(const std::vector<std::string>& files, const std::string& selected, MenuResult& out) {
+  ImGui::TextWrapped("glTF models (.gltf, .glb) in the world's props folder. The place-prop key (P by default) "
+                     "stands the chosen one in the free cell beside the block you look at.");
+  if (files.empty()) ImGui::TextDisabled("The folder is empty.");
+  for (const std::string& file : files) {
+    if (ImGui::RadioButton(file.c_str(), file == selected)) out.prop = file;
+  }
 }
 
 void Hud::settingsTab(GameSettings& s, MenuResult& out) {

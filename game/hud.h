@@ -19,6 +19,7 @@ struct MenuResult {
   bool rendererChanged = false;  // shadow settings: new shader variants and maps
   bool packsChanged = false;     // reload the packs
   bool settingsChanged = false;  // anything: save the settings file
+  std::optional<std::string> prop;  // the prop model chosen in the Props tab
 };
 
 class Hud {
@@ -40,7 +41,9 @@ class Hud {
   };
   void hotbar(const std::vector<Slot>& slots, int selected);
   void overlay(const std::vector<std::string>& left, const std::vector<std::string>& right);
-  MenuResult menu(GameSettings& settings, const std::vector<std::string>& loadedPacks);
+  // `propFiles`: models the Props tab offers; `selectedProp`: the one the place-prop key places.
+  MenuResult menu(GameSettings& settings, const std::vector<std::string>& loadedPacks,
+                  const std::vector<std::string>& propFiles, const std::string& selectedProp);
   void endFrame();  // draws into the bound framebuffer
 
   // While the menu waits for a key to bind, the game hands key presses here first; true when taken.
@@ -50,6 +53,7 @@ class Hud {
   void settingsTab(GameSettings& settings, MenuResult& out);
   void packsTab(GameSettings& settings, const std::vector<std::string>& loadedPacks, MenuResult& out);
   void keysTab(GameSettings& settings);
+  void propsTab(const std::vector<std::string>& files, const std::string& selected, MenuResult& out);
 
   std::optional<Action> rebinding_;
   std::string newPack_;

@@ -17,7 +17,7 @@ glm::dvec2 pair(const json& value, const std::string& key) {
 }
 
 ScriptEvent parseEvent(const json& value, const std::string& key) {
-  checkObject(value, key, {"t", "key", "button", "down", "look", "mouse_move", "scroll", "command"});
+  checkObject(value, key, {"t", "key", "button", "down", "look", "mouse_move", "scroll", "command", "model"});
   ScriptEvent e;
   const json* t = field(value, "t");
   if (!t) fail(key, "missing \"t\" (seconds)");
@@ -59,6 +59,12 @@ ScriptEvent parseEvent(const json& value, const std::string& key) {
     e.kind = ScriptEvent::Kind::Command;
     e.command = oneOf(*v, member(key, "command"), kScriptCommands);
     ++kinds;
+  }
+  if (const json* v = field(value, "model")) {
+    if (e.command != "place_prop") fail(member(key, "model"), "only \"place_prop\" takes a model");
+    e.model = nonEmptyString(*v, member(key, "model"));
+  } else if (e.command == "place_prop") {
+    fail(key, "\"place_prop\" needs \"model\" (a .gltf or .glb file)");
   }
   if (kinds != 1) fail(key, "expected exactly one of \"key\", \"button\", \"look\", \"mouse_move\", \"scroll\", \"command\"");
   if (const json* v = field(value, "down")) {

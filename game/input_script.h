@@ -12,6 +12,7 @@
 //       { "t": 1.2, "button": "right" },    "left" | "right" | "middle", same rules
 //       { "t": 1.3, "mouse_move": [40, 0] }, pixels, scaled by the mouse sensitivity
 //       { "t": 1.4, "scroll": -1 },
+//       { "t": 1.8, "command": "place_prop", "model": "box.glb" },  at the targeted face
 //       { "t": 2.0, "command": "save" } ] } "save" | "screenshot" | "quit" | "minimise" | "restore"
 // Events play in time order once the game clock reaches their "t".
 
@@ -35,6 +36,7 @@ struct ScriptEvent {
   std::optional<bool> down;        // Key, Button: nullopt taps (down this frame, up the next)
   glm::dvec2 value{0.0};           // Look: yaw, pitch; MouseMove: dx, dy; Scroll: x = notches
   std::string command;             // Command
+  std::string model;               // Command "place_prop": the glTF file
 };
 
 struct InputScript {
@@ -42,7 +44,8 @@ struct InputScript {
   std::vector<ScriptEvent> events;  // sorted by t (stable: equal times keep file order)
 };
 
-inline constexpr std::string_view kScriptCommands[] = {"save", "screenshot", "quit", "minimise", "restore"};
+inline constexpr std::string_view kScriptCommands[] = {"save", "screenshot", "quit", "minimise", "restore",
+                                                      "place_prop"};
 
 // Throws Error naming the file, the event ("events[3].key") and what is wrong.
 InputScript parseInputScript(std::string_view json, const std::filesystem::path& file);

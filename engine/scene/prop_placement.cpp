@@ -1,20 +1,23 @@
 #include "scene/prop_placement.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <glm/gtc/matrix_transform.hpp>
 
 namespace terrasol {
 
-PropTransform propTransform(const SceneProp& prop) {
-  const glm::vec3 r = glm::radians(prop.rotation);
+PropTransform propTransform(const SceneProp& prop) { return propTransform(prop.position, prop.rotation, prop.scale); }
+
+PropTransform propTransform(const glm::dvec3& position, const glm::vec3& rotationDegrees, float scale) {
+  const glm::vec3 r = glm::radians(rotationDegrees);
   glm::mat4 m = glm::rotate(glm::mat4(1.0f), r.x, glm::vec3(0.0f, 1.0f, 0.0f));
   m = glm::rotate(m, r.y, glm::vec3(1.0f, 0.0f, 0.0f));
   m = glm::rotate(m, r.z, glm::vec3(0.0f, 0.0f, 1.0f));
   PropTransform t;
-  t.position = prop.position;
+  t.position = position;
   t.rotation = glm::mat3(m);
-  t.basis = t.rotation * prop.scale;
+  t.basis = t.rotation * scale;
   return t;
 }
 
@@ -55,6 +58,23 @@ std::vector<glm::vec2> smoothLightAt(const World& world, const LightEngine& ligh
     out.push_back(weights > 1e-9 ? sum / static_cast<float>(weights * 15.0) : glm::vec2(0.0f));
   }
   return out;
+}
+
+std::vector<glm::vec2> modelLight(const Model& model, const PropTransform& t, const World& world, const LightEngine& light) {
+  std::vector<glm::dvec3> points;
+  points.reserve(model.vertexCount());
+  for (const ModelMesh& mesh : model.meshes) {
+    for (const ModelVertex& v : mesh.vertices) points.push_back(toWorld(t, v.position));
+  }
+  return smoothLightAt(world, light, points);
+}
+
+int ModelCache::load(const std::filesystem::path& file) {
+  const auto known = std::find(files_.begin(), files_.end(), file);
+  if (known != files_.end()) return static_cast<int>(known - files_.begin());
+  models_.push_back(loadModel(file));
+  files_.push_back(file);
+  return static_cast<int>(models_.size()) - 1;
 }
 
 }  // namespace terrasol

@@ -5,10 +5,20 @@
 #include <cstdint>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include <glm/vec3.hpp>
 
 namespace terrasol {
+
+// A glTF prop placed in the world (the game's "place prop"): the model file as the player chose it,
+// where its origin is, its yaw/pitch/roll in degrees and its uniform scale.
+struct LevelProp {
+  std::string model;
+  glm::dvec3 position{0.0};
+  glm::vec3 rotation{0.0f};
+  float scale = 1.0f;
+};
 
 struct Level {
   std::string generator = "terrain";
@@ -17,6 +27,7 @@ struct Level {
   glm::dvec3 playerPosition{0.0, 0.0, 0.0};
   float playerYaw = 0.0f, playerPitch = 0.0f;  // degrees
   bool playerFlying = false;             // "flying" (absent in older files: false)
+  std::vector<LevelProp> props;          // "props" (absent in older files: none)
 };
 
 // Throws Error naming the file and the key that is missing or wrong.

@@ -189,9 +189,15 @@ TEST(Level, RoundTripsAndBadFilesNameTheKey) {
   level.playerPosition = {29'999'000.5, 70.25, -12.75};
   level.playerYaw = 90.0f;
   level.playerFlying = true;
+  level.props = {{"props/lamp.glb", {29'999'000.5, 64.0, -3.25}, {45.0f, 0.0f, 10.0f}, 0.5f}};
   saveLevel(dir / "level.json", level);
   const Level back = loadLevel(dir / "level.json");
   EXPECT_TRUE(back.playerFlying);
+  ASSERT_EQ(back.props.size(), 1u);
+  EXPECT_EQ(back.props[0].model, "props/lamp.glb");
+  EXPECT_EQ(back.props[0].position, level.props[0].position);
+  EXPECT_EQ(back.props[0].rotation, level.props[0].rotation);
+  EXPECT_EQ(back.props[0].scale, 0.5f);
   EXPECT_EQ(back.seed, level.seed);
   EXPECT_EQ(back.time, level.time);
   EXPECT_EQ(back.playerPosition, level.playerPosition);
@@ -213,6 +219,16 @@ TEST(Level, RoundTripsAndBadFilesNameTheKey) {
   EXPECT_NE(error(R"({"generator":"terrain","seed":1,"time":0,"player":{"position":[1,2],"yaw":0,"pitch":0}})")
                 .find("player.position must be three"),
             std::string::npos);
+  const std::string player = R"("generator":"terrain","seed":1,"time":0,"player":{"position":[1,2,3],"yaw":0,"pitch":0})";
+  EXPECT_NE(error("{" + player + R"(,"props":[{"model":"a.glb","position":[0,0,0],"rotation":[0,0,0],"scale":-1}]})")
+                .find("bad.json: props[0].scale must be in (0, 1000]"),
+            std::string::npos);
+  EXPECT_NE(error("{" + player + R"(,"props":[{"position":[0,0,0]}]})").find("props[0]: missing key \"model\""),
+            std::string::npos);
+  EXPECT_NE(error("{" + player + R"(,"props":[{"model":"a","position":[0,"x",0],"rotation":[0,0,0],"scale":1}]})")
+                .find("props[0].position must be three finite numbers"),
+            std::string::npos);
+  EXPECT_EQ(error("{" + player + "}"), "no error") << "older files without props load";
 }
 
 // Random edits all over a 4 x 4 chunk area, saved through WorldStorage and read back into a new world.

@@ -91,6 +91,52 @@ TEST_F(GameWindowTest, ScriptedPlayEditsSavesAndTheNextRunFindsTheEditsAndTheLig
   EXPECT_EQ(reopened["time"].get<std::int64_t>() / 20, played["time"].get<std::int64_t>() / 20) << "the world time is kept";
 }
 
+TEST_F(GameWindowTest, APlacedPropIsLitSavedAndBackInTheNextRun) {
+  const auto dir = testing::testOutputDir() / "game_prop";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir / "world" / "props");
+  const auto settings = dir / "settings.json";
+  std::ofstream(settings) << R"({ "view_distance": 2, "shadow": { "resolution": 512, "distance": 32 } })";
+  // One model from the world's props folder (relative, as the menu offers it), one from anywhere.
+  const auto samples = std::filesystem::path(TERRASOL_SOURCE_DIR) / ".." / "shared" / "testdata" / "gltf";
+  std::filesystem::copy_file(samples / "BoxTextured" / "glTF-Binary" / "BoxTextured.glb", dir / "world" / "props" / "box.glb");
+  const auto script = dir / "script.json";
+  std::ofstream(script) << R"({ "step": 0.05, "events": [
+      { "t": 0.0, "look": [0, 60] },
+      { "t": 0.2, "command": "place_prop", "model": "props/box.glb" },
+      { "t": 0.4, "look": [90, 60] },
+      { "t": 0.6, "command": "place_prop", "model": ")" +
+                               (samples / "Cube" / "glTF" / "Cube.gltf").string() + R"(" },
+      { "t": 0.8, "look": [-45, 30] },
+      { "t": 1.1, "command": "save" },
+      { "t": 1.2, "command": "quit" } ] })";
+  const std::string common = "--world " + (dir / "world").string() + " --settings " + settings.string() + " --size 320x180";
+  const auto first = dir / "first.json";
+  ASSERT_EQ(runGame("--seed 5 " + common + " --input-script " + script.string() + " --report " + first.string()), 0);
+  const nlohmann::json placed = readJson(first);
+  ASSERT_EQ(placed["props"].size(), 2u) << placed.dump();
+  EXPECT_EQ(placed["props"][0]["model"], "props/box.glb");
+  for (const auto& p : placed["props"]) {
+    EXPECT_GT(p["light"][1].get<double>(), 0.5) << "outdoors by day: sky light at its vertices " << p.dump();
+  }
+  // The save keeps them; the next run draws them where they were.
+  const auto second = dir / "second.json";
+  ASSERT_EQ(runGame(common + " --frames 3 --report " + second.string()), 0);
+  const nlohmann::json reopened = readJson(second);
+  ASSERT_EQ(reopened["props"].size(), 2u) << reopened.dump();
+  for (std::size_t i = 0; i < 2; ++i) {
+    EXPECT_EQ(reopened["props"][i]["model"], placed["props"][i]["model"]);
+    EXPECT_EQ(reopened["props"][i]["position"], placed["props"][i]["position"]);
+  }
+  // A prop whose model went missing stays in the level, undrawn, and the game runs on.
+  std::filesystem::remove(dir / "world" / "props" / "box.glb");
+  const auto third = dir / "third.json";
+  ASSERT_EQ(runGame(common + " --frames 2 --report " + third.string()), 0);
+  EXPECT_EQ(readJson(third)["props"].size(), 1u);
+  const nlohmann::json level = readJson(dir / "world" / "level.json");
+  EXPECT_EQ(level["props"].size(), 2u) << "the broken one is kept for when the file comes back";
+}
+
 TEST_F(GameWindowTest, AMinimisedWindowDrawsNothingWhileTheWorldGoesOnAndComesBack) {
   const auto dir = testing::testOutputDir() / "game_minimise";
   std::filesystem::remove_all(dir);

@@ -67,39 +67,24 @@ struct PlacedProp {
   WorldBounds bounds;
 };
 struct SceneProps {
-  std::vector<Model> models;
+  ModelCache models;
   std::vector<PlacedProp> placed;
 };
 
 SceneProps loadProps(const SceneFile& scene) {
   SceneProps out;
-  std::vector<std::filesystem::path> files;
   for (const SceneProp& prop : scene.props) {
-    const auto known = std::find(files.begin(), files.end(), prop.model);
-    int model = static_cast<int>(known - files.begin());
-    if (known == files.end()) {
-      try {
-        out.models.push_back(loadModel(prop.model));
-      } catch (const Error& e) {
-        throw Error(sceneError(scene, prop.key + ".model", e.what()));
-      }
-      files.push_back(prop.model);
+    int model = 0;
+    try {
+      model = out.models.load(prop.model);
+    } catch (const Error& e) {
+      throw Error(sceneError(scene, prop.key + ".model", e.what()));
     }
-    const Model& m = out.models[static_cast<std::size_t>(model)];
+    const Model& m = out.models[model];
     const PropTransform t = propTransform(prop);
     out.placed.push_back({model, t, placedBounds(t, m.min, m.max)});
   }
   return out;
-}
-
-// The voxel light at each vertex of a placed model, meshes in order (Props::place).
-std::vector<glm::vec2> propLight(const Model& model, const PropTransform& t, const SceneWorld& world) {
-  std::vector<glm::dvec3> points;
-  points.reserve(model.vertexCount());
-  for (const ModelMesh& mesh : model.meshes) {
-    for (const ModelVertex& v : mesh.vertices) points.push_back(toWorld(t, v.position));
-  }
-  return smoothLightAt(world.world(), world.light(), points);
 }
 
 }  // namespace
@@ -124,12 +109,11 @@ namespace {
 Props uploadProps(const SceneProps& cpu, const SceneWorld& world) {
   Props props;
   std::vector<int> ids;
-  for (const Model& model : cpu.models) ids.push_back(props.addModel(model));
+  for (const Model& model : cpu.models.models()) ids.push_back(props.addModel(model));
   for (const PlacedProp& p : cpu.placed) {
-    const Model& model = cpu.models[static_cast<std::size_t>(p.model)];
     props.place(ids[static_cast<std::size_t>(p.model)],
                 {p.transform.position, p.transform.basis, p.transform.rotation, p.bounds.min, p.bounds.max},
-                propLight(model, p.transform, world));
+                modelLight(cpu.models[p.model], p.transform, world.world(), world.light()));
   }
   return props;
 }
@@ -156,7 +140,8 @@ struct SceneRenderer::Gpu {
   void relightProps(const SceneRenderer::World& world) {
     for (std::size_t i = 0; i < world.props.placed.size(); ++i) {
       const PlacedProp& p = world.props.placed[i];
-      props.relight(static_cast<int>(i), propLight(world.props.models[static_cast<std::size_t>(p.model)], p.transform, world.world));
+      props.relight(static_cast<int>(i), modelLight(world.props.models[p.model], p.transform, world.world.world(),
+                                                    world.world.light()));
     }
   }
 };
