@@ -318,6 +318,11 @@ TEST(InputScriptTest, BadScriptsNameTheFileAndTheEvent) {
   EXPECT_NE(error(R"({"events": [{"t": 0, "scroll": 1, "down": true}]})").find("events[0].down"), std::string::npos);
   EXPECT_NE(error(R"({"events": [)").find("script.json:1:"), std::string::npos);
   EXPECT_NE(error(R"({"step": 0})").find("step"), std::string::npos);
+  EXPECT_NE(error(R"({"events": [{"t": 0, "command": "place_prop"}]})").find("events[0]: \"place_prop\" needs \"model\""),
+            std::string::npos);
+  EXPECT_NE(error(R"({"events": [{"t": 0, "command": "save", "model": "a.glb"}]})").find("events[0].model"), std::string::npos);
+  EXPECT_EQ(parseInputScript(R"({"events": [{"t": 0, "command": "place_prop", "model": "a.glb"}]})", "s.json").events[0].model,
+            "a.glb");
 }
 
 TEST(SettingsTest, SaveAndLoadRoundTripAndMissingMeansDefaults) {

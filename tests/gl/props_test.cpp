@@ -197,6 +197,46 @@ TEST_F(PropsTest, DebugViewsShowPropsLikeBlocks) {
   context_->checkErrors("prop debug views");
 }
 
+TEST_F(PropsTest, NormalMapsAndEmissionReachTheGBufferEvenWithoutPackMaps) {
+  // The textured box with a normal map tilting every texel towards +u, and a white glow.
+  const auto dir = testing::scratchDir("props_normal_map");
+  std::filesystem::remove_all(dir);
+  std::filesystem::copy(kModels / "BoxTextured" / "glTF", dir);
+  Image tilted(4, 4);
+  for (std::size_t i = 0; i < tilted.rgba.size(); i += 4) {
+    tilted.rgba[i] = 218;  // x = 0.71
+    tilted.rgba[i + 1] = 128;
+    tilted.rgba[i + 2] = 218;  // z = 0.71
+    tilted.rgba[i + 3] = 255;
+  }
+  saveImage(dir / "tilted.png", tilted);
+  nlohmann::json j = nlohmann::json::parse(readTextFile(dir / "BoxTextured.gltf"));
+  j["images"].push_back({{"uri", "tilted.png"}});
+  j["textures"].push_back({{"source", j["images"].size() - 1}});
+  j["materials"][0]["normalTexture"] = {{"index", j["textures"].size() - 1}};
+  j["materials"][0]["emissiveFactor"] = {1.0, 1.0, 1.0};
+  std::ofstream(dir / "BoxTextured.gltf") << j.dump();
+
+  // Pixel Perfection alone has no _n and no _s: only the prop keeps the surface normals and _s target.
+  SceneFile scene = flatAfternoon();
+  scene.packs = {std::filesystem::path(TERRASOL_SOURCE_DIR) / ".." / "shared" / "testdata" / "packs" / "pixel_perfection_ce"};
+  const glm::dvec3 centre(0.5, 64.5, 0.5), top = centre + glm::dvec3(0.0, 0.5, 0.0);
+  scene.props = {prop(dir / "BoxTextured.gltf", centre)};
+  SceneRenderer renderer(scene);
+  FrameRequest request;
+  request.debugView = DebugView::Normal;
+  const glm::vec3 mapped = colourAt(renderer.renderFrame(0, request), top);
+  request.debugView = DebugView::VertexNormal;
+  const glm::vec3 vertex = colourAt(renderer.renderFrame(0, request), top);
+  EXPECT_GT(glm::length(mapped - vertex), 0.2f) << "the normal map tilts the top face's normal";
+  EXPECT_TRUE(renderer.renderer().gbufferContents().surfaceNormals);
+  EXPECT_TRUE(renderer.renderer().gbufferContents().specular);
+  request.debugView = DebugView::Emission;
+  EXPECT_GT(colourAt(renderer.renderFrame(0, request), top).r, 0.5f) << "the glow is LabPBR emission";
+  EXPECT_LT(colourAt(renderer.renderFrame(0, request), centre + glm::dvec3(3.0, -0.5, 0.0)).r, 0.02f) << "the grass does not glow";
+  context_->checkErrors("normal maps and emission");
+}
+
 TEST_F(PropsTest, AMissingModelNamesThePropAndTheFile) {
   SceneFile scene = flatAfternoon();
   scene.props = {prop(kModels / "nothing_here.glb", {0.5, 64.5, 0.5})};
