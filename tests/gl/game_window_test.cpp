@@ -43,14 +43,25 @@ TEST_F(GameWindowTest, WindowShowsWhatHeadlessRenders) {
 
 nlohmann::json readJson(const std::filesystem::path& file) { return nlohmann::json::parse(readTextFile(file)); }
 
+// A fresh folder for one run of the game, with small, quick settings: 2 chunks of view, a small
+// shadow map. `common` holds the arguments every run in it takes.
+struct GameDir {
+  explicit GameDir(const std::string& name, int shadowResolution = 512, int shadowDistance = 32)
+      : dir(testing::testOutputDir() / name), settings(dir / "settings.json") {
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    std::ofstream(settings) << R"({ "view_distance": 2, "shadow": { "resolution": )" << shadowResolution
+                            << R"(, "distance": )" << shadowDistance << " } }";
+    common = "--world " + (dir / "world").string() + " --settings " + settings.string() + " --size 320x180";
+  }
+  std::filesystem::path dir, settings;
+  std::string common;
+};
+
 TEST_F(GameWindowTest, ScriptedPlayEditsSavesAndTheNextRunFindsTheEditsAndTheLight) {
-  const auto dir = testing::testOutputDir() / "game_smoke";
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  const auto settings = dir / "settings.json";
-  // Small and quick: 2 chunks of view, a small shadow map.
-  std::ofstream(settings) << R"({ "view_distance": 2, "shadow": { "resolution": 512, "distance": 32 } })";
-  const std::string common = "--world " + (dir / "world").string() + " --settings " + settings.string() + " --size 320x180";
+  const GameDir game("game_smoke");
+  const auto& dir = game.dir;
+  const std::string& common = game.common;
 
   const auto first = dir / "first.json";
   ASSERT_EQ(runGame(common + " --seed 1 --input-script " + std::string(TERRASOL_SOURCE_DIR) +
@@ -92,11 +103,9 @@ TEST_F(GameWindowTest, ScriptedPlayEditsSavesAndTheNextRunFindsTheEditsAndTheLig
 }
 
 TEST_F(GameWindowTest, APlacedPropIsLitSavedAndBackInTheNextRun) {
-  const auto dir = testing::testOutputDir() / "game_prop";
-  std::filesystem::remove_all(dir);
+  const GameDir game("game_prop");
+  const auto& dir = game.dir;
   std::filesystem::create_directories(dir / "world" / "props");
-  const auto settings = dir / "settings.json";
-  std::ofstream(settings) << R"({ "view_distance": 2, "shadow": { "resolution": 512, "distance": 32 } })";
   // One model from the world's props folder (relative, as the menu offers it), one from anywhere.
   const auto samples = std::filesystem::path(TERRASOL_SOURCE_DIR) / ".." / "shared" / "testdata" / "gltf";
   std::filesystem::copy_file(samples / "BoxTextured" / "glTF-Binary" / "BoxTextured.glb", dir / "world" / "props" / "box.glb");
@@ -110,7 +119,7 @@ TEST_F(GameWindowTest, APlacedPropIsLitSavedAndBackInTheNextRun) {
       { "t": 0.8, "look": [-45, 30] },
       { "t": 1.1, "command": "save" },
       { "t": 1.2, "command": "quit" } ] })";
-  const std::string common = "--world " + (dir / "world").string() + " --settings " + settings.string() + " --size 320x180";
+  const std::string& common = game.common;
   const auto first = dir / "first.json";
   ASSERT_EQ(runGame("--seed 5 " + common + " --input-script " + script.string() + " --report " + first.string()), 0);
   const nlohmann::json placed = readJson(first);
@@ -138,19 +147,15 @@ TEST_F(GameWindowTest, APlacedPropIsLitSavedAndBackInTheNextRun) {
 }
 
 TEST_F(GameWindowTest, AMinimisedWindowDrawsNothingWhileTheWorldGoesOnAndComesBack) {
-  const auto dir = testing::testOutputDir() / "game_minimise";
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  const auto settings = dir / "settings.json";
-  std::ofstream(settings) << R"({ "view_distance": 2, "shadow": { "resolution": 256, "distance": 16 } })";
+  const GameDir game("game_minimise", 256, 16);
+  const auto& dir = game.dir;
   const auto report = dir / "report.json", log = dir / "log.txt";
   // Under a window manager (twm), started in the game's virtual display before the game; screenshots
   // land in the working directory.
   const std::string command = "cd " + dir.string() + " && " + TERRASOL_XVFB_RUN + " -a -s '-screen 0 640x480x24' sh -c '" +
                               "LC_ALL=C " + TERRASOL_TWM + " -f " + TERRASOL_SOURCE_DIR +
                               "/tests/scripts/twmrc 2>/dev/null & sleep 1; exec " +
-                              TERRASOL_GAME_EXE + " --world world --settings " + settings.string() +
-                              " --size 320x180 --seed 3 --input-script " + TERRASOL_SOURCE_DIR +
+                              TERRASOL_GAME_EXE + " " + game.common + " --seed 3 --input-script " + TERRASOL_SOURCE_DIR +
                               "/tests/scripts/game_minimise.json --report " + report.string() + "' > " + log.string() + " 2>&1";
   ASSERT_EQ(std::system(command.c_str()), 0) << readTextFile(log);
   const std::string output = readTextFile(log);
