@@ -1,0 +1,95 @@
+#include "game_session.h"
+
+#include <algorithm>
+
+#include "core/error.h"
+#include "core/log.h"
+#include "game_props.h"
+#include "game_renderer.h"
+#include "game_world.h"
+#include "targeting.h"
+
+// Changing the world: breaking, placing and picking blocks, and placing props.
+
+namespace terrasol::session {
+namespace {
+
+constexpr double kBreakRepeat = 0.25, kPlaceRepeat = 0.2;  // Minecraft's creative delays (5 and 4 ticks)
+
+bool replaceable(const BlockType& type) {
+  return type.shape == BlockShape::None || type.shape == BlockShape::Liquid || type.shape == BlockShape::Cross;
+}
+
+}  // namespace
+
+void Game::useBlocks(const FrameInput& in, double dt) {
+  breakCooldown_ -= dt;
+  placeCooldown_ -= dt;
+  target_ = targetBlock(world_.world(), player_.eye(), player_.forward());
+  if (!target_) return;
+  if (in.wasPressed(MouseButton::Middle)) {
+    const BlockId picked = world_.world().getBlock(target_->block);
+    const auto slot = std::find(hotbar_.begin(), hotbar_.end(), picked);
+    if (slot != hotbar_.end()) selected_ = static_cast<int>(slot - hotbar_.begin());
+    else hotbar_[static_cast<std::size_t>(selected_)] = picked;
+  }
+  const bool breakNow = in.wasPressed(MouseButton::Left) || (in.isHeld(MouseButton::Left) && breakCooldown_ <= 0.0);
+  if (breakNow) {
+    if (world_.setBlock(target_->block, kAir)) edits_.push_back({target_->block, "air"});
+    breakCooldown_ = kBreakRepeat;
+    target_ = targetBlock(world_.world(), player_.eye(), player_.forward());
+    return;
+  }
+  const bool placeNow = in.wasPressed(MouseButton::Right) || (in.isHeld(MouseButton::Right) && placeCooldown_ <= 0.0);
+  if (!placeNow) return;
+  placeCooldown_ = kPlaceRepeat;
+  // A plant under the crosshair is replaced, as in Minecraft; anything else gets the block beside it.
+  const BlockPos at = replaceable(blocks_[world_.world().getBlock(target_->block)]) ? target_->block : target_->place;
+  const BlockId block = hotbar_[static_cast<std::size_t>(selected_)];
+  const BlockType& type = blocks_[block];
+  if (!inWorldHeight(at.y) || !replaceable(blocks_[world_.world().getBlock(at)])) return;
+  if (type.shape == BlockShape::Cube) {
+    const Box cell{glm::dvec3(at.x, at.y, at.z), glm::dvec3(at.x + 1, at.y + 1, at.z + 1)};
+    const Box body = player_.box();
+    const bool overlaps = body.min.x < cell.max.x && body.max.x > cell.min.x && body.min.y < cell.max.y &&
+                          body.max.y > cell.min.y && body.min.z < cell.max.z && body.max.z > cell.min.z;
+    if (overlaps) return;  // never inside the player
+  } else if (!blocks_[world_.world().getBlock(at.offset(0, -1, 0))].isOpaqueCube()) {
+    return;  // torches and plants stand on a full block
+  }
+  if (world_.setBlock(at, block)) edits_.push_back({at, type.name});
+}
+
+void Game::placeProp(const std::string& model) {
+  if (model.empty()) {
+    logWarning("no prop to place: put .gltf or .glb files in " + (world_.dir() / "props").string() +
+               " and choose one in the menu's Props tab");
+    return;
+  }
+  if (!target_ || !inWorldHeight(target_->place.y) || !replaceable(blocks_[world_.world().getBlock(target_->place)])) {
+    logWarning("no prop placed: look at a block with room beside it");
+    return;
+  }
+  try {
+    props_->place(props_->standingIn(model, target_->place), world_.world(), world_.light());
+    renderer_.setPropNeeds(props_->gpu().needs());
+    logInfo("placed " + model);
+  } catch (const Error& e) {
+    logError(std::string("prop not placed: ") + e.what());
+  }
+}
+
+std::vector<std::string> Game::propFiles() const {
+  std::vector<std::string> files;
+  std::error_code ec;
+  for (const auto& entry : std::filesystem::directory_iterator(world_.dir() / "props", ec)) {
+    const std::string ext = entry.path().extension().string();
+    if (entry.is_regular_file() && (ext == ".gltf" || ext == ".glb")) {
+      files.push_back((std::filesystem::path("props") / entry.path().filename()).string());
+    }
+  }
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+}  // namespace terrasol::session
