@@ -295,7 +295,10 @@ void Game::draw(bool timed) {
   frame.debugView = static_cast<DebugView>(debugView_);
   frame.reuseShadowMap = true;
   frame.props = &props_->gpu();
-  if (target_ && !menuOpen_ && showHud_) {
+  if (targetProp_ && !menuOpen_ && showHud_) {
+    const WorldBounds b = props_->bounds(*targetProp_);
+    frame.outline = WorldBox{b.min, b.max};
+  } else if (target_ && !menuOpen_ && showHud_) {
     const BlockPos b = target_->block;
     frame.outline = WorldBox{glm::dvec3(b.x, b.y, b.z), glm::dvec3(b.x + 1, b.y + 1, b.z + 1)};
   }

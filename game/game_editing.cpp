@@ -26,6 +26,22 @@ void Game::useBlocks(const FrameInput& in, double dt) {
   breakCooldown_ -= dt;
   placeCooldown_ -= dt;
   target_ = targetBlock(world_.world(), player_.eye(), player_.forward());
+  // A prop in front of the targeted block (or in the open) is what the crosshair is on: breaking
+  // removes it, and no block is used through it.
+  const auto prop = props_->pick(player_.eye(), player_.forward(), kReach);
+  targetProp_.reset();
+  // A prop standing in a plant's cell is entered where the cell is: the prop wins the tie.
+  if (prop && (!target_ || prop->distance <= target_->distance + 1e-9)) targetProp_ = prop->index;
+  if (targetProp_) {
+    if (in.wasPressed(MouseButton::Left) || (in.isHeld(MouseButton::Left) && breakCooldown_ <= 0.0)) {
+      logInfo("removed the prop " + props_->prop(*targetProp_).model);
+      props_->remove(*targetProp_);
+      renderer_.setPropNeeds(props_->gpu().needs());
+      targetProp_.reset();
+      breakCooldown_ = kBreakRepeat;
+    }
+    return;
+  }
   if (!target_) return;
   if (in.wasPressed(MouseButton::Middle)) {
     const BlockId picked = world_.world().getBlock(target_->block);
@@ -66,12 +82,28 @@ void Game::placeProp(const std::string& model) {
                " and choose one in the menu's Props tab");
     return;
   }
-  if (!target_ || !inWorldHeight(target_->place.y) || !replaceable(blocks_[world_.world().getBlock(target_->place)])) {
+  if (!target_) {
+    logWarning("no prop placed: look at a block with room beside it");
+    return;
+  }
+  // As for blocks: a plant under the crosshair gives its own cell, anything else the cell beside it.
+  const BlockPos at = replaceable(blocks_[world_.world().getBlock(target_->block)]) ? target_->block : target_->place;
+  if (!inWorldHeight(at.y) || !replaceable(blocks_[world_.world().getBlock(at)])) {
     logWarning("no prop placed: look at a block with room beside it");
     return;
   }
   try {
-    props_->place(props_->standingIn(model, target_->place), world_.world(), world_.light());
+    const LevelProp prop = props_->standingIn(model, at);
+    const WorldBounds box = props_->boundsOf(prop);
+    const Box body = player_.box();
+    if (body.min.x < box.max.x && body.max.x > box.min.x && body.min.y < box.max.y && body.max.y > box.min.y &&
+        body.min.z < box.max.z && body.max.z > box.min.z) {
+      logWarning("no prop placed: it would stand in the player");
+      return;
+    }
+    // The prop takes a plant's place, as a block would.
+    if (world_.world().getBlock(at) != kAir && world_.setBlock(at, kAir)) edits_.push_back({at, "air"});
+    props_->place(prop, world_.world(), world_.light());
     renderer_.setPropNeeds(props_->gpu().needs());
     logInfo("placed " + model);
   } catch (const Error& e) {

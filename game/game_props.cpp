@@ -1,6 +1,7 @@
 #include "game_props.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "core/error.h"
 #include "core/log.h"
@@ -23,13 +24,18 @@ LevelProp GameProps::standingIn(const std::filesystem::path& model, BlockPos at)
   return prop;
 }
 
+WorldBounds GameProps::boundsOf(const LevelProp& prop) {
+  const Model& m = models_[models_.load(resolve(prop.model))];
+  return placedBounds(propTransform(prop.position, prop.rotation, prop.scale), m.min, m.max);
+}
+
 void GameProps::place(const LevelProp& prop, const World& world, const LightEngine& light, bool keepIfBroken) {
   int model = 0;
   try {
     model = models_.load(resolve(prop.model));
   } catch (const Error& e) {
     if (keepIfBroken) {
-      level_.push_back(prop);
+      broken_.push_back(prop);
       logWarning(std::string("prop not drawn: ") + e.what());
     }
     throw;
@@ -40,7 +46,6 @@ void GameProps::place(const LevelProp& prop, const World& world, const LightEngi
   const PropTransform t = propTransform(prop.position, prop.rotation, prop.scale);
   const Model& m = models_[model];
   placed_.push_back({prop, model, t, placedBounds(t, m.min, m.max)});
-  level_.push_back(prop);
   const WorldBounds& b = placed_.back().bounds;
   gpu_.place(gpuModel, {t.position, t.basis, t.rotation, b.min, b.max}, std::vector<glm::vec2>(m.vertexCount()));
   relightOne(placed_.size() - 1, world, light);
@@ -66,6 +71,37 @@ void GameProps::relight(const std::vector<SectionPos>& sections, const World& wo
     };
     if (std::any_of(sections.begin(), sections.end(), near)) relightOne(i, world, light);
   }
+}
+
+std::vector<LevelProp> GameProps::level() const {
+  std::vector<LevelProp> out = broken_;
+  for (const Placed& p : placed_) out.push_back(p.prop);
+  return out;
+}
+
+std::optional<GameProps::Hit> GameProps::pick(const glm::dvec3& eye, const glm::dvec3& direction, double reach) const {
+  std::optional<Hit> best;
+  for (std::size_t i = 0; i < placed_.size(); ++i) {
+    // Slabs: the ray's parameter range inside the box on each axis, intersected.
+    const WorldBounds& b = placed_[i].bounds;
+    double enter = 0.0, leave = reach;
+    for (int a = 0; a < 3; ++a) {
+      if (std::abs(direction[a]) < 1e-12) {
+        if (eye[a] < b.min[a] || eye[a] > b.max[a]) enter = INFINITY;
+        continue;
+      }
+      const double t0 = (b.min[a] - eye[a]) / direction[a], t1 = (b.max[a] - eye[a]) / direction[a];
+      enter = std::max(enter, std::min(t0, t1));
+      leave = std::min(leave, std::max(t0, t1));
+    }
+    if (enter <= leave && (!best || enter < best->distance)) best = Hit{static_cast<int>(i), enter};
+  }
+  return best;
+}
+
+void GameProps::remove(int index) {
+  placed_.erase(placed_.begin() + index);
+  gpu_.remove(index);
 }
 
 std::vector<GameProps::Drawn> GameProps::drawn() const {

@@ -5,6 +5,7 @@
 // the next save) but is not drawn, with a warning naming the file. GL thread only.
 
 #include <filesystem>
+#include <optional>
 #include <vector>
 
 #include "render/props.h"
@@ -23,10 +24,23 @@ class GameProps {
   void place(const LevelProp& prop, const World& world, const LightEngine& light, bool keepIfBroken = false);
   // A prop of `model` standing on the floor of cell `at`, centred in it: where place() should put it.
   LevelProp standingIn(const std::filesystem::path& model, BlockPos at);
+  // Where a prop's box would be once placed (loads its model; Error when it cannot).
+  WorldBounds boundsOf(const LevelProp& prop);
   // Relights the drawn props whose box reaches into (or borders) one of `sections`.
   void relight(const std::vector<SectionPos>& sections, const World& world, const LightEngine& light);
 
-  const std::vector<LevelProp>& level() const { return level_; }  // every prop, drawn or not, for the save
+  std::vector<LevelProp> level() const;  // every prop, drawn or not, for the save
+
+  // The nearest drawn prop whose box the ray (unit `direction`) enters within `reach`: its index
+  // and distance. Props are picked by their box, as blocks by their cell.
+  struct Hit {
+    int index;
+    double distance;
+  };
+  std::optional<Hit> pick(const glm::dvec3& eye, const glm::dvec3& direction, double reach) const;
+  WorldBounds bounds(int index) const { return placed_[static_cast<std::size_t>(index)].bounds; }
+  const LevelProp& prop(int index) const { return placed_[static_cast<std::size_t>(index)].prop; }
+  void remove(int index);
   const Props& gpu() const { return gpu_; }
   // Each drawn prop's model and mean vertex light (block, sky 0..1), for reports.
   struct Drawn {
@@ -50,7 +64,7 @@ class GameProps {
     glm::vec2 meanLight{0.0f};
   };
   std::vector<Placed> placed_;  // drawn ones, in Props instance order
-  std::vector<LevelProp> level_;
+  std::vector<LevelProp> broken_;  // kept for the save, not drawn
   Props gpu_;
 };
 

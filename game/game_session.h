@@ -114,6 +114,7 @@ class Game {
   glm::dvec2 lastCursor_{0.0};
   bool cursorKnown_ = false;
   std::optional<Target> target_;
+  std::optional<int> targetProp_;  // a drawn prop nearer than the targeted block: GameProps index
   std::vector<Edit> edits_;
   std::vector<PassTiming> timings_;
   std::vector<double> frameTimes_;  // seconds, the last second's

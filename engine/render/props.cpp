@@ -129,6 +129,11 @@ void Props::relight(int index, std::span<const glm::vec2> light) {
                        light.empty() ? nullptr : light.data(), 0);
 }
 
+void Props::remove(int index) {
+  instances_.erase(instances_.begin() + index);
+  ++generation_;
+}
+
 PropNeeds Props::needs() const {
   PropNeeds needs;
   for (const Instance& instance : instances_) {

@@ -41,6 +41,7 @@ class Props {
   // `light`: block and sky light 0..1 for every vertex of the model, meshes in Model order.
   int place(int model, const Placement& placement, std::span<const glm::vec2> light);
   void relight(int instance, std::span<const glm::vec2> light);
+  void remove(int instance);  // later instances move down one index
 
   PropNeeds needs() const;
   bool empty() const { return instances_.empty(); }

@@ -113,9 +113,9 @@ TEST_F(GameWindowTest, APlacedPropIsLitSavedAndBackInTheNextRun) {
   std::ofstream(script) << R"({ "step": 0.05, "events": [
       { "t": 0.0, "look": [0, 60] },
       { "t": 0.2, "command": "place_prop", "model": "props/box.glb" },
-      { "t": 0.4, "look": [90, 60] },
+      { "t": 0.4, "look": [180, 60] },
       { "t": 0.6, "command": "place_prop", "model": ")" +
-                               (samples / "Cube" / "glTF" / "Cube.gltf").string() + R"(" },
+                               (samples / "BoxTextured" / "glTF-Embedded" / "BoxTextured.gltf").string() + R"(" },
       { "t": 0.8, "look": [-45, 30] },
       { "t": 1.1, "command": "save" },
       { "t": 1.2, "command": "quit" } ] })";
@@ -138,12 +138,24 @@ TEST_F(GameWindowTest, APlacedPropIsLitSavedAndBackInTheNextRun) {
     EXPECT_EQ(reopened["props"][i]["position"], placed["props"][i]["position"]);
   }
   // A prop whose model went missing stays in the level, undrawn, and the game runs on.
-  std::filesystem::remove(dir / "world" / "props" / "box.glb");
+  std::filesystem::rename(dir / "world" / "props" / "box.glb", dir / "box.glb");
   const auto third = dir / "third.json";
   ASSERT_EQ(runGame(common + " --frames 2 --report " + third.string()), 0);
   EXPECT_EQ(readJson(third)["props"].size(), 1u);
-  const nlohmann::json level = readJson(dir / "world" / "level.json");
-  EXPECT_EQ(level["props"].size(), 2u) << "the broken one is kept for when the file comes back";
+  EXPECT_EQ(readJson(dir / "world" / "level.json")["props"].size(), 2u) << "the broken one is kept for when the file comes back";
+  // Back again, the box is where it was; looking at it as when it was placed and breaking removes it.
+  std::filesystem::rename(dir / "box.glb", dir / "world" / "props" / "box.glb");
+  const auto removeScript = dir / "remove.json";
+  std::ofstream(removeScript) << R"({ "step": 0.05, "events": [
+      { "t": 0.0, "look": [0, 60] }, { "t": 0.2, "button": "left" },
+      { "t": 0.4, "command": "save" }, { "t": 0.5, "command": "quit" } ] })";
+  const auto fourth = dir / "fourth.json";
+  ASSERT_EQ(runGame(common + " --input-script " + removeScript.string() + " --report " + fourth.string()), 0);
+  const nlohmann::json removed = readJson(fourth);
+  ASSERT_EQ(removed["props"].size(), 1u) << removed.dump();
+  EXPECT_NE(removed["props"][0]["model"], "props/box.glb");
+  EXPECT_TRUE(removed["edits"].empty()) << "the click took the prop, not the block behind it";
+  EXPECT_EQ(readJson(dir / "world" / "level.json")["props"].size(), 1u);
 }
 
 TEST_F(GameWindowTest, AMinimisedWindowDrawsNothingWhileTheWorldGoesOnAndComesBack) {
