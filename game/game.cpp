@@ -104,7 +104,7 @@ Game::Game(GlfwWindow& window, const GameOptions& options)
       // Kept in the level, undrawn; place() said why.
     }
   }
-  renderer_.setPropNeeds(props_->gpu().needs());
+  renderer_.setPropNeeds(props_->placed().gpu().needs());
   const std::vector<std::string> offered = propFiles();
   if (!offered.empty()) selectedProp_ = offered.front();
   if (!options.inputScript.empty()) script_.emplace(loadInputScript(options.inputScript));
@@ -273,7 +273,7 @@ void Game::stream(Clock::time_point frameStart) {
     renderer_.upload(mesh);
     changed.push_back(mesh.pos);
   }
-  if (!changed.empty()) props_->relight(changed, world_.world(), world_.light());
+  if (!changed.empty()) props_->placed().relightNear(changed, world_.world(), world_.light());
   if (spawnPending_) {
     const int x = static_cast<int>(std::floor(p.x)), z = static_cast<int>(std::floor(p.z));
     if (const auto y = world_.surfaceY(x, z)) {
@@ -294,9 +294,9 @@ void Game::draw(bool timed) {
   frame.viewDistance = static_cast<float>(settings_.viewDistance * 16);
   frame.debugView = static_cast<DebugView>(debugView_);
   frame.reuseShadowMap = true;
-  frame.props = &props_->gpu();
+  frame.props = &props_->placed().gpu();
   if (targetProp_ && !menuOpen_ && showHud_) {
-    const WorldBounds b = props_->bounds(*targetProp_);
+    const WorldBounds b = props_->placed().bounds(*targetProp_);
     frame.outline = WorldBox{b.min, b.max};
   } else if (target_ && !menuOpen_ && showHud_) {
     const BlockPos b = target_->block;

@@ -28,7 +28,7 @@ void Game::useBlocks(const FrameInput& in, double dt) {
   target_ = targetBlock(world_.world(), player_.eye(), player_.forward());
   // A prop in front of the targeted block (or in the open) is what the crosshair is on: breaking
   // removes it, and no block is used through it.
-  const auto prop = props_->pick(player_.eye(), player_.forward(), kReach);
+  const auto prop = props_->placed().pick(player_.eye(), player_.forward(), kReach);
   targetProp_.reset();
   // A prop standing in a plant's cell is entered where the cell is: the prop wins the tie.
   if (prop && (!target_ || prop->distance <= target_->distance + 1e-9)) targetProp_ = prop->index;
@@ -36,7 +36,7 @@ void Game::useBlocks(const FrameInput& in, double dt) {
     if (in.wasPressed(MouseButton::Left) || (in.isHeld(MouseButton::Left) && breakCooldown_ <= 0.0)) {
       logInfo("removed the prop " + props_->prop(*targetProp_).model);
       props_->remove(*targetProp_);
-      renderer_.setPropNeeds(props_->gpu().needs());
+      renderer_.setPropNeeds(props_->placed().gpu().needs());
       targetProp_.reset();
       breakCooldown_ = kBreakRepeat;
     }
@@ -104,7 +104,7 @@ void Game::placeProp(const std::string& model) {
     // The prop takes a plant's place, as a block would.
     if (world_.world().getBlock(at) != kAir && world_.setBlock(at, kAir)) edits_.push_back({at, "air"});
     props_->place(prop, world_.world(), world_.light());
-    renderer_.setPropNeeds(props_->gpu().needs());
+    renderer_.setPropNeeds(props_->placed().gpu().needs());
     logInfo("placed " + model);
   } catch (const Error& e) {
     logError(std::string("prop not placed: ") + e.what());

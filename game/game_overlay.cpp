@@ -105,9 +105,12 @@ void Game::writeReport() {
                       {"sky_light", world_.light().lightAt(p, LightChannel::Sky)}});
   }
   nlohmann::json props = nlohmann::json::array();
-  for (const GameProps::Drawn& d : props_->drawn()) {
-    const glm::dvec3& p = d.prop.position;
-    props.push_back({{"model", d.prop.model}, {"position", {p.x, p.y, p.z}}, {"light", {d.meanLight.x, d.meanLight.y}}});
+  for (int i = 0; i < static_cast<int>(props_->placed().size()); ++i) {
+    const LevelProp& prop = props_->prop(i);
+    const glm::vec2 light = props_->placed().meanLight(i);
+    props.push_back({{"model", prop.model},
+                     {"position", {prop.position.x, prop.position.y, prop.position.z}},
+                     {"light", {light.x, light.y}}});
   }
   nlohmann::json edits = nlohmann::json::array();
   for (const Edit& e : edits_) edits.push_back({{"pos", {e.pos.x, e.pos.y, e.pos.z}}, {"block", e.block}});

@@ -69,8 +69,7 @@ void GameRenderer::applySettings(const GameSettings& settings) {
 }
 
 void GameRenderer::setPropNeeds(const PropNeeds& needs) {
-  const PropNeeds& had = propNeeds_;
-  if (needs.any == had.any && needs.mask == had.mask && needs.blend == had.blend && needs.normalMaps == had.normalMaps) return;
+  if (needs == propNeeds_) return;
   propNeeds_ = needs;
   icons_.reset();
   renderer_ = makeRenderer(*assets_, shadow_, propNeeds_);

@@ -17,7 +17,7 @@
 
 namespace terrasol::light {
 
-inline constexpr int kMaxFrameChunks = 16;
+inline constexpr int kMaxFrameChunks = 16;  // a side; with the ring, ref indices stay far below 2^20
 inline constexpr int kRefSections = kSectionCount + 2;  // sections per chunk, with the empty ones
 
 struct SectionRef {

@@ -65,39 +65,6 @@ void Propagator::run() {
   flushChanged();
 }
 
-namespace {
-
-// A section's arrays copied into locals for one queue entry: the compiler keeps them in registers,
-// where a SectionRef's fields would be reloaded after every light byte written (uint8_t stores may
-// alias anything). flush() writes back what changed.
-struct Cursor {
-  explicit Cursor(SectionRef& r)
-      : ref(r), bytes(r.light), write(r.write), blocks(r.blocks), mask(r.blockMask), skyTop(r.skyTop), minY(r.minY) {}
-  void flush() {
-    ref.light = bytes;
-    ref.write = write;
-    ref.marks |= marks;
-  }
-  std::uint8_t light(int i) const { return static_cast<std::uint8_t>((bytes[i >> 1] >> ((i & 1) * 4)) & 15); }
-  BlockId block(int i) const { return blocks[i & mask]; }
-  void set(int i, std::uint8_t level) {
-    if (!write) bytes = write = ref.layer->writableBytes();  // once per section and update
-    NibbleArray::set(write, i, level);
-    marks |= kFaceMarks[static_cast<std::size_t>(i)];
-  }
-
-  SectionRef& ref;
-  const std::uint8_t* bytes;
-  std::uint8_t* write;
-  const BlockId* blocks;
-  int mask;
-  const std::int16_t* skyTop;
-  int minY;
-  std::uint8_t marks = 0;
-};
-
-}  // namespace
-
 // Calls visit(cursor, index, pos, d) for each neighbour of the entry's cell in `directions` that is
 // in the frame and loaded: those in the cell's own section through one cursor, the others each
 // through their own. A cell that is not loaded (a chunk being unloaded) still leads across its faces.

@@ -53,6 +53,35 @@ class EntryQueue {
   std::size_t size_ = 0;
 };
 
+// A section's arrays copied into locals: the compiler keeps them in registers, where a SectionRef's
+// fields would be reloaded after every light byte written (uint8_t stores may alias anything).
+// flush() writes back what changed. The one way light is written.
+struct Cursor {
+  explicit Cursor(SectionRef& r)
+      : ref(r), bytes(r.light), write(r.write), blocks(r.blocks), mask(r.blockMask), skyTop(r.skyTop), minY(r.minY) {}
+  void flush() {
+    ref.light = bytes;
+    ref.write = write;
+    ref.marks |= marks;
+  }
+  std::uint8_t light(int i) const { return NibbleArray::get(bytes, i); }
+  BlockId block(int i) const { return blocks[i & mask]; }
+  void set(int i, std::uint8_t level) {
+    if (!write) bytes = write = ref.layer->writableBytes();  // once per section and update
+    NibbleArray::set(write, i, level);
+    marks |= kFaceMarks[static_cast<std::size_t>(i)];
+  }
+
+  SectionRef& ref;
+  const std::uint8_t* bytes;
+  std::uint8_t* write;
+  const BlockId* blocks;
+  int mask;
+  const std::int16_t* skyTop;
+  int minY;
+  std::uint8_t marks = 0;
+};
+
 // A cell of the frame: its section and its index there.
 struct Cell {
   SectionRef* ref = nullptr;
@@ -78,14 +107,8 @@ class Propagator {
     cell = {&frame_.ref(frame_.refIndex(pos)), LightFrame::local(pos), pos};
     return cell.ref->layer != nullptr;
   }
-  static std::uint8_t light(const SectionRef& r, int index) {
-    return static_cast<std::uint8_t>((r.light[index >> 1] >> ((index & 1) * 4)) & 15);
-  }
+  static std::uint8_t light(const SectionRef& r, int index) { return NibbleArray::get(r.light, index); }
   std::uint8_t light(const Cell& c) const { return light(*c.ref, c.index); }
-  std::uint8_t opacity(const SectionRef& r, int index) {
-    ++blockReads_;
-    return opacity_[r.blocks[index & r.blockMask]];
-  }
   void setLight(const Cell& c, std::uint8_t level) { setLight(*c.ref, c.index, level); }
   // The level a cell has by itself: its emission (block light) or 15 in the open sky column (sky light).
   std::uint8_t source(const Cell& c) { return source(*c.ref, c.index); }
@@ -105,9 +128,9 @@ class Propagator {
     increase_.push({pos, level, directions});
   }
   void setLight(SectionRef& r, int index, std::uint8_t level) {
-    if (!r.write) r.light = r.write = r.layer->writableBytes();  // once per section and update
-    NibbleArray::set(r.write, index, level);
-    r.marks |= kFaceMarks[static_cast<std::size_t>(index)];
+    Cursor c(r);
+    c.set(index, level);
+    c.flush();
     ++lightWrites_;
   }
   std::uint8_t source(const SectionRef& r, int index) {
@@ -117,7 +140,6 @@ class Propagator {
                       std::uint64_t& reads) const;
   // Frame position of Section::index `index` in the section whose cell 0 is at `origin`.
   static std::uint32_t posOf(std::uint32_t origin, int index) { return origin + static_cast<std::uint32_t>(index); }
-
 
   // Runs the decrease queue, then the increase queue (which the decreases add to), to the end.
   void run();

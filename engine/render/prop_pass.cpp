@@ -1,17 +1,35 @@
 #include <algorithm>
 
 #include "render/deferred_renderer.h"
-#include "render/gl/uniforms.h"
+#include <glm/gtc/type_ptr.hpp>
 
 // The deferred renderer's props: culled by their world box, drawn mesh by mesh with their material's
 // uniforms and textures (engine/render/props.h), in the G-buffer, translucent and shadow passes.
 
 namespace terrasol {
 
-using gl::setFloat;
-using gl::setMat3;
-using gl::setVec3;
-using gl::setVec4;
+namespace {
+
+// A program's prop uniforms, looked up once per draw call rather than once per mesh; -1 where the
+// program has no such uniform (the shadow programs read few), which GL ignores.
+struct PropUniforms {
+  explicit PropUniforms(GLuint p)
+      : modelOffset(glGetUniformLocation(p, "u_modelOffset")),
+        basis(glGetUniformLocation(p, "u_basis")),
+        rotation(glGetUniformLocation(p, "u_rotation")),
+        baseColor(glGetUniformLocation(p, "u_baseColorFactor")),
+        metallic(glGetUniformLocation(p, "u_metallic")),
+        roughness(glGetUniformLocation(p, "u_roughness")),
+        emissive(glGetUniformLocation(p, "u_emissiveFactor")),
+        normalScale(glGetUniformLocation(p, "u_normalScale")),
+        occlusion(glGetUniformLocation(p, "u_occlusionStrength")),
+        alphaCutoff(glGetUniformLocation(p, "u_alphaCutoff")),
+        hasNormalMap(glGetUniformLocation(p, "u_hasNormalMap")) {}
+  GLint modelOffset, basis, rotation, baseColor, metallic, roughness, emissive, normalScale, occlusion, alphaCutoff,
+      hasNormalMap;
+};
+
+}  // namespace
 
 std::vector<int> DeferredRenderer::propsInside(const FrustumPlanes& planes, glm::dvec3 camera, const Props& props) {
   std::vector<int> inside;
@@ -45,13 +63,15 @@ void DeferredRenderer::drawProps(GLuint program, const Props& props, const std::
     std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return distance(a) > distance(b); });
   }
   glUseProgram(program);
+  const PropUniforms u(program);
   for (const int i : order) {
     const Props::Instance& instance = props.instances()[static_cast<std::size_t>(i)];
     const Props::GpuModel& model = props.models()[static_cast<std::size_t>(instance.model)];
     const Props::Placement& p = instance.placement;
-    setVec3(program, "u_modelOffset", glm::vec3(p.position - camera));  // in double: far from the origin too
-    setMat3(program, "u_basis", p.basis);
-    setMat3(program, "u_rotation", p.rotation);
+    const glm::vec3 offset(p.position - camera);  // in double: far from the origin too
+    glProgramUniform3fv(program, u.modelOffset, 1, glm::value_ptr(offset));
+    glProgramUniformMatrix3fv(program, u.basis, 1, GL_FALSE, glm::value_ptr(p.basis));
+    glProgramUniformMatrix3fv(program, u.rotation, 1, GL_FALSE, glm::value_ptr(p.rotation));
     glBindVertexArray(model.layout.id());
     glVertexArrayVertexBuffer(model.layout.id(), 1, instance.light.id(), 0, sizeof(glm::vec2));
     for (const Props::Mesh& mesh : model.meshes) {
@@ -59,14 +79,14 @@ void DeferredRenderer::drawProps(GLuint program, const Props& props, const std::
       const ModelMaterial& m = material.params;
       if (m.alphaMode != mode || mesh.indexCount == 0) continue;
       props.bindMaterial(material);
-      setVec4(program, "u_baseColorFactor", m.baseColor);
-      setFloat(program, "u_metallic", m.metallic);
-      setFloat(program, "u_roughness", m.roughness);
-      setVec3(program, "u_emissiveFactor", m.emissive);
-      setFloat(program, "u_normalScale", m.normalScale);
-      setFloat(program, "u_occlusionStrength", m.occlusionStrength);
-      setFloat(program, "u_alphaCutoff", m.alphaCutoff);
-      glProgramUniform1i(program, glGetUniformLocation(program, "u_hasNormalMap"), material.hasNormalMap ? 1 : 0);
+      glProgramUniform4fv(program, u.baseColor, 1, glm::value_ptr(m.baseColor));
+      glProgramUniform1f(program, u.metallic, m.metallic);
+      glProgramUniform1f(program, u.roughness, m.roughness);
+      glProgramUniform3fv(program, u.emissive, 1, glm::value_ptr(m.emissive));
+      glProgramUniform1f(program, u.normalScale, m.normalScale);
+      glProgramUniform1f(program, u.occlusion, m.occlusionStrength);
+      glProgramUniform1f(program, u.alphaCutoff, m.alphaCutoff);
+      glProgramUniform1i(program, u.hasNormalMap, material.hasNormalMap ? 1 : 0);
       if (cullBackFaces && !m.doubleSided) {
         glEnable(GL_CULL_FACE);
       } else {

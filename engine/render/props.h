@@ -23,6 +23,7 @@ struct PropNeeds {
   bool mask = false;        // alpha mode MASK: the alpha-tested variants
   bool blend = false;       // alpha mode BLEND: the forward translucent variant
   bool normalMaps = false;  // a material has a normal map: the G-buffer keeps surface normals
+  bool operator==(const PropNeeds&) const = default;
 };
 
 class Props {

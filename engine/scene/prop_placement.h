@@ -46,7 +46,6 @@ class ModelCache {
   // The model's index; loads it on first use (Error naming the file when it cannot be read).
   int load(const std::filesystem::path& file);
   const Model& operator[](int index) const { return models_[static_cast<std::size_t>(index)]; }
-  const std::vector<Model>& models() const { return models_; }
 
  private:
   std::vector<std::filesystem::path> files_;

@@ -36,12 +36,14 @@ class NibbleArray {
   }
 
   // Branch-free: a uniform array reads from a shared constant buffer of its level.
-  std::uint8_t get(int index) const {
-    return static_cast<std::uint8_t>((read_[index >> 1] >> ((index & 1) * 4)) & 15);
-  }
+  std::uint8_t get(int index) const { return get(read_, index); }
   void set(int index, std::uint8_t level) {
     if (!owned_ && level == uniform_) return;
     set(writableBytes(), index, level);
+  }
+  // Reads a level from bytes() or writableBytes(): for loops that read many levels.
+  static std::uint8_t get(const std::uint8_t* bytes, int index) {
+    return static_cast<std::uint8_t>((bytes[index >> 1] >> ((index & 1) * 4)) & 15);
   }
   // Sets a level in bytes from writableBytes(): for loops that write many levels.
   static void set(std::uint8_t* bytes, int index, std::uint8_t level) {

@@ -237,6 +237,27 @@ TEST_F(PropsTest, NormalMapsAndEmissionReachTheGBufferEvenWithoutPackMaps) {
   context_->checkErrors("normal maps and emission");
 }
 
+TEST_F(PropsTest, BaseColourMipmapsAverageInLinearLight) {
+  // Black and white texels: their mean in linear light is 0.5, which sRGB stores as 188, not 128.
+  Model model;
+  model.meshes.push_back({});
+  model.materials.push_back({});
+  model.materials[0].baseColorImage = 0;
+  model.materials[0].metallicRoughnessImage = 0;
+  Image checker(2, 2);
+  checker.rgba = {0, 0, 0, 255, 255, 255, 255, 255, 255, 255, 255, 255, 0, 0, 0, 255};
+  model.images.push_back(checker);
+  Props props;
+  const Props::Material& m = props.models()[static_cast<std::size_t>(props.addModel(model))].materials[0];
+  std::uint8_t texel[4] = {};
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glGetTextureImage(m.baseColor, 1, GL_RGBA, GL_UNSIGNED_BYTE, sizeof texel, texel);
+  EXPECT_NEAR(texel[0], 188, 2) << "sRGB base colour";
+  glGetTextureImage(m.metallicRoughness, 1, GL_RGBA, GL_UNSIGNED_BYTE, sizeof texel, texel);
+  EXPECT_NEAR(texel[1], 128, 2) << "linear data averages as stored";
+  context_->checkErrors("prop mipmaps");
+}
+
 TEST_F(PropsTest, AMissingModelNamesThePropAndTheFile) {
   SceneFile scene = flatAfternoon();
   scene.props = {prop(kModels / "nothing_here.glb", {0.5, 64.5, 0.5})};

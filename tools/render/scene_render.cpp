@@ -9,7 +9,7 @@
 #include "render/gl/render_target.h"
 #include "scene/block_atlas.h"
 #include "scene/camera_path.h"
-#include "scene/prop_placement.h"
+#include "placed_props.h"
 #include "scene/scene_world.h"
 
 namespace terrasol {
@@ -58,36 +58,6 @@ DebugView debugViewOf(const SceneFile& scene) {
   throw Error(sceneError(scene, "render.debug_view", "unknown view \"" + scene.debugView + "\""));
 }
 
-namespace {
-
-// The scene's props on the CPU: each model file loaded once, each placement's transform and box.
-struct PlacedProp {
-  int model;
-  PropTransform transform;
-  WorldBounds bounds;
-};
-struct SceneProps {
-  ModelCache models;
-  std::vector<PlacedProp> placed;
-};
-
-SceneProps loadProps(const SceneFile& scene) {
-  SceneProps out;
-  for (const SceneProp& prop : scene.props) {
-    int model = 0;
-    try {
-      model = out.models.load(prop.model);
-    } catch (const Error& e) {
-      throw Error(sceneError(scene, prop.key + ".model", e.what()));
-    }
-    const Model& m = out.models[model];
-    const PropTransform t = propTransform(prop);
-    out.placed.push_back({model, t, placedBounds(t, m.min, m.max)});
-  }
-  return out;
-}
-
-}  // namespace
 
 // The CPU side: blocks, atlas, the mesher's table and the world, kept for edits keyed to frames.
 struct SceneRenderer::World {
@@ -95,31 +65,30 @@ struct SceneRenderer::World {
       : blocks(BlockRegistry::fromFile(resourcePackDir() / "default" / "blocks.json")),
         atlas(buildBlockAtlas(blocks, packs)),
         table(blocks, [this](BlockId id, int face) { return atlas.textureOf(id, face); }),
-        world(scene, blocks),
-        props(loadProps(scene)) {}
+        world(scene, blocks) {}
   BlockRegistry blocks;
   BlockAtlas atlas;
   BlockMeshTable table;
   SceneWorld world;
-  SceneProps props;
 };
 
 namespace {
 
-Props uploadProps(const SceneProps& cpu, const SceneWorld& world) {
-  Props props;
-  std::vector<int> ids;
-  for (const Model& model : cpu.models.models()) ids.push_back(props.addModel(model));
-  for (const PlacedProp& p : cpu.placed) {
-    props.place(ids[static_cast<std::size_t>(p.model)],
-                {p.transform.position, p.transform.basis, p.transform.rotation, p.bounds.min, p.bounds.max},
-                modelLight(cpu.models[p.model], p.transform, world.world(), world.light()));
+// The scene's props, each lit from the world; a model that cannot be loaded names its scene key.
+PlacedProps placeProps(const SceneFile& scene, const SceneWorld& world) {
+  PlacedProps props;
+  for (const SceneProp& prop : scene.props) {
+    try {
+      props.place(prop.model, propTransform(prop), world.world(), world.light());
+    } catch (const Error& e) {
+      throw Error(sceneError(scene, prop.key + ".model", e.what()));
+    }
   }
   return props;
 }
 
-RendererOptions withProps(RendererOptions options, const Props& props) {
-  options.props = props.needs();
+RendererOptions withProps(RendererOptions options, const PlacedProps& props) {
+  options.props = props.gpu().needs();
   return options;
 }
 
@@ -127,23 +96,14 @@ RendererOptions withProps(RendererOptions options, const Props& props) {
 
 struct SceneRenderer::Gpu {
   Gpu(const ShaderPreprocessor& shaders, const Atlas& atlas, const BiomeTints& tints, const RendererOptions& options,
-      glm::ivec2 size, const SceneRenderer::World& world)
-      : props(uploadProps(world.props, world.world)),
+      glm::ivec2 size, const SceneFile& scene, const SceneWorld& world)
+      : props(placeProps(scene, world)),
         renderer(shaders, atlas, tints, withProps(options, props)),
         target(size) {}
-  Props props;  // before the renderer, which is built for what they need
+  PlacedProps props;  // before the renderer, which is built for what they need
   DeferredRenderer renderer;
   SectionMeshes meshes;
   RenderTarget target;
-
-  // After edits: the light around the props may have changed.
-  void relightProps(const SceneRenderer::World& world) {
-    for (std::size_t i = 0; i < world.props.placed.size(); ++i) {
-      const PlacedProp& p = world.props.placed[i];
-      props.relight(static_cast<int>(i), modelLight(world.props.models[p.model], p.transform, world.world.world(),
-                                                    world.world.light()));
-    }
-  }
 };
 
 SceneRenderer::SceneRenderer(const SceneFile& scene) : scene_(scene), debugView_(debugViewOf(scene)) {
@@ -163,7 +123,8 @@ SceneRenderer::SceneRenderer(const SceneFile& scene) : scene_(scene), debugView_
   options.caveCulling = scene.caveCulling;
   options.leaveOutAbsentMaps = scene.leaveOutAbsentMaps;
   options.cullFacesAway = scene.cullFacesAway;
-  gpu_ = std::make_unique<Gpu>(shaders, world_->atlas.atlas, tints, options, glm::ivec2(scene.width, scene.height), *world_);
+  gpu_ = std::make_unique<Gpu>(shaders, world_->atlas.atlas, tints, options, glm::ivec2(scene.width, scene.height), scene,
+                               world_->world);
   for (const auto& mesh : meshes) {
     gpu_->meshes.upload(mesh);
     stats_.quads += mesh.quads();
@@ -189,14 +150,14 @@ FrameInputs SceneRenderer::inputsFor(int frame) const {
   inputs.viewDistance = static_cast<float>(scene_.viewDistance * 16);
   inputs.debugView = debugView_;
   inputs.materialAo = scene_.materialAo;
-  inputs.props = &gpu_->props;
+  inputs.props = &gpu_->props.gpu();
   return inputs;
 }
 
 void SceneRenderer::advanceTo(int frame) {
   const std::vector<SectionMesh> changed = world_->world.advanceTo(frame, world_->table);
   for (const SectionMesh& mesh : changed) gpu_->meshes.upload(mesh);
-  if (!changed.empty()) gpu_->relightProps(*world_);
+  if (!changed.empty()) gpu_->props.relightAll(world_->world.world(), world_->world.light());
 }
 
 RenderedFrame SceneRenderer::renderFrame(int frame, const FrameRequest& request) {

@@ -2,7 +2,6 @@
 // Setting a program's uniforms by name (DSA: no program needs to be bound).
 
 #include <glm/gtc/type_ptr.hpp>
-#include <glm/mat3x3.hpp>
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
@@ -12,15 +11,6 @@ namespace terrasol::gl {
 
 inline void setVec3(GLuint program, const char* name, glm::vec3 v) {
   glProgramUniform3fv(program, glGetUniformLocation(program, name), 1, glm::value_ptr(v));
-}
-inline void setVec4(GLuint program, const char* name, glm::vec4 v) {
-  glProgramUniform4fv(program, glGetUniformLocation(program, name), 1, glm::value_ptr(v));
-}
-inline void setFloat(GLuint program, const char* name, float v) {
-  glProgramUniform1f(program, glGetUniformLocation(program, name), v);
-}
-inline void setMat3(GLuint program, const char* name, const glm::mat3& m) {
-  glProgramUniformMatrix3fv(program, glGetUniformLocation(program, name), 1, GL_FALSE, glm::value_ptr(m));
 }
 inline void setMat4(GLuint program, const char* name, const glm::mat4& m) {
   glProgramUniformMatrix4fv(program, glGetUniformLocation(program, name), 1, GL_FALSE, glm::value_ptr(m));
