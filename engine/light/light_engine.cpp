@@ -315,44 +315,55 @@ void LightEngine::seedSkyColumn(light::Propagator& p, const BlockPos& at, int ol
   }
 }
 
+// The levels a section's cells have by themselves: their emission, or the open sky column's 15 (and
+// the top layer of the world, lit from the sky above through its own opacity).
+NibbleArray::Bytes LightEngine::ownLevels(const Chunk& chunk, int section, LightChannel channel) const {
+  NibbleArray::Bytes levels{};
+  const Section& blocks = chunk.section(section);
+  if (channel == LightChannel::Block) {
+    if (chunk.light().emitters[static_cast<std::size_t>(section)] == 0) return levels;
+    for (int i = 0; i < Section::kVolume; ++i) NibbleArray::set(levels.data(), i, emission_[blocks.at(i)]);
+    return levels;
+  }
+  const auto& tops = chunk.light().skyTop;
+  const int y0 = kMinY + section * 16;
+  for (int ly = 0; ly < 16; ++ly) {
+    const int y = y0 + ly;
+    for (int column = 0; column < 256; ++column) {
+      std::uint8_t level = y > tops[static_cast<std::size_t>(column)] ? 15 : 0;
+      if (level == 0 && y == kMaxY - 1) level = static_cast<std::uint8_t>(15 - std::max<int>(1, opacity_[blocks.at(ly * 256 + column)]));
+      if (level) NibbleArray::set(levels.data(), ly * 256 + column, level);
+    }
+  }
+  return levels;
+}
+
 void LightEngine::relightSection(const SectionPos& s) {
   Chunk* chunk = world_.chunk({s.x, s.z});
   if (!chunk || !chunk->light().lit || s.section < 0 || s.section >= kSectionCount) return;
-  const ChunkLight& light = chunk->light();
-  const auto index = static_cast<std::size_t>(s.section);
   const int x0 = s.x * 16, y0 = kMinY + s.section * 16, z0 = s.z * 16;
   const auto tops = spreadTops(world_, *chunk);
   const light::ChunkWindow window(world_, {s.x - kReach, s.z - kReach}, {s.x + kReach, s.z + kReach});
   for (const LightChannel channel : {LightChannel::Block, LightChannel::Sky}) {
-    const NibbleArray& layer = layerOf(light, channel, s.section);
-    const bool noSources = channel == LightChannel::Block && light.emitters[index] == 0;
-    if (noSources && layer.isUniform() && layer.uniformLevel() == 0) continue;  // dark and stays dark
+    const NibbleArray::Bytes own = ownLevels(*chunk, s.section, channel);
     Propagator p(*frame_, window, channel, opacity_, emission_, decrease_, increase_, stats_, changed_);
     Cell origin;
     p.locate(x0, y0, z0, origin);
-    SectionRef& r = *origin.ref;
-    // Each cell gets its own level; light above it is removed, from here and from what it lit.
-    for (int i = 0; i < Section::kVolume; ++i) {
-      const std::uint8_t level = Propagator::light(r, i);
-      if (noSources && level == 0) continue;
-      const std::uint32_t pos = Propagator::posOf(origin.pos, i);
-      const std::uint8_t own = noSources ? 0 : p.source(r, i);
-      if (level == own) continue;
-      p.setLight(r, i, own);
-      if (level > own) p.decrease(pos, level, kAllDirections);
-    }
-    // Then every source offers its light again, so cells that were too dark fill up. Open-sky cells
-    // above the neighbouring columns only have 15s around them and are left out.
-    if (!noSources) {
-      for (int i = 0; i < Section::kVolume; ++i) {
-        const std::uint8_t level = Propagator::light(r, i);
-        if (level <= 1 || (channel == LightChannel::Sky && level == 15 && y0 + (i >> 8) > tops[static_cast<std::size_t>(i & 255)])) {
-          continue;
-        }
-        p.increase(Propagator::posOf(origin.pos, i), level, kAllDirections);
+    // Every cell gets its own level; light that left the section through a face cell that lost some
+    // is removed outside.
+    p.replaceLevels(*origin.ref, origin.pos, own);
+    // Then every source inside offers its light again, so cells that were too dark fill up. Open-sky
+    // cells above the neighbouring columns only have 15s around them and are left out.
+    const bool sources = channel == LightChannel::Sky || chunk->light().emitters[static_cast<std::size_t>(s.section)];
+    for (int i = 0; i < Section::kVolume && sources; ++i) {
+      const std::uint8_t level = NibbleArray::get(own.data(), i);
+      if (level <= 1 || (channel == LightChannel::Sky && level == 15 && y0 + (i >> 8) > tops[static_cast<std::size_t>(i & 255)])) {
+        continue;
       }
+      p.increase(Propagator::posOf(origin.pos, i), level, kAllDirections);
     }
-    // And so does the light just outside each face.
+    // And so does the light just outside each face, where it is brighter than the cell it enters
+    // could be by itself.
     for (int d = 0; d < 6; ++d) {
       const BlockPos& o = kDirectionOffsets[d];
       Cell beyond;  // the neighbouring section's cell 0
@@ -366,7 +377,11 @@ void LightEngine::relightSection(const SectionPos& s) {
           const int lz = d == 4 ? 15 : d == 5 ? 0 : b;
           const int index = Section::index(lx, ly, lz);
           const std::uint8_t level = Propagator::light(n, index);
-          if (level > 1) p.increase(Propagator::posOf(beyond.pos, index), level, toward);
+          const int ours = Section::index(d == 0 ? 0 : d == 1 ? 15 : lx, d == 2 ? 0 : d == 3 ? 15 : ly,
+                                          d == 4 ? 0 : d == 5 ? 15 : lz);
+          if (level > 1 && NibbleArray::get(own.data(), ours) + 1 < level) {
+            p.increase(Propagator::posOf(beyond.pos, index), level, toward);
+          }
         }
     }
     p.run();

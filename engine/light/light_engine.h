@@ -71,6 +71,7 @@ class LightEngine {
   int updateSkyTop(Chunk& chunk, const BlockChange& change);
   void seedChangedCell(light::Propagator& p, const BlockPos& at);
   void seedSkyColumn(light::Propagator& p, const BlockPos& at, int oldTop, int newTop);
+  NibbleArray::Bytes ownLevels(const Chunk& chunk, int section, LightChannel channel) const;
 
   World& world_;
   const std::uint8_t* opacity_;

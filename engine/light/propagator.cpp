@@ -41,6 +41,27 @@ std::uint8_t Propagator::source(const BlockId* blocks, int mask, const std::int1
   return 0;
 }
 
+void Propagator::replaceLevels(SectionRef& r, std::uint32_t origin, const NibbleArray::Bytes& levels) {
+  const std::uint8_t* old = r.light;
+  if (std::equal(levels.begin(), levels.end(), old)) return;
+  Cursor c(r);
+  for (int b = 0; b < NibbleArray::kBytes; ++b) {
+    if (old[b] == levels[static_cast<std::size_t>(b)]) continue;
+    for (const int i : {2 * b, 2 * b + 1}) {
+      const std::uint8_t before = NibbleArray::get(old, i), after = NibbleArray::get(levels.data(), i);
+      if (before == after) continue;
+      ++lightWrites_;
+      c.marks |= kFaceMarks[static_cast<std::size_t>(i)];
+      const auto outward = static_cast<std::uint8_t>(kFaceMarks[static_cast<std::size_t>(i)] & kAllDirections);
+      if (outward && before > after) decrease(posOf(origin, i), before, outward);
+    }
+  }
+  // One copy: `old` is read above before the section may take its own bytes.
+  if (!c.write) c.bytes = c.write = r.layer->writableBytes();
+  std::copy(levels.begin(), levels.end(), c.write);
+  c.flush();
+}
+
 // A written cell changes its own section's mesh and, on a face, the halo of the sections beside it.
 void Propagator::flushChanged() {
   for (const int chunk : frame_.resolvedChunks()) {
@@ -65,12 +86,26 @@ void Propagator::run() {
   flushChanged();
 }
 
-// Calls visit(cursor, index, pos, d) for each neighbour of the entry's cell in `directions` that is
-// in the frame and loaded: those in the cell's own section through one cursor, the others each
-// through their own. A cell that is not loaded (a chunk being unloaded) still leads across its faces.
+// Calls visit(cursor, index, pos, d) for each neighbour of the entry's cell in `directions` (all six
+// for a cell inside its section) that is in the frame and loaded: those in the cell's own section
+// through one cursor, the others each through their own. A cell that is not loaded (a chunk being
+// unloaded) still leads across its faces.
 template <class Visit>
 void Propagator::forNeighbours(SectionRef& r, int index, std::uint32_t pos, std::uint8_t inSection,
                                unsigned directions, Visit&& visit) {
+  if ((inSection & kInterior) && r.layer) {
+    // All six neighbours in this section: unrolled, so each direction branches on its own, and the
+    // direction the entry came from is visited too (it cannot change: it is at least as bright).
+    Cursor c(r);
+    visit(c, index - 1, pos - 1, 0);
+    visit(c, index + 1, pos + 1, 1);
+    visit(c, index - 256, pos - 256, 2);
+    visit(c, index + 256, pos + 256, 3);
+    visit(c, index - 16, pos - 16, 4);
+    visit(c, index + 16, pos + 16, 5);
+    c.flush();
+    return;
+  }
   if (const unsigned near = directions & inSection; near && r.layer) {
     Cursor c(r);
     for (unsigned dirs = near; dirs != 0; dirs &= dirs - 1) {

@@ -17,8 +17,9 @@ constexpr int opposite(int direction) { return direction ^ 1; }  // West<->East,
 // Steps per Direction of Section::index within a section, and so of a frame position there.
 inline constexpr int kIndexStep[6] = {-1, 1, -256, 256, -16, 16};
 
-// Per Section::index: bit d set when the neighbour in Direction d is in the same section; bit 6 when
-// the cell is on no face of the section.
+// Per Section::index: bit d set when the neighbour in Direction d is in the same section; kInterior
+// when the cell is on no face of the section.
+inline constexpr std::uint8_t kInterior = 0x40;
 inline const std::array<std::uint8_t, Section::kVolume> kInSection = [] {
   std::array<std::uint8_t, Section::kVolume> masks{};
   for (int i = 0; i < Section::kVolume; ++i) {
@@ -138,6 +139,10 @@ class Propagator {
   }
   std::uint8_t source(const BlockId* blocks, int mask, const std::int16_t* skyTop, int minY, int index,
                       std::uint64_t& reads) const;
+  // Gives every cell of the section whose cell 0 is at `origin` the level in `levels` (NibbleArray
+  // order). A face cell that loses light starts a decrease outward with its old level: light that
+  // left the section through it may have to go. Cells inside need none, they all have new levels.
+  void replaceLevels(SectionRef& r, std::uint32_t origin, const NibbleArray::Bytes& levels);
   // Frame position of Section::index `index` in the section whose cell 0 is at `origin`.
   static std::uint32_t posOf(std::uint32_t origin, int index) { return origin + static_cast<std::uint32_t>(index); }
 
