@@ -6,6 +6,8 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
+#include <utility>
 #include <vector>
 
 #include "world/coords.h"
@@ -69,8 +71,29 @@ inline constexpr FaceBasis kFaceBases[10] = {
 enum class MeshLayer : std::uint8_t { Opaque, Cutout, Translucent };
 inline constexpr int kMeshLayers = 3;
 
+// Grows without zeroing: the mesher writes every vertex it adds, so resize() need not clear them first.
+template <class T>
+struct UninitialisedAllocator : std::allocator<T> {
+  template <class U>
+  struct rebind {
+    using other = UninitialisedAllocator<U>;
+  };
+  UninitialisedAllocator() = default;
+  template <class U>
+  UninitialisedAllocator(const UninitialisedAllocator<U>&) noexcept {}
+  template <class U>
+  void construct(U* p) noexcept {
+    ::new (static_cast<void*>(p)) U;
+  }
+  template <class U, class... Args>
+  void construct(U* p, Args&&... args) {
+    ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
+  }
+};
+using VertexArray = std::vector<PackedVertex, UninitialisedAllocator<PackedVertex>>;
+
 struct MeshData {
-  std::vector<PackedVertex> vertices;  // 4 per quad
+  VertexArray vertices;  // 4 per quad
   std::size_t quads() const { return vertices.size() / 4; }
 };
 

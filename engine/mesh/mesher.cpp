@@ -1,6 +1,9 @@
 #include "mesh/mesher.h"
 
+#include <algorithm>
 #include <bit>
+#include <cstring>
+#include <utility>
 
 namespace terrasol {
 namespace {
@@ -32,6 +35,13 @@ constexpr int offset(int dx, int dy, int dz) {
   return dx + dz * SectionSnapshot::kSide + dy * SectionSnapshot::kSide * SectionSnapshot::kSide;
 }
 
+// Snapshot index step to the neighbour in each Direction.
+constexpr auto kNeighbour = [] {
+  std::array<int, 6> steps{};
+  for (int d = 0; d < 6; ++d) steps[static_cast<std::size_t>(d)] = offset(kFaces[d].n.x, kFaces[d].n.y, kFaces[d].n.z);
+  return steps;
+}();
+
 // Rounded average x4 of `count` (1..4) light levels summing to `sum`: a table, not two divisions per corner.
 constexpr auto kAverage4 = [] {
   std::array<std::array<std::uint8_t, 61>, 5> table{};
@@ -44,7 +54,8 @@ constexpr auto kAverage4 = [] {
 // beside the corner and the diagonal one, the corner's position within its block (1/32) and its UV.
 struct CornerCells {
   int side1, side2, diagonal;
-  int x32, y32, z32;
+  std::uint32_t position;  // PackedVertex::packPosition of the corner within its block
+  bool top;                // on the block's top, where a lowered liquid surface moves it
   std::uint32_t uv;
 };
 constexpr auto kCorners = [] {
@@ -54,12 +65,23 @@ constexpr auto kCorners = [] {
       const FaceFrame& f = kFaces[d];
       const int su = kCornerSigns[c][0], sv = kCornerSigns[c][1];
       const Vec a{su * f.t.x, su * f.t.y, su * f.t.z}, b{sv * f.b.x, sv * f.b.y, sv * f.b.z};
+      const int y32 = 16 + 16 * (f.n.y + a.y + b.y);
       table[d][c] = {offset(a.x, a.y, a.z), offset(b.x, b.y, b.z), offset(a.x + b.x, a.y + b.y, a.z + b.z),
-                     16 + 16 * (f.n.x + a.x + b.x), 16 + 16 * (f.n.y + a.y + b.y), 16 + 16 * (f.n.z + a.z + b.z),
+                     PackedVertex::packPosition(16 + 16 * (f.n.x + a.x + b.x), y32, 16 + 16 * (f.n.z + a.z + b.z)),
+                     y32 == 32,
                      static_cast<std::uint32_t>(su > 0 ? 16 : 0) | static_cast<std::uint32_t>(sv > 0 ? 0 : 16) << 5};
     }
   return table;
 }();
+
+std::uint32_t tintOf(const BlockMeshTable::Entry& e, int face) {
+  // Grass blocks tint only their top; plants, leaves and water tint everything.
+  if (e.tint == Tint::Grass && e.shape == BlockShape::Cube && face != static_cast<int>(Direction::Up)) return 0;
+  return static_cast<std::uint32_t>(e.tint);
+}
+std::uint32_t material(const BlockMeshTable::Entry& e, int texture, int face) {
+  return static_cast<std::uint32_t>(texture) | static_cast<std::uint32_t>(face) << 16 | tintOf(e, face) << 20;
+}
 
 class Mesher {
  public:
@@ -82,12 +104,13 @@ class Mesher {
             self & ~(row(y - 1, z) >> 1 & 0xFFFF), self & ~(row(y + 1, z) >> 1 & 0xFFFF),
             self & ~(row(y, z - 1) >> 1 & 0xFFFF), self & ~(row(y, z + 1) >> 1 & 0xFFFF),
         };
-        for (int d = 0; d < 6; ++d)
+        forEachDirection([&](auto d) {
           for (std::uint32_t bits = visible[d]; bits != 0; bits &= bits - 1) {
             const int x = std::countr_zero(bits);
-            const Vec& n = kFaces[d].n;
-            face(x, y, z, d, table_[block(x, y, z)], 32, SectionSnapshot::index(x + n.x, y + n.y, z + n.z));
+            const int here = SectionSnapshot::index(x, y, z);
+            face<d>(x, y, z, table_[s_.blocks[static_cast<std::size_t>(here)]], 32, here + kNeighbour[d]);
           }
+        });
         // Everything else that is not air, cell by cell.
         for (std::uint32_t bits = ~self & 0xFFFF; bits != 0; bits &= bits - 1) {
           const int x = std::countr_zero(bits);
@@ -112,34 +135,32 @@ class Mesher {
  private:
   // Row masks of opaque cells, bit x + 1 for x in -1..16, for y and z in -1..16.
   void buildOpaqueRows() {
+    // Eight 0/1 bytes to eight bits at once: the multiply gathers each byte's bit into the top byte.
+    const auto bits8 = [](const std::uint8_t* bytes) {
+      std::uint64_t word;
+      std::memcpy(&word, bytes, 8);
+      return static_cast<std::uint32_t>((word * 0x0102040810204080ull) >> 56);
+    };
     for (int y = -1; y <= 16; ++y)
       for (int z = -1; z <= 16; ++z) {
         const std::uint8_t* cells = &s_.opaque[static_cast<std::size_t>(SectionSnapshot::index(-1, y, z))];
-        std::uint32_t mask = 0;
-        for (int i = 0; i < SectionSnapshot::kSide; ++i) mask |= static_cast<std::uint32_t>(cells[i]) << i;
-        rows_[static_cast<std::size_t>((y + 1) * SectionSnapshot::kSide + z + 1)] = mask;
+        rows_[static_cast<std::size_t>((y + 1) * SectionSnapshot::kSide + z + 1)] =
+            bits8(cells) | bits8(cells + 8) << 8 | static_cast<std::uint32_t>(cells[16]) << 16 |
+            static_cast<std::uint32_t>(cells[17]) << 17;
       }
   }
   std::uint32_t row(int y, int z) const { return rows_[static_cast<std::size_t>((y + 1) * SectionSnapshot::kSide + z + 1)]; }
 
   BlockId block(int x, int y, int z) const { return s_.blocks[static_cast<std::size_t>(SectionSnapshot::index(x, y, z))]; }
   bool opaqueAt(int i) const { return s_.opaque[static_cast<std::size_t>(i)] != 0; }
-  int blockLight(int x, int y, int z) const { return s_.blockLight[static_cast<std::size_t>(SectionSnapshot::index(x, y, z))]; }
-  int skyLight(int x, int y, int z) const { return s_.skyLight[static_cast<std::size_t>(SectionSnapshot::index(x, y, z))]; }
+  int blockLight(int x, int y, int z) const { return s_.blockLight(SectionSnapshot::index(x, y, z)); }
+  int skyLight(int x, int y, int z) const { return s_.skyLight(SectionSnapshot::index(x, y, z)); }
 
-  static std::uint32_t tintOf(const BlockMeshTable::Entry& e, int face) {
-    // Grass blocks tint only their top; plants, leaves and water tint everything.
-    if (e.tint == Tint::Grass && e.shape == BlockShape::Cube && face != static_cast<int>(Direction::Up)) return 0;
-    return static_cast<std::uint32_t>(e.tint);
-  }
-  static std::uint32_t material(const BlockMeshTable::Entry& e, int texture, int face) {
-    return static_cast<std::uint32_t>(texture) | static_cast<std::uint32_t>(face) << 16 | tintOf(e, face) << 20;
-  }
   static std::uint32_t light4(int block4, int sky4, int ao) {
     return static_cast<std::uint32_t>(block4) | static_cast<std::uint32_t>(sky4) << 6 | static_cast<std::uint32_t>(ao) << 12;
   }
   static std::uint32_t uv(int u, int v) { return static_cast<std::uint32_t>(u) | static_cast<std::uint32_t>(v) << 5; }
-  std::vector<PackedVertex>& layer(const BlockMeshTable::Entry& e) {
+  VertexArray& layer(const BlockMeshTable::Entry& e) {
     return mesh_.layers[static_cast<std::size_t>(e.layer)].vertices;
   }
 
@@ -153,49 +174,67 @@ class Mesher {
     // A liquid's surface sits 2/16 lower unless more of the same liquid is above it.
     const int top32 = liquid && block(x, y + 1, z) != id ? 28 : 32;
     const int here = SectionSnapshot::index(x, y, z);
-    for (int d = 0; d < 6; ++d) {
-      const Vec& n = kFaces[d].n;
+    forEachDirection([&](auto d) {
       const bool loweredTop = d == static_cast<int>(Direction::Up) && top32 < 32;
-      const bool visible = faceVisible(id, e, here + offset(n.x, n.y, n.z));
-      if (!visible && !loweredTop) continue;
+      const bool visible = faceVisible(id, e, here + kNeighbour[d]);
+      if (!visible && !loweredTop) return;
       // A lowered surface under an opaque block is lit from the liquid's own cell, not the dark block.
-      face(x, y, z, d, e, top32, visible ? here + offset(n.x, n.y, n.z) : here);
-    }
+      face<d>(x, y, z, e, top32, visible ? here + kNeighbour[d] : here);
+    });
   }
 
-  // One full-block face with smooth light and ambient occlusion at each corner.
+  // f(std::integral_constant<int, d>) for each Direction d: per-face code with constant tables.
+  template <class F>
+  static void forEachDirection(F&& f) {
+    [&]<int... D>(std::integer_sequence<int, D...>) {
+      (f(std::integral_constant<int, D>{}), ...);
+    }(std::make_integer_sequence<int, 6>{});
+  }
+
+  // One full-block face in Direction D with smooth light and ambient occlusion at each corner.
   // `front`: the snapshot cell the face looks into, whose surroundings light its corners.
-  void face(int x, int y, int z, int d, const BlockMeshTable::Entry& e, int top32, int front) {
-    const auto& bl = s_.blockLight;
-    const auto& sl = s_.skyLight;
-    const std::uint32_t mat = material(e, e.texture[static_cast<std::size_t>(d)], d);
+  template <int D>
+  void face(int x, int y, int z, const BlockMeshTable::Entry& e, int top32, int front) {
+    const std::uint16_t* light = s_.light.data() + front;
+    // The front cell always counts (the face is visible, so it is not opaque).
+    const std::uint32_t own = light[0];
+    const std::uint32_t base = PackedVertex::packPosition(x * 32, y * 32, z * 32);
+    const std::uint32_t lowered = static_cast<std::uint32_t>(32 - top32) << 10;
+    const std::uint32_t mat = e.material[D];
     PackedVertex v[4];
-    int ao[4];
+    std::uint32_t ao[4];
     for (int c = 0; c < 4; ++c) {
-      const CornerCells& k = kCorners[d][c];
-      const int i1 = front + k.side1, i2 = front + k.side2, i3 = front + k.diagonal;
-      const bool side1 = opaqueAt(i1), side2 = opaqueAt(i2);
-      const bool corner = (side1 && side2) || opaqueAt(i3);
-      ao[c] = side1 && side2 ? 0 : 3 - (side1 + side2 + corner);
-      // Smooth light: the front cell always counts (the face is visible, so it is not opaque).
-      int blockSum = bl[static_cast<std::size_t>(front)], skySum = sl[static_cast<std::size_t>(front)], count = 1;
-      if (!side1) blockSum += bl[static_cast<std::size_t>(i1)], skySum += sl[static_cast<std::size_t>(i1)], ++count;
-      if (!side2) blockSum += bl[static_cast<std::size_t>(i2)], skySum += sl[static_cast<std::size_t>(i2)], ++count;
-      if (!corner) blockSum += bl[static_cast<std::size_t>(i3)], skySum += sl[static_cast<std::size_t>(i3)], ++count;
-      int py = y * 32 + k.y32;
-      if (k.y32 == 32) py = y * 32 + top32;  // a lowered liquid surface
-      v[c] = {PackedVertex::packPosition(x * 32 + k.x32, py, z * 32 + k.z32), mat,
-              light4(kAverage4[count][blockSum], kAverage4[count][skySum], ao[c]), k.uv};
+      const CornerCells& k = kCorners[D][c];
+      const std::uint32_t t1 = light[k.side1], t2 = light[k.side2], t3 = light[k.diagonal];
+      const std::uint32_t side1 = t1 == 0, side2 = t2 == 0, both = side1 & side2;
+      const std::uint32_t corner = both | (t3 == 0);
+      ao[c] = both ? 0 : 3 - (side1 + side2 + corner);
+      // Opaque cells add 0; the diagonal is left out too when both sides are opaque.
+      const std::uint32_t sum = own + t1 + t2 + (both ? 0 : t3);
+      const auto& average = kAverage4[sum >> 12];
+      v[c] = {base + k.position - (k.top ? lowered : 0), mat,
+              light4(average[sum & 63], average[sum >> 6 & 63], static_cast<int>(ao[c])), k.uv};
     }
-    emit(layer(e), v, ao[0] + ao[2] < ao[1] + ao[3]);
+    // Split along the diagonal whose corners are the brighter pair: corners 1-3 instead of 0-2.
+    const int first = ao[0] + ao[2] < ao[1] + ao[3] ? 1 : 0;
+    PackedVertex* q = append4(layer(e));
+    for (int c = 0; c < 4; ++c) q[(c - first) & 3] = v[c];
+  }
+
+  // Room for one more quad at the end of `out`.
+  static PackedVertex* append4(VertexArray& out) {
+    const std::size_t n = out.size();
+    out.resize(n + 4);
+    return out.data() + n;
   }
 
   // Appends a quad; `flip` splits it along corners 1-3 instead of 0-2.
-  static void emit(std::vector<PackedVertex>& out, const PackedVertex v[4], bool flip) {
-    for (int i = 0; i < 4; ++i) out.push_back(v[(i + (flip ? 1 : 0)) % 4]);
+  static void emit(VertexArray& out, const PackedVertex v[4], bool flip) {
+    PackedVertex* q = append4(out);
+    for (int c = 0; c < 4; ++c) q[(c - (flip ? 1 : 0)) & 3] = v[c];
   }
 
-  void flatQuad(std::vector<PackedVertex>& out, const std::array<Vec, 4>& corners32, const BlockMeshTable::Entry& e, int face,
+  void flatQuad(VertexArray& out, const std::array<Vec, 4>& corners32, const BlockMeshTable::Entry& e, int face,
                 const std::array<std::array<int, 2>, 4>& uvs, std::uint32_t light) {
     PackedVertex v[4];
     for (int c = 0; c < 4; ++c) {
@@ -266,7 +305,10 @@ BlockMeshTable::BlockMeshTable(const BlockRegistry& blocks, const std::function<
     e.cullSame = type.layer == RenderLayer::Translucent || type.shape == BlockShape::Liquid ||
                  (type.shape == BlockShape::Cube && type.opacity == 0);
     e.tint = type.tint;
-    for (int f = 0; f < 6; ++f) e.texture[static_cast<std::size_t>(f)] = id == kAir ? 0 : textureOf(id, f);
+    for (int f = 0; f < 6; ++f) {
+      e.texture[static_cast<std::size_t>(f)] = id == kAir ? 0 : textureOf(id, f);
+      e.material[static_cast<std::size_t>(f)] = material(e, e.texture[static_cast<std::size_t>(f)], f);
+    }
   }
 }
 

@@ -38,6 +38,7 @@ class BlockMeshTable {
     bool cullSame;  // hides faces against the same block
     Tint tint;
     std::array<std::uint16_t, 6> texture;
+    std::array<std::uint32_t, 6> material;  // PackedVertex::material of each cube face
   };
   const Entry& operator[](BlockId id) const { return entries_[id]; }
 

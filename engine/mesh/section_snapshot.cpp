@@ -41,8 +41,7 @@ void copyRun(const Chunk* chunk, int y, int z, int x0, int count, const std::uin
   if (!chunk || !inWorldHeight(y)) {
     std::fill_n(&out.blocks[d], count, kAir);
     std::fill_n(&out.opaque[d], count, std::uint8_t{0});
-    std::fill_n(&out.blockLight[d], count, std::uint8_t{0});
-    std::fill_n(&out.skyLight[d], count, static_cast<std::uint8_t>(y >= kMaxY ? 15 : 0));
+    std::fill_n(&out.light[d], count, SectionSnapshot::lightTerm(false, 0, y >= kMaxY ? 15 : 0));
     return;
   }
   const int s = sectionOf(y), first = Section::index(x0, y & 15, z);
@@ -54,16 +53,12 @@ void copyRun(const Chunk* chunk, int y, int z, int x0, int count, const std::uin
   }
   for (int i = 0; i < count; ++i) out.opaque[d + static_cast<std::size_t>(i)] = opaqueCube[out.blocks[d + static_cast<std::size_t>(i)]];
   const ChunkLight& light = chunk->light();
-  if (!light.lit) {
-    std::fill_n(&out.blockLight[d], count, std::uint8_t{0});
-    std::fill_n(&out.skyLight[d], count, std::uint8_t{0});
-    return;
-  }
   const NibbleArray& block = light.block[static_cast<std::size_t>(s)];
   const NibbleArray& sky = light.sky[static_cast<std::size_t>(s)];
   for (int i = 0; i < count; ++i) {
-    out.blockLight[d + static_cast<std::size_t>(i)] = block.get(first + i);
-    out.skyLight[d + static_cast<std::size_t>(i)] = sky.get(first + i);
+    const auto at = d + static_cast<std::size_t>(i);
+    out.light[at] = light.lit ? SectionSnapshot::lightTerm(out.opaque[at], block.get(first + i), sky.get(first + i))
+                              : SectionSnapshot::lightTerm(out.opaque[at], 0, 0);
   }
 }
 

@@ -54,14 +54,14 @@ class SectionMeshes {
 
  private:
   void ensureIndices(GLsizei quads);
-  const std::vector<PackedVertex>& groupByFace(const MeshData& data, std::array<GLsizei, kFaceGroups + 1>& start);
+  const VertexArray& groupByFace(const MeshData& data, std::array<GLsizei, kFaceGroups + 1>& start);
 
   std::map<SectionPos, Section> sections_;
   gl::VertexArray layout_;
   gl::Buffer indices_;
   GLsizei indexQuads_ = 0;
   std::uint64_t generation_ = 0;
-  std::vector<PackedVertex> grouped_;  // reused by upload
+  VertexArray grouped_;  // reused by upload
   std::map<SectionPos, FaceLinks> links_;  // only sections not linked all round
 };
 

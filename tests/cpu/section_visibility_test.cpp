@@ -14,10 +14,14 @@ SectionSnapshot openSection() {
   s.pos = {0, 4, 0};
   s.blocks.fill(kAir);
   s.opaque.fill(0);
+  s.light.fill(SectionSnapshot::kOpen);
   return s;
 }
 
-void solid(SectionSnapshot& s, int x, int y, int z) { s.opaque[SectionSnapshot::index(x, y, z)] = 1; }
+void solid(SectionSnapshot& s, int x, int y, int z) {
+  s.opaque[SectionSnapshot::index(x, y, z)] = 1;
+  s.light[SectionSnapshot::index(x, y, z)] = 0;
+}
 
 TEST(SectionVisibility, AnOpenSectionLinksEveryFaceAndASolidOneNone) {
   SectionSnapshot s = openSection();
