@@ -42,11 +42,27 @@ constexpr auto kNeighbour = [] {
   return steps;
 }();
 
-// Rounded average x4 of `count` (1..4) light levels summing to `sum`: a table, not two divisions per corner.
+// Rounded average x4 of the light levels in one channel of a sum of SectionSnapshot::lightTerm:
+// index count << 6 | sum (count 1..4).
 constexpr auto kAverage4 = [] {
-  std::array<std::array<std::uint8_t, 61>, 5> table{};
+  std::array<std::uint8_t, 512> table{};
   for (int count = 1; count <= 4; ++count)
-    for (int sum = 0; sum <= 60; ++sum) table[count][sum] = static_cast<std::uint8_t>((sum * 4 + count / 2) / count);
+    for (int sum = 0; sum <= 60; ++sum) table[static_cast<std::size_t>(count << 6 | sum)] = static_cast<std::uint8_t>((sum * 4 + count / 2) / count);
+  return table;
+}();
+
+// Per corner, by which of its cells are opaque (bit 0: side 1, bit 1: side 2, bit 2: diagonal): its
+// ambient occlusion, and a mask that leaves the diagonal out of the light when both sides are opaque.
+struct CornerShade {
+  std::uint32_t ao, diagonal;
+};
+constexpr auto kShade = [] {
+  std::array<CornerShade, 8> table{};
+  for (unsigned bits = 0; bits < 8; ++bits) {
+    const unsigned side1 = bits & 1, side2 = bits >> 1 & 1, corner = bits >> 2 & 1;
+    const bool both = side1 && side2;
+    table[bits] = {both ? 0 : 3 - (side1 + side2 + corner), both ? 0u : ~0u};
+  }
   return table;
 }();
 
@@ -195,30 +211,29 @@ class Mesher {
   // `front`: the snapshot cell the face looks into, whose surroundings light its corners.
   template <int D>
   void face(int x, int y, int z, const BlockMeshTable::Entry& e, int top32, int front) {
-    const std::uint16_t* light = s_.light.data() + front;
+    const std::uint32_t* light = s_.light.data() + front;
     // The front cell always counts (the face is visible, so it is not opaque).
     const std::uint32_t own = light[0];
-    const std::uint32_t base = PackedVertex::packPosition(x * 32, y * 32, z * 32);
-    const std::uint32_t lowered = static_cast<std::uint32_t>(32 - top32) << 10;
-    const std::uint32_t mat = e.material[D];
-    PackedVertex v[4];
-    std::uint32_t ao[4];
+    std::uint32_t sum[4], ao[4];
     for (int c = 0; c < 4; ++c) {
       const CornerCells& k = kCorners[D][c];
       const std::uint32_t t1 = light[k.side1], t2 = light[k.side2], t3 = light[k.diagonal];
-      const std::uint32_t side1 = t1 == 0, side2 = t2 == 0, both = side1 & side2;
-      const std::uint32_t corner = both | (t3 == 0);
-      ao[c] = both ? 0 : 3 - (side1 + side2 + corner);
-      // Opaque cells add 0; the diagonal is left out too when both sides are opaque.
-      const std::uint32_t sum = own + t1 + t2 + (both ? 0 : t3);
-      const auto& average = kAverage4[sum >> 12];
-      v[c] = {base + k.position - (k.top ? lowered : 0), mat,
-              light4(average[sum & 63], average[sum >> 6 & 63], static_cast<int>(ao[c])), k.uv};
+      const CornerShade& shade = kShade[(t1 == 0) | (t2 == 0) << 1 | (t3 == 0) << 2];
+      ao[c] = shade.ao;
+      sum[c] = own + t1 + t2 + (t3 & shade.diagonal);  // opaque cells add 0
     }
     // Split along the diagonal whose corners are the brighter pair: corners 1-3 instead of 0-2.
     const int first = ao[0] + ao[2] < ao[1] + ao[3] ? 1 : 0;
+    const std::uint32_t base = PackedVertex::packPosition(x * 32, y * 32, z * 32);
+    const std::uint32_t lowered = static_cast<std::uint32_t>(32 - top32) << 10;
+    const std::uint32_t mat = e.material[D];
     PackedVertex* q = append4(layer(e));
-    for (int c = 0; c < 4; ++c) q[(c - first) & 3] = v[c];
+    for (int c = 0; c < 4; ++c) {
+      const CornerCells& k = kCorners[D][c];
+      q[(c - first) & 3] = {base + k.position - (k.top ? lowered : 0), mat,
+                            kAverage4[sum[c] & 511] | static_cast<std::uint32_t>(kAverage4[sum[c] >> 9 & 511]) << 6 | ao[c] << 12,
+                            k.uv};
+    }
   }
 
   // Room for one more quad at the end of `out`.

@@ -20,18 +20,19 @@ class SectionSnapshot {
 
   static constexpr int kCells = kSide * kSide * kSide;
 
-  // A cell's light as smooth lighting sums it: kOpen | sky light << 6 | block light, and 0 for an
-  // opaque cube (it does not count). Four of them add up without carries: each field holds 4 x 15.
-  static constexpr std::uint16_t kOpen = 1 << 12;
-  static constexpr std::uint16_t lightTerm(bool opaque, int block, int sky) {
-    return opaque ? 0 : static_cast<std::uint16_t>(kOpen | sky << 6 | block);
+  // A cell's light as smooth lighting sums it: per channel a count bit (1 << 6) and the level, block
+  // light in bits 0..8 and sky light in bits 9..17; 0 for an opaque cube, which does not count. Four
+  // of them add up without carries: each channel's sum stays below 2^9.
+  static constexpr std::uint32_t kOpen = 1 << 6 | 1 << 15;
+  static constexpr std::uint32_t lightTerm(bool opaque, int block, int sky) {
+    return opaque ? 0 : kOpen | static_cast<std::uint32_t>(block) | static_cast<std::uint32_t>(sky) << 9;
   }
-  int blockLight(int i) const { return light[static_cast<std::size_t>(i)] & 63; }
-  int skyLight(int i) const { return light[static_cast<std::size_t>(i)] >> 6 & 63; }
+  int blockLight(int i) const { return static_cast<int>(light[static_cast<std::size_t>(i)] & 15); }
+  int skyLight(int i) const { return static_cast<int>(light[static_cast<std::size_t>(i)] >> 9 & 15); }
 
   SectionPos pos;
   std::array<BlockId, kCells> blocks;
-  std::array<std::uint16_t, kCells> light;  // lightTerm per cell
+  std::array<std::uint32_t, kCells> light;  // lightTerm per cell
   std::array<std::uint8_t, kCells> opaque;  // 1: an opaque cube (BlockRegistry::opaqueCubes)
 };
 
