@@ -225,6 +225,48 @@ TEST(Mesher, SmoothLightAveragesTheFourCellsInFront) {
   EXPECT_EQ(q2[1].blockLight4(), (4 * (14 + 13 + 12) + 1) / 3);
 }
 
+// The extremes of the packed sums: four cells of full light in both channels give exactly 60 (no
+// field carries into the next), a lone open cell beside three opaque ones keeps its own level, and a
+// corner with both sides opaque ignores the open diagonal.
+TEST(Mesher, SmoothLightSumsHoldAtFullLightAndWithOneOpenCell) {
+  MeshWorld w;
+  SectionSnapshot s;
+  s.pos = {0, 4, 0};
+  s.blocks.fill(kAir);
+  s.opaque.fill(0);
+  s.light.fill(SectionSnapshot::lightTerm(false, 15, 15));
+  const BlockId stone = defaultBlocks().id("stone");
+  auto solid = [&](int x, int y, int z) {
+    const auto i = static_cast<std::size_t>(SectionSnapshot::index(x, y, z));
+    s.blocks[i] = stone;
+    s.opaque[i] = 1;
+    s.light[i] = 0;
+  };
+  solid(8, 8, 8);
+  const auto top = quadWithTexture(meshSection(s, w.table).layers[0], stone * 6 + 3);
+  ASSERT_EQ(top.size(), 4u);
+  for (const auto& v : top) {
+    EXPECT_EQ(v.blockLight4(), 60);
+    EXPECT_EQ(v.skyLight4(), 60);
+    EXPECT_EQ(v.ao(), 3);
+  }
+  // Walls on two sides of the cell above: the corner between them is fully occluded and lit by the
+  // front cell alone, even though the diagonal cell is open and lit.
+  s.light[static_cast<std::size_t>(SectionSnapshot::index(8, 9, 8))] = SectionSnapshot::lightTerm(false, 3, 0);
+  solid(9, 9, 8);
+  solid(8, 9, 9);
+  const auto walled = quadWithTexture(meshSection(s, w.table).layers[0], stone * 6 + 3);
+  ASSERT_EQ(walled.size(), 4u);
+  int occluded = 0;
+  for (const auto& v : walled) {
+    if (v.ao() != 0) continue;
+    ++occluded;
+    EXPECT_EQ(v.blockLight4(), 12);
+    EXPECT_EQ(v.skyLight4(), 0);
+  }
+  EXPECT_EQ(occluded, 1);
+}
+
 TEST(Mesher, FacesAgainstNeighboursAcrossSectionAndChunkBorders) {
   MeshWorld w;
   const SectionPos s{0, sectionOf(64), 0};
