@@ -331,7 +331,7 @@ NibbleArray::Bytes LightEngine::ownLevels(const Chunk& chunk, int section, Light
     const int y = y0 + ly;
     for (int column = 0; column < 256; ++column) {
       std::uint8_t level = y > tops[static_cast<std::size_t>(column)] ? 15 : 0;
-      if (level == 0 && y == kMaxY - 1) level = static_cast<std::uint8_t>(15 - std::max<int>(1, opacity_[blocks.at(ly * 256 + column)]));
+      if (level == 0 && y == kMaxY - 1) level = light::topLayerSky(opacity_[blocks.at(ly * 256 + column)]);
       if (level) NibbleArray::set(levels.data(), ly * 256 + column, level);
     }
   }
@@ -355,12 +355,14 @@ void LightEngine::relightSection(const SectionPos& s) {
     // Then every source inside offers its light again, so cells that were too dark fill up. Open-sky
     // cells above the neighbouring columns only have 15s around them and are left out.
     const bool sources = channel == LightChannel::Sky || chunk->light().emitters[static_cast<std::size_t>(s.section)];
-    for (int i = 0; i < Section::kVolume && sources; ++i) {
-      const std::uint8_t level = NibbleArray::get(own.data(), i);
-      if (level <= 1 || (channel == LightChannel::Sky && level == 15 && y0 + (i >> 8) > tops[static_cast<std::size_t>(i & 255)])) {
-        continue;
+    if (sources) {
+      for (int i = 0; i < Section::kVolume; ++i) {
+        const std::uint8_t level = NibbleArray::get(own.data(), i);
+        if (level <= 1 || (channel == LightChannel::Sky && level == 15 && y0 + (i >> 8) > tops[static_cast<std::size_t>(i & 255)])) {
+          continue;
+        }
+        p.increase(Propagator::posOf(origin.pos, i), level, kAllDirections);
       }
-      p.increase(Propagator::posOf(origin.pos, i), level, kAllDirections);
     }
     // And so does the light just outside each face, where it is brighter than the cell it enters
     // could be by itself.

@@ -36,7 +36,7 @@ std::uint8_t Propagator::source(const BlockId* blocks, int mask, const std::int1
   // The top layer of the world is lit from the sky above it, through its own opacity.
   if (y == kMaxY - 1) {
     ++reads;
-    return static_cast<std::uint8_t>(15 - std::max<int>(1, opacity_[blocks[index & mask]]));
+    return topLayerSky(opacity_[blocks[index & mask]]);
   }
   return 0;
 }

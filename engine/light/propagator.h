@@ -14,6 +14,12 @@ inline constexpr std::uint8_t kAllDirections = 0x3F;
 constexpr std::uint8_t allBut(int direction) { return static_cast<std::uint8_t>(kAllDirections & ~(1 << direction)); }
 constexpr int opposite(int direction) { return direction ^ 1; }  // West<->East, Down<->Up, North<->South
 
+// Sky light of a cell in the top layer of the world that is not open sky: lit from above, through
+// its own opacity.
+constexpr std::uint8_t topLayerSky(std::uint8_t opacity) {
+  return static_cast<std::uint8_t>(15 - std::max<int>(1, opacity));
+}
+
 // Steps per Direction of Section::index within a section, and so of a frame position there.
 inline constexpr int kIndexStep[6] = {-1, 1, -256, 256, -16, 16};
 

@@ -90,10 +90,10 @@ struct UninitialisedAllocator : std::allocator<T> {
     ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
   }
 };
-using VertexArray = std::vector<PackedVertex, UninitialisedAllocator<PackedVertex>>;
+using PackedVertices = std::vector<PackedVertex, UninitialisedAllocator<PackedVertex>>;
 
 struct MeshData {
-  VertexArray vertices;  // 4 per quad
+  PackedVertices vertices;  // 4 per quad
   std::size_t quads() const { return vertices.size() / 4; }
 };
 

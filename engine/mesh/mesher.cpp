@@ -176,7 +176,7 @@ class Mesher {
     return static_cast<std::uint32_t>(block4) | static_cast<std::uint32_t>(sky4) << 6 | static_cast<std::uint32_t>(ao) << 12;
   }
   static std::uint32_t uv(int u, int v) { return static_cast<std::uint32_t>(u) | static_cast<std::uint32_t>(v) << 5; }
-  VertexArray& layer(const BlockMeshTable::Entry& e) {
+  PackedVertices& layer(const BlockMeshTable::Entry& e) {
     return mesh_.layers[static_cast<std::size_t>(e.layer)].vertices;
   }
 
@@ -237,26 +237,20 @@ class Mesher {
   }
 
   // Room for one more quad at the end of `out`.
-  static PackedVertex* append4(VertexArray& out) {
+  static PackedVertex* append4(PackedVertices& out) {
     const std::size_t n = out.size();
     out.resize(n + 4);
     return out.data() + n;
   }
 
-  // Appends a quad; `flip` splits it along corners 1-3 instead of 0-2.
-  static void emit(VertexArray& out, const PackedVertex v[4], bool flip) {
-    PackedVertex* q = append4(out);
-    for (int c = 0; c < 4; ++c) q[(c - (flip ? 1 : 0)) & 3] = v[c];
-  }
-
-  void flatQuad(VertexArray& out, const std::array<Vec, 4>& corners32, const BlockMeshTable::Entry& e, int face,
+  void flatQuad(PackedVertices& out, const std::array<Vec, 4>& corners32, const BlockMeshTable::Entry& e, int face,
                 const std::array<std::array<int, 2>, 4>& uvs, std::uint32_t light) {
     PackedVertex v[4];
     for (int c = 0; c < 4; ++c) {
       v[c] = {PackedVertex::packPosition(corners32[c].x, corners32[c].y, corners32[c].z),
               material(e, e.texture[0], face), light, uv(uvs[c][0], uvs[c][1])};
     }
-    emit(out, v, false);
+    std::copy_n(v, 4, append4(out));
   }
 
   std::uint32_t ownLight(int x, int y, int z) const { return light4(blockLight(x, y, z) * 4, skyLight(x, y, z) * 4, 3); }

@@ -14,8 +14,7 @@ int faceGroup(const PackedVertex& v) { return v.face() < 6 ? v.face() : SectionM
 }  // namespace
 
 // A counting sort of the quads by face group; `start` receives each group's first quad.
-const VertexArray& SectionMeshes::groupByFace(const MeshData& data,
-                                                            std::array<GLsizei, kFaceGroups + 1>& start) {
+const PackedVertices& SectionMeshes::groupByFace(const MeshData& data, std::array<GLsizei, kFaceGroups + 1>& start) {
   start.fill(0);
   for (std::size_t q = 0; q < data.quads(); ++q) ++start[static_cast<std::size_t>(faceGroup(data.vertices[q * 4])) + 1];
   for (int g = 0; g < kFaceGroups; ++g) start[static_cast<std::size_t>(g) + 1] += start[static_cast<std::size_t>(g)];
@@ -52,7 +51,7 @@ void SectionMeshes::upload(const SectionMesh& mesh) {
     Layer& layer = section.layers[static_cast<std::size_t>(l)];
     layer.quads = static_cast<GLsizei>(data.quads());
     // Translucent quads keep the mesher's order (blending within a section depends on it): one group.
-    const VertexArray& vertices =
+    const PackedVertices& vertices =
         static_cast<MeshLayer>(l) == MeshLayer::Translucent ? data.vertices : groupByFace(data, layer.groupStart);
     if (static_cast<MeshLayer>(l) == MeshLayer::Translucent) {
       layer.groupStart.fill(layer.quads);

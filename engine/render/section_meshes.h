@@ -54,14 +54,14 @@ class SectionMeshes {
 
  private:
   void ensureIndices(GLsizei quads);
-  const VertexArray& groupByFace(const MeshData& data, std::array<GLsizei, kFaceGroups + 1>& start);
+  const PackedVertices& groupByFace(const MeshData& data, std::array<GLsizei, kFaceGroups + 1>& start);
 
   std::map<SectionPos, Section> sections_;
   gl::VertexArray layout_;
   gl::Buffer indices_;
   GLsizei indexQuads_ = 0;
   std::uint64_t generation_ = 0;
-  VertexArray grouped_;  // reused by upload
+  PackedVertices grouped_;  // reused by upload
   std::map<SectionPos, FaceLinks> links_;  // only sections not linked all round
 };
 

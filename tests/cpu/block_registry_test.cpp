@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include "core/error.h"
+#include "support/error_of.h"
 #include "support/world_support.h"
 
 namespace terrasol {
@@ -41,14 +42,7 @@ TEST(BlockRegistry, ShipsEveryRequiredBlockWithVanillaLightValues) {
   EXPECT_EQ(blocks.opacities().size(), blocks.size());
 }
 
-std::string errorOf(const std::string& json) {
-  try {
-    BlockRegistry::fromJson(json, "test/blocks.json");
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "no error";
-}
+std::string errorOf(const std::string& json) { return testing::errorOf([&] { BlockRegistry::fromJson(json, "test/blocks.json"); }); }
 
 TEST(BlockRegistry, BadDataNamesTheFileBlockAndKey) {
   const std::string air = R"({"name":"air","shape":"none"})";

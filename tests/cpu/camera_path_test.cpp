@@ -8,6 +8,7 @@
 #include <glm/geometric.hpp>
 
 #include "core/error.h"
+#include "support/error_of.h"
 #include "scene/camera_path.h"
 
 namespace terrasol {
@@ -108,14 +109,7 @@ TEST(CameraPath, ScenesParseKeyframesWithDefaultsAndFrameEdits) {
   EXPECT_EQ(scene.edits[0].atFrame, 3);
 }
 
-std::string errorOf(const std::string& json) {
-  try {
-    parseScene(json, "a.json");
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "no error";
-}
+std::string errorOf(const std::string& json) { return testing::errorOf([&] { parseScene(json, "a.json"); }); }
 
 TEST(CameraPath, BadPathsNameTheKey) {
   EXPECT_NE(errorOf(R"({"camera_path": {"keyframes": []}})").find("a.json: camera_path.keyframes: expected a non-empty"),

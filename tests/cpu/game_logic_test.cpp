@@ -14,6 +14,7 @@
 #include "input_script.h"
 #include "player.h"
 #include "settings.h"
+#include "support/error_of.h"
 #include "support/world_support.h"
 #include "targeting.h"
 
@@ -41,16 +42,7 @@ World flatWorld(int radius = 3) {
   return world;
 }
 
-// The message of the Error `f` throws, or "no error".
-template <class F>
-std::string errorOf(F&& f) {
-  try {
-    f();
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "no error";
-}
+using testing::errorOf;
 
 void runTicks(Player& p, const World& w, const MoveInput& in, int ticks) {
   for (int i = 0; i < ticks; ++i) p.tick(w, in);

@@ -11,6 +11,7 @@
 
 #include "assets/gltf_model.h"
 #include "core/error.h"
+#include "support/error_of.h"
 #include "support/world_support.h"
 
 namespace terrasol {
@@ -18,14 +19,7 @@ namespace {
 
 const std::filesystem::path kModels = std::filesystem::path(TERRASOL_SOURCE_DIR) / ".." / "shared" / "testdata" / "gltf";
 
-std::string errorOf(const std::filesystem::path& file) {
-  try {
-    loadModel(file);
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "no error";
-}
+std::string errorOf(const std::filesystem::path& file) { return testing::errorOf([&] { loadModel(file); }); }
 
 // A copy of a sample's folder to break one thing in.
 std::filesystem::path copyOf(const std::string& sample, const std::string& name) {

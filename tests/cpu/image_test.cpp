@@ -4,6 +4,7 @@
 
 #include "assets/image.h"
 #include "core/error.h"
+#include "support/error_of.h"
 #include "support/golden.h"
 
 namespace terrasol {
@@ -22,14 +23,7 @@ Image gradient(int w, int h) {
   return image;
 }
 
-std::string errorOf(const std::filesystem::path& file) {
-  try {
-    loadImage(file);
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "no error";
-}
+std::string errorOf(const std::filesystem::path& file) { return testing::errorOf([&] { loadImage(file); }); }
 
 TEST(Image, PngRoundTripIsExact) {
   const Image image = gradient(37, 21);

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "core/error.h"
+#include "support/error_of.h"
 #include "scene/scene_world.h"
 #include "support/world_support.h"
 
@@ -15,14 +16,7 @@ namespace {
 
 using testing::defaultBlocks;
 
-std::string errorOf(const std::string& json) {
-  try {
-    parseScene(json, "scenes/a.json");
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "no error";
-}
+std::string errorOf(const std::string& json) { return testing::errorOf([&] { parseScene(json, "scenes/a.json"); }); }
 
 TEST(SceneProps, ParseWithDefaultsAndPathsBesideTheScene) {
   const SceneFile scene = parseScene(R"({ "props": [

@@ -5,6 +5,7 @@
 #include <fstream>
 
 #include "core/error.h"
+#include "support/error_of.h"
 #include "core/paths.h"
 #include "support/world_support.h"
 
@@ -13,14 +14,7 @@ namespace {
 
 constexpr const char* kFile = "scenes/a.json";
 
-std::string errorOf(const std::string& json, const std::filesystem::path& file = kFile) {
-  try {
-    parseScene(json, file);
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "no error";
-}
+std::string errorOf(const std::string& json, const std::filesystem::path& file = kFile) { return testing::errorOf([&] { parseScene(json, file); }); }
 
 // The message must contain `part`, typically "scenes/a.json: <key path>: <what>".
 ::testing::AssertionResult failsWith(const std::string& json, const std::string& part) {

@@ -4,19 +4,13 @@
 #include "assets/shader_source.h"
 #include "support/memory_shaders.h"
 #include "core/error.h"
+#include "support/error_of.h"
 #include "core/paths.h"
 
 namespace terrasol {
 namespace {
 
-std::string errorOf(const ShaderPreprocessor& pre, const std::string& file) {
-  try {
-    pre.process(file);
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "no error";
-}
+std::string errorOf(const ShaderPreprocessor& pre, const std::string& file) { return testing::errorOf([&] { pre.process(file); }); }
 
 TEST(ShaderPreprocessor, InjectsDefinesRightAfterVersion) {
   const auto pre = testing::memoryShaders({{"a.frag", "// header\n#version 450 core\nvoid main() {}\n"}});

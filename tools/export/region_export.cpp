@@ -98,7 +98,7 @@ ExportStats exportRegion(const std::vector<SectionMesh>& meshes, const Region& r
   ExportStats stats;
   for (const SectionMesh& mesh : meshes) {
     for (int l = 0; l < kMeshLayers; ++l) {
-      const VertexArray& v = mesh.layers[static_cast<std::size_t>(l)].vertices;
+      const PackedVertices& v = mesh.layers[static_cast<std::size_t>(l)].vertices;
       LayerData& out = layers[l];
       for (std::size_t q = 0; q + 3 < v.size(); q += 4) {
         if (!region.contains(quadBlock(mesh.pos, &v[q]))) continue;
