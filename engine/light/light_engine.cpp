@@ -3,7 +3,9 @@
 #include <algorithm>
 
 #include "light/light_frame.h"
+#include "light/nibble_words.h"
 #include "light/propagator.h"
+#include "light/section_solver.h"
 
 namespace terrasol {
 
@@ -101,7 +103,8 @@ LightEngine::LightEngine(World& world)
     : world_(world),
       opacity_(world.blocks().opacities().data()),
       emission_(world.blocks().emissions().data()),
-      frame_(std::make_unique<light::LightFrame>()) {}
+      frame_(std::make_unique<light::LightFrame>()),
+      solver_(std::make_unique<light::SectionSolver>()) {}
 
 LightEngine::~LightEngine() = default;
 
@@ -315,78 +318,163 @@ void LightEngine::seedSkyColumn(light::Propagator& p, const BlockPos& at, int ol
   }
 }
 
-// The levels a section's cells have by themselves: their emission, or the open sky column's 15 (and
-// the top layer of the world, lit from the sky above through its own opacity).
-NibbleArray::Bytes LightEngine::ownLevels(const Chunk& chunk, int section, LightChannel channel) const {
-  NibbleArray::Bytes levels{};
+// The levels a section's cells have by themselves, a byte each: their emission, or the open sky
+// column's 15 (and the top layer of the world, lit from the sky above through its own opacity).
+void LightEngine::ownLevels(const Chunk& chunk, int section, LightChannel channel, std::uint8_t* levels) const {
   const Section& blocks = chunk.section(section);
   if (channel == LightChannel::Block) {
-    if (chunk.light().emitters[static_cast<std::size_t>(section)] == 0) return levels;
-    for (int i = 0; i < Section::kVolume; ++i) NibbleArray::set(levels.data(), i, emission_[blocks.at(i)]);
-    return levels;
+    if (chunk.light().emitters[static_cast<std::size_t>(section)] == 0) {
+      std::fill(levels, levels + Section::kVolume, 0);
+      return;
+    }
+    for (int i = 0; i < Section::kVolume; ++i) levels[i] = emission_[blocks.at(i)];
+    return;
   }
   const auto& tops = chunk.light().skyTop;
   const int y0 = kMinY + section * 16;
   for (int ly = 0; ly < 16; ++ly) {
     const int y = y0 + ly;
-    for (int column = 0; column < 256; ++column) {
-      std::uint8_t level = y > tops[static_cast<std::size_t>(column)] ? 15 : 0;
-      if (level == 0 && y == kMaxY - 1) level = light::topLayerSky(opacity_[blocks.at(ly * 256 + column)]);
-      if (level) NibbleArray::set(levels.data(), ly * 256 + column, level);
-    }
+    for (std::size_t column = 0; column < 256; ++column) levels[ly * 256 + column] = y > tops[column] ? 15 : 0;
   }
-  return levels;
+  if (y0 + 15 != kMaxY - 1) return;
+  for (int column = 0; column < 256; ++column) {
+    std::uint8_t& level = levels[15 * 256 + column];
+    if (level == 0) level = light::topLayerSky(opacity_[blocks.at(15 * 256 + column)]);
+  }
 }
 
+namespace {
+
+NibbleArray::Bytes packLevels(const light::SectionSolver::Levels& levels) {
+  NibbleArray::Bytes bytes;
+  for (std::size_t b = 0; b < bytes.size(); ++b) {
+    bytes[b] = static_cast<std::uint8_t>(levels[2 * b] | levels[2 * b + 1] << 4);
+  }
+  return bytes;
+}
+
+// True when a cell on the section's faces would get less light than `old` gives it.
+bool faceLosesLight(const std::uint8_t* old, const NibbleArray::Bytes& levels) {
+  for (int w = 0; w < light::kNibbleWords; ++w) {
+    if (light::lowerNibbles(light::nibbleWord(old, w), light::nibbleWord(levels.data(), w)) &
+        light::kFaceNibbles[static_cast<std::size_t>(w)]) {
+      return true;
+    }
+  }
+  return false;
+}
+
+// Calls fn(index) for each cell of a section whose own level (`levels`) must spread: emitters, and
+// open-sky cells up to the highest neighbouring column top (spreadTops); the rest of the open sky only
+// has 15s around it.
+template <class Fn>
+void forSources(const std::uint8_t* levels, LightChannel channel, bool emitters, const std::array<int, 256>& tops,
+                const std::array<std::int16_t, 256>& skyTop, int y0, Fn&& fn) {
+  if (channel == LightChannel::Block) {
+    if (!emitters) return;
+    for (int i = 0; i < Section::kVolume; ++i) {
+      if (levels[i] > 1) fn(i);
+    }
+    return;
+  }
+  for (int column = 0; column < 256; ++column) {
+    const int lo = std::max<int>(skyTop[static_cast<std::size_t>(column)] + 1, y0);
+    const int hi = std::min(tops[static_cast<std::size_t>(column)], y0 + 15);
+    for (int y = lo; y <= hi; ++y) fn((y - y0) * 256 + column);
+  }
+  if (y0 + 15 != kMaxY - 1) return;
+  for (int i = 15 * 256; i < Section::kVolume; ++i) {
+    if (levels[i] > 1 && levels[i] < 15) fn(i);  // the top layer under the sky (topLayerSky)
+  }
+}
+
+}  // namespace
+
+// The section's light is solved in bytes, from its own sources and the light around it
+// (SectionSolver), then written whole. Light leaving through a face that got brighter spreads on
+// outside. If a face cell got darker, light outside may have come from it, and the solver took some
+// of that back in: then the section is relit the general way instead.
 void LightEngine::relightSection(const SectionPos& s) {
   Chunk* chunk = world_.chunk({s.x, s.z});
   if (!chunk || !chunk->light().lit || s.section < 0 || s.section >= kSectionCount) return;
   const int x0 = s.x * 16, y0 = kMinY + s.section * 16, z0 = s.z * 16;
   const auto tops = spreadTops(world_, *chunk);
   const light::ChunkWindow window(world_, {s.x - kReach, s.z - kReach}, {s.x + kReach, s.z + kReach});
+  const Section& blocks = chunk->section(s.section);
+  const BlockId uniform = blocks.uniformBlock();
+  light::SectionSolver& solver = *solver_;
+  solver.begin(blocks.blocks() ? blocks.blocks()->data() : &uniform, blocks.blocks() ? Section::kVolume - 1 : 0,
+               opacity_);
   for (const LightChannel channel : {LightChannel::Block, LightChannel::Sky}) {
-    const NibbleArray::Bytes own = ownLevels(*chunk, s.section, channel);
     Propagator p(*frame_, window, channel, opacity_, emission_, decrease_, increase_, stats_, changed_);
     Cell origin;
     p.locate(x0, y0, z0, origin);
-    // Every cell gets its own level; light that left the section through a face cell that lost some
-    // is removed outside.
-    p.replaceLevels(*origin.ref, origin.pos, own);
-    // Then every source inside offers its light again, so cells that were too dark fill up. Open-sky
-    // cells above the neighbouring columns only have 15s around them and are left out.
-    const bool sources = channel == LightChannel::Sky || chunk->light().emitters[static_cast<std::size_t>(s.section)];
-    if (sources) {
-      for (int i = 0; i < Section::kVolume; ++i) {
-        const std::uint8_t level = NibbleArray::get(own.data(), i);
-        if (level <= 1 || (channel == LightChannel::Sky && level == 15 && y0 + (i >> 8) > tops[static_cast<std::size_t>(i & 255)])) {
-          continue;
-        }
-        p.increase(Propagator::posOf(origin.pos, i), level, kAllDirections);
-      }
-    }
-    // And so does the light just outside each face, where it is brighter than the cell it enters
-    // could be by itself.
+    Cell beyond[6];  // each neighbouring section's cell 0; ref null where not loaded
     for (int d = 0; d < 6; ++d) {
       const BlockPos& o = kDirectionOffsets[d];
-      Cell beyond;  // the neighbouring section's cell 0
-      if (!p.locate(x0 + o.x * 16, y0 + o.y * 16, z0 + o.z * 16, beyond)) continue;
-      const SectionRef& n = *beyond.ref;
-      const auto toward = static_cast<std::uint8_t>(1 << light::opposite(d));
-      for (int a = 0; a < 16; ++a)
-        for (int b = 0; b < 16; ++b) {
-          // The face cell next to ours: the far layer of the neighbour along the axis of d.
-          const int lx = d == 0 ? 15 : d == 1 ? 0 : a, ly = d == 2 ? 15 : d == 3 ? 0 : (d < 2 ? a : b);
-          const int lz = d == 4 ? 15 : d == 5 ? 0 : b;
-          const int index = Section::index(lx, ly, lz);
-          const std::uint8_t level = Propagator::light(n, index);
-          const int ours = Section::index(d == 0 ? 0 : d == 1 ? 15 : lx, d == 2 ? 0 : d == 3 ? 15 : ly,
-                                          d == 4 ? 0 : d == 5 ? 15 : lz);
-          if (level > 1 && NibbleArray::get(own.data(), ours) + 1 < level) {
-            p.increase(Propagator::posOf(beyond.pos, index), level, toward);
+      if (!p.locate(x0 + o.x * 16, y0 + o.y * 16, z0 + o.z * 16, beyond[d])) beyond[d].ref = nullptr;
+    }
+
+    // Every source offers its light. Open-sky cells above the neighbouring columns only have 15s
+    // around them and are left out.
+    auto& levels = solver.levels();
+    ownLevels(*chunk, s.section, channel, levels.data());
+    const bool emitters = chunk->light().emitters[static_cast<std::size_t>(s.section)] > 0;
+    forSources(levels.data(), channel, emitters, tops, chunk->light().skyTop, y0, [&](int i) { solver.seed(i); });
+    for (int d = 0; d < 6; ++d) {
+      if (!beyond[d].ref) continue;
+      const NibbleArray& n = *beyond[d].ref->layer;
+      if (n.isUniform() && n.uniformLevel() <= 1) continue;
+      for (const light::FaceCell& c : light::kFaceCells[static_cast<std::size_t>(d)]) solver.offer(c.ours, n.get(c.theirs));
+    }
+    solver.solve();
+
+    const NibbleArray::Bytes solved = packLevels(levels);
+    light::SectionRef& r = *origin.ref;
+    if (std::equal(solved.begin(), solved.end(), r.light)) continue;  // nothing to write
+    if (faceLosesLight(r.light, solved)) {
+      relightGeneral(p, *chunk, s, origin, beyond, tops, channel);
+    } else {
+      // Face cells light the cells beyond them where those are darker.
+      p.replaceLevels(r, origin.pos, solved);
+      for (int d = 0; d < 6; ++d) {
+        if (!beyond[d].ref) continue;
+        const NibbleArray& n = *beyond[d].ref->layer;
+        if (n.isUniform() && n.uniformLevel() >= 14) continue;
+        for (const light::FaceCell& c : light::kFaceCells[static_cast<std::size_t>(d)]) {
+          const std::uint8_t level = levels[c.ours];
+          if (level > 1 && n.get(c.theirs) + 1 < level) {
+            p.increase(Propagator::posOf(origin.pos, c.ours), level, static_cast<std::uint8_t>(1 << d));
           }
         }
+      }
     }
     p.run();
+  }
+  stats_.blockReads += solver.reads();
+}
+
+// Every cell gets its own level; light that left the section through a face cell that lost some is
+// removed outside. Then every source inside and the light just outside each face offer their light
+// again, through the general flood fill, which crosses the faces both ways.
+void LightEngine::relightGeneral(light::Propagator& p, const Chunk& chunk, const SectionPos& s, const Cell& origin,
+                                 const Cell* beyond, const std::array<int, 256>& tops, LightChannel channel) {
+  const int y0 = kMinY + s.section * 16;
+  auto& levels = solver_->levels();
+  ownLevels(chunk, s.section, channel, levels.data());
+  p.replaceLevels(*origin.ref, origin.pos, packLevels(levels));
+  const bool emitters = chunk.light().emitters[static_cast<std::size_t>(s.section)] > 0;
+  forSources(levels.data(), channel, emitters, tops, chunk.light().skyTop, y0, [&](int i) {
+    p.increase(Propagator::posOf(origin.pos, i), levels[static_cast<std::size_t>(i)], kAllDirections);
+  });
+  for (int d = 0; d < 6; ++d) {
+    if (!beyond[d].ref) continue;
+    const light::SectionRef& n = *beyond[d].ref;
+    const auto toward = static_cast<std::uint8_t>(1 << light::opposite(d));
+    for (const light::FaceCell& c : light::kFaceCells[static_cast<std::size_t>(d)]) {
+      const std::uint8_t level = Propagator::light(n, c.theirs);
+      if (level > 1 && levels[c.ours] + 1 < level) p.increase(Propagator::posOf(beyond[d].pos, c.theirs), level, toward);
+    }
   }
 }
 

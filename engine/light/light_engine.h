@@ -10,6 +10,7 @@
 // carries its level and the directions still to visit (Starlight's method). Main thread only, like
 // the World it lights.
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <unordered_set>
@@ -22,6 +23,8 @@ namespace terrasol {
 namespace light {
 class LightFrame;
 class Propagator;
+class SectionSolver;
+struct Cell;
 }  // namespace light
 
 enum class LightChannel : std::uint8_t { Block, Sky };
@@ -71,7 +74,9 @@ class LightEngine {
   int updateSkyTop(Chunk& chunk, const BlockChange& change);
   void seedChangedCell(light::Propagator& p, const BlockPos& at);
   void seedSkyColumn(light::Propagator& p, const BlockPos& at, int oldTop, int newTop);
-  NibbleArray::Bytes ownLevels(const Chunk& chunk, int section, LightChannel channel) const;
+  void ownLevels(const Chunk& chunk, int section, LightChannel channel, std::uint8_t* levels) const;
+  void relightGeneral(light::Propagator& p, const Chunk& chunk, const SectionPos& s, const light::Cell& origin,
+                      const light::Cell* beyond, const std::array<int, 256>& tops, LightChannel channel);
 
   World& world_;
   const std::uint8_t* opacity_;
@@ -79,6 +84,7 @@ class LightEngine {
   LightStats stats_;
   std::vector<Entry> decrease_, increase_;  // reused between updates
   std::unique_ptr<light::LightFrame> frame_;  // likewise
+  std::unique_ptr<light::SectionSolver> solver_;  // likewise
   std::unordered_set<std::uint64_t> changed_;
 };
 

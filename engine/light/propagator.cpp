@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <bit>
 
+#include "light/nibble_words.h"
+
 namespace terrasol::light {
 
 Propagator::Propagator(LightFrame& frame, const ChunkWindow& window, LightChannel channel, const std::uint8_t* opacity,
@@ -43,19 +45,27 @@ std::uint8_t Propagator::source(const BlockId* blocks, int mask, const std::int1
 
 void Propagator::replaceLevels(SectionRef& r, std::uint32_t origin, const NibbleArray::Bytes& levels) {
   const std::uint8_t* old = r.light;
-  if (std::equal(levels.begin(), levels.end(), old)) return;
   Cursor c(r);
-  for (int b = 0; b < NibbleArray::kBytes; ++b) {
-    if (old[b] == levels[static_cast<std::size_t>(b)]) continue;
-    for (const int i : {2 * b, 2 * b + 1}) {
-      const std::uint8_t before = NibbleArray::get(old, i), after = NibbleArray::get(levels.data(), i);
-      if (before == after) continue;
-      ++lightWrites_;
+  int writes = 0;
+  for (int w = 0; w < kNibbleWords; ++w) {
+    const std::uint64_t before = nibbleWord(old, w), after = nibbleWord(levels.data(), w);
+    if (before == after) continue;
+    const std::uint64_t changed = changedNibbles(before, after);
+    writes += std::popcount(changed);
+    c.marks |= 0x80;
+    // Changed face cells change the halos beyond them; those that lost light may have lit cells there.
+    const std::uint64_t lost = lowerNibbles(before, after);
+    for (std::uint64_t face = changed & kFaceNibbles[static_cast<std::size_t>(w)]; face != 0; face &= face - 1) {
+      const int k = std::countr_zero(face), i = w * 16 + k / 4;
       c.marks |= kFaceMarks[static_cast<std::size_t>(i)];
-      const auto outward = static_cast<std::uint8_t>(kFaceMarks[static_cast<std::size_t>(i)] & kAllDirections);
-      if (outward && before > after) decrease(posOf(origin, i), before, outward);
+      if (lost >> k & 1) {
+        decrease(posOf(origin, i), static_cast<std::uint8_t>(before >> k & 15),
+                 static_cast<std::uint8_t>(kFaceMarks[static_cast<std::size_t>(i)] & kAllDirections));
+      }
     }
   }
+  if (writes == 0) return;
+  lightWrites_ += static_cast<std::uint64_t>(writes);
   // One copy: `old` is read above before the section may take its own bytes.
   if (!c.write) c.bytes = c.write = r.layer->writableBytes();
   std::copy(levels.begin(), levels.end(), c.write);

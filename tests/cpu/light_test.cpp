@@ -4,6 +4,7 @@
 #include <random>
 
 #include "light/light_engine.h"
+#include "light/nibble_words.h"
 
 #include <chrono>
 #include <thread>
@@ -226,6 +227,53 @@ TEST(Light, RelightingASectionRepairsItAndChangesNothingCorrect) {
   EXPECT_NE(compareWithReference(w.world), "");
   w.light.relightSection(section);
   EXPECT_EQ(compareWithReference(w.world), "");
+}
+
+// relightSection solves the section on its own, then checks its faces: a section relit from darkness
+// only gains light (the solved levels are written as they are), a section that held light it cannot
+// have had may have lit its neighbours with it (it is relit the general way, which removes that).
+TEST(Light, RelightingASectionFromDarknessOrFromLightThatIsGoneMatchesAFullRecompute) {
+  LitWorld w("terrain");
+  w.loadArea(-1, -1, 1, 1);
+  const int surface = w.gen->surfaceHeight(8, 8);
+  w.set({0, surface + 2, 7}, "glowstone");  // on the section's west face: its light leaves the chunk
+  w.set({15, surface - 3, 15}, "torch");
+  Chunk& chunk = *w.world.chunk({0, 0});
+  for (const int section : {sectionOf(surface) - 1, sectionOf(surface), sectionOf(surface) + 1}) {
+    chunk.light().block[static_cast<std::size_t>(section)].fill(0);
+    chunk.light().sky[static_cast<std::size_t>(section)].fill(0);
+    w.light.relightSection({0, section, 0});
+    EXPECT_EQ(compareWithReference(w.world), "") << "section " << section << " relit from darkness";
+  }
+  // Torches go without the light engine hearing of it; their light, in this section and beyond, goes
+  // with the relight.
+  std::mt19937 rng(7);
+  std::uniform_int_distribution<int> coord(0, 15), height(surface - 12, surface + 12);
+  std::vector<BlockPos> torches;
+  for (int i = 0; i < 24; ++i) {
+    const BlockPos at{coord(rng), height(rng), coord(rng)};
+    if (w.world.getBlock(at) != kAir) continue;
+    w.set(at, "torch");
+    torches.push_back(at);
+  }
+  ASSERT_GT(torches.size(), 8u);
+  for (const BlockPos& at : torches) {
+    ASSERT_TRUE(w.world.setBlock(at, kAir));
+    w.light.relightSection({0, sectionOf(at.y), 0});
+    ASSERT_EQ(compareWithReference(w.world), "") << "after removing the torch at " << at.x << " " << at.y << " " << at.z;
+  }
+}
+
+TEST(Light, NibbleWordsCompareEveryPairOfLevels) {
+  for (int a = 0; a < 16; ++a)
+    for (int b = 0; b < 16; ++b)
+      for (const int k : {0, 1, 6, 15}) {
+        const std::uint64_t before = static_cast<std::uint64_t>(a) << (4 * k) | 0x0000000550000000,
+                            after = static_cast<std::uint64_t>(b) << (4 * k) | 0x0000000550000000;
+        const std::uint64_t bit = std::uint64_t{1} << (4 * k);
+        EXPECT_EQ(light::lowerNibbles(before, after), b < a ? bit : 0) << a << " -> " << b << " in cell " << k;
+        EXPECT_EQ(light::changedNibbles(before, after), a != b ? bit : 0) << a << " -> " << b << " in cell " << k;
+      }
 }
 
 // The streamer tells the light engine before it removes a chunk and after it adds one, so light stays

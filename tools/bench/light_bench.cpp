@@ -69,15 +69,30 @@ void BM_LightGlowstoneOpenAir(benchmark::State& state) {
 }
 BENCHMARK(BM_LightGlowstoneOpenAir)->UseManualTime()->Unit(benchmark::kMicrosecond);
 
-// Relighting from scratch the section of a terrain chunk that holds the ground surface.
+// Relighting from scratch the section of a terrain chunk that holds the ground surface. Its light is
+// cleared before each run (untimed), so every level must be found and written again.
 void BM_LightFullRelight(benchmark::State& state) {
   Scene scene("terrain");
   const int surface = scene.gen->surfaceHeight(8, 8);
   const SectionPos section{0, sectionOf(surface), 0};
-  timed(state, scene, [&] { scene.light.relightSection(section); }, [] {});
+  ChunkLight& light = scene.world.chunk({0, 0})->light();
+  auto clear = [&] {
+    light.block[static_cast<std::size_t>(section.section)].fill(0);
+    light.sky[static_cast<std::size_t>(section.section)].fill(0);
+  };
+  clear();
+  timed(state, scene, [&] { scene.light.relightSection(section); }, clear);
   state.counters["surface_y"] = surface;
 }
 BENCHMARK(BM_LightFullRelight)->UseManualTime()->Unit(benchmark::kMicrosecond);
+
+// The same section relit while its light is right: every level is found again, nothing is written.
+void BM_LightRelightUnchanged(benchmark::State& state) {
+  Scene scene("terrain");
+  const SectionPos section{0, sectionOf(scene.gen->surfaceHeight(8, 8)), 0};
+  timed(state, scene, [&] { scene.light.relightSection(section); }, [] {});
+}
+BENCHMARK(BM_LightRelightUnchanged)->UseManualTime()->Unit(benchmark::kMicrosecond);
 
 // Lighting a whole terrain chunk as it loads, next to lit neighbours.
 void BM_LightChunkLoad(benchmark::State& state) {
