@@ -80,29 +80,28 @@ void copyRun(const Chunk* chunk, int y, int z, int x0, int count, const std::uin
     if (count == 16) {
       std::copy_n(dense->data() + first, 16, &out.blocks[d]);  // a constant size: inlined
     } else {
-      out.blocks[d] = (*dense)[static_cast<std::size_t>(first)];
+      for (int i = 0; i < count; ++i) out.blocks[d + static_cast<std::size_t>(i)] = (*dense)[static_cast<std::size_t>(first + i)];
     }
   } else {
     std::fill_n(&out.blocks[d], count, section.uniformBlock());
   }
   std::uint8_t* opaque = &out.opaque[d];
   for (int i = 0; i < count; ++i) opaque[i] = opaqueCube[out.blocks[d + static_cast<std::size_t>(i)]];
-  // Light as both channels' bytes, branch-free: an opaque cell's term is masked to 0.
+  // An unlit chunk reads as dark bytes, so the loops below need no test per cell.
   static constexpr NibbleArray::Bytes kDark{};
   const ChunkLight& light = chunk->light();
   const std::uint8_t* block = light.lit ? light.block[static_cast<std::size_t>(s)].bytes() : kDark.data();
   const std::uint8_t* sky = light.lit ? light.sky[static_cast<std::size_t>(s)].bytes() : kDark.data();
   std::uint32_t* terms = &out.light[d];
-  auto term = [&](int i, unsigned blockLevel, unsigned skyLevel) {
-    terms[i] = (SectionSnapshot::kOpen | blockLevel | skyLevel << 9) & (static_cast<std::uint32_t>(opaque[i]) - 1);
-  };
 #if defined(__SSE2__)
   if (count == 16) {  // a whole row, starting on a byte: sixteen terms in a few vector steps
     lightRow(block + first / 2, sky + first / 2, opaque, terms);
     return;
   }
 #endif
-  for (int i = 0; i < count; ++i) term(i, NibbleArray::get(block, first + i), NibbleArray::get(sky, first + i));
+  for (int i = 0; i < count; ++i) {
+    terms[i] = SectionSnapshot::lightTerm(opaque[i], NibbleArray::get(block, first + i), NibbleArray::get(sky, first + i));
+  }
 }
 
 }  // namespace
