@@ -18,8 +18,9 @@ namespace terrasol {
 //   position: x | y << 10 | z << 20, in 1/32 block from the section's minimum corner (0..512 each)
 //   material: texture id (16 bits) | face (4 bits) << 16 | tint (2 bits) << 20
 //             face 0..5 = Direction (normal along an axis), 6..9 = the diagonal planes of cross plants
-//   light:    block light x4 (6 bits) | sky light x4 (6 bits) << 6 | ambient occlusion 0..3 (2 bits) << 12
-//             (smooth light averages four cells, so quarter levels are kept: 0..60)
+//   light:    block light sum (6 bits) | sky light sum (6 bits) << 6 | ambient occlusion 0..3 (2 bits) << 12
+//             smooth light sums the open cells among the four around a corner, and there are always
+//             ao + 1 of them (see the mesher), so the shader divides by that: sums are 0..60
 //   uv:       u | v << 5, in 1/16 of the texture (0..16), v = 0 at the texture's top row
 struct PackedVertex {
   std::uint32_t position;
@@ -37,9 +38,11 @@ struct PackedVertex {
   int texture() const { return static_cast<int>(material & 0xFFFF); }
   int face() const { return static_cast<int>((material >> 16) & 15); }
   int tint() const { return static_cast<int>((material >> 20) & 3); }
-  int blockLight4() const { return static_cast<int>(light & 63); }
-  int skyLight4() const { return static_cast<int>((light >> 6) & 63); }
   int ao() const { return static_cast<int>((light >> 12) & 3); }
+  int cellsLit() const { return ao() + 1; }  // how many cells the light sums add up
+  // The averages x4, rounded: 0..60.
+  int blockLight4() const { return (static_cast<int>(light & 63) * 4 + cellsLit() / 2) / cellsLit(); }
+  int skyLight4() const { return (static_cast<int>((light >> 6) & 63) * 4 + cellsLit() / 2) / cellsLit(); }
   int u() const { return static_cast<int>(uv & 31); }
   int v() const { return static_cast<int>((uv >> 5) & 31); }
   friend bool operator==(const PackedVertex&, const PackedVertex&) = default;

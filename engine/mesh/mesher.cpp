@@ -42,30 +42,6 @@ constexpr auto kNeighbour = [] {
   return steps;
 }();
 
-// Rounded average x4 of the light levels in one channel of a sum of SectionSnapshot::lightTerm:
-// index count << 6 | sum (count 1..4).
-constexpr auto kAverage4 = [] {
-  std::array<std::uint8_t, 512> table{};
-  for (int count = 1; count <= 4; ++count)
-    for (int sum = 0; sum <= 60; ++sum) table[static_cast<std::size_t>(count << 6 | sum)] = static_cast<std::uint8_t>((sum * 4 + count / 2) / count);
-  return table;
-}();
-
-// Per corner, by which of its cells are opaque (bit 0: side 1, bit 1: side 2, bit 2: diagonal): its
-// ambient occlusion, and a mask that leaves the diagonal out of the light when both sides are opaque.
-struct CornerShade {
-  std::uint32_t ao, diagonal;
-};
-constexpr auto kShade = [] {
-  std::array<CornerShade, 8> table{};
-  for (unsigned bits = 0; bits < 8; ++bits) {
-    const unsigned side1 = bits & 1, side2 = bits >> 1 & 1, corner = bits >> 2 & 1;
-    const bool both = side1 && side2;
-    table[bits] = {both ? 0 : 3 - (side1 + side2 + corner), both ? 0u : ~0u};
-  }
-  return table;
-}();
-
 // Per face and corner: snapshot index offsets (from the cell in front of the face) of the two cells
 // beside the corner and the diagonal one, the corner's position within its block (1/32) and its UV.
 struct CornerCells {
@@ -169,12 +145,7 @@ class Mesher {
 
   BlockId block(int x, int y, int z) const { return s_.blocks[static_cast<std::size_t>(SectionSnapshot::index(x, y, z))]; }
   bool opaqueAt(int i) const { return s_.opaque[static_cast<std::size_t>(i)] != 0; }
-  int blockLight(int x, int y, int z) const { return s_.blockLight(SectionSnapshot::index(x, y, z)); }
-  int skyLight(int x, int y, int z) const { return s_.skyLight(SectionSnapshot::index(x, y, z)); }
 
-  static std::uint32_t light4(int block4, int sky4, int ao) {
-    return static_cast<std::uint32_t>(block4) | static_cast<std::uint32_t>(sky4) << 6 | static_cast<std::uint32_t>(ao) << 12;
-  }
   static std::uint32_t uv(int u, int v) { return static_cast<std::uint32_t>(u) | static_cast<std::uint32_t>(v) << 5; }
   PackedVertices& layer(const BlockMeshTable::Entry& e) {
     return mesh_.layers[static_cast<std::size_t>(e.layer)].vertices;
@@ -212,27 +183,37 @@ class Mesher {
   template <int D>
   void face(int x, int y, int z, const BlockMeshTable::Entry& e, int top32, int front) {
     const std::uint32_t* light = s_.light.data() + front;
-    // The front cell always counts (the face is visible, so it is not opaque).
-    const std::uint32_t own = light[0];
-    std::uint32_t sum[4], ao[4];
+    // Each corner sums the light terms of the four cells around it in front of the face: the front
+    // cell always counts (the face is visible, so it is not opaque), an opaque cell adds 0, and the
+    // diagonal is left out when both sides are opaque. The open cells then number exactly ao + 1
+    // (3 - opaque ones, or 1 when both sides are walled), so the sum less one count is the vertex's
+    // light field: both sums, and the count less one as its ambient occlusion.
+    const std::uint32_t own = light[0] - SectionSnapshot::kOpen;
+    std::uint32_t corner[4];
     for (int c = 0; c < 4; ++c) {
       const CornerCells& k = kCorners[D][c];
       const std::uint32_t t1 = light[k.side1], t2 = light[k.side2], t3 = light[k.diagonal];
-      const CornerShade& shade = kShade[(t1 == 0) | (t2 == 0) << 1 | (t3 == 0) << 2];
-      ao[c] = shade.ao;
-      sum[c] = own + t1 + t2 + (t3 & shade.diagonal);  // opaque cells add 0
+      corner[c] = own + t1 + t2 + ((t1 | t2) != 0 ? t3 : 0);
     }
-    // Split along the diagonal whose corners are the brighter pair: corners 1-3 instead of 0-2.
-    const int first = ao[0] + ao[2] < ao[1] + ao[3] ? 1 : 0;
     const std::uint32_t base = PackedVertex::packPosition(x * 32, y * 32, z * 32);
     const std::uint32_t lowered = static_cast<std::uint32_t>(32 - top32) << 10;
-    const std::uint32_t mat = e.material[D];
     PackedVertex* q = append4(layer(e));
-    for (int c = 0; c < 4; ++c) {
+    // Split along the diagonal whose corners are the brighter pair: corners 1-3 instead of 0-2.
+    if ((corner[0] >> 12) + (corner[2] >> 12) < (corner[1] >> 12) + (corner[3] >> 12)) {
+      quad<D, 1>(q, base, lowered, e.material[D], corner);
+    } else {
+      quad<D, 0>(q, base, lowered, e.material[D], corner);
+    }
+  }
+
+  // The four vertices of a face, starting at corner First (which picks the quad's diagonal).
+  template <int D, int First>
+  static void quad(PackedVertex* q, std::uint32_t base, std::uint32_t lowered, std::uint32_t material,
+                   const std::uint32_t (&light)[4]) {
+    for (int i = 0; i < 4; ++i) {
+      const int c = (i + First) & 3;
       const CornerCells& k = kCorners[D][c];
-      q[(c - first) & 3] = {base + k.position - (k.top ? lowered : 0), mat,
-                            kAverage4[sum[c] & 511] | static_cast<std::uint32_t>(kAverage4[sum[c] >> 9 & 511]) << 6 | ao[c] << 12,
-                            k.uv};
+      q[i] = {base + k.position - (k.top ? lowered : 0), material, light[c], k.uv};
     }
   }
 
@@ -253,7 +234,11 @@ class Mesher {
     std::copy_n(v, 4, append4(out));
   }
 
-  std::uint32_t ownLight(int x, int y, int z) const { return light4(blockLight(x, y, z) * 4, skyLight(x, y, z) * 4, 3); }
+  // A plant or torch is lit by its own cell, as a face corner with four open cells of that light.
+  std::uint32_t ownLight(int x, int y, int z) const {
+    const std::uint32_t term = s_.light[static_cast<std::size_t>(SectionSnapshot::index(x, y, z))];
+    return term * 4 - SectionSnapshot::kOpen;
+  }
 
   // Two diagonal planes, each seen from both sides (faces 6..9).
   void cross(int x, int y, int z, const BlockMeshTable::Entry& e) {

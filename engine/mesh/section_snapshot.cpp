@@ -39,7 +39,7 @@ bool buried(const World& world, const Chunk& chunk, SectionPos pos) {
 
 #if defined(__SSE2__)
 // Sixteen light terms (SectionSnapshot::lightTerm) from eight bytes of each channel's nibbles and
-// sixteen 0/1 opaque flags. Every term fits in 16 bits (kOpen is bits 6 and 15), so the sum is
+// sixteen 0/1 opaque flags. Every term fits in 16 bits (kOpen is bit 12), so the sum is
 // built in 16-bit lanes and widened at the end.
 void lightRow(const std::uint8_t* block, const std::uint8_t* sky, const std::uint8_t* opaque, std::uint32_t* out) {
   const __m128i low = _mm_set1_epi8(15);
@@ -51,7 +51,7 @@ void lightRow(const std::uint8_t* block, const std::uint8_t* sky, const std::uin
   const __m128i open = _mm_cmpeq_epi8(_mm_loadu_si128(reinterpret_cast<const __m128i*>(opaque)), zero);
   const __m128i kOpen = _mm_set1_epi16(static_cast<short>(SectionSnapshot::kOpen));
   auto half = [&](__m128i b16, __m128i k16, __m128i open16) {
-    return _mm_and_si128(_mm_or_si128(_mm_or_si128(kOpen, b16), _mm_slli_epi16(k16, 9)), open16);
+    return _mm_and_si128(_mm_or_si128(_mm_or_si128(kOpen, b16), _mm_slli_epi16(k16, 6)), open16);
   };
   const __m128i lo = half(_mm_unpacklo_epi8(b, zero), _mm_unpacklo_epi8(k, zero), _mm_unpacklo_epi8(open, open));
   const __m128i hi = half(_mm_unpackhi_epi8(b, zero), _mm_unpackhi_epi8(k, zero), _mm_unpackhi_epi8(open, open));

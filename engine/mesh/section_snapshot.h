@@ -20,15 +20,16 @@ class SectionSnapshot {
 
   static constexpr int kCells = kSide * kSide * kSide;
 
-  // A cell's light as smooth lighting sums it: per channel a count bit (1 << 6) and the level, block
-  // light in bits 0..8 and sky light in bits 9..17; 0 for an opaque cube, which does not count. Four
-  // of them add up without carries: each channel's sum stays below 2^9.
-  static constexpr std::uint32_t kOpen = 1 << 6 | 1 << 15;
+  // A cell's light as smooth lighting sums it: block light in bits 0..3, sky light in bits 6..9 and
+  // an open-cell count bit (1 << 12); 0 for an opaque cube, which does not count. Four of them add up
+  // without carries, block and sky sums in bits 0..5 and 6..11 and the count in 12..14, so a face
+  // corner's sum less one count is its vertex light field as PackedVertex stores it.
+  static constexpr std::uint32_t kOpen = 1 << 12;
   static constexpr std::uint32_t lightTerm(bool opaque, int block, int sky) {
-    return opaque ? 0 : kOpen | static_cast<std::uint32_t>(block) | static_cast<std::uint32_t>(sky) << 9;
+    return opaque ? 0 : kOpen | static_cast<std::uint32_t>(block) | static_cast<std::uint32_t>(sky) << 6;
   }
   int blockLight(int i) const { return static_cast<int>(light[static_cast<std::size_t>(i)] & 15); }
-  int skyLight(int i) const { return static_cast<int>(light[static_cast<std::size_t>(i)] >> 9 & 15); }
+  int skyLight(int i) const { return static_cast<int>(light[static_cast<std::size_t>(i)] >> 6 & 15); }
 
   SectionPos pos;
   std::array<BlockId, kCells> blocks;

@@ -16,9 +16,12 @@ BlockVertex unpackBlockVertex(uvec4 p) {
   v.texture = int(p.y & 0xFFFFu);
   v.face = int((p.y >> 16) & 15u);
   v.tint = int((p.y >> 20) & 3u);
-  v.blockLight = float(p.z & 63u) / 60.0;
-  v.skyLight = float((p.z >> 6) & 63u) / 60.0;
-  v.ao = float((p.z >> 12) & 3u) / 3.0;
+  // Light sums over the ao + 1 cells around the corner (PackedVertex::light).
+  uint ao = (p.z >> 12) & 3u;
+  float cells = float(ao + 1u) * 15.0;
+  v.blockLight = float(p.z & 63u) / cells;
+  v.skyLight = float((p.z >> 6) & 63u) / cells;
+  v.ao = float(ao) / 3.0;
   v.uv = vec2(p.w & 31u, (p.w >> 5) & 31u) / 16.0;
   return v;
 }
