@@ -30,8 +30,11 @@ void main() {
   float depth = texelFetch(g_depth, pixel, 0).r;
   vec3 far = unproject(v_ndc, 1.0);
   vec3 viewDir = far / max(length(far), 1e-20);
+  // One sky colour serves both a sky pixel and the fog over a far surface: a software rasterizer
+  // runs both sides of a branch that its pixels disagree on.
+  vec3 sky = skyColor(viewDir);
   if (depth >= 1.0) {
-    o_color = vec4(skyColor(viewDir), 1.0);
+    o_color = vec4(sky, 1.0);
     return;
   }
   vec3 position = unproject(v_ndc, depth);
@@ -65,5 +68,5 @@ void main() {
   }
 #endif
   vec3 color = shade(s, -viewDir, visibility, transmittance);
-  o_color = vec4(fogged(color, position, viewDir), shadowTerm(s, visibility));
+  o_color = vec4(fogged(color, position, sky), shadowTerm(s, visibility));
 }

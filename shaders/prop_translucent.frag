@@ -33,6 +33,6 @@ void main() {
   }
 #endif
   float alpha = clamp(p.baseColor.a, 0.0, 1.0);
-  vec3 lit = fogged(shade(s, toViewer, visibility, transmittance), v_position, -toViewer);
+  vec3 lit = fogged(shade(s, toViewer, visibility, transmittance), v_position, skyColor(-toViewer));
   o_color = vec4(lit * alpha, alpha);
 }

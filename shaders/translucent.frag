@@ -37,6 +37,6 @@ void main() {
     transmittance = shadowTransmittance(lookup);
   }
 #endif
-  vec3 lit = fogged(shade(s, toViewer, visibility, transmittance), v_position, -toViewer);
+  vec3 lit = fogged(shade(s, toViewer, visibility, transmittance), v_position, skyColor(-toViewer));
   o_color = vec4(lit * albedo.a, albedo.a);
 }

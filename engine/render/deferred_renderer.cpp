@@ -30,7 +30,11 @@ constexpr float kExposure = 0.3f;
 gl::Program build(const ShaderPreprocessor& shaders, std::vector<std::string>& names, const char* vertex,
                   const char* fragment, std::vector<ShaderDefine> extra = {}) {
   std::string name = std::string(fragment).substr(0, std::string(fragment).find('.'));
-  for (const ShaderDefine& d : extra) name += "+" + d.name;
+  for (const ShaderDefine& d : extra) {
+    name += "+";
+    name += d.name;
+    if (d.value != "1") name += "=" + d.value;
+  }
   names.push_back(name);
   std::vector<ShaderDefine> defines = rendererDefines();
   for (auto& d : extra) defines.push_back(std::move(d));
@@ -45,7 +49,19 @@ std::vector<ShaderDefine> with(std::vector<ShaderDefine> a, const std::vector<Sh
 std::vector<ShaderDefine> lightingDefines(const RendererOptions& options) {
   std::vector<ShaderDefine> defines;
   if (options.ggxSpecular) defines.push_back({"SPECULAR_GGX", "1"});
-  if (options.shadow.enabled) defines.push_back({"SHADOWS", "1"});
+  if (options.shadow.enabled) {
+    // The filter is fixed per renderer, so each shader holds only its own taps: a software rasterizer
+    // runs every branch that any pixel of a block takes, and a loop over a uniform count costs more.
+    // Neither define: one tap.
+    defines.push_back({"SHADOWS", "1"});
+    if (const int n = std::clamp(options.shadow.pcfSamples, 0, 8); n > 0) {
+      if (options.shadow.pcfPattern == PcfPattern::Disk) {
+        defines.push_back({"PCF_DISK", "1"});
+      } else {
+        defines.push_back({"PCF_GRID_SIDE", std::to_string(2 * n + 1)});
+      }
+    }
+  }
   return defines;
 }
 

@@ -193,10 +193,8 @@ void DeferredRenderer::setShadowUniforms(GLuint program, bool live) const {
   glProgramUniform1fv(program, glGetUniformLocation(program, "u_shadowTexelWorlds"), layers, texels.data());
   glProgramUniform1fv(program, glGetUniformLocation(program, "u_shadowDepthRanges"), layers, ranges.data());
   glProgramUniform1f(program, glGetUniformLocation(program, "u_shadowResolution"), static_cast<float>(settings.resolution));
-  glProgramUniform1i(program, glGetUniformLocation(program, "u_pcfSamples"), std::clamp(settings.pcfSamples, 0, 8));
   glProgramUniform1f(program, glGetUniformLocation(program, "u_pcfRadius"), std::max(settings.pcfRadius, 0.0f));
   glProgramUniform1i(program, glGetUniformLocation(program, "u_pcfRadiusInBlocks"), settings.pcfRadiusInBlocks ? 1 : 0);
-  glProgramUniform1i(program, glGetUniformLocation(program, "u_pcfPattern"), static_cast<int>(settings.pcfPattern));
   glProgramUniform1i(program, glGetUniformLocation(program, "u_shadowLive"), live ? 1 : 0);
   glBindTextureUnit(slots::kUnitShadowMap, shadowMap_.depth());
   glBindTextureUnit(slots::kUnitTranslucentDepth, shadowMap_.translucentDepth());

@@ -14,10 +14,9 @@ uniform mat4 u_shadowMatrices[SHADOW_MAX_CASCADES];  // camera-relative world ->
 uniform float u_shadowTexelWorlds[SHADOW_MAX_CASCADES];  // blocks per texel of each layer, unwarped
 uniform float u_shadowDepthRanges[SHADOW_MAX_CASCADES];  // blocks from each layer's near to far plane
 uniform float u_shadowResolution;  // texels per side
-uniform int u_pcfSamples;          // N: (2N + 1)^2 grid taps or the 16-tap disk; 0 = one tap
+// PCF_DISK: the 16-tap rotated Poisson disk; PCF_GRID_SIDE S: S^2 grid taps; neither: one tap.
 uniform float u_pcfRadius;         // texels, or blocks with u_pcfRadiusInBlocks
 uniform bool u_pcfRadiusInBlocks;
-uniform int u_pcfPattern;          // 0 grid, 1 rotated Poisson disk
 uniform bool u_shadowLive;         // false when no pass ran this frame (no light above the horizon)
 
 const vec2 kPoisson[16] = vec2[16](
@@ -69,7 +68,11 @@ ShadowLookup shadowLookup(vec3 position, vec3 vertexNormal, float cosTheta) {
   float tanTheta = min(sinTheta / max(c, 1e-3), 10.0);  // grazing light: tan -> infinity, clamped
   // A radius in blocks covers fewer texels where texels are large (far from the camera in a warped map).
   float radius = u_pcfRadiusInBlocks ? min(u_pcfRadius / texel, 32.0) : u_pcfRadius;
-  float spread = 1.0 + (u_pcfSamples > 0 ? radius : 0.0);
+#if defined(PCF_DISK) || defined(PCF_GRID_SIDE)
+  float spread = 1.0 + radius;
+#else
+  float spread = 1.0;
+#endif
   vec3 offset = vertexNormal * texel * spread * (0.35 + 0.65 * sinTheta);
   vec4 p = toLight * vec4(position + offset, 1.0);
   ShadowLookup l;
@@ -85,24 +88,28 @@ ShadowLookup shadowLookup(vec3 position, vec3 vertexNormal, float cosTheta) {
 // The lit fraction from opaque and cutout casters, PCF-filtered: 1 = fully lit.
 float shadowVisibility(ShadowLookup l, vec2 pixel) {
   if (!l.inside) return 1.0;
-  if (u_pcfSamples <= 0) return shadowTap(l.uv, l.layer, l.depth, vec2(0.0));
-  float lit = 0.0;
-  if (u_pcfPattern == 0) {
-    float step = l.radius / float(u_pcfSamples);
-    for (int y = -u_pcfSamples; y <= u_pcfSamples; ++y)
-      for (int x = -u_pcfSamples; x <= u_pcfSamples; ++x) lit += shadowTap(l.uv, l.layer, l.depth, vec2(x, y) * step);
-    float side = float(2 * u_pcfSamples + 1);
-    return lit / (side * side);
-  }
+#if defined(PCF_DISK)
   float angle = 6.2831853 * interleavedGradientNoise(pixel);
   mat2 rotation = mat2(cos(angle), sin(angle), -sin(angle), cos(angle));
+  float lit = 0.0;
   for (int i = 0; i < 16; ++i) lit += shadowTap(l.uv, l.layer, l.depth, rotation * kPoisson[i] * l.radius);
   return lit / 16.0;
+#elif defined(PCF_GRID_SIDE)
+  const int n = PCF_GRID_SIDE / 2;
+  float step = l.radius / float(n);
+  float lit = 0.0;
+  for (int y = -n; y <= n; ++y)
+    for (int x = -n; x <= n; ++x) lit += shadowTap(l.uv, l.layer, l.depth, vec2(x, y) * step);
+  return lit / float(PCF_GRID_SIDE * PCF_GRID_SIDE);
+#else
+  return shadowTap(l.uv, l.layer, l.depth, vec2(0.0));
+#endif
 }
 
 // The colour the light keeps after the nearest translucent caster above the point (white if none).
 vec3 shadowTransmittance(ShadowLookup l) {
   if (!l.inside) return vec3(1.0);
   float before = texture(u_translucentDepth, vec4(l.uv, l.layer, l.depth));  // 1: not behind it
+  if (before >= 1.0) return vec3(1.0);
   return mix(texture(u_translucentTint, vec3(l.uv, l.layer)).rgb, vec3(1.0), before);
 }

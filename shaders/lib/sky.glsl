@@ -37,8 +37,9 @@ vec3 skyColor(vec3 dir) {
 
 uniform vec2 u_fogRange;  // start, end (horizontal blocks from the camera)
 
-// Distant surfaces fade into the sky behind them, so the world's edge never shows.
-vec3 fogged(vec3 color, vec3 position, vec3 viewDir) {
+// Distant surfaces fade into the sky behind them (`sky`: skyColor(viewDir)), so the world's edge
+// never shows.
+vec3 fogged(vec3 color, vec3 position, vec3 sky) {
   float fog = smoothstep(u_fogRange.x, u_fogRange.y, length(position.xz));
-  return mix(color, skyColor(viewDir), fog);
+  return mix(color, sky, fog);
 }

@@ -6,10 +6,13 @@
 
 #include "scene_render.h"
 #include "support/gl_test.h"
+#include "support/shader_variants.h"
 #include "support/golden.h"
 
 namespace terrasol {
 namespace {
+
+using testing::hasVariant;
 
 const std::filesystem::path kScenes = std::filesystem::path(TERRASOL_SOURCE_DIR) / "tests" / "scenes";
 
@@ -54,18 +57,13 @@ TEST_F(LeaveOutTest, FacesTurnedAwayAreNotDrawnAndChangeNoPixel) {
   EXPECT_TRUE(identical(culled.image, all.image)) << "back faces: GL culling drops them anyway";
 }
 
-bool hasVariant(SceneRenderer& r, const std::string& name) {
-  const auto& v = r.renderer().shaderVariants();
-  return std::find(v.begin(), v.end(), name) != v.end();
-}
-
 TEST_F(LeaveOutTest, MapsNoPackHasAreNotSampledAndChangeNoPixel) {
   // Pixel Perfection CE alone: no _n, no _s anywhere.
   SceneFile scene = loadScene(kScenes / "pack_pixel_perfection.json");
   scene.packs = {std::filesystem::path(TERRASOL_SOURCE_DIR) / ".." / "shared" / "testdata" / "packs" / "pixel_perfection_ce"};
   SceneRenderer lean(scene);
   EXPECT_TRUE(hasVariant(lean, "gbuffer+NO_NORMAL_MAPS+NO_SPECULAR_MAPS"));
-  EXPECT_TRUE(hasVariant(lean, "lighting+SHADOWS+NO_NORMAL_MAPS+NO_SPECULAR_MAPS"));
+  EXPECT_TRUE(hasVariant(lean, "lighting+SHADOWS+PCF_DISK+NO_NORMAL_MAPS+NO_SPECULAR_MAPS"));
   scene.leaveOutAbsentMaps = false;
   SceneRenderer full(scene);
   EXPECT_TRUE(hasVariant(full, "gbuffer"));
@@ -92,7 +90,7 @@ TEST_F(LeaveOutTest, MapsNoPackHasAreNotSampledAndChangeNoPixel) {
   // With the default pack (which has both) nothing is left out.
   SceneRenderer pbr(loadScene(kScenes / "pack_pixel_perfection.json"));
   EXPECT_TRUE(hasVariant(pbr, "gbuffer"));
-  EXPECT_TRUE(hasVariant(pbr, "lighting+SHADOWS"));
+  EXPECT_TRUE(hasVariant(pbr, "lighting+SHADOWS+PCF_DISK"));
   context_->checkErrors("absent maps");
 }
 

@@ -15,10 +15,13 @@
 #include "core/error.h"
 #include "scene_render.h"
 #include "support/gl_test.h"
+#include "support/shader_variants.h"
 #include "support/world_support.h"
 
 namespace terrasol {
 namespace {
+
+using testing::hasVariant;
 
 const std::filesystem::path kModels = std::filesystem::path(TERRASOL_SOURCE_DIR) / ".." / "shared" / "testdata" / "gltf";
 const std::filesystem::path kBox = kModels / "Box" / "glTF-Embedded" / "Box.gltf";  // red, 1 block, centred
@@ -134,11 +137,6 @@ std::filesystem::path editedBox(const std::string& name, const nlohmann::json& m
   return file;
 }
 
-bool hasVariant(SceneRenderer& r, const std::string& name) {
-  const auto& v = r.renderer().shaderVariants();
-  return std::find(v.begin(), v.end(), name) != v.end();
-}
-
 TEST_F(PropsTest, AlphaModesMaskAndBlend) {
   SceneFile scene = flatAfternoon();
   const glm::dvec3 centre(0.5, 64.5, 0.5), top = centre + glm::dvec3(0.0, 0.5, 0.0);
@@ -148,7 +146,7 @@ TEST_F(PropsTest, AlphaModesMaskAndBlend) {
   const RenderedFrame opaque = opaqueRenderer.renderFrame(0);
   EXPECT_TRUE(hasVariant(opaqueRenderer, "prop"));
   EXPECT_FALSE(hasVariant(opaqueRenderer, "prop+CUTOUT")) << "no MASK material: no alpha-tested variant";
-  EXPECT_FALSE(hasVariant(opaqueRenderer, "prop_translucent+SHADOWS")) << "no BLEND material: no forward variant";
+  EXPECT_FALSE(hasVariant(opaqueRenderer, "prop_translucent+SHADOWS+PCF_DISK")) << "no BLEND material: no forward variant";
 
   // MASK below the cutoff: nothing drawn, and nothing cast either (the grass is as without the box).
   scene.props[0].model = editedBox("mask_clear", {{"alphaMode", "MASK"}, {"pbrMetallicRoughness", {{"baseColorFactor", {0.8, 0, 0, 0.3}}}}});
@@ -165,7 +163,7 @@ TEST_F(PropsTest, AlphaModesMaskAndBlend) {
   scene.props[0].model = editedBox("blend", {{"alphaMode", "BLEND"}, {"pbrMetallicRoughness", {{"baseColorFactor", {0.8, 0, 0, 0.5}}}}});
   SceneRenderer blendRenderer(scene);
   const RenderedFrame blended = blendRenderer.renderFrame(0);
-  EXPECT_TRUE(hasVariant(blendRenderer, "prop_translucent+SHADOWS"));
+  EXPECT_TRUE(hasVariant(blendRenderer, "prop_translucent+SHADOWS+PCF_DISK"));
   const glm::vec3 b = colourAt(blended, top), o = colourAt(opaque, top), g = colourAt(bare, top);
   EXPECT_GT(b.g, o.g + 0.05f) << "the green grass shows through";
   EXPECT_GT(b.r, g.r + 0.05f) << "the red box tints it";

@@ -78,6 +78,7 @@ TEST_F(ShadowTest, ExtremeSettingsStayFiniteAndSane) {
          s.shadow.cascades = 2;
          s.shadow.resolution = 256;
        }},
+      {"one tap, no PCF", [](SceneFile& s) { s.shadow.pcfSamples = 0; }},
       {"grid PCF, 3 samples, radius 4", [](SceneFile& s) {
          s.shadow.pcfPattern = "grid";
          s.shadow.pcfSamples = 3;
