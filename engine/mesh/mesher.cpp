@@ -79,9 +79,11 @@ class Mesher {
  public:
   Mesher(const SectionSnapshot& s, const BlockMeshTable& table) : s_(s), table_(table) {
     mesh_.pos = s.pos;
-    // Sections near each other look alike: reserving what the last one needed avoids regrowing.
+    // Sections near each other look alike: room for what the last one needed avoids regrowing.
     for (int l = 0; l < kMeshLayers; ++l) {
-      mesh_.layers[static_cast<std::size_t>(l)].vertices.reserve(lastSize_[static_cast<std::size_t>(l)] * 5 / 4 + 64);
+      const auto i = static_cast<std::size_t>(l);
+      writers_[i].out = &mesh_.layers[i].vertices;
+      writers_[i].out->resize(lastSize_[i] * 5 / 4 + 64);
     }
   }
 
@@ -119,7 +121,9 @@ class Mesher {
         }
       }
     for (int l = 0; l < kMeshLayers; ++l) {
-      lastSize_[static_cast<std::size_t>(l)] = mesh_.layers[static_cast<std::size_t>(l)].vertices.size();
+      const auto i = static_cast<std::size_t>(l);
+      writers_[i].out->resize(writers_[i].used);
+      lastSize_[i] = writers_[i].used;
     }
     return std::move(mesh_);
   }
@@ -147,9 +151,19 @@ class Mesher {
   bool opaqueAt(int i) const { return s_.opaque[static_cast<std::size_t>(i)] != 0; }
 
   static std::uint32_t uv(int u, int v) { return static_cast<std::uint32_t>(u) | static_cast<std::uint32_t>(v) << 5; }
-  PackedVertices& layer(const BlockMeshTable::Entry& e) {
-    return mesh_.layers[static_cast<std::size_t>(e.layer)].vertices;
-  }
+  // Appends quads to a layer's vertices, which are grown ahead (uninitialised) and cut to size at
+  // the end: a quad costs a compare, not a resize.
+  struct LayerWriter {
+    PackedVertices* out;
+    std::size_t used = 0;
+    PackedVertex* quad() {
+      if (used + 4 > out->size()) out->resize(std::max(out->size() * 2, used + 4));
+      PackedVertex* q = out->data() + used;
+      used += 4;
+      return q;
+    }
+  };
+  LayerWriter& layer(const BlockMeshTable::Entry& e) { return writers_[static_cast<std::size_t>(e.layer)]; }
 
   bool faceVisible(BlockId id, const BlockMeshTable::Entry& e, int neighbourIndex) const {
     if (opaqueAt(neighbourIndex)) return false;
@@ -197,7 +211,7 @@ class Mesher {
     }
     const std::uint32_t base = PackedVertex::packPosition(x * 32, y * 32, z * 32);
     const std::uint32_t lowered = static_cast<std::uint32_t>(32 - top32) << 10;
-    PackedVertex* q = append4(layer(e));
+    PackedVertex* q = layer(e).quad();
     // Split along the diagonal whose corners are the brighter pair: corners 1-3 instead of 0-2.
     if ((corner[0] >> 12) + (corner[2] >> 12) < (corner[1] >> 12) + (corner[3] >> 12)) {
       quad<D, 1>(q, base, lowered, e.material[D], corner);
@@ -217,21 +231,14 @@ class Mesher {
     }
   }
 
-  // Room for one more quad at the end of `out`.
-  static PackedVertex* append4(PackedVertices& out) {
-    const std::size_t n = out.size();
-    out.resize(n + 4);
-    return out.data() + n;
-  }
-
-  void flatQuad(PackedVertices& out, const std::array<Vec, 4>& corners32, const BlockMeshTable::Entry& e, int face,
+  void flatQuad(LayerWriter& out, const std::array<Vec, 4>& corners32, const BlockMeshTable::Entry& e, int face,
                 const std::array<std::array<int, 2>, 4>& uvs, std::uint32_t light) {
     PackedVertex v[4];
     for (int c = 0; c < 4; ++c) {
       v[c] = {PackedVertex::packPosition(corners32[c].x, corners32[c].y, corners32[c].z),
               material(e, e.texture[0], face), light, uv(uvs[c][0], uvs[c][1])};
     }
-    std::copy_n(v, 4, append4(out));
+    std::copy_n(v, 4, out.quad());
   }
 
   // A plant or torch is lit by its own cell, as a face corner with four open cells of that light.
@@ -270,6 +277,7 @@ class Mesher {
   const SectionSnapshot& s_;
   const BlockMeshTable& table_;
   SectionMesh mesh_;
+  std::array<LayerWriter, kMeshLayers> writers_;
   std::array<std::uint32_t, SectionSnapshot::kSide * SectionSnapshot::kSide> rows_;
   // Per thread: vertices per layer in the last section meshed.
   static thread_local std::array<std::size_t, kMeshLayers> lastSize_;
