@@ -9,7 +9,7 @@
 //   3       RGBA8           block light 0..1      sky light 0..1    vertex AO 0..1   unused
 //   depth   DEPTH32F        hardware depth (1 = nothing drawn: sky)
 //
-// Normals are in world space (y up). Light levels are the mesher's smooth (quarter-step) levels / 15.
+// Normals are in world space (y up). Light levels are the mesher's smooth averages / 15.
 // When no loaded pack has normal maps (NO_NORMAL_MAPS) the surface normal is the vertex normal, so
 // target 1 shrinks to RG16F holding only that; when none has specular maps (NO_SPECULAR_MAPS) target 2
 // is not made at all (GBufferContents).
