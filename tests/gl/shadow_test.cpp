@@ -9,6 +9,7 @@
 #include "shadow_truth.h"
 #include "support/gl_test.h"
 #include "support/golden.h"
+#include "support/shader_variants.h"
 
 namespace terrasol {
 namespace {
@@ -55,6 +56,7 @@ TEST_F(ShadowTest, ExtremeSettingsStayFiniteAndSane) {
   struct Case {
     const char* name;
     void (*change)(SceneFile&);
+    const char* lighting = "lighting+SHADOWS+PCF_DISK";  // the variant the filter settings pick
   };
   const Case cases[] = {
       {"sun 0.5 degrees up", [](SceneFile& s) { s.time = 33; }},
@@ -78,12 +80,13 @@ TEST_F(ShadowTest, ExtremeSettingsStayFiniteAndSane) {
          s.shadow.cascades = 2;
          s.shadow.resolution = 256;
        }},
-      {"one tap, no PCF", [](SceneFile& s) { s.shadow.pcfSamples = 0; }},
+      {"one tap, no PCF", [](SceneFile& s) { s.shadow.pcfSamples = 0; }, "lighting+SHADOWS"},
       {"grid PCF, 3 samples, radius 4", [](SceneFile& s) {
          s.shadow.pcfPattern = "grid";
          s.shadow.pcfSamples = 3;
          s.shadow.pcfRadius = 4.0f;
-       }},
+       },
+       "lighting+SHADOWS+PCF_GRID_SIDE=7"},
   };
   for (const Case& c : cases) {
     SceneFile scene = base;
@@ -91,6 +94,7 @@ TEST_F(ShadowTest, ExtremeSettingsStayFiniteAndSane) {
     scene.height = 90;
     c.change(scene);
     SceneRenderer renderer(scene);
+    EXPECT_TRUE(testing::hasVariant(renderer, c.lighting)) << c.name;
     FrameRequest request;
     request.checkNan = true;
     request.readBack = true;

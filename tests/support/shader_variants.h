@@ -1,6 +1,6 @@
 #pragma once
-// Whether a scene's renderer built a shader variant ("lighting+SHADOWS+PCF_SAMPLES=1+..."), naming
-// every variant it did build when not.
+// Whether a scene's renderer built a shader variant ("lighting+SHADOWS+PCF_DISK+..."), naming every
+// variant it did build when not.
 
 #include <gtest/gtest.h>
 
@@ -11,12 +11,25 @@
 
 namespace terrasol::testing {
 
-inline ::testing::AssertionResult hasVariant(SceneRenderer& r, const std::string& name) {
-  const auto& built = r.renderer().shaderVariants();
-  if (std::find(built.begin(), built.end(), name) != built.end()) return ::testing::AssertionSuccess();
+inline ::testing::AssertionResult builtVariant(SceneRenderer& r, const std::string& name, bool withMoreDefines) {
   std::string list;
-  for (const std::string& v : built) list += "\n  " + v;
-  return ::testing::AssertionFailure() << "no variant " << name << "; built:" << list;
+  for (const std::string& v : r.renderer().shaderVariants()) {
+    if (v == name || (withMoreDefines && v.starts_with(name + "+"))) {
+      return ::testing::AssertionSuccess() << "built " << v;
+    }
+    list += "\n  " + v;
+  }
+  return ::testing::AssertionFailure() << "no variant " << name << (withMoreDefines ? "[+...]" : "") << "; built:" << list;
+}
+
+// Exactly this variant.
+inline ::testing::AssertionResult hasVariant(SceneRenderer& r, const std::string& name) {
+  return builtVariant(r, name, false);
+}
+
+// This variant or one with more defines: for checking that none was built, whatever else it has.
+inline ::testing::AssertionResult hasAnyVariantOf(SceneRenderer& r, const std::string& name) {
+  return builtVariant(r, name, true);
 }
 
 }  // namespace terrasol::testing
