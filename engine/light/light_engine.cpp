@@ -1,9 +1,9 @@
 #include "light/light_engine.h"
 
 #include <algorithm>
+#include <cstring>
 
 #include "light/light_frame.h"
-#include "light/nibble_words.h"
 #include "light/propagator.h"
 #include "light/section_solver.h"
 
@@ -345,20 +345,11 @@ void LightEngine::ownLevels(const Chunk& chunk, int section, LightChannel channe
 
 namespace {
 
-NibbleArray::Bytes packLevels(const light::SectionSolver::Levels& levels) {
-  NibbleArray::Bytes bytes;
-  for (std::size_t b = 0; b < bytes.size(); ++b) {
-    bytes[b] = static_cast<std::uint8_t>(levels[2 * b] | levels[2 * b + 1] << 4);
-  }
-  return bytes;
-}
-
-// True when a cell on the section's faces would get less light than `old` gives it.
-bool faceLosesLight(const std::uint8_t* old, const NibbleArray::Bytes& levels) {
-  for (int w = 0; w < light::kNibbleWords; ++w) {
-    if (light::lowerNibbles(light::nibbleWord(old, w), light::nibbleWord(levels.data(), w)) &
-        light::kFaceNibbles[static_cast<std::size_t>(w)]) {
-      return true;
+// True when a cell on the section's faces would get less light than it has (`current`).
+bool faceLosesLight(const std::uint8_t* current, const light::SectionSolver::Levels& levels) {
+  for (const auto& face : light::kFaceCells) {
+    for (const light::FaceCell& c : face) {
+      if (levels[c.ours] < current[c.ours]) return true;
     }
   }
   return false;
@@ -429,14 +420,13 @@ void LightEngine::relightSection(const SectionPos& s) {
     }
     solver.solve();
 
-    const NibbleArray::Bytes solved = packLevels(levels);
     light::SectionRef& r = *origin.ref;
-    if (std::equal(solved.begin(), solved.end(), r.light)) continue;  // nothing to write
-    if (faceLosesLight(r.light, solved)) {
+    if (std::memcmp(levels.data(), r.levelBytes(), levels.size()) == 0) continue;  // nothing to write
+    if (faceLosesLight(r.levelBytes(), levels)) {
       relightGeneral(p, *chunk, s, origin, beyond, tops, channel);
     } else {
       // Face cells light the cells beyond them where those are darker.
-      p.replaceLevels(r, origin.pos, solved);
+      p.replaceLevels(r, origin.pos, levels.data());
       for (int d = 0; d < 6; ++d) {
         if (!beyond[d].ref) continue;
         const NibbleArray& n = *beyond[d].ref->layer;
@@ -462,7 +452,7 @@ void LightEngine::relightGeneral(light::Propagator& p, const Chunk& chunk, const
   const int y0 = kMinY + s.section * 16;
   auto& levels = solver_->levels();
   ownLevels(chunk, s.section, channel, levels.data());
-  p.replaceLevels(*origin.ref, origin.pos, packLevels(levels));
+  p.replaceLevels(*origin.ref, origin.pos, levels.data());
   const bool emitters = chunk.light().emitters[static_cast<std::size_t>(s.section)] > 0;
   forSources(levels.data(), channel, emitters, tops, chunk.light().skyTop, y0, [&](int i) {
     p.increase(Propagator::posOf(origin.pos, i), levels[static_cast<std::size_t>(i)], kAllDirections);

@@ -61,10 +61,12 @@ class LightEngine {
   const LightStats& stats() const { return stats_; }
   void resetStats() { stats_ = {}; }
 
+  // 16-bit fields, not 8: a store through an 8-bit integer may alias anything, so the compiler
+  // would reload every pointer and counter of the flood fill after each entry queued.
   struct Entry {
-    std::uint32_t pos;        // frame position (light_frame.h)
-    std::uint8_t level;
-    std::uint8_t directions;  // bit d set: still to visit Direction d
+    std::uint32_t pos;         // frame position (light_frame.h)
+    std::uint16_t level;
+    std::uint16_t directions;  // bit d set: still to visit Direction d
   };
 
  private:

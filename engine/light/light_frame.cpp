@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cassert>
+#include <cstring>
+
+#include "light/nibble_words.h"
 
 namespace terrasol::light {
 
@@ -33,6 +36,7 @@ void LightFrame::reset(const ChunkWindow& window, LightChannel channel) {
   if (refs_.size() < chunks * kRefSections) refs_.resize(chunks * kRefSections);
   resolved_.assign(chunks, 0);
   resolvedList_.clear();
+  slabsUsed_ = 0;
 }
 
 void LightFrame::resolve(int index) {
@@ -49,7 +53,6 @@ void LightFrame::resolve(int index) {
     SectionRef& r = refs[s + 1];
     r.layer = channel_ == LightChannel::Block ? &light.block[static_cast<std::size_t>(s)]
                                               : &light.sky[static_cast<std::size_t>(s)];
-    r.light = r.layer->bytes();
     const Section& section = chunk->section(s);
     r.uniform = section.uniformBlock();
     r.blocks = section.blocks() ? section.blocks()->data() : &r.uniform;
@@ -57,6 +60,26 @@ void LightFrame::resolve(int index) {
     r.skyTop = light.skyTop.data();
     r.minY = kMinY + s * 16;
   }
+}
+
+
+void LightFrame::unpack(SectionRef& r) {
+  if (slabsUsed_ == slabs_.size()) slabs_.push_back(std::make_unique<Slab>());
+  r.levels = slabs_[slabsUsed_++]->data();
+  if (r.layer->isUniform()) {
+    std::memset(r.levelBytes(), r.layer->uniformLevel(), Section::kVolume);
+  } else {
+    unpackNibbles(r.layer->bytes(), r.levelBytes());
+  }
+}
+
+std::uint8_t LightFrame::pack(SectionRef& r) {
+  r.written = false;
+  NibbleArray::Bytes packed;
+  packNibbles(r.levelBytes(), packed.data());
+  const std::uint8_t marks = changedFaces(r.layer->bytes(), packed.data());
+  if (marks) std::memcpy(r.layer->writableBytes(), packed.data(), packed.size());
+  return marks;
 }
 
 }  // namespace terrasol::light

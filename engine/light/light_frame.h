@@ -7,10 +7,15 @@
 // so a step inside a section adds the index step, a step across a face adds a per-frame constant,
 // and neither needs a bounds check: the refs form a grid with a ring of chunks and a section above
 // and below the world that are never loaded, so every step out of the frame lands on an empty ref.
+//
+// An update works in plain bytes, one level per cell: a section's nibbles are unpacked into a slab
+// the first time the update touches it, and the slabs it wrote are packed back when it ends. A
+// level read or written is then one byte, with no shifts and masks.
 // Internal to engine/light.
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "light/light_engine.h"
@@ -20,16 +25,22 @@ namespace terrasol::light {
 inline constexpr int kMaxFrameChunks = 16;  // a side; with the ring, ref indices stay far below 2^20
 inline constexpr int kRefSections = kSectionCount + 2;  // sections per chunk, with the empty ones
 
+// A level in an update's slab. An enum, not std::uint8_t: a store through unsigned char may alias
+// anything, so the compiler would reload every pointer and counter after each level written.
+enum class Level : std::uint8_t {};
+
 struct SectionRef {
-  NibbleArray* layer = nullptr;         // null: not loaded, or outside the world (acts opaque)
-  const std::uint8_t* light = nullptr;  // layer->bytes()
-  std::uint8_t* write = nullptr;        // layer->writableBytes() once written, null before
-  const BlockId* blocks = nullptr;      // blocks[index & blockMask]: the dense array, or &uniform
+  NibbleArray* layer = nullptr;      // null: not loaded, or outside the world (acts opaque)
+  Level* levels = nullptr;           // the slab, by Section::index; null until the section is touched
+  bool written = false;              // levels were set: pack them back when the update ends
+  const BlockId* blocks = nullptr;   // blocks[index & blockMask]: the dense array, or &uniform
   int blockMask = 0;
   BlockId uniform = kAir;
-  std::uint8_t marks = 0;  // kFaceMarks of the cells written: whose halos changed
   const std::int16_t* skyTop = nullptr;  // the chunk's heightmap
   int minY = 0;                          // world y of the section's bottom layer
+
+  // The slab as bytes, for whole-section copies and comparisons.
+  std::uint8_t* levelBytes() { return reinterpret_cast<std::uint8_t*>(levels); }
 };
 
 // Per Section::index: bit d set when the cell lies on the section's face in Direction d, bit 7 always.
@@ -75,11 +86,19 @@ class LightFrame {
   // The position one step across the section's face in Direction d.
   std::uint32_t across(std::uint32_t pos, int d) const { return pos + static_cast<std::uint32_t>(across_[d]); }
 
+  // The section's ref, its levels unpacked if it is loaded.
   SectionRef& ref(int index) {
     const int chunk = index / kRefSections;
     if (!resolved_[static_cast<std::size_t>(chunk)]) resolve(chunk);
-    return refs_[static_cast<std::size_t>(index)];
+    SectionRef& r = refs_[static_cast<std::size_t>(index)];
+    if (!r.levels && r.layer) unpack(r);
+    return r;
   }
+  // The ref of a position that was queued: its section was resolved and unpacked then.
+  SectionRef& queuedRef(int index) { return refs_[static_cast<std::size_t>(index)]; }
+  // Packs a written section's levels back into its layer. Returns the kFaceMarks bits of the cells
+  // whose level changed (bit 7: any cell), 0 when none did.
+  static std::uint8_t pack(SectionRef& r);
   // Grid chunk indices resolved so far, their sections' refs (kRefSections each, the first and last
   // empty), and their chunk positions.
   const std::vector<int>& resolvedChunks() const { return resolvedList_; }
@@ -88,6 +107,7 @@ class LightFrame {
 
  private:
   void resolve(int chunk);
+  void unpack(SectionRef& r);
 
   const ChunkWindow* window_ = nullptr;
   LightChannel channel_ = LightChannel::Block;
@@ -97,6 +117,9 @@ class LightFrame {
   std::vector<SectionRef> refs_;
   std::vector<std::uint8_t> resolved_;
   std::vector<int> resolvedList_;
+  using Slab = std::array<Level, Section::kVolume>;
+  std::vector<std::unique_ptr<Slab>> slabs_;  // kept between updates
+  std::size_t slabsUsed_ = 0;
 };
 
 }  // namespace terrasol::light

@@ -1,16 +1,21 @@
 #pragma once
-// A section's light levels compared sixteen at a time: NibbleArray bytes read as 64-bit words, so
-// word w holds the cells 16w..16w+15 (one x row), cell 16w+k in bits 4k..4k+3. The results are masks
-// with bit 4k set for cell k of the word. Internal to engine/light.
+// A section's light levels moved between NibbleArray bytes (two levels a byte) and plain bytes (one
+// level a byte, what updates work in), and compared sixteen at a time: NibbleArray bytes read as
+// 64-bit words, so word w holds the cells 16w..16w+15 (one x row at y = w / 16, z = w % 16), cell
+// 16w+k in bits 4k..4k+3. Internal to engine/light.
 
-#include <array>
 #include <cstdint>
 #include <cstring>
+
+#ifdef __SSE2__
+#include <emmintrin.h>
+#endif
+
+#include "world/nibble_array.h"
 
 namespace terrasol::light {
 
 inline constexpr int kNibbleWords = 256;  // per section
-inline constexpr std::uint64_t kNibbleLowBits = 0x1111111111111111;
 
 inline std::uint64_t nibbleWord(const std::uint8_t* bytes, int word) {
   std::uint64_t w;
@@ -18,32 +23,59 @@ inline std::uint64_t nibbleWord(const std::uint8_t* bytes, int word) {
   return w;
 }
 
-// Cells whose levels differ between two words.
-constexpr std::uint64_t changedNibbles(std::uint64_t a, std::uint64_t b) {
-  const std::uint64_t x = a ^ b;
-  return (x | x >> 1 | x >> 2 | x >> 3) & kNibbleLowBits;
-}
-
-// Cells whose level in `after` is lower than in `before`. Even and odd cells are compared in separate
-// 8-bit lanes, where (before | 16) - (after + 1) keeps bit 4 exactly when before > after, and no lane
-// borrows from the next.
-constexpr std::uint64_t lowerNibbles(std::uint64_t before, std::uint64_t after) {
-  constexpr std::uint64_t kLow = 0x0F0F0F0F0F0F0F0F, kOnes = 0x0101010101010101, kBit4 = 0x1010101010101010;
-  auto lanes = [&](std::uint64_t b, std::uint64_t a) { return (((b | kBit4) - (a + kOnes)) & kBit4) >> 4; };
-  return lanes(before & kLow, after & kLow) | lanes(before >> 4 & kLow, after >> 4 & kLow) << 4;
-}
-static_assert(lowerNibbles(0xF0, 0x0F) == 0x10 && lowerNibbles(0x00, 0xFF) == 0 && lowerNibbles(0x1, 0x0) == 0x1);
-
-// Per word, the cells on a face of the section: the first and last of every row (x = 0 and 15), and
-// every cell of the rows at y or z = 0 or 15.
-inline constexpr std::array<std::uint64_t, kNibbleWords> kFaceNibbles = [] {
-  std::array<std::uint64_t, kNibbleWords> masks{};
-  for (int w = 0; w < kNibbleWords; ++w) {
-    const int y = w >> 4, z = w & 15;
-    masks[static_cast<std::size_t>(w)] =
-        y == 0 || y == 15 || z == 0 || z == 15 ? kNibbleLowBits : std::uint64_t{1} | std::uint64_t{1} << 60;
+// The kFaceMarks bits of the cells whose levels differ between two sections' NibbleArray bytes, with
+// bit 7 when any does: the bits of every word that differs, OR-ed together, show the x faces (cells 0
+// and 15 of a row); the rows at y = 0 or 15 and at z = 0 or 15 are whole words.
+inline std::uint8_t changedFaces(const std::uint8_t* a, const std::uint8_t* b) {
+  std::uint64_t diff[kNibbleWords];
+  std::uint64_t any = 0, down = 0, up = 0, north = 0, south = 0;
+  for (int w = 0; w < kNibbleWords; ++w) any |= diff[w] = nibbleWord(a, w) ^ nibbleWord(b, w);
+  if (any == 0) return 0;
+  for (int k = 0; k < 16; ++k) {
+    down |= diff[k];
+    up |= diff[240 + k];
+    north |= diff[16 * k];
+    south |= diff[16 * k + 15];
   }
-  return masks;
-}();
+  return static_cast<std::uint8_t>(0x80 | ((any & 15) != 0) | ((any >> 60) != 0) << 1 | (down != 0) << 2 |
+                                   (up != 0) << 3 | (north != 0) << 4 | (south != 0) << 5);
+}
+
+// Levels (4096, one a byte) from NibbleArray bytes, and back. SSE2 where there is SSE2 (every x86-64);
+// the plain loops elsewhere.
+inline void unpackNibbles(const std::uint8_t* nibbles, std::uint8_t* levels) {
+#ifdef __SSE2__
+  const __m128i low = _mm_set1_epi8(15);
+  for (int i = 0; i < NibbleArray::kBytes; i += 16) {
+    const __m128i n = _mm_loadu_si128(reinterpret_cast<const __m128i*>(nibbles + i));
+    const __m128i even = _mm_and_si128(n, low), odd = _mm_and_si128(_mm_srli_epi16(n, 4), low);
+    _mm_storeu_si128(reinterpret_cast<__m128i*>(levels + 2 * i), _mm_unpacklo_epi8(even, odd));
+    _mm_storeu_si128(reinterpret_cast<__m128i*>(levels + 2 * i + 16), _mm_unpackhi_epi8(even, odd));
+  }
+#else
+  for (int i = 0; i < NibbleArray::kBytes; ++i) {
+    levels[2 * i] = nibbles[i] & 15;
+    levels[2 * i + 1] = static_cast<std::uint8_t>(nibbles[i] >> 4);
+  }
+#endif
+}
+inline void packNibbles(const std::uint8_t* levels, std::uint8_t* nibbles) {
+#ifdef __SSE2__
+  // Each 16-bit lane holds an even level in its low byte and the odd one in its high byte.
+  const __m128i lowByte = _mm_set1_epi16(0xFF);
+  auto pairs = [&](const std::uint8_t* at) {
+    const __m128i v = _mm_loadu_si128(reinterpret_cast<const __m128i*>(at));
+    return _mm_and_si128(_mm_or_si128(v, _mm_srli_epi16(v, 4)), lowByte);
+  };
+  for (int i = 0; i < NibbleArray::kBytes; i += 16) {
+    _mm_storeu_si128(reinterpret_cast<__m128i*>(nibbles + i),
+                     _mm_packus_epi16(pairs(levels + 2 * i), pairs(levels + 2 * i + 16)));
+  }
+#else
+  for (int i = 0; i < NibbleArray::kBytes; ++i) {
+    nibbles[i] = static_cast<std::uint8_t>(levels[2 * i] | levels[2 * i + 1] << 4);
+  }
+#endif
+}
 
 }  // namespace terrasol::light

@@ -2,8 +2,7 @@
 
 #include <algorithm>
 #include <bit>
-
-#include "light/nibble_words.h"
+#include <cstring>
 
 namespace terrasol::light {
 
@@ -43,45 +42,36 @@ std::uint8_t Propagator::source(const BlockId* blocks, int mask, const std::int1
   return 0;
 }
 
-void Propagator::replaceLevels(SectionRef& r, std::uint32_t origin, const NibbleArray::Bytes& levels) {
-  const std::uint8_t* old = r.light;
-  Cursor c(r);
+void Propagator::replaceLevels(SectionRef& r, std::uint32_t origin, const std::uint8_t* levels) {
+  std::uint8_t* current = r.levelBytes();
   int writes = 0;
-  for (int w = 0; w < kNibbleWords; ++w) {
-    const std::uint64_t before = nibbleWord(old, w), after = nibbleWord(levels.data(), w);
-    if (before == after) continue;
-    const std::uint64_t changed = changedNibbles(before, after);
-    writes += std::popcount(changed);
-    c.marks |= 0x80;
-    // Changed face cells change the halos beyond them; those that lost light may have lit cells there.
-    const std::uint64_t lost = lowerNibbles(before, after);
-    for (std::uint64_t face = changed & kFaceNibbles[static_cast<std::size_t>(w)]; face != 0; face &= face - 1) {
-      const int k = std::countr_zero(face), i = w * 16 + k / 4;
-      c.marks |= kFaceMarks[static_cast<std::size_t>(i)];
-      if (lost >> k & 1) {
-        decrease(posOf(origin, i), static_cast<std::uint8_t>(before >> k & 15),
-                 static_cast<std::uint8_t>(kFaceMarks[static_cast<std::size_t>(i)] & kAllDirections));
-      }
+  for (int i = 0; i < Section::kVolume; i += 8) {
+    if (std::memcmp(current + i, levels + i, 8) == 0) continue;
+    for (int k = i; k < i + 8; ++k) {
+      if (current[k] == levels[k]) continue;
+      ++writes;
+      // Light that left through a face cell that lost some may have lit cells beyond it.
+      const auto faces = static_cast<std::uint8_t>(kFaceMarks[static_cast<std::size_t>(k)] & kAllDirections);
+      if (faces && levels[k] < current[k]) decrease(posOf(origin, k), current[k], faces);
     }
   }
   if (writes == 0) return;
   lightWrites_ += static_cast<std::uint64_t>(writes);
-  // One copy: `old` is read above before the section may take its own bytes.
-  if (!c.write) c.bytes = c.write = r.layer->writableBytes();
-  std::copy(levels.begin(), levels.end(), c.write);
-  c.flush();
+  std::memcpy(current, levels, Section::kVolume);
+  r.written = true;
 }
 
-// A written cell changes its own section's mesh and, on a face, the halo of the sections beside it.
-void Propagator::flushChanged() {
+// Written sections are packed back. A changed cell changes its own section's mesh and, on a face,
+// the halo of the sections beside it.
+void Propagator::writeBack() {
   for (const int chunk : frame_.resolvedChunks()) {
     SectionRef* refs = frame_.chunkRefs(chunk);
     const ChunkPos at = frame_.chunkPos(chunk);
     const int cx = at.x, cz = at.z;
     for (int s = 0; s < kSectionCount; ++s) {
-      const std::uint8_t m = refs[s + 1].marks;
+      if (!refs[s + 1].written) continue;
+      const std::uint8_t m = LightFrame::pack(refs[s + 1]);
       if (!m) continue;
-      refs[s + 1].marks = 0;
       const int y0 = (m & 4) && s > 0 ? -1 : 0, y1 = (m & 8) && s < kSectionCount - 1 ? 1 : 0;
       for (int dz = -(m >> 4 & 1); dz <= (m >> 5 & 1); ++dz)
         for (int dx = -(m & 1); dx <= (m >> 1 & 1); ++dx)
@@ -93,7 +83,7 @@ void Propagator::flushChanged() {
 void Propagator::run() {
   runDecrease();
   runIncrease();
-  flushChanged();
+  writeBack();
 }
 
 // Calls visit(cursor, index, pos, d) for each neighbour of the entry's cell in `directions` (all six
@@ -140,7 +130,7 @@ void Propagator::runDecrease() {
     const LightEngine::Entry e = decrease_[head];
     // The cell itself may be in a chunk being unloaded: its position still leads to its neighbours,
     // each looked up on its own.
-    SectionRef& r = frame_.ref(frame_.refIndex(e.pos));
+    SectionRef& r = frame_.queuedRef(LightFrame::refIndex(e.pos));
     const int index = LightFrame::local(e.pos);
     const std::uint8_t inSection = kInSection[static_cast<std::size_t>(index)];
     LightEngine::Entry* darker = decrease_.room(6);
@@ -174,9 +164,9 @@ void Propagator::runIncrease() {
   std::uint64_t reads = 0, writes = 0;
   for (std::size_t head = 0; head < increase_.size(); ++head) {
     const LightEngine::Entry e = increase_[head];
-    SectionRef& r = frame_.ref(frame_.refIndex(e.pos));
+    SectionRef& r = frame_.queuedRef(LightFrame::refIndex(e.pos));
     const int index = LightFrame::local(e.pos);
-    if (!r.layer || light(r, index) != e.level) continue;  // superseded since it was queued
+    if (!r.levels || light(r, index) != e.level) continue;  // superseded since it was queued
     LightEngine::Entry* out = increase_.room(6);
     std::size_t count = 0;
     forNeighbours(r, index, e.pos, kInSection[static_cast<std::size_t>(index)], e.directions,

@@ -37,56 +37,60 @@ inline const std::array<std::uint8_t, Section::kVolume> kInSection = [] {
 }();
 
 // A queue over storage reused between updates. The hot loops reserve room for an entry's six
-// neighbours once and write through a local pointer: stores through the light bytes (uint8_t) may
-// alias anything, so a push_back would reload the vector's pointers after every light write.
+// neighbours once and write through a local pointer; the queue keeps a raw pointer and counts, which
+// the compiler can hold in registers, where a vector's would be reloaded through the reference.
 class EntryQueue {
  public:
   using Entry = LightEngine::Entry;
-  explicit EntryQueue(std::vector<Entry>& storage) : items_(storage) {
-    if (items_.size() < 1024) items_.resize(1024);
+  explicit EntryQueue(std::vector<Entry>& storage) : storage_(storage) {
+    if (storage_.size() < 1024) storage_.resize(1024);
+    data_ = storage_.data();
+    capacity_ = storage_.size();
   }
   std::size_t size() const { return size_; }
-  const Entry& operator[](std::size_t i) const { return items_[i]; }
+  const Entry& operator[](std::size_t i) const { return data_[i]; }
   void push(const Entry& e) { *room(1) = e; ++size_; }
   // Room for `n` entries at the end; commit(k) keeps the first k written there.
   Entry* room(std::size_t n) {
-    if (size_ + n > items_.size()) items_.resize(std::max(items_.size() * 2, size_ + n));
-    return items_.data() + size_;
+    if (size_ + n > capacity_) grow(n);
+    return data_ + size_;
   }
   void commit(std::size_t k) { size_ += k; }
 
  private:
-  std::vector<Entry>& items_;
+  void grow(std::size_t n) {
+    storage_.resize(std::max(capacity_ * 2, size_ + n));
+    data_ = storage_.data();
+    capacity_ = storage_.size();
+  }
+
+  std::vector<Entry>& storage_;
+  Entry* data_;
+  std::size_t capacity_;
   std::size_t size_ = 0;
 };
 
-// A section's arrays copied into locals: the compiler keeps them in registers, where a SectionRef's
+// A section's pointers copied into locals: the compiler keeps them in registers, where a SectionRef's
 // fields would be reloaded after every light byte written (uint8_t stores may alias anything).
-// flush() writes back what changed. The one way light is written.
+// flush() records whether anything was written. The one way light is written.
 struct Cursor {
   explicit Cursor(SectionRef& r)
-      : ref(r), bytes(r.light), write(r.write), blocks(r.blocks), mask(r.blockMask), skyTop(r.skyTop), minY(r.minY) {}
-  void flush() {
-    ref.light = bytes;
-    ref.write = write;
-    ref.marks |= marks;
-  }
-  std::uint8_t light(int i) const { return NibbleArray::get(bytes, i); }
+      : ref(r), levels(r.levels), blocks(r.blocks), mask(r.blockMask), skyTop(r.skyTop), minY(r.minY) {}
+  void flush() { ref.written |= written; }
+  std::uint8_t light(int i) const { return static_cast<std::uint8_t>(levels[i]); }
   BlockId block(int i) const { return blocks[i & mask]; }
   void set(int i, std::uint8_t level) {
-    if (!write) bytes = write = ref.layer->writableBytes();  // once per section and update
-    NibbleArray::set(write, i, level);
-    marks |= kFaceMarks[static_cast<std::size_t>(i)];
+    levels[i] = Level{level};
+    written = true;
   }
 
   SectionRef& ref;
-  const std::uint8_t* bytes;
-  std::uint8_t* write;
+  Level* levels;
   const BlockId* blocks;
   int mask;
   const std::int16_t* skyTop;
   int minY;
-  std::uint8_t marks = 0;
+  bool written = false;
 };
 
 // A cell of the frame: its section and its index there.
@@ -114,7 +118,7 @@ class Propagator {
     cell = {&frame_.ref(frame_.refIndex(pos)), LightFrame::local(pos), pos};
     return cell.ref->layer != nullptr;
   }
-  static std::uint8_t light(const SectionRef& r, int index) { return NibbleArray::get(r.light, index); }
+  static std::uint8_t light(const SectionRef& r, int index) { return static_cast<std::uint8_t>(r.levels[index]); }
   std::uint8_t light(const Cell& c) const { return light(*c.ref, c.index); }
   void setLight(const Cell& c, std::uint8_t level) { setLight(*c.ref, c.index, level); }
   // The level a cell has by itself: its emission (block light) or 15 in the open sky column (sky light).
@@ -122,22 +126,24 @@ class Propagator {
 
   void decrease(int x, int y, int z, std::uint8_t level, std::uint8_t directions) {
     std::uint32_t pos;
-    if (frame_.toFrame(x, y, z, pos)) decrease_.push({pos, level, directions});
+    if (frame_.toFrame(x, y, z, pos)) decrease(pos, level, directions);
   }
   void increase(int x, int y, int z, std::uint8_t level, std::uint8_t directions) {
     std::uint32_t pos;
-    if (frame_.toFrame(x, y, z, pos)) increase_.push({pos, level, directions});
+    if (frame_.toFrame(x, y, z, pos)) increase(pos, level, directions);
   }
+  // The loops take a queued position's ref as it is (LightFrame::queuedRef): resolve it now.
   void decrease(std::uint32_t pos, std::uint8_t level, std::uint8_t directions) {
+    frame_.ref(LightFrame::refIndex(pos));
     decrease_.push({pos, level, directions});
   }
   void increase(std::uint32_t pos, std::uint8_t level, std::uint8_t directions) {
+    frame_.ref(LightFrame::refIndex(pos));
     increase_.push({pos, level, directions});
   }
   void setLight(SectionRef& r, int index, std::uint8_t level) {
-    Cursor c(r);
-    c.set(index, level);
-    c.flush();
+    r.levels[index] = Level{level};
+    r.written = true;
     ++lightWrites_;
   }
   std::uint8_t source(const SectionRef& r, int index) {
@@ -145,21 +151,22 @@ class Propagator {
   }
   std::uint8_t source(const BlockId* blocks, int mask, const std::int16_t* skyTop, int minY, int index,
                       std::uint64_t& reads) const;
-  // Gives every cell of the section whose cell 0 is at `origin` the level in `levels` (NibbleArray
-  // order). A face cell that loses light starts a decrease outward with its old level: light that
+  // Gives every cell of the section whose cell 0 is at `origin` the level in `levels` (4096 bytes, by
+  // Section::index). A face cell that loses light starts a decrease outward with its old level: light that
   // left the section through it may have to go. Cells inside need none, they all have new levels.
-  void replaceLevels(SectionRef& r, std::uint32_t origin, const NibbleArray::Bytes& levels);
+  void replaceLevels(SectionRef& r, std::uint32_t origin, const std::uint8_t* levels);
   // Frame position of Section::index `index` in the section whose cell 0 is at `origin`.
   static std::uint32_t posOf(std::uint32_t origin, int index) { return origin + static_cast<std::uint32_t>(index); }
 
-  // Runs the decrease queue, then the increase queue (which the decreases add to), to the end.
+  // Runs the decrease queue, then the increase queue (which the decreases add to), to the end, and
+  // writes the new levels back into the sections' layers.
   void run();
 
  private:
   template <class Visit>
   void forNeighbours(SectionRef& r, int index, std::uint32_t pos, std::uint8_t inSection, unsigned directions,
                      Visit&& visit);
-  void flushChanged();
+  void writeBack();
   void runDecrease();
   void runIncrease();
 

@@ -264,16 +264,30 @@ TEST(Light, RelightingASectionFromDarknessOrFromLightThatIsGoneMatchesAFullRecom
   }
 }
 
-TEST(Light, NibbleWordsCompareEveryPairOfLevels) {
-  for (int a = 0; a < 16; ++a)
-    for (int b = 0; b < 16; ++b)
-      for (const int k : {0, 1, 6, 15}) {
-        const std::uint64_t before = static_cast<std::uint64_t>(a) << (4 * k) | 0x0000000550000000,
-                            after = static_cast<std::uint64_t>(b) << (4 * k) | 0x0000000550000000;
-        const std::uint64_t bit = std::uint64_t{1} << (4 * k);
-        EXPECT_EQ(light::lowerNibbles(before, after), b < a ? bit : 0) << a << " -> " << b << " in cell " << k;
-        EXPECT_EQ(light::changedNibbles(before, after), a != b ? bit : 0) << a << " -> " << b << " in cell " << k;
-      }
+// A written section reports the faces of the cells that changed: its neighbours beyond them remesh.
+TEST(Light, ChangedFacesAreThoseOfTheChangedCell) {
+  NibbleArray before;
+  for (int i = 0; i < Section::kVolume; ++i) before.set(i, static_cast<std::uint8_t>(i % 13));
+  EXPECT_EQ(light::changedFaces(before.bytes(), before.bytes()), 0);
+  for (int i = 0; i < Section::kVolume; ++i) {
+    NibbleArray after = before;
+    after.set(i, static_cast<std::uint8_t>(before.get(i) ^ (i % 4 == 0 ? 8 : 1)));
+    const int x = i & 15, y = i >> 8, z = (i >> 4) & 15;
+    const int faces = 0x80 | (x == 0) | (x == 15) << 1 | (y == 0) << 2 | (y == 15) << 3 | (z == 0) << 4 | (z == 15) << 5;
+    ASSERT_EQ(light::changedFaces(before.bytes(), after.bytes()), faces) << "cell " << i;
+  }
+}
+
+// Updates work on one byte per level; packing must give back exactly the NibbleArray's bytes.
+TEST(Light, LevelsUnpackAndPackInNibbleArrayOrder) {
+  NibbleArray nibbles;
+  for (int i = 0; i < Section::kVolume; ++i) nibbles.set(i, static_cast<std::uint8_t>((i * 7 + i / 16) & 15));
+  std::array<std::uint8_t, Section::kVolume> levels;
+  light::unpackNibbles(nibbles.bytes(), levels.data());
+  for (int i = 0; i < Section::kVolume; ++i) ASSERT_EQ(levels[static_cast<std::size_t>(i)], nibbles.get(i)) << i;
+  NibbleArray::Bytes packed;
+  light::packNibbles(levels.data(), packed.data());
+  EXPECT_TRUE(std::equal(packed.begin(), packed.end(), nibbles.bytes()));
 }
 
 // The streamer tells the light engine before it removes a chunk and after it adds one, so light stays
