@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstring>
 
+#include "light/level_words.h"
 #include "light/light_frame.h"
 #include "light/propagator.h"
 #include "light/section_solver.h"
@@ -347,9 +348,9 @@ namespace {
 
 // True when a cell on the section's faces would get less light than it has (`current`).
 bool faceLosesLight(const std::uint8_t* current, const light::SectionSolver::Levels& levels) {
-  for (const auto& face : light::kFaceCells) {
-    for (const light::FaceCell& c : face) {
-      if (levels[c.ours] < current[c.ours]) return true;
+  for (int q = 0; q < light::kByteWords; ++q) {
+    if (light::lowerBytes(light::byteWord(current, q), light::byteWord(levels.data(), q)) & light::faceBytes(q)) {
+      return true;
     }
   }
   return false;
@@ -400,10 +401,10 @@ void LightEngine::relightSection(const SectionPos& s) {
     Propagator p(*frame_, window, channel, opacity_, emission_, decrease_, increase_, stats_, changed_);
     Cell origin;
     p.locate(x0, y0, z0, origin);
-    Cell beyond[6];  // each neighbouring section's cell 0; ref null where not loaded
+    Cell beyond[6];  // each neighbouring section's cell 0, packed; ref null where not loaded
     for (int d = 0; d < 6; ++d) {
       const BlockPos& o = kDirectionOffsets[d];
-      if (!p.locate(x0 + o.x * 16, y0 + o.y * 16, z0 + o.z * 16, beyond[d])) beyond[d].ref = nullptr;
+      if (!p.locatePacked(x0 + o.x * 16, y0 + o.y * 16, z0 + o.z * 16, beyond[d])) beyond[d].ref = nullptr;
     }
 
     // Every source offers its light. Open-sky cells above the neighbouring columns only have 15s
@@ -459,10 +460,10 @@ void LightEngine::relightGeneral(light::Propagator& p, const Chunk& chunk, const
   });
   for (int d = 0; d < 6; ++d) {
     if (!beyond[d].ref) continue;
-    const light::SectionRef& n = *beyond[d].ref;
+    const NibbleArray& n = *beyond[d].ref->layer;
     const auto toward = static_cast<std::uint8_t>(1 << light::opposite(d));
     for (const light::FaceCell& c : light::kFaceCells[static_cast<std::size_t>(d)]) {
-      const std::uint8_t level = Propagator::light(n, c.theirs);
+      const std::uint8_t level = n.get(c.theirs);
       if (level > 1 && levels[c.ours] + 1 < level) p.increase(Propagator::posOf(beyond[d].pos, c.theirs), level, toward);
     }
   }

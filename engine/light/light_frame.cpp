@@ -4,7 +4,7 @@
 #include <cassert>
 #include <cstring>
 
-#include "light/nibble_words.h"
+#include "light/level_words.h"
 
 namespace terrasol::light {
 

@@ -88,11 +88,15 @@ class LightFrame {
 
   // The section's ref, its levels unpacked if it is loaded.
   SectionRef& ref(int index) {
-    const int chunk = index / kRefSections;
-    if (!resolved_[static_cast<std::size_t>(chunk)]) resolve(chunk);
-    SectionRef& r = refs_[static_cast<std::size_t>(index)];
+    SectionRef& r = packedRef(index);
     if (!r.levels && r.layer) unpack(r);
     return r;
+  }
+  // The section's ref, its levels left packed: its layer is read as it is.
+  SectionRef& packedRef(int index) {
+    const int chunk = index / kRefSections;
+    if (!resolved_[static_cast<std::size_t>(chunk)]) resolve(chunk);
+    return refs_[static_cast<std::size_t>(index)];
   }
   // The ref of a position that was queued: its section was resolved and unpacked then.
   SectionRef& queuedRef(int index) { return refs_[static_cast<std::size_t>(index)]; }

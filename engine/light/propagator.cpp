@@ -4,6 +4,8 @@
 #include <bit>
 #include <cstring>
 
+#include "light/level_words.h"
+
 namespace terrasol::light {
 
 Propagator::Propagator(LightFrame& frame, const ChunkWindow& window, LightChannel channel, const std::uint8_t* opacity,
@@ -45,14 +47,14 @@ std::uint8_t Propagator::source(const BlockId* blocks, int mask, const std::int1
 void Propagator::replaceLevels(SectionRef& r, std::uint32_t origin, const std::uint8_t* levels) {
   std::uint8_t* current = r.levelBytes();
   int writes = 0;
-  for (int i = 0; i < Section::kVolume; i += 8) {
-    if (std::memcmp(current + i, levels + i, 8) == 0) continue;
-    for (int k = i; k < i + 8; ++k) {
-      if (current[k] == levels[k]) continue;
-      ++writes;
-      // Light that left through a face cell that lost some may have lit cells beyond it.
-      const auto faces = static_cast<std::uint8_t>(kFaceMarks[static_cast<std::size_t>(k)] & kAllDirections);
-      if (faces && levels[k] < current[k]) decrease(posOf(origin, k), current[k], faces);
+  for (int q = 0; q < kByteWords; ++q) {
+    const std::uint64_t before = byteWord(current, q), after = byteWord(levels, q);
+    if (before == after) continue;
+    writes += std::popcount(changedBytes(before, after));
+    // Light that left through a face cell that lost some may have lit cells beyond it.
+    for (std::uint64_t lost = lowerBytes(before, after) & faceBytes(q); lost != 0; lost &= lost - 1) {
+      const int k = q * 8 + std::countr_zero(lost) / 8;
+      decrease(posOf(origin, k), current[k], static_cast<std::uint8_t>(kFaceMarks[static_cast<std::size_t>(k)] & kAllDirections));
     }
   }
   if (writes == 0) return;

@@ -118,6 +118,14 @@ class Propagator {
     cell = {&frame_.ref(frame_.refIndex(pos)), LightFrame::local(pos), pos};
     return cell.ref->layer != nullptr;
   }
+  // Like locate, but the section's levels stay packed: for reading its layer before run() writes
+  // anything, without the cost of unpacking.
+  bool locatePacked(int x, int y, int z, Cell& cell) {
+    std::uint32_t pos;
+    if (!frame_.toFrame(x, y, z, pos)) return false;
+    cell = {&frame_.packedRef(frame_.refIndex(pos)), LightFrame::local(pos), pos};
+    return cell.ref->layer != nullptr;
+  }
   static std::uint8_t light(const SectionRef& r, int index) { return static_cast<std::uint8_t>(r.levels[index]); }
   std::uint8_t light(const Cell& c) const { return light(*c.ref, c.index); }
   void setLight(const Cell& c, std::uint8_t level) { setLight(*c.ref, c.index, level); }

@@ -4,7 +4,7 @@
 #include <random>
 
 #include "light/light_engine.h"
-#include "light/nibble_words.h"
+#include "light/level_words.h"
 
 #include <chrono>
 #include <thread>
@@ -262,6 +262,18 @@ TEST(Light, RelightingASectionFromDarknessOrFromLightThatIsGoneMatchesAFullRecom
     w.light.relightSection({0, sectionOf(at.y), 0});
     ASSERT_EQ(compareWithReference(w.world), "") << "after removing the torch at " << at.x << " " << at.y << " " << at.z;
   }
+}
+
+TEST(Light, ByteWordsCompareEveryPairOfLevels) {
+  for (int a = 0; a < 16; ++a)
+    for (int b = 0; b < 16; ++b)
+      for (const int k : {0, 1, 5, 7}) {
+        const std::uint64_t before = static_cast<std::uint64_t>(a) << (8 * k) | 0x0F000000,
+                            after = static_cast<std::uint64_t>(b) << (8 * k) | 0x0F000000;
+        const std::uint64_t bit = std::uint64_t{0x80} << (8 * k);
+        EXPECT_EQ(light::lowerBytes(before, after), b < a ? bit : 0) << a << " -> " << b << " in cell " << k;
+        EXPECT_EQ(light::changedBytes(before, after), a != b ? bit : 0) << a << " -> " << b << " in cell " << k;
+      }
 }
 
 // A written section reports the faces of the cells that changed: its neighbours beyond them remesh.
