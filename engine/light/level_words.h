@@ -1,10 +1,7 @@
 #pragma once
 // A section's light levels moved between NibbleArray bytes (two levels a byte) and plain bytes (one
-// level a byte, what updates work in), and compared many at a time in 64-bit words:
-// - NibbleArray bytes: word w holds the cells 16w..16w+15 (one x row at y = w / 16, z = w % 16), cell
-//   16w+k in bits 4k..4k+3;
-// - plain bytes: word q holds the cells 8q..8q+7, cell 8q+k in bits 8k..8k+7.
-// Internal to engine/light.
+// level a byte, what updates work in), and plain bytes compared eight at a time: word q holds the
+// cells 8q..8q+7, cell 8q+k in bits 8k..8k+7. Internal to engine/light.
 
 #include <cstdint>
 #include <cstring>
@@ -17,32 +14,11 @@
 
 namespace terrasol::light {
 
-inline constexpr int kNibbleWords = 256;  // per section
-
-// Word w of either layout: 8 bytes.
-inline std::uint64_t nibbleWord(const std::uint8_t* bytes, int word) {
+// Word q of a section's plain bytes.
+inline std::uint64_t byteWord(const std::uint8_t* bytes, int q) {
   std::uint64_t w;
-  std::memcpy(&w, bytes + 8 * word, sizeof w);
+  std::memcpy(&w, bytes + 8 * q, sizeof w);
   return w;
-}
-inline std::uint64_t byteWord(const std::uint8_t* bytes, int word) { return nibbleWord(bytes, word); }
-
-// The kFaceMarks bits of the cells whose levels differ between two sections' NibbleArray bytes, with
-// bit 7 when any does: the bits of every word that differs, OR-ed together, show the x faces (cells 0
-// and 15 of a row); the rows at y = 0 or 15 and at z = 0 or 15 are whole words.
-inline std::uint8_t changedFaces(const std::uint8_t* a, const std::uint8_t* b) {
-  std::uint64_t diff[kNibbleWords];
-  std::uint64_t any = 0, down = 0, up = 0, north = 0, south = 0;
-  for (int w = 0; w < kNibbleWords; ++w) any |= diff[w] = nibbleWord(a, w) ^ nibbleWord(b, w);
-  if (any == 0) return 0;
-  for (int k = 0; k < 16; ++k) {
-    down |= diff[k];
-    up |= diff[240 + k];
-    north |= diff[16 * k];
-    south |= diff[16 * k + 15];
-  }
-  return static_cast<std::uint8_t>(0x80 | ((any & 15) != 0) | ((any >> 60) != 0) << 1 | (down != 0) << 2 |
-                                   (up != 0) << 3 | (north != 0) << 4 | (south != 0) << 5);
 }
 
 inline constexpr int kByteWords = 512;  // per section

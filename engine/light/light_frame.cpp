@@ -73,12 +73,10 @@ void LightFrame::unpack(SectionRef& r) {
   }
 }
 
-std::uint8_t LightFrame::pack(SectionRef& r) {
-  r.written = false;
-  NibbleArray::Bytes packed;
-  packNibbles(r.levelBytes(), packed.data());
-  const std::uint8_t marks = changedFaces(r.layer->bytes(), packed.data());
-  if (marks) std::memcpy(r.layer->writableBytes(), packed.data(), packed.size());
+unsigned LightFrame::pack(SectionRef& r) {
+  const unsigned marks = r.marks;
+  r.marks = 0;
+  if (marks) packNibbles(r.levelBytes(), r.layer->writableBytes());
   return marks;
 }
 

@@ -32,7 +32,7 @@ enum class Level : std::uint8_t {};
 struct SectionRef {
   NibbleArray* layer = nullptr;      // null: not loaded, or outside the world (acts opaque)
   Level* levels = nullptr;           // the slab, by Section::index; null until the section is touched
-  bool written = false;              // levels were set: pack them back when the update ends
+  unsigned marks = 0;                // kFaceMarks of the cells written: pack them back, and whose halos changed
   const BlockId* blocks = nullptr;   // blocks[index & blockMask]: the dense array, or &uniform
   int blockMask = 0;
   BlockId uniform = kAir;
@@ -100,9 +100,8 @@ class LightFrame {
   }
   // The ref of a position that was queued: its section was resolved and unpacked then.
   SectionRef& queuedRef(int index) { return refs_[static_cast<std::size_t>(index)]; }
-  // Packs a written section's levels back into its layer. Returns the kFaceMarks bits of the cells
-  // whose level changed (bit 7: any cell), 0 when none did.
-  static std::uint8_t pack(SectionRef& r);
+  // Packs a written section's levels back into its layer; returns and clears its marks.
+  static unsigned pack(SectionRef& r);
   // Grid chunk indices resolved so far, their sections' refs (kRefSections each, the first and last
   // empty), and their chunk positions.
   const std::vector<int>& resolvedChunks() const { return resolvedList_; }

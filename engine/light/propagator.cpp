@@ -50,7 +50,12 @@ void Propagator::replaceLevels(SectionRef& r, std::uint32_t origin, const std::u
   for (int q = 0; q < kByteWords; ++q) {
     const std::uint64_t before = byteWord(current, q), after = byteWord(levels, q);
     if (before == after) continue;
-    writes += std::popcount(changedBytes(before, after));
+    const std::uint64_t changed = changedBytes(before, after);
+    writes += std::popcount(changed);
+    r.marks |= 0x80;
+    for (std::uint64_t face = changed & faceBytes(q); face != 0; face &= face - 1) {
+      r.marks |= kFaceMarks[static_cast<std::size_t>(q * 8 + std::countr_zero(face) / 8)];
+    }
     // Light that left through a face cell that lost some may have lit cells beyond it.
     for (std::uint64_t lost = lowerBytes(before, after) & faceBytes(q); lost != 0; lost &= lost - 1) {
       const int k = q * 8 + std::countr_zero(lost) / 8;
@@ -60,7 +65,6 @@ void Propagator::replaceLevels(SectionRef& r, std::uint32_t origin, const std::u
   if (writes == 0) return;
   lightWrites_ += static_cast<std::uint64_t>(writes);
   std::memcpy(current, levels, Section::kVolume);
-  r.written = true;
 }
 
 // Written sections are packed back. A changed cell changes its own section's mesh and, on a face,
@@ -71,8 +75,7 @@ void Propagator::writeBack() {
     const ChunkPos at = frame_.chunkPos(chunk);
     const int cx = at.x, cz = at.z;
     for (int s = 0; s < kSectionCount; ++s) {
-      if (!refs[s + 1].written) continue;
-      const std::uint8_t m = LightFrame::pack(refs[s + 1]);
+      const int m = static_cast<int>(LightFrame::pack(refs[s + 1]));
       if (!m) continue;
       const int y0 = (m & 4) && s > 0 ? -1 : 0, y1 = (m & 8) && s < kSectionCount - 1 ? 1 : 0;
       for (int dz = -(m >> 4 & 1); dz <= (m >> 5 & 1); ++dz)

@@ -72,16 +72,16 @@ class EntryQueue {
 
 // A section's pointers copied into locals: the compiler keeps them in registers, where a SectionRef's
 // fields would be reloaded after every light byte written (uint8_t stores may alias anything).
-// flush() records whether anything was written. The one way light is written.
+// flush() records the faces of the cells written. The one way light is written.
 struct Cursor {
   explicit Cursor(SectionRef& r)
       : ref(r), levels(r.levels), blocks(r.blocks), mask(r.blockMask), skyTop(r.skyTop), minY(r.minY) {}
-  void flush() { ref.written |= written; }
+  void flush() { ref.marks |= marks; }
   std::uint8_t light(int i) const { return static_cast<std::uint8_t>(levels[i]); }
   BlockId block(int i) const { return blocks[i & mask]; }
   void set(int i, std::uint8_t level) {
     levels[i] = Level{level};
-    written = true;
+    marks |= kFaceMarks[static_cast<std::size_t>(i)];
   }
 
   SectionRef& ref;
@@ -90,7 +90,7 @@ struct Cursor {
   int mask;
   const std::int16_t* skyTop;
   int minY;
-  bool written = false;
+  unsigned marks = 0;
 };
 
 // A cell of the frame: its section and its index there.
@@ -151,7 +151,7 @@ class Propagator {
   }
   void setLight(SectionRef& r, int index, std::uint8_t level) {
     r.levels[index] = Level{level};
-    r.written = true;
+    r.marks |= kFaceMarks[static_cast<std::size_t>(index)];
     ++lightWrites_;
   }
   std::uint8_t source(const SectionRef& r, int index) {

@@ -276,20 +276,6 @@ TEST(Light, ByteWordsCompareEveryPairOfLevels) {
       }
 }
 
-// A written section reports the faces of the cells that changed: its neighbours beyond them remesh.
-TEST(Light, ChangedFacesAreThoseOfTheChangedCell) {
-  NibbleArray before;
-  for (int i = 0; i < Section::kVolume; ++i) before.set(i, static_cast<std::uint8_t>(i % 13));
-  EXPECT_EQ(light::changedFaces(before.bytes(), before.bytes()), 0);
-  for (int i = 0; i < Section::kVolume; ++i) {
-    NibbleArray after = before;
-    after.set(i, static_cast<std::uint8_t>(before.get(i) ^ (i % 4 == 0 ? 8 : 1)));
-    const int x = i & 15, y = i >> 8, z = (i >> 4) & 15;
-    const int faces = 0x80 | (x == 0) | (x == 15) << 1 | (y == 0) << 2 | (y == 15) << 3 | (z == 0) << 4 | (z == 15) << 5;
-    ASSERT_EQ(light::changedFaces(before.bytes(), after.bytes()), faces) << "cell " << i;
-  }
-}
-
 // Updates work on one byte per level; packing must give back exactly the NibbleArray's bytes.
 TEST(Light, LevelsUnpackAndPackInNibbleArrayOrder) {
   NibbleArray nibbles;
