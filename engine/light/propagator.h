@@ -70,9 +70,8 @@ class EntryQueue {
   std::size_t size_ = 0;
 };
 
-// A section's pointers copied into locals: the compiler keeps them in registers, where a SectionRef's
-// fields would be reloaded after every light byte written (uint8_t stores may alias anything).
-// flush() records the faces of the cells written. The one way light is written.
+// A section's pointers copied into locals, which the compiler keeps in registers through a cell's
+// visits; flush() records the faces of the cells written. The one way the flood fill writes light.
 struct Cursor {
   explicit Cursor(SectionRef& r)
       : ref(r), levels(r.levels), blocks(r.blocks), mask(r.blockMask), skyTop(r.skyTop), minY(r.minY) {}

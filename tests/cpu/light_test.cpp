@@ -208,6 +208,17 @@ TEST(Light, ReportsChangedSectionsIncludingNeighboursWhoseHaloChanged) {
   w.light.takeChangedSections();
   w.set({8, 100, 8}, "stone");  // same light properties: nothing to redo
   EXPECT_TRUE(w.light.takeChangedSections().empty());
+  // This torch's light ends at level 1 on three faces of its section: the sections beyond them get
+  // no light, but their halos changed.
+  w.set({2, 66, 2}, "torch");
+  const auto halos = w.light.takeChangedSections();
+  const int section = sectionOf(66);
+  for (const SectionPos s : {SectionPos{1, section, 0}, SectionPos{0, section + 1, 0}, SectionPos{0, section, 1}}) {
+    EXPECT_TRUE(std::find(halos.begin(), halos.end(), s) != halos.end())
+        << "section " << s.x << " " << s.section << " " << s.z << " not reported";
+  }
+  EXPECT_EQ(w.block({16, 66, 2}), 0);
+  EXPECT_EQ(w.block({15, 66, 2}), 1);
 }
 
 TEST(Light, RelightingASectionRepairsItAndChangesNothingCorrect) {
