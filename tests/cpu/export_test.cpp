@@ -40,7 +40,8 @@ Exported exportOf(const Region& region, const std::string& name) {
   const std::vector<SectionMesh> meshes = meshRegion(world.world(), region, table);
   Exported out;
   for (const SectionMesh& m : meshes) out.mesherQuads += m.quads();
-  const auto file = testing::scratchDir("export") / (name + ".glb");
+  // A folder per export: ctest runs these tests in parallel, and scratchDir empties its folder.
+  const auto file = testing::scratchDir("export-" + name) / (name + ".glb");
   out.stats = exportRegion(meshes, region, atlas, tints, file);
   out.model = loadModel(file);
   return out;
