@@ -44,6 +44,14 @@ constexpr std::uint64_t faceBytes(int q) {
   return q & 1 ? std::uint64_t{0x80} << 56 : 0x80;
 }
 
+// The kFaceMarks bits (bit 7: any cell) of the cells `changed` marks in byte word q.
+constexpr unsigned faceMarksOfBytes(int q, std::uint64_t changed) {
+  if (changed == 0) return 0;
+  const int row = q >> 1, y = row >> 4, z = row & 15;
+  const bool west = !(q & 1) && (changed & 0x80), east = (q & 1) && (changed >> 63);
+  return 0x80u | west | east << 1 | (y == 0) << 2 | (y == 15) << 3 | (z == 0) << 4 | (z == 15) << 5;
+}
+
 // Levels (4096, one a byte) from NibbleArray bytes, and back. SSE2 where there is SSE2 (every x86-64);
 // the plain loops elsewhere.
 inline void unpackNibbles(const std::uint8_t* nibbles, std::uint8_t* levels) {

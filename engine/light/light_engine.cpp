@@ -349,7 +349,8 @@ namespace {
 // True when a cell on the section's faces would get less light than it has (`current`).
 bool faceLosesLight(const std::uint8_t* current, const light::SectionSolver::Levels& levels) {
   for (int q = 0; q < light::kByteWords; ++q) {
-    if (light::lowerBytes(light::byteWord(current, q), light::byteWord(levels.data(), q)) & light::faceBytes(q)) {
+    if (light::lowerBytes(light::byteWord(current, q), light::byteWord(levels.data(), q)) &
+        light::faceBytes(q)) {
       return true;
     }
   }

@@ -64,7 +64,7 @@ class LightEngine {
   // 16-bit fields, not 8: a store through an 8-bit integer may alias anything, so the compiler
   // would reload every pointer and counter of the flood fill after each entry queued.
   struct Entry {
-    std::uint32_t pos;         // frame position (light_frame.h)
+    std::uint32_t pos;  // frame position (light_frame.h)
     std::uint16_t level;
     std::uint16_t directions;  // bit d set: still to visit Direction d
   };

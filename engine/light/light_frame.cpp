@@ -62,7 +62,6 @@ void LightFrame::resolve(int index) {
   }
 }
 
-
 void LightFrame::unpack(SectionRef& r) {
   if (slabsUsed_ == slabs_.size()) slabs_.push_back(std::make_unique<Slab>());
   r.levels = slabs_[slabsUsed_++]->data();

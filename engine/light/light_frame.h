@@ -30,10 +30,10 @@ inline constexpr int kRefSections = kSectionCount + 2;  // sections per chunk, w
 enum class Level : std::uint8_t {};
 
 struct SectionRef {
-  NibbleArray* layer = nullptr;      // null: not loaded, or outside the world (acts opaque)
-  Level* levels = nullptr;           // the slab, by Section::index; null until the section is touched
-  unsigned marks = 0;                // kFaceMarks of the cells written: pack them back, and whose halos changed
-  const BlockId* blocks = nullptr;   // blocks[index & blockMask]: the dense array, or &uniform
+  NibbleArray* layer = nullptr;  // null: not loaded, or outside the world (acts opaque)
+  Level* levels = nullptr;       // the slab, by Section::index; null until the section is touched
+  unsigned marks = 0;            // kFaceMarks of the cells written: pack them back, and whose halos changed
+  const BlockId* blocks = nullptr;  // blocks[index & blockMask]: the dense array, or &uniform
   int blockMask = 0;
   BlockId uniform = kAir;
   const std::int16_t* skyTop = nullptr;  // the chunk's heightmap

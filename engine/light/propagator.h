@@ -125,7 +125,9 @@ class Propagator {
     cell = {&frame_.packedRef(frame_.refIndex(pos)), LightFrame::local(pos), pos};
     return cell.ref->layer != nullptr;
   }
-  static std::uint8_t light(const SectionRef& r, int index) { return static_cast<std::uint8_t>(r.levels[index]); }
+  static std::uint8_t light(const SectionRef& r, int index) {
+    return static_cast<std::uint8_t>(r.levels[index]);
+  }
   std::uint8_t light(const Cell& c) const { return light(*c.ref, c.index); }
   void setLight(const Cell& c, std::uint8_t level) { setLight(*c.ref, c.index, level); }
   // The level a cell has by itself: its emission (block light) or 15 in the open sky column (sky light).

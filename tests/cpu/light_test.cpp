@@ -1,17 +1,16 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <random>
-
-#include "light/light_engine.h"
-#include "light/level_words.h"
-
 #include <chrono>
+#include <random>
 #include <thread>
 
-#include "world/chunk_streamer.h"
+#include "light/level_words.h"
+#include "light/light_engine.h"
+#include "light/light_frame.h"
 #include "support/reference_light.h"
 #include "support/world_support.h"
+#include "world/chunk_streamer.h"
 #include "world/generator.h"
 
 namespace terrasol {
@@ -213,7 +212,8 @@ TEST(Light, ReportsChangedSectionsIncludingNeighboursWhoseHaloChanged) {
   w.set({2, 66, 2}, "torch");
   const auto halos = w.light.takeChangedSections();
   const int section = sectionOf(66);
-  for (const SectionPos s : {SectionPos{1, section, 0}, SectionPos{0, section + 1, 0}, SectionPos{0, section, 1}}) {
+  for (const SectionPos s :
+       {SectionPos{1, section, 0}, SectionPos{0, section + 1, 0}, SectionPos{0, section, 1}}) {
     EXPECT_TRUE(std::find(halos.begin(), halos.end(), s) != halos.end())
         << "section " << s.x << " " << s.section << " " << s.z << " not reported";
   }
@@ -283,8 +283,19 @@ TEST(Light, ByteWordsCompareEveryPairOfLevels) {
                             after = static_cast<std::uint64_t>(b) << (8 * k) | 0x0F000000;
         const std::uint64_t bit = std::uint64_t{0x80} << (8 * k);
         EXPECT_EQ(light::lowerBytes(before, after), b < a ? bit : 0) << a << " -> " << b << " in cell " << k;
-        EXPECT_EQ(light::changedBytes(before, after), a != b ? bit : 0) << a << " -> " << b << " in cell " << k;
+        EXPECT_EQ(light::changedBytes(before, after), a != b ? bit : 0)
+            << a << " -> " << b << " in cell " << k;
       }
+}
+
+// A section whose levels are replaced whole marks the faces of the cells that changed.
+TEST(Light, ByteWordsMarkTheFacesOfTheirChangedCells) {
+  for (int k = 0; k < Section::kVolume; ++k) {
+    const std::uint64_t changed = std::uint64_t{0x80} << (8 * (k % 8));
+    ASSERT_EQ(light::faceMarksOfBytes(k / 8, changed), light::kFaceMarks[static_cast<std::size_t>(k)])
+        << "cell " << k;
+  }
+  EXPECT_EQ(light::faceMarksOfBytes(100, 0), 0u);
 }
 
 // Updates work on one byte per level; packing must give back exactly the NibbleArray's bytes.
@@ -293,7 +304,8 @@ TEST(Light, LevelsUnpackAndPackInNibbleArrayOrder) {
   for (int i = 0; i < Section::kVolume; ++i) nibbles.set(i, static_cast<std::uint8_t>((i * 7 + i / 16) & 15));
   std::array<std::uint8_t, Section::kVolume> levels;
   light::unpackNibbles(nibbles.bytes(), levels.data());
-  for (int i = 0; i < Section::kVolume; ++i) ASSERT_EQ(levels[static_cast<std::size_t>(i)], nibbles.get(i)) << i;
+  for (int i = 0; i < Section::kVolume; ++i)
+    ASSERT_EQ(levels[static_cast<std::size_t>(i)], nibbles.get(i)) << i;
   NibbleArray::Bytes packed;
   light::packNibbles(levels.data(), packed.data());
   EXPECT_TRUE(std::equal(packed.begin(), packed.end(), nibbles.bytes()));
