@@ -57,6 +57,7 @@ void LightFrame::resolve(int index) {
     r.uniform = section.uniformBlock();
     r.blocks = section.blocks() ? section.blocks()->data() : &r.uniform;
     r.blockMask = section.blocks() ? Section::kVolume - 1 : 0;
+    r.emitters = &light.emitters[static_cast<std::size_t>(s)];
     r.skyTop = light.skyTop.data();
     r.minY = kMinY + s * 16;
   }

@@ -36,6 +36,7 @@ struct SectionRef {
   const BlockId* blocks = nullptr;  // blocks[index & blockMask]: the dense array, or &uniform
   int blockMask = 0;
   BlockId uniform = kAir;
+  const std::uint16_t* emitters = nullptr;  // the section's count in ChunkLight::emitters: at 0 no cell emits
   const std::int16_t* skyTop = nullptr;  // the chunk's heightmap
   int minY = 0;                          // world y of the section's bottom layer
 

@@ -28,22 +28,6 @@ Propagator::~Propagator() {
   stats_.lightWrites += lightWrites_;
 }
 
-std::uint8_t Propagator::source(const BlockId* blocks, int mask, const std::int16_t* skyTop, int minY, int index,
-                                std::uint64_t& reads) const {
-  if (channel_ == LightChannel::Block) {
-    ++reads;
-    return emission_[blocks[index & mask]];
-  }
-  const int y = minY + (index >> 8);
-  if (y > skyTop[index & 255]) return 15;
-  // The top layer of the world is lit from the sky above it, through its own opacity.
-  if (y == kMaxY - 1) {
-    ++reads;
-    return topLayerSky(opacity_[blocks[index & mask]]);
-  }
-  return 0;
-}
-
 void Propagator::replaceLevels(SectionRef& r, std::uint32_t origin, const std::uint8_t* levels) {
   std::uint8_t* current = r.levelBytes();
   int writes = 0;
@@ -143,7 +127,7 @@ void Propagator::runDecrease() {
       const std::uint8_t level = c.light(i);
       if (level == 0) return;
       if (level < e.level) {
-        const std::uint8_t own = source(c.blocks, c.mask, c.skyTop, c.minY, i, reads);
+        const std::uint8_t own = source(c, i, reads);
         if (own < level) {
           // Its light may have come through the removed cell: clear it and keep removing from it.
           c.set(i, own);

@@ -74,7 +74,13 @@ class EntryQueue {
 // visits; flush() records the faces of the cells written. The one way the flood fill writes light.
 struct Cursor {
   explicit Cursor(SectionRef& r)
-      : ref(r), levels(r.levels), blocks(r.blocks), mask(r.blockMask), skyTop(r.skyTop), minY(r.minY) {}
+      : ref(r),
+        levels(r.levels),
+        blocks(r.blocks),
+        mask(r.blockMask),
+        skyTop(r.skyTop),
+        minY(r.minY),
+        emitters(r.emitters) {}
   void flush() { ref.marks |= marks; }
   std::uint8_t light(int i) const { return static_cast<std::uint8_t>(levels[i]); }
   BlockId block(int i) const { return blocks[i & mask]; }
@@ -89,6 +95,7 @@ struct Cursor {
   int mask;
   const std::int16_t* skyTop;
   int minY;
+  const std::uint16_t* emitters;
   unsigned marks = 0;
 };
 
@@ -155,11 +162,22 @@ class Propagator {
     r.marks |= kFaceMarks[static_cast<std::size_t>(index)];
     ++lightWrites_;
   }
-  std::uint8_t source(const SectionRef& r, int index) {
-    return source(r.blocks, r.blockMask, r.skyTop, r.minY, index, blockReads_);
+  std::uint8_t source(SectionRef& r, int index) { return source(Cursor(r), index, blockReads_); }
+  std::uint8_t source(const Cursor& c, int index, std::uint64_t& reads) const {
+    if (channel_ == LightChannel::Block) {
+      if (*c.emitters == 0) return 0;  // no block to read: the section has no emitter
+      ++reads;
+      return emission_[c.block(index)];
+    }
+    const int y = c.minY + (index >> 8);
+    if (y > c.skyTop[index & 255]) return 15;
+    // The top layer of the world is lit from the sky above it, through its own opacity.
+    if (y == kMaxY - 1) {
+      ++reads;
+      return topLayerSky(opacity_[c.block(index)]);
+    }
+    return 0;
   }
-  std::uint8_t source(const BlockId* blocks, int mask, const std::int16_t* skyTop, int minY, int index,
-                      std::uint64_t& reads) const;
   // Gives every cell of the section whose cell 0 is at `origin` the level in `levels` (4096 bytes, by
   // Section::index). A face cell that loses light starts a decrease outward with its old level: light that
   // left the section through it may have to go. Cells inside need none, they all have new levels.
