@@ -80,6 +80,29 @@ TEST(Light, TorchInOpenAirMakesADiamondFrom14To1) {
   expectDiamond(w, torch, 0);
 }
 
+// Clearing light reads a cell's block (for its own emission) only in sections that hold an emitter.
+TEST(Light, RemovingLightReadsBlocksOnlyInSectionsWithAnEmitter) {
+  LitWorld w("void");
+  w.loadArea(-1, -1, 1, 1);
+  const BlockPos torch{8, 72, 8};
+  w.set(torch, "torch");
+  w.light.resetStats();
+  w.set(torch, "air");
+  expectDiamond(w, torch, 0);
+  EXPECT_GT(w.light.stats().lightWrites, 1000u);
+  EXPECT_EQ(w.light.stats().blockReads, 0u);
+
+  // With a second torch in the section, every cleared cell there must check whether it emits.
+  const BlockPos other{2, 72, 2};
+  w.set(other, "torch");
+  w.set(torch, "torch");
+  w.light.resetStats();
+  w.set(torch, "air");
+  EXPECT_GT(w.light.stats().blockReads, 100u);
+  EXPECT_EQ(w.block(other), 14);
+  EXPECT_EQ(compareWithReference(w.world), "");
+}
+
 TEST(Light, EveryKindOfBorderIsCrossed) {
   LitWorld w("void");
   w.loadArea(-2, -2, 1, 1);
