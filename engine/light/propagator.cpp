@@ -80,21 +80,9 @@ void Propagator::run() {
 template <class Visit>
 void Propagator::forNeighbours(SectionRef& r, int index, std::uint32_t pos, std::uint8_t inSection,
                                unsigned directions, Visit&& visit) {
-  if ((inSection & kInterior) && r.layer) {
-    // All six neighbours in this section: unrolled, so each direction branches on its own, and the
-    // direction the entry came from is visited too (it cannot change: it is at least as bright).
-    Cursor c(r);
-    visit(c, index - 1, pos - 1, 0);
-    visit(c, index + 1, pos + 1, 1);
-    visit(c, index - 256, pos - 256, 2);
-    visit(c, index + 256, pos + 256, 3);
-    visit(c, index - 16, pos - 16, 4);
-    visit(c, index + 16, pos + 16, 5);
-    c.flush();
-    return;
-  }
-  if (const unsigned near = directions & inSection; near && r.layer) {
-    // Unrolled as well: a branch per direction costs less than a loop over the bits.
+  // The neighbours in `near`, all in this section, through one cursor: unrolled, a branch per
+  // direction, which costs less than a loop over the bits (and nothing where `near` is a constant).
+  auto visitInSection = [&](unsigned near) {
     Cursor c(r);
     if (near & 1) visit(c, index - 1, pos - 1, 0);
     if (near & 2) visit(c, index + 1, pos + 1, 1);
@@ -103,7 +91,13 @@ void Propagator::forNeighbours(SectionRef& r, int index, std::uint32_t pos, std:
     if (near & 16) visit(c, index - 16, pos - 16, 4);
     if (near & 32) visit(c, index + 16, pos + 16, 5);
     c.flush();
+  };
+  if ((inSection & kInterior) && r.layer) {
+    // All six, the direction the entry came from too (it cannot change: it is at least as bright).
+    visitInSection(kAllDirections);
+    return;
   }
+  if (const unsigned near = directions & inSection; near && r.layer) visitInSection(near);
   for (unsigned dirs = directions & ~inSection & kAllDirections; dirs != 0; dirs &= dirs - 1) {
     const int d = std::countr_zero(dirs);
     Cell n;
