@@ -103,6 +103,7 @@ BlockPos faceCell(ChunkPos pos, int d, int a, int y, int beyond) {
 LightEngine::LightEngine(World& world)
     : world_(world),
       opacity_(world.blocks().opacities().data()),
+      attenuation_(light::attenuations(world.blocks().opacities())),
       emission_(world.blocks().emissions().data()),
       frame_(std::make_unique<light::LightFrame>()),
       solver_(std::make_unique<light::SectionSolver>()) {}
@@ -138,7 +139,7 @@ void LightEngine::chunkLoaded(ChunkPos pos) {
   const light::ChunkWindow window(world_, {pos.x - 1 - kReach, pos.z - 1 - kReach},
                                   {pos.x + 1 + kReach, pos.z + 1 + kReach});
   for (const LightChannel channel : {LightChannel::Block, LightChannel::Sky}) {
-    Propagator p(*frame_, window, channel, opacity_, emission_, decrease_, increase_, stats_, changed_);
+    Propagator p(*frame_, window, channel, attenuation_.data(), emission_, decrease_, increase_, stats_, changed_);
     if (channel == LightChannel::Block) {
       seedEmitters(p, *chunk);
     } else {
@@ -218,7 +219,7 @@ void LightEngine::chunkUnloading(ChunkPos pos) {
   const light::ChunkWindow window(world_, {pos.x - 1 - kReach, pos.z - 1 - kReach},
                                   {pos.x + 1 + kReach, pos.z + 1 + kReach}, chunk);
   for (const LightChannel channel : {LightChannel::Block, LightChannel::Sky}) {
-    Propagator p(*frame_, window, channel, opacity_, emission_, decrease_, increase_, stats_, changed_);
+    Propagator p(*frame_, window, channel, attenuation_.data(), emission_, decrease_, increase_, stats_, changed_);
     for (const int d : kHorizontal) {
       const BlockPos& o = kDirectionOffsets[d];
       const Chunk* neighbour = world_.chunk({pos.x + o.x, pos.z + o.z});
@@ -258,7 +259,7 @@ void LightEngine::blockChanged(const BlockChange& change) {
   const bool skyToo = opacity_[change.before] != opacity_[change.after];
   for (const LightChannel channel : {LightChannel::Block, LightChannel::Sky}) {
     if (channel == LightChannel::Sky && !skyToo) continue;
-    Propagator p(*frame_, window, channel, opacity_, emission_, decrease_, increase_, stats_, changed_);
+    Propagator p(*frame_, window, channel, attenuation_.data(), emission_, decrease_, increase_, stats_, changed_);
     seedChangedCell(p, at);
     if (channel == LightChannel::Sky) seedSkyColumn(p, at, oldTop, newTop);
     p.run();
@@ -397,9 +398,9 @@ void LightEngine::relightSection(const SectionPos& s) {
   const BlockId uniform = blocks.uniformBlock();
   light::SectionSolver& solver = *solver_;
   solver.begin(blocks.blocks() ? blocks.blocks()->data() : &uniform, blocks.blocks() ? Section::kVolume - 1 : 0,
-               opacity_);
+               attenuation_.data());
   for (const LightChannel channel : {LightChannel::Block, LightChannel::Sky}) {
-    Propagator p(*frame_, window, channel, opacity_, emission_, decrease_, increase_, stats_, changed_);
+    Propagator p(*frame_, window, channel, attenuation_.data(), emission_, decrease_, increase_, stats_, changed_);
     Cell origin;
     p.locate(x0, y0, z0, origin);
     Cell beyond[6];  // each neighbouring section's cell 0, packed; ref null where not loaded

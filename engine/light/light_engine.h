@@ -82,6 +82,7 @@ class LightEngine {
 
   World& world_;
   const std::uint8_t* opacity_;
+  std::vector<std::uint8_t> attenuation_;  // max(1, opacity)
   const std::uint8_t* emission_;
   LightStats stats_;
   std::vector<Entry> decrease_, increase_;  // reused between updates

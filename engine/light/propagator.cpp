@@ -8,13 +8,14 @@
 
 namespace terrasol::light {
 
-Propagator::Propagator(LightFrame& frame, const ChunkWindow& window, LightChannel channel, const std::uint8_t* opacity,
+Propagator::Propagator(LightFrame& frame, const ChunkWindow& window, LightChannel channel,
+                       const std::uint8_t* attenuation,
                        const std::uint8_t* emission, std::vector<LightEngine::Entry>& decrease,
                        std::vector<LightEngine::Entry>& increase, LightStats& stats,
                        std::unordered_set<std::uint64_t>& changed)
     : frame_(frame),
       channel_(channel),
-      opacity_(opacity),
+      attenuation_(attenuation),
       emission_(emission),
       decrease_(decrease),
       increase_(increase),
@@ -158,7 +159,7 @@ void Propagator::runIncrease() {
                     const std::uint8_t current = c.light(i);
                     if (current + 1 >= e.level) return;  // cannot improve even through air: no block read
                     ++reads;
-                    const int level = e.level - std::max<int>(1, opacity_[c.block(i)]);
+                    const int level = e.level - attenuation_[c.block(i)];
                     if (level <= current) return;
                     c.set(i, static_cast<std::uint8_t>(level));
                     ++writes;

@@ -14,6 +14,14 @@ inline constexpr std::uint8_t kAllDirections = 0x3F;
 constexpr std::uint8_t allBut(int direction) { return static_cast<std::uint8_t>(kAllDirections & ~(1 << direction)); }
 constexpr int opposite(int direction) { return direction ^ 1; }  // West<->East, Down<->Up, North<->South
 
+// What light loses entering a block: max(1, opacity), tabled per block id so the flood fill reads it
+// with one load.
+inline std::vector<std::uint8_t> attenuations(const std::vector<std::uint8_t>& opacities) {
+  std::vector<std::uint8_t> a(opacities);
+  for (std::uint8_t& v : a) v = std::max<std::uint8_t>(1, v);
+  return a;
+}
+
 // Sky light of a cell in the top layer of the world that is not open sky: lit from above, through
 // its own opacity.
 constexpr std::uint8_t topLayerSky(std::uint8_t opacity) {
@@ -109,7 +117,8 @@ struct Cell {
 class Propagator {
  public:
   // Resets `frame` to the window and channel.
-  Propagator(LightFrame& frame, const ChunkWindow& window, LightChannel channel, const std::uint8_t* opacity,
+  // `attenuation` by block id: see attenuations().
+  Propagator(LightFrame& frame, const ChunkWindow& window, LightChannel channel, const std::uint8_t* attenuation,
              const std::uint8_t* emission, std::vector<LightEngine::Entry>& decrease,
              std::vector<LightEngine::Entry>& increase, LightStats& stats, std::unordered_set<std::uint64_t>& changed);
   ~Propagator();  // adds the counters to the engine's stats
@@ -174,7 +183,7 @@ class Propagator {
     // The top layer of the world is lit from the sky above it, through its own opacity.
     if (y == kMaxY - 1) {
       ++reads;
-      return topLayerSky(opacity_[c.block(index)]);
+      return static_cast<std::uint8_t>(15 - attenuation_[c.block(index)]);
     }
     return 0;
   }
@@ -199,7 +208,7 @@ class Propagator {
 
   LightFrame& frame_;
   LightChannel channel_;
-  const std::uint8_t* opacity_;
+  const std::uint8_t* attenuation_;
   const std::uint8_t* emission_;
   EntryQueue decrease_;
   EntryQueue increase_;

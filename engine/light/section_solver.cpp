@@ -6,10 +6,10 @@
 
 namespace terrasol::light {
 
-void SectionSolver::begin(const BlockId* blocks, int mask, const std::uint8_t* opacity) {
+void SectionSolver::begin(const BlockId* blocks, int mask, const std::uint8_t* attenuations) {
   blocks_ = blocks;
   mask_ = mask;
-  opacity_ = opacity;
+  attenuations_ = attenuations;
   attenuation_.fill(0);
   reads_ = 0;
 }

@@ -36,7 +36,7 @@ class SectionSolver {
   using Levels = std::array<std::uint8_t, Section::kVolume>;
 
   // A new section, whose blocks are blocks[index & mask]: forgets the opacities read so far.
-  void begin(const BlockId* blocks, int mask, const std::uint8_t* opacity);
+  void begin(const BlockId* blocks, int mask, const std::uint8_t* attenuations);
   // A new channel: fill levels() with every cell's own level, then seed and offer.
   Levels& levels() { return levels_; }
   // Cell `index` spreads its own level (call once per cell, before solve).
@@ -54,8 +54,7 @@ class SectionSolver {
     std::uint8_t& a = attenuation_[static_cast<std::size_t>(index)];
     if (a == 0) {
       ++reads_;
-      const std::uint8_t opacity = opacity_[blocks_[index & mask_]];
-      a = opacity > 0 ? opacity : 1;
+      a = attenuations_[blocks_[index & mask_]];
     }
     return a;
   }
@@ -75,7 +74,7 @@ class SectionSolver {
 
   const BlockId* blocks_ = nullptr;
   int mask_ = 0;
-  const std::uint8_t* opacity_ = nullptr;
+  const std::uint8_t* attenuations_ = nullptr;  // by block id (attenuations())
   std::uint64_t reads_ = 0;
   Levels levels_{};
   Levels attenuation_{};  // 0 until read
