@@ -79,19 +79,18 @@ void Propagator::run() {
 // through one cursor, the others each through their own. A cell that is not loaded (a chunk being
 // unloaded) still leads across its faces.
 template <class Visit>
-void Propagator::forNeighbours(SectionRef& r, int index, std::uint32_t pos, std::uint8_t inSection,
+void Propagator::forNeighbours(SectionRef& r, Cursor& own, CellIndex index, std::uint32_t pos, std::uint8_t inSection,
                                unsigned directions, Visit&& visit) {
-  // The neighbours in `near`, all in this section, through one cursor: unrolled, a branch per
+  // The neighbours in `near`, all in this section, through its cursor: unrolled, a branch per
   // direction, which costs less than a loop over the bits (and nothing where `near` is a constant).
   auto visitInSection = [&](unsigned near) {
-    Cursor c(r);
+    Cursor& c = own;
     if (near & 1) visit(c, index - 1, pos - 1, 0);
     if (near & 2) visit(c, index + 1, pos + 1, 1);
     if (near & 4) visit(c, index - 256, pos - 256, 2);
     if (near & 8) visit(c, index + 256, pos + 256, 3);
     if (near & 16) visit(c, index - 16, pos - 16, 4);
     if (near & 32) visit(c, index + 16, pos + 16, 5);
-    c.flush();
   };
   if ((inSection & kInterior) && r.layer) {
     // All six, the direction the entry came from too (it cannot change: it is at least as bright).
@@ -110,18 +109,24 @@ void Propagator::forNeighbours(SectionRef& r, int index, std::uint32_t pos, std:
 }
 
 void Propagator::runDecrease() {
+  if (decrease_.size() == 0) return;
   std::uint64_t reads = 0, writes = 0;
+  Cursor own(frame_.queuedRef(LightFrame::refIndex(decrease_[0].pos)));
   for (std::size_t head = 0; head < decrease_.size(); ++head) {
     const LightEngine::Entry e = decrease_[head];
     // The cell itself may be in a chunk being unloaded: its position still leads to its neighbours,
     // each looked up on its own.
     SectionRef& r = frame_.queuedRef(LightFrame::refIndex(e.pos));
-    const int index = LightFrame::local(e.pos);
+    if (&r != own.ref) {
+      own.flush();
+      own = Cursor(r);
+    }
+    const CellIndex index = LightFrame::local(e.pos);
     const std::uint8_t inSection = kInSection[static_cast<std::size_t>(index)];
     LightEngine::Entry* darker = decrease_.room(6);
     LightEngine::Entry* refill = increase_.room(6);
     std::size_t darkerCount = 0, refillCount = 0;
-    forNeighbours(r, index, e.pos, inSection, e.directions, [&](Cursor& c, int i, std::uint32_t pos, int d) {
+    forNeighbours(r, own, index, e.pos, inSection, e.directions, [&](Cursor& c, CellIndex i, std::uint32_t pos, int d) {
       const std::uint8_t level = c.light(i);
       if (level == 0) return;
       if (level < e.level) {
@@ -141,23 +146,32 @@ void Propagator::runDecrease() {
     decrease_.commit(darkerCount);
     increase_.commit(refillCount);
   }
+  own.flush();
   blockReads_ += reads;
   lightWrites_ += writes;
 }
 
 void Propagator::runIncrease() {
+  if (increase_.size() == 0) return;
   std::uint64_t reads = 0, writes = 0;
+  Cursor own(frame_.queuedRef(LightFrame::refIndex(increase_[0].pos)));
   for (std::size_t head = 0; head < increase_.size(); ++head) {
     const LightEngine::Entry e = increase_[head];
     SectionRef& r = frame_.queuedRef(LightFrame::refIndex(e.pos));
-    const int index = LightFrame::local(e.pos);
-    if (!r.levels || light(r, index) != e.level) continue;  // superseded since it was queued
+    if (!r.levels) continue;  // not loaded
+    if (&r != own.ref) {
+      own.flush();
+      own = Cursor(r);
+    }
+    const CellIndex index = LightFrame::local(e.pos);
+    if (own.light(index) != e.level) continue;  // superseded since it was queued
     LightEngine::Entry* out = increase_.room(6);
     std::size_t count = 0;
-    forNeighbours(r, index, e.pos, kInSection[static_cast<std::size_t>(index)], e.directions,
-                  [&](Cursor& c, int i, std::uint32_t pos, int d) {
+    const int throughAir = e.level - 1;  // the most a neighbour can get
+    forNeighbours(r, own, index, e.pos, kInSection[static_cast<std::size_t>(index)], e.directions,
+                  [&](Cursor& c, CellIndex i, std::uint32_t pos, int d) {
                     const std::uint8_t current = c.light(i);
-                    if (current + 1 >= e.level) return;  // cannot improve even through air: no block read
+                    if (current >= throughAir) return;  // no block read: not even air would let it brighten
                     ++reads;
                     const int level = e.level - attenuation_[c.block(i)];
                     if (level <= current) return;
@@ -167,6 +181,7 @@ void Propagator::runIncrease() {
                   });
     increase_.commit(count);
   }
+  own.flush();
   blockReads_ += reads;
   lightWrites_ += writes;
 }

@@ -78,29 +78,34 @@ class EntryQueue {
   std::size_t size_ = 0;
 };
 
+// A cell's Section::index in the flood fill's hot loops: pointer-sized, so that index +- step folds
+// into the address of the load instead of costing a sign extension per neighbour.
+using CellIndex = std::ptrdiff_t;
+
 // A section's pointers copied into locals, which the compiler keeps in registers through a cell's
-// visits; flush() records the faces of the cells written. The one way the flood fill writes light.
+// visits (and the queue loops through consecutive entries in one section); flush() records the faces
+// of the cells written. The one way the flood fill writes light.
 struct Cursor {
   explicit Cursor(SectionRef& r)
-      : ref(r),
+      : ref(&r),
         levels(r.levels),
         blocks(r.blocks),
         mask(r.blockMask),
         skyTop(r.skyTop),
         minY(r.minY),
         emitters(r.emitters) {}
-  void flush() { ref.marks |= marks; }
-  std::uint8_t light(int i) const { return static_cast<std::uint8_t>(levels[i]); }
-  BlockId block(int i) const { return blocks[i & mask]; }
-  void set(int i, std::uint8_t level) {
+  void flush() { ref->marks |= marks; }
+  std::uint8_t light(CellIndex i) const { return static_cast<std::uint8_t>(levels[i]); }
+  BlockId block(CellIndex i) const { return blocks[i & mask]; }
+  void set(CellIndex i, std::uint8_t level) {
     levels[i] = Level{level};
     marks |= kFaceMarks[static_cast<std::size_t>(i)];
   }
 
-  SectionRef& ref;
+  SectionRef* ref;
   Level* levels;
   const BlockId* blocks;
-  int mask;
+  CellIndex mask;
   const std::int16_t* skyTop;
   int minY;
   const std::uint16_t* emitters;
@@ -172,13 +177,13 @@ class Propagator {
     ++lightWrites_;
   }
   std::uint8_t source(SectionRef& r, int index) { return source(Cursor(r), index, blockReads_); }
-  std::uint8_t source(const Cursor& c, int index, std::uint64_t& reads) const {
+  std::uint8_t source(const Cursor& c, CellIndex index, std::uint64_t& reads) const {
     if (channel_ == LightChannel::Block) {
       if (*c.emitters == 0) return 0;  // no block to read: the section has no emitter
       ++reads;
       return emission_[c.block(index)];
     }
-    const int y = c.minY + (index >> 8);
+    const int y = c.minY + static_cast<int>(index >> 8);
     if (y > c.skyTop[index & 255]) return 15;
     // The top layer of the world is lit from the sky above it, through its own opacity.
     if (y == kMaxY - 1) {
@@ -199,9 +204,10 @@ class Propagator {
   void run();
 
  private:
+  // `own` is r's cursor, switched by the caller when its entries move to another section.
   template <class Visit>
-  void forNeighbours(SectionRef& r, int index, std::uint32_t pos, std::uint8_t inSection, unsigned directions,
-                     Visit&& visit);
+  void forNeighbours(SectionRef& r, Cursor& own, CellIndex index, std::uint32_t pos, std::uint8_t inSection,
+                     unsigned directions, Visit&& visit);
   void writeBack();
   void runDecrease();
   void runIncrease();
