@@ -110,6 +110,11 @@ LightEngine::LightEngine(World& world)
 
 LightEngine::~LightEngine() = default;
 
+light::Propagator LightEngine::propagator(const light::ChunkWindow& window, LightChannel channel) {
+  return light::Propagator(*frame_, window, channel, attenuation_.data(), emission_, decrease_, increase_, stats_,
+                           changed_);
+}
+
 std::uint8_t LightEngine::lightAt(const BlockPos& pos, LightChannel channel) const {
   if (pos.y >= kMaxY) return channel == LightChannel::Sky ? 15 : 0;
   if (pos.y < kMinY) return 0;
@@ -139,7 +144,7 @@ void LightEngine::chunkLoaded(ChunkPos pos) {
   const light::ChunkWindow window(world_, {pos.x - 1 - kReach, pos.z - 1 - kReach},
                                   {pos.x + 1 + kReach, pos.z + 1 + kReach});
   for (const LightChannel channel : {LightChannel::Block, LightChannel::Sky}) {
-    Propagator p(*frame_, window, channel, attenuation_.data(), emission_, decrease_, increase_, stats_, changed_);
+    Propagator p = propagator(window, channel);
     if (channel == LightChannel::Block) {
       seedEmitters(p, *chunk);
     } else {
@@ -219,7 +224,7 @@ void LightEngine::chunkUnloading(ChunkPos pos) {
   const light::ChunkWindow window(world_, {pos.x - 1 - kReach, pos.z - 1 - kReach},
                                   {pos.x + 1 + kReach, pos.z + 1 + kReach}, chunk);
   for (const LightChannel channel : {LightChannel::Block, LightChannel::Sky}) {
-    Propagator p(*frame_, window, channel, attenuation_.data(), emission_, decrease_, increase_, stats_, changed_);
+    Propagator p = propagator(window, channel);
     for (const int d : kHorizontal) {
       const BlockPos& o = kDirectionOffsets[d];
       const Chunk* neighbour = world_.chunk({pos.x + o.x, pos.z + o.z});
@@ -259,7 +264,7 @@ void LightEngine::blockChanged(const BlockChange& change) {
   const bool skyToo = opacity_[change.before] != opacity_[change.after];
   for (const LightChannel channel : {LightChannel::Block, LightChannel::Sky}) {
     if (channel == LightChannel::Sky && !skyToo) continue;
-    Propagator p(*frame_, window, channel, attenuation_.data(), emission_, decrease_, increase_, stats_, changed_);
+    Propagator p = propagator(window, channel);
     seedChangedCell(p, at);
     if (channel == LightChannel::Sky) seedSkyColumn(p, at, oldTop, newTop);
     p.run();
@@ -400,7 +405,7 @@ void LightEngine::relightSection(const SectionPos& s) {
   solver.begin(blocks.blocks() ? blocks.blocks()->data() : &uniform, blocks.blocks() ? Section::kVolume - 1 : 0,
                attenuation_.data());
   for (const LightChannel channel : {LightChannel::Block, LightChannel::Sky}) {
-    Propagator p(*frame_, window, channel, attenuation_.data(), emission_, decrease_, increase_, stats_, changed_);
+    Propagator p = propagator(window, channel);
     Cell origin;
     p.locate(x0, y0, z0, origin);
     Cell beyond[6];  // each neighbouring section's cell 0, packed; ref null where not loaded

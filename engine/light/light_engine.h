@@ -22,6 +22,7 @@ namespace terrasol {
 
 namespace light {
 class LightFrame;
+struct ChunkWindow;
 class Propagator;
 class SectionSolver;
 struct Cell;
@@ -70,6 +71,8 @@ class LightEngine {
   };
 
  private:
+  // The flood fill of one channel over `window`, on the engine's reused frame and queues.
+  light::Propagator propagator(const light::ChunkWindow& window, LightChannel channel);
   void seedEmitters(light::Propagator& p, Chunk& chunk);
   void seedOpenSky(light::Propagator& p, const Chunk& chunk);
   void seedFromNeighbours(light::Propagator& p, ChunkPos pos, LightChannel channel);
