@@ -111,8 +111,8 @@ LightEngine::LightEngine(World& world)
 LightEngine::~LightEngine() = default;
 
 light::Propagator LightEngine::propagator(const light::ChunkWindow& window, LightChannel channel) {
-  return light::Propagator(*frame_, window, channel, attenuation_.data(), emission_, decrease_, increase_, stats_,
-                           changed_);
+  return light::Propagator(*frame_, window, channel, attenuation_.data(), emission_, decrease_, increase_,
+                           stats_, changed_);
 }
 
 std::uint8_t LightEngine::lightAt(const BlockPos& pos, LightChannel channel) const {
@@ -402,8 +402,8 @@ void LightEngine::relightSection(const SectionPos& s) {
   const Section& blocks = chunk->section(s.section);
   const BlockId uniform = blocks.uniformBlock();
   light::SectionSolver& solver = *solver_;
-  solver.begin(blocks.blocks() ? blocks.blocks()->data() : &uniform, blocks.blocks() ? Section::kVolume - 1 : 0,
-               attenuation_.data());
+  solver.begin(blocks.blocks() ? blocks.blocks()->data() : &uniform,
+               blocks.blocks() ? Section::kVolume - 1 : 0, attenuation_.data());
   for (const LightChannel channel : {LightChannel::Block, LightChannel::Sky}) {
     Propagator p = propagator(window, channel);
     Cell origin;

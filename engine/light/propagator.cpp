@@ -9,10 +9,9 @@
 namespace terrasol::light {
 
 Propagator::Propagator(LightFrame& frame, const ChunkWindow& window, LightChannel channel,
-                       const std::uint8_t* attenuation,
-                       const std::uint8_t* emission, std::vector<LightEngine::Entry>& decrease,
-                       std::vector<LightEngine::Entry>& increase, LightStats& stats,
-                       std::unordered_set<std::uint64_t>& changed)
+                       const std::uint8_t* attenuation, const std::uint8_t* emission,
+                       std::vector<LightEngine::Entry>& decrease, std::vector<LightEngine::Entry>& increase,
+                       LightStats& stats, std::unordered_set<std::uint64_t>& changed)
     : frame_(frame),
       channel_(channel),
       attenuation_(attenuation),
@@ -79,8 +78,8 @@ void Propagator::run() {
 // through one cursor, the others each through their own. A cell that is not loaded (a chunk being
 // unloaded) still leads across its faces.
 template <class Visit>
-void Propagator::forNeighbours(SectionRef& r, Cursor& own, CellIndex index, std::uint32_t pos, std::uint8_t inSection,
-                               unsigned directions, Visit&& visit) {
+void Propagator::forNeighbours(SectionRef& r, Cursor& own, CellIndex index, std::uint32_t pos,
+                               std::uint8_t inSection, unsigned directions, Visit&& visit) {
   // The neighbours in `near`, all in this section, through its cursor: unrolled, a branch per
   // direction, which costs less than a loop over the bits (and nothing where `near` is a constant).
   auto visitInSection = [&](unsigned near) {
@@ -126,23 +125,25 @@ void Propagator::runDecrease() {
     LightEngine::Entry* darker = decrease_.room(6);
     LightEngine::Entry* refill = increase_.room(6);
     std::size_t darkerCount = 0, refillCount = 0;
-    forNeighbours(r, own, index, e.pos, inSection, e.directions, [&](Cursor& c, CellIndex i, std::uint32_t pos, int d) {
-      const std::uint8_t level = c.light(i);
-      if (level == 0) return;
-      if (level < e.level) {
-        const std::uint8_t own = source(c, i, reads);
-        if (own < level) {
-          // Its light may have come through the removed cell: clear it and keep removing from it.
-          c.set(i, own);
-          ++writes;
-          darker[darkerCount++] = {pos, level, allBut(opposite(d))};
-          if (own > 0) refill[refillCount++] = {pos, own, kAllDirections};
-          return;
-        }
-      }
-      // Light of its own or from elsewhere: it refills the cleared cells afterwards.
-      refill[refillCount++] = {pos, level, kAllDirections};
-    });
+    forNeighbours(r, own, index, e.pos, inSection, e.directions,
+                  [&](Cursor& c, CellIndex i, std::uint32_t pos, int d) {
+                    const std::uint8_t level = c.light(i);
+                    if (level == 0) return;
+                    if (level < e.level) {
+                      const std::uint8_t own = source(c, i, reads);
+                      if (own < level) {
+                        // Its light may have come through the removed cell: clear it and keep removing from
+                        // it.
+                        c.set(i, own);
+                        ++writes;
+                        darker[darkerCount++] = {pos, level, allBut(opposite(d))};
+                        if (own > 0) refill[refillCount++] = {pos, own, kAllDirections};
+                        return;
+                      }
+                    }
+                    // Light of its own or from elsewhere: it refills the cleared cells afterwards.
+                    refill[refillCount++] = {pos, level, kAllDirections};
+                  });
     decrease_.commit(darkerCount);
     increase_.commit(refillCount);
   }
@@ -177,7 +178,8 @@ void Propagator::runIncrease() {
                     if (level <= current) return;
                     c.set(i, static_cast<std::uint8_t>(level));
                     ++writes;
-                    if (level > 1) out[count++] = {pos, static_cast<std::uint8_t>(level), allBut(opposite(d))};
+                    if (level > 1)
+                      out[count++] = {pos, static_cast<std::uint8_t>(level), allBut(opposite(d))};
                   });
     increase_.commit(count);
   }

@@ -123,9 +123,10 @@ class Propagator {
  public:
   // Resets `frame` to the window and channel.
   // `attenuation` by block id: see attenuations().
-  Propagator(LightFrame& frame, const ChunkWindow& window, LightChannel channel, const std::uint8_t* attenuation,
-             const std::uint8_t* emission, std::vector<LightEngine::Entry>& decrease,
-             std::vector<LightEngine::Entry>& increase, LightStats& stats, std::unordered_set<std::uint64_t>& changed);
+  Propagator(LightFrame& frame, const ChunkWindow& window, LightChannel channel,
+             const std::uint8_t* attenuation, const std::uint8_t* emission,
+             std::vector<LightEngine::Entry>& decrease, std::vector<LightEngine::Entry>& increase,
+             LightStats& stats, std::unordered_set<std::uint64_t>& changed);
   ~Propagator();  // adds the counters to the engine's stats
 
   // False outside the frame or in a chunk that is not loaded.
