@@ -346,7 +346,7 @@ void LightEngine::ownLevels(const Chunk& chunk, int section, LightChannel channe
   if (y0 + 15 != kMaxY - 1) return;
   for (int column = 0; column < 256; ++column) {
     std::uint8_t& level = levels[15 * 256 + column];
-    if (level == 0) level = light::topLayerSky(opacity_[blocks.at(15 * 256 + column)]);
+    if (level == 0) level = light::topLayerSky(attenuation_[blocks.at(15 * 256 + column)]);
   }
 }
 

@@ -132,8 +132,7 @@ void Propagator::runDecrease() {
                     if (level < e.level) {
                       const std::uint8_t own = source(c, i, reads);
                       if (own < level) {
-                        // Its light may have come through the removed cell: clear it and keep removing from
-                        // it.
+                        // Its light may have come through the removed cell: clear it, remove on from it.
                         c.set(i, own);
                         ++writes;
                         darker[darkerCount++] = {pos, level, allBut(opposite(d))};

@@ -23,9 +23,9 @@ inline std::vector<std::uint8_t> attenuations(const std::vector<std::uint8_t>& o
 }
 
 // Sky light of a cell in the top layer of the world that is not open sky: lit from above, through
-// its own opacity.
-constexpr std::uint8_t topLayerSky(std::uint8_t opacity) {
-  return static_cast<std::uint8_t>(15 - std::max<int>(1, opacity));
+// its own block (`attenuation`: see attenuations()).
+constexpr std::uint8_t topLayerSky(std::uint8_t attenuation) {
+  return static_cast<std::uint8_t>(15 - attenuation);
 }
 
 // Steps per Direction of Section::index within a section, and so of a frame position there.
@@ -189,7 +189,7 @@ class Propagator {
     // The top layer of the world is lit from the sky above it, through its own opacity.
     if (y == kMaxY - 1) {
       ++reads;
-      return static_cast<std::uint8_t>(15 - attenuation_[c.block(index)]);
+      return topLayerSky(attenuation_[c.block(index)]);
     }
     return 0;
   }
