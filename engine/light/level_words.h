@@ -70,7 +70,8 @@ inline void unpackNibbles(const std::uint8_t* nibbles, std::uint8_t* levels) {
   }
 #endif
 }
-inline void packNibbles(const std::uint8_t* levels, std::uint8_t* nibbles) {
+// Returns the level all 4096 share, or -1 when they differ: a uniform section need not keep its bytes.
+inline int packNibbles(const std::uint8_t* levels, std::uint8_t* nibbles) {
 #ifdef __SSE2__
   // Each 16-bit lane holds an even level in its low byte and the odd one in its high byte.
   const __m128i lowByte = _mm_set1_epi16(0xFF);
@@ -78,15 +79,28 @@ inline void packNibbles(const std::uint8_t* levels, std::uint8_t* nibbles) {
     const __m128i v = _mm_loadu_si128(reinterpret_cast<const __m128i*>(at));
     return _mm_and_si128(_mm_or_si128(v, _mm_srli_epi16(v, 4)), lowByte);
   };
+  // Every byte position's OR and AND over all the bytes written: equal, and one byte throughout, only
+  // when every byte is the same.
+  __m128i any = _mm_setzero_si128(), all = _mm_set1_epi8(-1);
   for (int i = 0; i < NibbleArray::kBytes; i += 16) {
-    _mm_storeu_si128(reinterpret_cast<__m128i*>(nibbles + i),
-                     _mm_packus_epi16(pairs(levels + 2 * i), pairs(levels + 2 * i + 16)));
+    const __m128i packed = _mm_packus_epi16(pairs(levels + 2 * i), pairs(levels + 2 * i + 16));
+    _mm_storeu_si128(reinterpret_cast<__m128i*>(nibbles + i), packed);
+    any = _mm_or_si128(any, packed);
+    all = _mm_and_si128(all, packed);
   }
+  const bool sameBytes = _mm_movemask_epi8(_mm_cmpeq_epi8(any, all)) == 0xFFFF &&
+                         _mm_movemask_epi8(_mm_cmpeq_epi8(any, _mm_set1_epi8(static_cast<char>(nibbles[0])))) == 0xFFFF;
 #else
+  std::uint8_t any = 0, all = 0xFF;
   for (int i = 0; i < NibbleArray::kBytes; ++i) {
     nibbles[i] = static_cast<std::uint8_t>(levels[2 * i] | levels[2 * i + 1] << 4);
+    any |= nibbles[i];
+    all &= nibbles[i];
   }
+  const bool sameBytes = any == all;
 #endif
+  const int low = nibbles[0] & 15;
+  return sameBytes && nibbles[0] >> 4 == low ? low : -1;
 }
 
 }  // namespace terrasol::light

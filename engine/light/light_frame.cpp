@@ -76,7 +76,11 @@ void LightFrame::unpack(SectionRef& r) {
 unsigned LightFrame::pack(SectionRef& r) {
   const unsigned marks = r.marks;
   r.marks = 0;
-  if (marks) packNibbles(r.levelBytes(), r.layer->writableBytes());
+  if (!marks) return 0;
+  // A section back to one level throughout (a torch taken away in the dark) keeps no bytes.
+  if (const int uniform = packNibbles(r.levelBytes(), r.layer->writableBytes()); uniform >= 0) {
+    r.layer->fill(static_cast<std::uint8_t>(uniform));
+  }
   return marks;
 }
 

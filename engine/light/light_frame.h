@@ -9,7 +9,8 @@
 // and below the world that are never loaded, so every step out of the frame lands on an empty ref.
 //
 // An update works in plain bytes, one level per cell: a section's nibbles are unpacked into a slab
-// the first time the update touches it, and the slabs it wrote are packed back when it ends. A
+// the first time the update touches it, and the slabs it wrote are packed back when it ends (a
+// section back to one level throughout keeps no bytes). A
 // level read or written is then one byte, with no shifts and masks.
 // Internal to engine/light.
 
@@ -101,7 +102,8 @@ class LightFrame {
   }
   // The ref of a position that was queued: its section was resolved and unpacked then.
   SectionRef& queuedRef(int index) { return refs_[static_cast<std::size_t>(index)]; }
-  // Packs a written section's levels back into its layer; returns and clears its marks.
+  // Packs a written section's levels back into its layer, which keeps no bytes if they are all one
+  // level; returns and clears its marks.
   static unsigned pack(SectionRef& r);
   // Grid chunk indices resolved so far, their sections' refs (kRefSections each, the first and last
   // empty), and their chunk positions.

@@ -330,8 +330,45 @@ TEST(Light, LevelsUnpackAndPackInNibbleArrayOrder) {
   for (int i = 0; i < Section::kVolume; ++i)
     ASSERT_EQ(levels[static_cast<std::size_t>(i)], nibbles.get(i)) << i;
   NibbleArray::Bytes packed;
-  light::packNibbles(levels.data(), packed.data());
+  EXPECT_EQ(light::packNibbles(levels.data(), packed.data()), -1);
   EXPECT_TRUE(std::equal(packed.begin(), packed.end(), nibbles.bytes()));
+
+  // One level throughout is reported, whatever the level; one cell apart in either nibble is not.
+  for (const std::uint8_t level : {0, 7, 15}) {
+    levels.fill(level);
+    EXPECT_EQ(light::packNibbles(levels.data(), packed.data()), level);
+    for (const int odd : {4094, 4095, 17}) {
+      levels[static_cast<std::size_t>(odd)] = level ^ 1;
+      EXPECT_EQ(light::packNibbles(levels.data(), packed.data()), -1) << int{level} << " " << odd;
+      levels[static_cast<std::size_t>(odd)] = level;
+    }
+  }
+}
+
+// A section whose light goes back to one level (a torch taken away in the dark) stores no bytes again.
+TEST(Light, SectionsBackToOneLevelKeepNoBytes) {
+  LitWorld w("void");
+  w.loadArea(-1, -1, 1, 1);
+  auto lightBytes = [&] {
+    std::size_t bytes = 0;
+    for (int z = -1; z <= 1; ++z)
+      for (int x = -1; x <= 1; ++x) bytes += w.world.chunk({x, z})->light().memoryBytes();
+    return bytes;
+  };
+  const std::size_t before = lightBytes();
+  const BlockPos torch{15, 64, 0};  // on a corner of its section: the light spreads into eight
+  w.set(torch, "torch");
+  EXPECT_GE(lightBytes(), before + 8 * NibbleArray::kBytes);
+  w.set(torch, "air");
+  EXPECT_EQ(lightBytes(), before);
+  expectDiamond(w, torch, 0);
+
+  // A stone in the open sky shades the cells below it; taken away, the sky is 15 throughout again.
+  w.set({3, 70, 3}, "stone");
+  EXPECT_GE(lightBytes(), before + NibbleArray::kBytes);
+  w.set({3, 70, 3}, "air");
+  EXPECT_EQ(lightBytes(), before);
+  EXPECT_EQ(compareWithReference(w.world), "");
 }
 
 // The streamer tells the light engine before it removes a chunk and after it adds one, so light stays
