@@ -78,7 +78,7 @@ unsigned LightFrame::pack(SectionRef& r) {
   r.marks = 0;
   if (!marks) return 0;
   // A section back to one level throughout (a torch taken away in the dark) keeps no bytes.
-  if (const int uniform = packNibbles(r.levelBytes(), r.layer->writableBytes()); uniform >= 0) {
+  if (const int uniform = packNibbles(r.levelBytes(), r.layer->overwrittenBytes()); uniform >= 0) {
     r.layer->fill(static_cast<std::uint8_t>(uniform));
   }
   return marks;

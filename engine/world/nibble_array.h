@@ -61,6 +61,14 @@ class NibbleArray {
     }
     return owned_->data();
   }
+  // Bytes for a caller that writes all 2048 of them: allocated but not filled.
+  std::uint8_t* overwrittenBytes() {
+    if (!owned_) {
+      owned_ = std::make_unique_for_overwrite<Bytes>();
+      read_ = owned_->data();
+    }
+    return owned_->data();
+  }
   void fill(std::uint8_t level) {
     owned_.reset();
     uniform_ = level;
