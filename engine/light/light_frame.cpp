@@ -77,10 +77,17 @@ unsigned LightFrame::pack(SectionRef& r) {
   const unsigned marks = r.marks;
   r.marks = 0;
   if (!marks) return 0;
-  // A section back to one level throughout (a torch taken away in the dark) keeps no bytes.
-  if (const int uniform = packNibbles(r.levelBytes(), r.layer->overwrittenBytes()); uniform >= 0) {
-    r.layer->fill(static_cast<std::uint8_t>(uniform));
+  // A section back to one level throughout (a torch taken away in the dark) keeps no bytes; they wait
+  // here for the next section that needs some, which saves an allocation and a free per section in
+  // a torch placed and taken away again.
+  std::unique_ptr<NibbleArray::Bytes> spare;
+  if (!spareBytes_.empty()) {
+    spare = std::move(spareBytes_.back());
+    spareBytes_.pop_back();
   }
+  const int uniform = packNibbles(r.levelBytes(), r.layer->overwrittenBytes(spare));
+  if (uniform >= 0) spare = r.layer->release(static_cast<std::uint8_t>(uniform));
+  if (spare && spareBytes_.size() < kMaxSpareBytes) spareBytes_.push_back(std::move(spare));
   return marks;
 }
 

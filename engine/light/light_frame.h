@@ -104,7 +104,7 @@ class LightFrame {
   SectionRef& queuedRef(int index) { return refs_[static_cast<std::size_t>(index)]; }
   // Packs a written section's levels back into its layer, which keeps no bytes if they are all one
   // level; returns and clears its marks.
-  static unsigned pack(SectionRef& r);
+  unsigned pack(SectionRef& r);
   // Grid chunk indices resolved so far, their sections' refs (kRefSections each, the first and last
   // empty), and their chunk positions.
   const std::vector<int>& resolvedChunks() const { return resolvedList_; }
@@ -126,6 +126,8 @@ class LightFrame {
   using Slab = std::array<Level, Section::kVolume>;
   std::vector<std::unique_ptr<Slab>> slabs_;  // kept between updates
   std::size_t slabsUsed_ = 0;
+  static constexpr std::size_t kMaxSpareBytes = 64;  // 128 KiB
+  std::vector<std::unique_ptr<NibbleArray::Bytes>> spareBytes_;  // layers' bytes freed by pack(), for reuse
 };
 
 }  // namespace terrasol::light

@@ -57,7 +57,7 @@ void Propagator::writeBack() {
     const ChunkPos at = frame_.chunkPos(chunk);
     const int cx = at.x, cz = at.z;
     for (int s = 0; s < kSectionCount; ++s) {
-      const int m = static_cast<int>(LightFrame::pack(refs[s + 1]));
+      const int m = static_cast<int>(frame_.pack(refs[s + 1]));
       if (!m) continue;
       const int y0 = (m & 4) && s > 0 ? -1 : 0, y1 = (m & 8) && s < kSectionCount - 1 ? 1 : 0;
       for (int dz = -(m >> 4 & 1); dz <= (m >> 5 & 1); ++dz)

@@ -61,13 +61,20 @@ class NibbleArray {
     }
     return owned_->data();
   }
-  // Bytes for a caller that writes all 2048 of them: allocated but not filled.
-  std::uint8_t* overwrittenBytes() {
+  // Bytes for a caller that writes all 2048 of them, not filled: those in `spare` if it holds any
+  // (from release()), else new ones.
+  std::uint8_t* overwrittenBytes(std::unique_ptr<Bytes>& spare) {
     if (!owned_) {
-      owned_ = std::make_unique_for_overwrite<Bytes>();
+      owned_ = spare ? std::move(spare) : std::make_unique_for_overwrite<Bytes>();
       read_ = owned_->data();
     }
     return owned_->data();
+  }
+  // fill(level), handing the bytes it held (if any) to the caller for reuse.
+  std::unique_ptr<Bytes> release(std::uint8_t level) {
+    std::unique_ptr<Bytes> bytes = std::move(owned_);
+    fill(level);
+    return bytes;
   }
   void fill(std::uint8_t level) {
     owned_.reset();
