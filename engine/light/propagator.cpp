@@ -109,7 +109,8 @@ void Propagator::forNeighbours(SectionRef& r, Cursor& own, CellIndex index, std:
 
 void Propagator::runDecrease() {
   if (decrease_.size() == 0) return;
-  std::uint64_t reads = 0, writes = 0;
+  const std::size_t queued = decrease_.size();  // each cell cleared is queued: writes are the growth
+  std::uint64_t reads = 0;
   Cursor own(frame_.queuedRef(LightFrame::refIndex(decrease_[0].pos)));
   for (std::size_t head = 0; head < decrease_.size(); ++head) {
     const LightEngine::Entry e = decrease_[head];
@@ -134,7 +135,6 @@ void Propagator::runDecrease() {
                       if (own < level) {
                         // Its light may have come through the removed cell: clear it, remove on from it.
                         c.set(i, own);
-                        ++writes;
                         darker[darkerCount++] = {pos, level, allBut(opposite(d))};
                         if (own > 0) refill[refillCount++] = {pos, own, kAllDirections};
                         return;
@@ -148,12 +148,15 @@ void Propagator::runDecrease() {
   }
   own.flush();
   blockReads_ += reads;
-  lightWrites_ += writes;
+  lightWrites_ += decrease_.size() - queued;
 }
 
 void Propagator::runIncrease() {
   if (increase_.size() == 0) return;
-  std::uint64_t reads = 0, writes = 0;
+  // Counted where they are rarer: cells written are those queued and those lit to 1, and blocks read
+  // are those written and those that let in too little light to brighten.
+  const std::size_t queued = increase_.size();
+  std::uint64_t ones = 0, dimmer = 0;
   Cursor own(frame_.queuedRef(LightFrame::refIndex(increase_[0].pos)));
   for (std::size_t head = 0; head < increase_.size(); ++head) {
     const LightEngine::Entry e = increase_[head];
@@ -172,18 +175,22 @@ void Propagator::runIncrease() {
                   [&](Cursor& c, CellIndex i, std::uint32_t pos, int d) {
                     const std::uint8_t current = c.light(i);
                     if (current >= throughAir) return;  // no block read: not even air would let it brighten
-                    ++reads;
                     const int level = e.level - attenuation_[c.block(i)];
-                    if (level <= current) return;
+                    if (level <= current) {
+                      ++dimmer;
+                      return;
+                    }
                     c.set(i, static_cast<std::uint8_t>(level));
-                    ++writes;
                     if (level > 1)
                       out[count++] = {pos, static_cast<std::uint8_t>(level), allBut(opposite(d))};
+                    else
+                      ++ones;
                   });
     increase_.commit(count);
   }
   own.flush();
-  blockReads_ += reads;
+  const std::uint64_t writes = increase_.size() - queued + ones;
+  blockReads_ += writes + dimmer;
   lightWrites_ += writes;
 }
 
