@@ -124,11 +124,7 @@ std::uint8_t LightEngine::lightAt(const BlockPos& pos, LightChannel channel) con
 }
 
 std::vector<SectionPos> LightEngine::takeChangedSections() {
-  std::vector<SectionPos> sections;
-  sections.reserve(changed_.size());
-  for (std::uint64_t key : changed_) sections.push_back(light::sectionFromKey(key));
-  changed_.clear();
-  return sections;
+  return changed_.take();
 }
 
 void LightEngine::chunkLoaded(ChunkPos pos) {
@@ -139,7 +135,7 @@ void LightEngine::chunkLoaded(ChunkPos pos) {
   for (auto& block : light.block) block.fill(0);
   fillOpenSky(light);
   light.lit = true;
-  for (int s = 0; s < kSectionCount; ++s) changed_.insert(light::sectionKey(pos.x, s, pos.z));
+  for (int s = 0; s < kSectionCount; ++s) changed_.add(pos.x, s, pos.z);
 
   const light::ChunkWindow window(world_, {pos.x - 1 - kReach, pos.z - 1 - kReach},
                                   {pos.x + 1 + kReach, pos.z + 1 + kReach});

@@ -13,9 +13,9 @@
 #include <array>
 #include <cstdint>
 #include <memory>
-#include <unordered_set>
 #include <vector>
 
+#include "light/changed_sections.h"
 #include "world/world.h"
 
 namespace terrasol {
@@ -91,7 +91,7 @@ class LightEngine {
   std::vector<Entry> decrease_, increase_;  // reused between updates
   std::unique_ptr<light::LightFrame> frame_;  // likewise
   std::unique_ptr<light::SectionSolver> solver_;  // likewise
-  std::unordered_set<std::uint64_t> changed_;
+  light::ChangedSections changed_;
 };
 
 }  // namespace terrasol

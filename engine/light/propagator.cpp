@@ -11,7 +11,7 @@ namespace terrasol::light {
 Propagator::Propagator(LightFrame& frame, const ChunkWindow& window, LightChannel channel,
                        const std::uint8_t* attenuation, const std::uint8_t* emission,
                        std::vector<LightEngine::Entry>& decrease, std::vector<LightEngine::Entry>& increase,
-                       LightStats& stats, std::unordered_set<std::uint64_t>& changed)
+                       LightStats& stats, ChangedSections& changed)
     : frame_(frame),
       channel_(channel),
       attenuation_(attenuation),
@@ -62,7 +62,7 @@ void Propagator::writeBack() {
       const int y0 = (m & 4) && s > 0 ? -1 : 0, y1 = (m & 8) && s < kSectionCount - 1 ? 1 : 0;
       for (int dz = -(m >> 4 & 1); dz <= (m >> 5 & 1); ++dz)
         for (int dx = -(m & 1); dx <= (m >> 1 & 1); ++dx)
-          for (int dy = y0; dy <= y1; ++dy) changed_.insert(sectionKey(cx + dx, s + dy, cz + dz));
+          for (int dy = y0; dy <= y1; ++dy) changed_.add(cx + dx, s + dy, cz + dz);
     }
   }
 }

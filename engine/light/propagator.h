@@ -6,6 +6,7 @@
 #include <array>
 #include <vector>
 
+#include "light/changed_sections.h"
 #include "light/light_frame.h"
 
 namespace terrasol::light {
@@ -126,7 +127,7 @@ class Propagator {
   Propagator(LightFrame& frame, const ChunkWindow& window, LightChannel channel,
              const std::uint8_t* attenuation, const std::uint8_t* emission,
              std::vector<LightEngine::Entry>& decrease, std::vector<LightEngine::Entry>& increase,
-             LightStats& stats, std::unordered_set<std::uint64_t>& changed);
+             LightStats& stats, ChangedSections& changed);
   ~Propagator();  // adds the counters to the engine's stats
 
   // False outside the frame or in a chunk that is not loaded.
@@ -221,22 +222,7 @@ class Propagator {
   EntryQueue increase_;
   LightStats& stats_;
   std::uint64_t blockReads_ = 0, lightWrites_ = 0;
-  std::unordered_set<std::uint64_t>& changed_;
+  ChangedSections& changed_;
 };
-
-// Key of a section in LightEngine's changed set: 27 bits each of chunk x and z (the world border is
-// at chunk +-1 875 000, well inside +-2^26) and 5 bits of section index.
-constexpr std::uint64_t sectionKey(int chunkX, int section, int chunkZ) {
-  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(chunkX) & 0x7FFFFFF) << 32) |
-         (static_cast<std::uint64_t>(static_cast<std::uint32_t>(chunkZ) & 0x7FFFFFF) << 5) |
-         static_cast<std::uint64_t>(section & 31);
-}
-constexpr SectionPos sectionFromKey(std::uint64_t key) {
-  auto signExtend27 = [](std::uint64_t v) {
-    return static_cast<int>(static_cast<std::int32_t>(static_cast<std::uint32_t>(v << 5)) >> 5);
-  };
-  return {signExtend27((key >> 32) & 0x7FFFFFF), static_cast<int>(key & 31), signExtend27((key >> 5) & 0x7FFFFFF)};
-}
-static_assert(sectionFromKey(sectionKey(-1'875'000, 23, 1'875'000)) == SectionPos{-1'875'000, 23, 1'875'000});
 
 }  // namespace terrasol::light

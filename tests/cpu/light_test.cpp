@@ -3,8 +3,11 @@
 #include <algorithm>
 #include <chrono>
 #include <random>
+#include <set>
+#include <tuple>
 #include <thread>
 
+#include "light/changed_sections.h"
 #include "light/level_words.h"
 #include "light/light_engine.h"
 #include "light/light_frame.h"
@@ -346,6 +349,26 @@ TEST(Light, ByteWordsMarkTheFacesOfTheirChangedCells) {
         << "cell " << k;
   }
   EXPECT_EQ(light::faceMarksOfBytes(100, 0), 0u);
+}
+
+// Changed sections are appended with repeats; each comes out once, however many times and however
+// far apart (past the point where repeats are folded between takes) it was added.
+TEST(Light, ChangedSectionsComeOutOnceEach) {
+  light::ChangedSections changed;
+  const SectionPos far{-1'875'000, 23, 1'875'000}, near{0, 4, -1};
+  for (int round = 0; round < 3; ++round)
+    for (int i = 0; i < 5000; ++i) changed.add(i % 7, i % 24, -(i % 3));
+  changed.add(far.x, far.section, far.z);
+  changed.add(near.x, near.section, near.z);
+  std::vector<SectionPos> taken = changed.take();
+  // i % 3 follows from i % 24, so the loop adds 7 * 24 = 168 distinct sections, `near` among them.
+  EXPECT_EQ(taken.size(), 169u);
+  std::set<std::tuple<int, int, int>> distinct;
+  for (const SectionPos& p : taken) distinct.insert({p.x, p.section, p.z});
+  EXPECT_EQ(distinct.size(), taken.size());
+  EXPECT_TRUE(distinct.contains({far.x, far.section, far.z}));
+  EXPECT_TRUE(distinct.contains({near.x, near.section, near.z}));
+  EXPECT_TRUE(changed.take().empty());
 }
 
 // Updates work on one byte per level; packing must give back exactly the NibbleArray's bytes.
