@@ -14,6 +14,13 @@
 
 namespace terrasol::light {
 
+// Written cells mark their pair of layers (bit 8 + y / 2 of a SectionRef's marks): packing skips the
+// pairs nobody wrote.
+inline constexpr int kLayersPerMark = 2;
+inline constexpr int kMarkedPairs = 16 / kLayersPerMark;
+inline constexpr int kPairNibbleBytes = NibbleArray::kBytes / kMarkedPairs;
+constexpr unsigned layerPairMark(int pair) { return 0x100u << pair; }
+
 // Word q of a section's plain bytes.
 inline std::uint64_t byteWord(const std::uint8_t* bytes, int q) {
   std::uint64_t w;
@@ -44,12 +51,13 @@ constexpr std::uint64_t faceBytes(int q) {
   return q & 1 ? std::uint64_t{0x80} << 56 : 0x80;
 }
 
-// The kFaceMarks bits (bit 7: any cell) of the cells `changed` marks in byte word q.
-constexpr unsigned faceMarksOfBytes(int q, std::uint64_t changed) {
+// The kWriteMarks bits (light_frame.h) of the cells `changed` marks in byte word q.
+constexpr unsigned writeMarksOfBytes(int q, std::uint64_t changed) {
   if (changed == 0) return 0;
   const int row = q >> 1, y = row >> 4, z = row & 15;
   const bool west = !(q & 1) && (changed & 0x80), east = (q & 1) && (changed >> 63);
-  return 0x80u | west | east << 1 | (y == 0) << 2 | (y == 15) << 3 | (z == 0) << 4 | (z == 15) << 5;
+  return layerPairMark(y / kLayersPerMark) | west | east << 1 | (y == 0) << 2 | (y == 15) << 3 | (z == 0) << 4 |
+         (z == 15) << 5;
 }
 
 // Levels (4096, one a byte) from NibbleArray bytes, and back. SSE2 where there is SSE2 (every x86-64);
@@ -70,8 +78,10 @@ inline void unpackNibbles(const std::uint8_t* nibbles, std::uint8_t* levels) {
   }
 #endif
 }
-// Returns the level all 4096 share, or -1 when they differ: a uniform section need not keep its bytes.
-inline int packNibbles(const std::uint8_t* levels, std::uint8_t* nibbles) {
+// Packs the levels of nibble bytes [begin, end) (levels 2 * begin .. 2 * end); returns the level they
+// all share, or -1 when they differ: a uniform section need not keep its bytes.
+inline int packNibbles(const std::uint8_t* levels, std::uint8_t* nibbles, int begin = 0,
+                       int end = NibbleArray::kBytes) {
 #ifdef __SSE2__
   // Each 16-bit lane holds an even level in its low byte and the odd one in its high byte.
   const __m128i lowByte = _mm_set1_epi16(0xFF);
@@ -82,25 +92,42 @@ inline int packNibbles(const std::uint8_t* levels, std::uint8_t* nibbles) {
   // Every byte position's OR and AND over all the bytes written: equal, and one byte throughout, only
   // when every byte is the same.
   __m128i any = _mm_setzero_si128(), all = _mm_set1_epi8(-1);
-  for (int i = 0; i < NibbleArray::kBytes; i += 16) {
+  for (int i = begin; i < end; i += 16) {
     const __m128i packed = _mm_packus_epi16(pairs(levels + 2 * i), pairs(levels + 2 * i + 16));
     _mm_storeu_si128(reinterpret_cast<__m128i*>(nibbles + i), packed);
     any = _mm_or_si128(any, packed);
     all = _mm_and_si128(all, packed);
   }
+  const __m128i first = _mm_set1_epi8(static_cast<char>(nibbles[begin]));
   const bool sameBytes = _mm_movemask_epi8(_mm_cmpeq_epi8(any, all)) == 0xFFFF &&
-                         _mm_movemask_epi8(_mm_cmpeq_epi8(any, _mm_set1_epi8(static_cast<char>(nibbles[0])))) == 0xFFFF;
+                         _mm_movemask_epi8(_mm_cmpeq_epi8(any, first)) == 0xFFFF;
 #else
   std::uint8_t any = 0, all = 0xFF;
-  for (int i = 0; i < NibbleArray::kBytes; ++i) {
+  for (int i = begin; i < end; ++i) {
     nibbles[i] = static_cast<std::uint8_t>(levels[2 * i] | levels[2 * i + 1] << 4);
     any |= nibbles[i];
     all &= nibbles[i];
   }
   const bool sameBytes = any == all;
 #endif
-  const int low = nibbles[0] & 15;
-  return sameBytes && nibbles[0] >> 4 == low ? low : -1;
+  const int low = nibbles[begin] & 15;
+  return sameBytes && nibbles[begin] >> 4 == low ? low : -1;
+}
+
+// True when nibble bytes [begin, end) all hold the level `level` (in both nibbles).
+inline bool nibblesAre(const std::uint8_t* nibbles, int begin, int end, int level) {
+  const auto byte = static_cast<std::uint8_t>(level * 0x11);
+#ifdef __SSE2__
+  const __m128i want = _mm_set1_epi8(static_cast<char>(byte));
+  __m128i differ = _mm_setzero_si128();
+  for (int i = begin; i < end; i += 16)
+    differ = _mm_or_si128(differ, _mm_xor_si128(_mm_loadu_si128(reinterpret_cast<const __m128i*>(nibbles + i)), want));
+  return _mm_movemask_epi8(_mm_cmpeq_epi8(differ, _mm_setzero_si128())) == 0xFFFF;
+#else
+  for (int i = begin; i < end; ++i)
+    if (nibbles[i] != byte) return false;
+  return true;
+#endif
 }
 
 }  // namespace terrasol::light

@@ -77,16 +77,43 @@ unsigned LightFrame::pack(SectionRef& r) {
   const unsigned marks = r.marks;
   r.marks = 0;
   if (!marks) return 0;
-  // A section back to one level throughout (a torch taken away in the dark) keeps no bytes; they wait
-  // here for the next section that needs some, which saves an allocation and a free per section in
-  // a torch placed and taken away again.
+  // The bytes a section gave up when its light became uniform wait here for the next that needs
+  // some, which saves an allocation and a free per section in a torch placed and taken away again.
   std::unique_ptr<NibbleArray::Bytes> spare;
   if (!spareBytes_.empty()) {
     spare = std::move(spareBytes_.back());
     spareBytes_.pop_back();
   }
-  const int uniform = packNibbles(r.levelBytes(), r.layer->overwrittenBytes(spare));
-  if (uniform >= 0) spare = r.layer->release(static_cast<std::uint8_t>(uniform));
+  NibbleArray& layer = *r.layer;
+  const bool wasUniform = layer.isUniform();
+  const std::uint8_t before = layer.uniformLevel();
+  std::uint8_t* bytes = layer.overwrittenBytes(spare);
+  // Only the pairs of layers written are packed; new bytes get the old level in the others.
+  int level = -2;  // the one level of every pair packed so far; -1 once two differ
+  unsigned skipped = 0;
+  for (int pair = 0; pair < kMarkedPairs; ++pair) {
+    const int begin = pair * kPairNibbleBytes, end = begin + kPairNibbleBytes;
+    if (marks & layerPairMark(pair)) {
+      const int l = packNibbles(r.levelBytes(), bytes, begin, end);
+      level = level == -2 || level == l ? l : -1;
+    } else {
+      skipped |= layerPairMark(pair);
+      if (wasUniform) std::memset(bytes + begin, before * 0x11, kPairNibbleBytes);
+    }
+  }
+  // A section back to one level throughout (a torch taken away in the dark) keeps no bytes: the pairs
+  // not written must have that level too.
+  if (level >= 0 && skipped) {
+    if (wasUniform) {
+      if (level != before) level = -1;
+    } else {
+      for (int pair = 0; pair < kMarkedPairs && level >= 0; ++pair) {
+        const int begin = pair * kPairNibbleBytes;
+        if ((skipped & layerPairMark(pair)) && !nibblesAre(bytes, begin, begin + kPairNibbleBytes, level)) level = -1;
+      }
+    }
+  }
+  if (level >= 0) spare = layer.release(static_cast<std::uint8_t>(level));
   if (spare && spareBytes_.size() < kMaxSpareBytes) spareBytes_.push_back(std::move(spare));
   return marks;
 }

@@ -19,6 +19,7 @@
 #include <memory>
 #include <vector>
 
+#include "light/level_words.h"
 #include "light/light_engine.h"
 
 namespace terrasol::light {
@@ -33,7 +34,7 @@ enum class Level : std::uint8_t {};
 struct SectionRef {
   NibbleArray* layer = nullptr;  // null: not loaded, or outside the world (acts opaque)
   Level* levels = nullptr;       // the slab, by Section::index; null until the section is touched
-  unsigned marks = 0;            // kFaceMarks of the cells written: pack them back, and whose halos changed
+  unsigned marks = 0;            // kWriteMarks of the cells written: what to pack back, whose halos changed
   const BlockId* blocks = nullptr;  // blocks[index & blockMask]: the dense array, or &uniform
   int blockMask = 0;
   BlockId uniform = kAir;
@@ -45,13 +46,16 @@ struct SectionRef {
   std::uint8_t* levelBytes() { return reinterpret_cast<std::uint8_t*>(levels); }
 };
 
-// Per Section::index: bit d set when the cell lies on the section's face in Direction d, bit 7 always.
-inline const std::array<std::uint8_t, Section::kVolume> kFaceMarks = [] {
-  std::array<std::uint8_t, Section::kVolume> marks{};
+// What writing a cell marks, per Section::index: bit d when the cell lies on the section's face in
+// Direction d (the halo of the section beyond changed), and bit 8 + y / 2 for its pair of layers
+// (packing skips the pairs nobody wrote).
+inline const std::array<std::uint16_t, Section::kVolume> kWriteMarks = [] {
+  std::array<std::uint16_t, Section::kVolume> marks{};
   for (int i = 0; i < Section::kVolume; ++i) {
     const int x = i & 15, y = i >> 8, z = (i >> 4) & 15;
-    marks[static_cast<std::size_t>(i)] = static_cast<std::uint8_t>(
-        0x80 | (x == 0) | (x == 15) << 1 | (y == 0) << 2 | (y == 15) << 3 | (z == 0) << 4 | (z == 15) << 5);
+    marks[static_cast<std::size_t>(i)] = static_cast<std::uint16_t>(
+        layerPairMark(y / kLayersPerMark) | (x == 0) | (x == 15) << 1 | (y == 0) << 2 | (y == 15) << 3 |
+        (z == 0) << 4 | (z == 15) << 5);
   }
   return marks;
 }();

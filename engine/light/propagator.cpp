@@ -36,12 +36,12 @@ void Propagator::replaceLevels(SectionRef& r, std::uint32_t origin, const std::u
     if (before == after) continue;
     const std::uint64_t changed = changedBytes(before, after);
     writes += std::popcount(changed);
-    r.marks |= faceMarksOfBytes(q, changed);
+    r.marks |= writeMarksOfBytes(q, changed);
     // Light that left through a face cell that lost some may have lit cells beyond it.
     for (std::uint64_t lost = lowerBytes(before, after) & faceBytes(q); lost != 0; lost &= lost - 1) {
       const int k = q * 8 + std::countr_zero(lost) / 8;
       decrease(posOf(origin, k), current[k],
-               static_cast<std::uint8_t>(kFaceMarks[static_cast<std::size_t>(k)] & kAllDirections));
+               static_cast<std::uint8_t>(kWriteMarks[static_cast<std::size_t>(k)] & kAllDirections));
     }
   }
   if (writes == 0) return;

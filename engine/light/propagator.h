@@ -100,7 +100,7 @@ struct Cursor {
   BlockId block(CellIndex i) const { return blocks[i & mask]; }
   void set(CellIndex i, std::uint8_t level) {
     levels[i] = Level{level};
-    marks |= kFaceMarks[static_cast<std::size_t>(i)];
+    marks |= kWriteMarks[static_cast<std::size_t>(i)];
   }
 
   SectionRef* ref;
@@ -175,7 +175,7 @@ class Propagator {
   }
   void setLight(SectionRef& r, int index, std::uint8_t level) {
     r.levels[index] = Level{level};
-    r.marks |= kFaceMarks[static_cast<std::size_t>(index)];
+    r.marks |= kWriteMarks[static_cast<std::size_t>(index)];
     ++lightWrites_;
   }
   std::uint8_t source(SectionRef& r, int index) { return source(Cursor(r), index, blockReads_); }

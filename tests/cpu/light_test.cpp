@@ -345,10 +345,10 @@ TEST(Light, ByteWordsCompareEveryPairOfLevels) {
 TEST(Light, ByteWordsMarkTheFacesOfTheirChangedCells) {
   for (int k = 0; k < Section::kVolume; ++k) {
     const std::uint64_t changed = std::uint64_t{0x80} << (8 * (k % 8));
-    ASSERT_EQ(light::faceMarksOfBytes(k / 8, changed), light::kFaceMarks[static_cast<std::size_t>(k)])
+    ASSERT_EQ(light::writeMarksOfBytes(k / 8, changed), light::kWriteMarks[static_cast<std::size_t>(k)])
         << "cell " << k;
   }
-  EXPECT_EQ(light::faceMarksOfBytes(100, 0), 0u);
+  EXPECT_EQ(light::writeMarksOfBytes(100, 0), 0u);
 }
 
 // Changed sections are appended with repeats; each comes out once, however many times and however
