@@ -395,6 +395,44 @@ TEST(Light, LevelsUnpackAndPackInNibbleArrayOrder) {
   }
 }
 
+// Packing writes back only the pairs of layers marked as written, and frees a section's bytes only
+// when the pairs it skipped have the same one level as those it wrote.
+TEST(Light, PackingWritesTheMarkedLayersAndFreesOnlyWhatIsUniform) {
+  light::LightFrame frame;
+  std::array<light::Level, Section::kVolume> slab{};
+  auto pack = [&](NibbleArray& layer, unsigned marks) {
+    light::SectionRef r;
+    r.layer = &layer;
+    r.levels = slab.data();
+    r.marks = marks;
+    return frame.pack(r);
+  };
+  const int lastPair = light::kMarkedPairs - 1, inLastPair = Section::kVolume - 96;
+
+  // A uniform section (0) whose first pair of layers is now 15: the other pairs keep their 0.
+  NibbleArray was0;
+  std::fill(slab.begin(), slab.begin() + 512, light::Level{15});
+  EXPECT_EQ(pack(was0, light::layerPairMark(0)), light::layerPairMark(0));
+  EXPECT_FALSE(was0.isUniform());
+  EXPECT_EQ(was0.get(511), 15);
+  EXPECT_EQ(was0.get(512), 0);
+  EXPECT_EQ(was0.get(Section::kVolume - 1), 0);
+
+  // A section with bytes whose first pair goes back to 0: a 3 in its last pair keeps them.
+  slab.fill(light::Level{0});
+  NibbleArray mixed;
+  mixed.set(inLastPair, 3);
+  mixed.set(7, 9);
+  EXPECT_EQ(pack(mixed, light::layerPairMark(0)), light::layerPairMark(0));
+  ASSERT_FALSE(mixed.isUniform());
+  EXPECT_EQ(mixed.get(7), 0);
+  EXPECT_EQ(mixed.get(inLastPair), 3);
+  // Once the last pair is written back to 0 too, nothing is kept.
+  EXPECT_EQ(pack(mixed, light::layerPairMark(lastPair)), light::layerPairMark(lastPair));
+  EXPECT_TRUE(mixed.isUniform());
+  EXPECT_EQ(mixed.get(inLastPair), 0);
+}
+
 // A section whose light goes back to one level (a torch taken away in the dark) stores no bytes again.
 TEST(Light, SectionsBackToOneLevelKeepNoBytes) {
   LitWorld w("void");
