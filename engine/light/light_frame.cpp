@@ -88,28 +88,28 @@ unsigned LightFrame::pack(SectionRef& r) {
   const bool wasUniform = layer.isUniform();
   const std::uint8_t before = layer.uniformLevel();
   std::uint8_t* bytes = layer.overwrittenBytes(spare);
-  // Only the pairs of layers written are packed; new bytes get the old level in the others.
-  int level = -2;  // the one level of every pair packed so far; -1 once two differ
+  // Only the bands of layers written are packed; new bytes get the old level in the others.
+  int level = -2;  // the one level of every band packed so far; -1 once two differ
   unsigned skipped = 0;
-  for (int pair = 0; pair < kMarkedPairs; ++pair) {
-    const int begin = pair * kPairNibbleBytes, end = begin + kPairNibbleBytes;
-    if (marks & layerPairMark(pair)) {
+  for (int band = 0; band < kBands; ++band) {
+    const int begin = band * kBandNibbleBytes, end = begin + kBandNibbleBytes;
+    if (marks & bandMark(band)) {
       const int l = packNibbles(r.levelBytes(), bytes, begin, end);
       level = level == -2 || level == l ? l : -1;
     } else {
-      skipped |= layerPairMark(pair);
-      if (wasUniform) std::memset(bytes + begin, before * 0x11, kPairNibbleBytes);
+      skipped |= bandMark(band);
+      if (wasUniform) std::memset(bytes + begin, before * 0x11, kBandNibbleBytes);
     }
   }
-  // A section back to one level throughout (a torch taken away in the dark) keeps no bytes: the pairs
+  // A section back to one level throughout (a torch taken away in the dark) keeps no bytes: the bands
   // not written must have that level too.
   if (level >= 0 && skipped) {
     if (wasUniform) {
       if (level != before) level = -1;
     } else {
-      for (int pair = 0; pair < kMarkedPairs && level >= 0; ++pair) {
-        const int begin = pair * kPairNibbleBytes;
-        if ((skipped & layerPairMark(pair)) && !nibblesAre(bytes, begin, begin + kPairNibbleBytes, level)) level = -1;
+      for (int band = 0; band < kBands && level >= 0; ++band) {
+        const int begin = band * kBandNibbleBytes;
+        if ((skipped & bandMark(band)) && !nibblesAre(bytes, begin, begin + kBandNibbleBytes, level)) level = -1;
       }
     }
   }

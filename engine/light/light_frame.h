@@ -47,14 +47,13 @@ struct SectionRef {
 };
 
 // What writing a cell marks, per Section::index: bit d when the cell lies on the section's face in
-// Direction d (the halo of the section beyond changed), and bit 8 + y / 2 for its pair of layers
-// (packing skips the pairs nobody wrote).
-inline const std::array<std::uint16_t, Section::kVolume> kWriteMarks = [] {
-  std::array<std::uint16_t, Section::kVolume> marks{};
+// Direction d (the halo of the section beyond changed), and its band of layers (level_words.h).
+inline const std::array<std::uint8_t, Section::kVolume> kWriteMarks = [] {
+  std::array<std::uint8_t, Section::kVolume> marks{};
   for (int i = 0; i < Section::kVolume; ++i) {
     const int x = i & 15, y = i >> 8, z = (i >> 4) & 15;
-    marks[static_cast<std::size_t>(i)] = static_cast<std::uint16_t>(
-        layerPairMark(y / kLayersPerMark) | (x == 0) | (x == 15) << 1 | (y == 0) << 2 | (y == 15) << 3 |
+    marks[static_cast<std::size_t>(i)] = static_cast<std::uint8_t>(
+        bandMark(y / kLayersPerBand) | (x == 0) | (x == 15) << 1 | (y == 0) << 2 | (y == 15) << 3 |
         (z == 0) << 4 | (z == 15) << 5);
   }
   return marks;

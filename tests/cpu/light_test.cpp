@@ -395,8 +395,8 @@ TEST(Light, LevelsUnpackAndPackInNibbleArrayOrder) {
   }
 }
 
-// Packing writes back only the pairs of layers marked as written, and frees a section's bytes only
-// when the pairs it skipped have the same one level as those it wrote.
+// Packing writes back only the bands of layers marked as written, and frees a section's bytes only
+// when the bands it skipped have the same one level as those it wrote.
 TEST(Light, PackingWritesTheMarkedLayersAndFreesOnlyWhatIsUniform) {
   light::LightFrame frame;
   std::array<light::Level, Section::kVolume> slab{};
@@ -407,30 +407,31 @@ TEST(Light, PackingWritesTheMarkedLayersAndFreesOnlyWhatIsUniform) {
     r.marks = marks;
     return frame.pack(r);
   };
-  const int lastPair = light::kMarkedPairs - 1, inLastPair = Section::kVolume - 96;
+  const int lastBand = light::kBands - 1, inLastBand = Section::kVolume - 96;
+  const int bandCells = light::kLayersPerBand * 256;
 
-  // A uniform section (0) whose first pair of layers is now 15: the other pairs keep their 0.
+  // A uniform section (0) whose lower band of layers is now all 15: the other bands keep their 0.
   NibbleArray was0;
-  std::fill(slab.begin(), slab.begin() + 512, light::Level{15});
-  EXPECT_EQ(pack(was0, light::layerPairMark(0)), light::layerPairMark(0));
+  std::fill(slab.begin(), slab.begin() + bandCells, light::Level{15});
+  EXPECT_EQ(pack(was0, light::bandMark(0)), light::bandMark(0));
   EXPECT_FALSE(was0.isUniform());
-  EXPECT_EQ(was0.get(511), 15);
-  EXPECT_EQ(was0.get(512), 0);
+  EXPECT_EQ(was0.get(bandCells - 1), 15);
+  EXPECT_EQ(was0.get(bandCells), 0);
   EXPECT_EQ(was0.get(Section::kVolume - 1), 0);
 
-  // A section with bytes whose first pair goes back to 0: a 3 in its last pair keeps them.
+  // A section with bytes whose lower band goes back to 0: a 3 in its upper band keeps them.
   slab.fill(light::Level{0});
   NibbleArray mixed;
-  mixed.set(inLastPair, 3);
+  mixed.set(inLastBand, 3);
   mixed.set(7, 9);
-  EXPECT_EQ(pack(mixed, light::layerPairMark(0)), light::layerPairMark(0));
+  EXPECT_EQ(pack(mixed, light::bandMark(0)), light::bandMark(0));
   ASSERT_FALSE(mixed.isUniform());
   EXPECT_EQ(mixed.get(7), 0);
-  EXPECT_EQ(mixed.get(inLastPair), 3);
-  // Once the last pair is written back to 0 too, nothing is kept.
-  EXPECT_EQ(pack(mixed, light::layerPairMark(lastPair)), light::layerPairMark(lastPair));
+  EXPECT_EQ(mixed.get(inLastBand), 3);
+  // Once the upper band is written back to 0 too, nothing is kept.
+  EXPECT_EQ(pack(mixed, light::bandMark(lastBand)), light::bandMark(lastBand));
   EXPECT_TRUE(mixed.isUniform());
-  EXPECT_EQ(mixed.get(inLastPair), 0);
+  EXPECT_EQ(mixed.get(inLastBand), 0);
 }
 
 // A section whose light goes back to one level (a torch taken away in the dark) stores no bytes again.
