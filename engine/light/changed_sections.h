@@ -43,7 +43,8 @@ class ChangedSections {
     auto signExtend27 = [](std::uint64_t v) {
       return static_cast<int>(static_cast<std::int32_t>(static_cast<std::uint32_t>(v << 5)) >> 5);
     };
-    return {signExtend27((key >> 32) & 0x7FFFFFF), static_cast<int>(key & 31), signExtend27((key >> 5) & 0x7FFFFFF)};
+    return {signExtend27((key >> 32) & 0x7FFFFFF), static_cast<int>(key & 31),
+            signExtend27((key >> 5) & 0x7FFFFFF)};
   }
 
  private:

@@ -21,7 +21,9 @@ namespace terrasol::light {
 inline constexpr int kLayersPerBand = 8;
 inline constexpr int kBands = 16 / kLayersPerBand;
 inline constexpr int kBandNibbleBytes = NibbleArray::kBytes / kBands;
-constexpr unsigned bandMark(int band) { return 0x40u << band; }
+constexpr unsigned bandMark(int band) {
+  return 0x40u << band;
+}
 
 // Word q of a section's plain bytes.
 inline std::uint64_t byteWord(const std::uint8_t* bytes, int q) {
@@ -123,7 +125,8 @@ inline bool nibblesAre(const std::uint8_t* nibbles, int begin, int end, int leve
   const __m128i want = _mm_set1_epi8(static_cast<char>(byte));
   __m128i differ = _mm_setzero_si128();
   for (int i = begin; i < end; i += 16)
-    differ = _mm_or_si128(differ, _mm_xor_si128(_mm_loadu_si128(reinterpret_cast<const __m128i*>(nibbles + i)), want));
+    differ = _mm_or_si128(
+        differ, _mm_xor_si128(_mm_loadu_si128(reinterpret_cast<const __m128i*>(nibbles + i)), want));
   return _mm_movemask_epi8(_mm_cmpeq_epi8(differ, _mm_setzero_si128())) == 0xFFFF;
 #else
   for (int i = begin; i < end; ++i)

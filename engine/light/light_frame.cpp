@@ -109,7 +109,8 @@ unsigned LightFrame::pack(SectionRef& r) {
     } else {
       for (int band = 0; band < kBands && level >= 0; ++band) {
         const int begin = band * kBandNibbleBytes;
-        if ((skipped & bandMark(band)) && !nibblesAre(bytes, begin, begin + kBandNibbleBytes, level)) level = -1;
+        if ((skipped & bandMark(band)) && !nibblesAre(bytes, begin, begin + kBandNibbleBytes, level))
+          level = -1;
       }
     }
   }

@@ -52,9 +52,9 @@ inline const std::array<std::uint8_t, Section::kVolume> kWriteMarks = [] {
   std::array<std::uint8_t, Section::kVolume> marks{};
   for (int i = 0; i < Section::kVolume; ++i) {
     const int x = i & 15, y = i >> 8, z = (i >> 4) & 15;
-    marks[static_cast<std::size_t>(i)] = static_cast<std::uint8_t>(
-        bandMark(y / kLayersPerBand) | (x == 0) | (x == 15) << 1 | (y == 0) << 2 | (y == 15) << 3 |
-        (z == 0) << 4 | (z == 15) << 5);
+    marks[static_cast<std::size_t>(i)] =
+        static_cast<std::uint8_t>(bandMark(y / kLayersPerBand) | (x == 0) | (x == 15) << 1 | (y == 0) << 2 |
+                                  (y == 15) << 3 | (z == 0) << 4 | (z == 15) << 5);
   }
   return marks;
 }();
@@ -129,7 +129,7 @@ class LightFrame {
   using Slab = std::array<Level, Section::kVolume>;
   std::vector<std::unique_ptr<Slab>> slabs_;  // kept between updates
   std::size_t slabsUsed_ = 0;
-  static constexpr std::size_t kMaxSpareBytes = 64;  // 128 KiB
+  static constexpr std::size_t kMaxSpareBytes = 64;              // 128 KiB
   std::vector<std::unique_ptr<NibbleArray::Bytes>> spareBytes_;  // layers' bytes freed by pack(), for reuse
 };
 

@@ -4,8 +4,8 @@
 #include <chrono>
 #include <random>
 #include <set>
-#include <tuple>
 #include <thread>
+#include <tuple>
 
 #include "light/changed_sections.h"
 #include "light/level_words.h"
