@@ -77,15 +77,15 @@ unsigned LightFrame::pack(SectionRef& r) {
   const unsigned marks = r.marks;
   r.marks = 0;
   if (!marks) return 0;
+  NibbleArray& layer = *r.layer;
+  const bool wasUniform = layer.isUniform();
   // The bytes a section gave up when its light became uniform wait here for the next that needs
   // some, which saves an allocation and a free per section in a torch placed and taken away again.
   std::unique_ptr<NibbleArray::Bytes> spare;
-  if (!spareBytes_.empty()) {
+  if (wasUniform && !spareBytes_.empty()) {
     spare = std::move(spareBytes_.back());
     spareBytes_.pop_back();
   }
-  NibbleArray& layer = *r.layer;
-  const bool wasUniform = layer.isUniform();
   const std::uint8_t before = layer.uniformLevel();
   std::uint8_t* bytes = layer.overwrittenBytes(spare);
   // Only the bands of layers written are packed; new bytes get the old level in the others.

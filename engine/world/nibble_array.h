@@ -81,17 +81,6 @@ class NibbleArray {
     uniform_ = level;
     read_ = uniformBytes(level);
   }
-  // Frees the bytes when every level is the same.
-  void compact() {
-    if (!owned_) return;
-    const std::uint8_t first = (*owned_)[0];
-    if ((first & 15) != (first >> 4)) return;
-    for (std::uint8_t b : *owned_) {
-      if (b != first) return;
-    }
-    fill(first & 15);
-  }
-
   // The bytes get() reads (the shared buffer while uniform); valid until the next set() or fill().
   const std::uint8_t* bytes() const { return read_; }
 
