@@ -63,20 +63,37 @@ void LightFrame::resolve(int index) {
   }
 }
 
-void LightFrame::unpack(SectionRef& r) {
+Level* LightFrame::takeSlab() {
   if (slabsUsed_ == slabs_.size()) slabs_.push_back(std::make_unique<Slab>());
-  r.levels = slabs_[slabsUsed_++]->data();
+  return slabs_[slabsUsed_++]->data();
+}
+
+void LightFrame::unpack(SectionRef& r) {
   if (r.layer->isUniform()) {
-    std::memset(r.levelBytes(), r.layer->uniformLevel(), Section::kVolume);
-  } else {
-    unpackNibbles(r.layer->bytes(), r.levelBytes());
+    std::unique_ptr<Slab>& slab = levelSlabs_[r.layer->uniformLevel()];
+    if (!slab) {
+      slab = std::make_unique<Slab>();
+      slab->fill(Level{r.layer->uniformLevel()});
+    }
+    r.levels = slab->data();
+    r.shared = true;
+    return;
   }
+  r.levels = takeSlab();
+  unpackNibbles(r.layer->bytes(), r.levelBytes());
+}
+
+void LightFrame::unshare(SectionRef& r) {
+  r.levels = takeSlab();
+  r.shared = false;
+  std::memset(r.levelBytes(), r.layer->uniformLevel(), Section::kVolume);
 }
 
 unsigned LightFrame::pack(SectionRef& r) {
   const unsigned marks = r.marks;
   r.marks = 0;
   if (!marks) return 0;
+  assert(!r.shared);
   NibbleArray& layer = *r.layer;
   const bool wasUniform = layer.isUniform();
   // The bytes a section gave up when its light became uniform wait here for the next that needs

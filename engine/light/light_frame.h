@@ -11,7 +11,9 @@
 // An update works in plain bytes, one level per cell: a section's nibbles are unpacked into a slab
 // the first time the update touches it, and the slabs it wrote are packed back when it ends (a
 // section back to one level throughout keeps no bytes). A level read or written is then one byte,
-// with no shifts and masks.
+// with no shifts and masks. A section of one level is only read at first, from a shared slab of that
+// level, and gets its own on its first write: the ground under a torch is read for its light, never
+// written, and costs no 4 KiB fill.
 // Internal to engine/light.
 
 #include <array>
@@ -34,6 +36,7 @@ enum class Level : std::uint8_t {};
 struct SectionRef {
   NibbleArray* layer = nullptr;  // null: not loaded, or outside the world (acts opaque)
   Level* levels = nullptr;       // the slab, by Section::index; null until the section is touched
+  bool shared = false;           // levels is a read-only slab of the layer's one level (see own())
   unsigned marks = 0;            // kWriteMarks of the cells written: what to pack back, whose halos changed
   const BlockId* blocks = nullptr;  // blocks[index & blockMask]: the dense array, or &uniform
   int blockMask = 0;
@@ -97,6 +100,12 @@ class LightFrame {
     if (!r.levels && r.layer) unpack(r);
     return r;
   }
+  // Gives a section read from a shared slab one of its own, to write; returns its levels.
+  Level* own(SectionRef& r) {
+    if (r.shared) [[unlikely]]
+      unshare(r);
+    return r.levels;
+  }
   // The section's ref, its levels left packed: its layer is read as it is.
   SectionRef& packedRef(int index) {
     const int chunk = index / kRefSections;
@@ -117,6 +126,8 @@ class LightFrame {
  private:
   void resolve(int chunk);
   void unpack(SectionRef& r);
+  void unshare(SectionRef& r);
+  Level* takeSlab();
 
   const ChunkWindow* window_ = nullptr;
   LightChannel channel_ = LightChannel::Block;
@@ -129,6 +140,7 @@ class LightFrame {
   using Slab = std::array<Level, Section::kVolume>;
   std::vector<std::unique_ptr<Slab>> slabs_;  // kept between updates
   std::size_t slabsUsed_ = 0;
+  std::array<std::unique_ptr<Slab>, 16> levelSlabs_;  // read-only, one per level, filled on first use
   static constexpr std::size_t kMaxSpareBytes = 64;              // 128 KiB
   std::vector<std::unique_ptr<NibbleArray::Bytes>> spareBytes_;  // layers' bytes freed by pack(), for reuse
 };

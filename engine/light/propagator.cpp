@@ -46,7 +46,7 @@ void Propagator::replaceLevels(SectionRef& r, std::uint32_t origin, const std::u
   }
   if (writes == 0) return;
   lightWrites_ += static_cast<std::uint64_t>(writes);
-  std::memcpy(current, levels, Section::kVolume);
+  std::memcpy(frame_.own(r), levels, Section::kVolume);
 }
 
 // Written sections are packed back. A changed cell changes its own section's mesh and, on a face,
@@ -134,7 +134,7 @@ void Propagator::runDecrease() {
                       const std::uint8_t own = source(c, i, reads);
                       if (own < level) {
                         // Its light may have come through the removed cell: clear it, remove on from it.
-                        c.set(i, own);
+                        c.set(frame_, i, own);
                         darker[darkerCount++] = {pos, level, allBut(opposite(d))};
                         if (own > 0) refill[refillCount++] = {pos, own, kAllDirections};
                         return;
@@ -180,7 +180,7 @@ void Propagator::runIncrease() {
                       ++dimmer;
                       return;
                     }
-                    c.set(i, static_cast<std::uint8_t>(level));
+                    c.set(frame_, i, static_cast<std::uint8_t>(level));
                     if (level > 1)
                       out[count++] = {pos, static_cast<std::uint8_t>(level), allBut(opposite(d))};
                     else

@@ -94,11 +94,17 @@ struct Cursor {
         mask(r.blockMask),
         skyTop(r.skyTop),
         minY(r.minY),
-        emitters(r.emitters) {}
+        emitters(r.emitters),
+        shared(r.shared) {}
   void flush() { ref->marks |= marks; }
   std::uint8_t light(CellIndex i) const { return static_cast<std::uint8_t>(levels[i]); }
   BlockId block(CellIndex i) const { return blocks[i & mask]; }
-  void set(CellIndex i, std::uint8_t level) {
+  // `frame` gives a section read from a shared slab its own on its first write.
+  void set(LightFrame& frame, CellIndex i, std::uint8_t level) {
+    if (shared) [[unlikely]] {
+      levels = frame.own(*ref);
+      shared = false;
+    }
     levels[i] = Level{level};
     marks |= kWriteMarks[static_cast<std::size_t>(i)];
   }
@@ -110,6 +116,7 @@ struct Cursor {
   const std::int16_t* skyTop;
   int minY;
   const std::uint16_t* emitters;
+  bool shared;
   unsigned marks = 0;
 };
 
@@ -174,7 +181,7 @@ class Propagator {
     increase_.push({pos, level, directions});
   }
   void setLight(SectionRef& r, int index, std::uint8_t level) {
-    r.levels[index] = Level{level};
+    frame_.own(r)[index] = Level{level};
     r.marks |= kWriteMarks[static_cast<std::size_t>(index)];
     ++lightWrites_;
   }

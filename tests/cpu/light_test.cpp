@@ -434,6 +434,33 @@ TEST(Light, PackingWritesTheMarkedLayersAndFreesOnlyWhatIsUniform) {
   EXPECT_EQ(mixed.get(inLastBand), 0);
 }
 
+// Sections of one level are read from one shared slab; the first write gives a section its own,
+// holding that level, and the others still read theirs.
+TEST(Light, SectionsOfOneLevelShareASlabUntilWritten) {
+  LitWorld w("flat");
+  w.loadArea(0, 0, 1, 0);
+  const light::ChunkWindow window(w.world, {0, 0}, {1, 0});
+  light::LightFrame frame;
+  frame.reset(window, LightChannel::Block);
+  auto refAt = [&](int x, int y, int z) -> light::SectionRef& {
+    std::uint32_t pos = 0;
+    EXPECT_TRUE(frame.toFrame(x, y, z, pos));
+    return frame.ref(light::LightFrame::refIndex(pos));
+  };
+  light::SectionRef& a = refAt(0, 40, 0);  // both under the ground: block light 0 throughout
+  light::SectionRef& b = refAt(16, 40, 0);
+  ASSERT_TRUE(a.shared && b.shared);
+  EXPECT_EQ(a.levels, b.levels);
+
+  light::Level* own = frame.own(a);
+  EXPECT_FALSE(a.shared);
+  EXPECT_NE(own, b.levels);
+  EXPECT_TRUE(std::all_of(own, own + Section::kVolume, [](light::Level l) { return l == light::Level{0}; }));
+  own[123] = light::Level{7};
+  EXPECT_EQ(b.levels[123], light::Level{0});
+  EXPECT_EQ(frame.own(a), own);  // once
+}
+
 // A section whose light goes back to one level (a torch taken away in the dark) stores no bytes again.
 TEST(Light, SectionsBackToOneLevelKeepNoBytes) {
   LitWorld w("void");
