@@ -34,16 +34,20 @@ void LightFrame::reset(const ChunkWindow& window, LightChannel channel) {
   std::copy(std::begin(steps), std::end(steps), across_);
   const auto chunks = static_cast<std::size_t>(stride_ * (depth_ + 2));
   if (refs_.size() < chunks * kRefSections) refs_.resize(chunks * kRefSections);
-  resolved_.assign(chunks, 0);
+  if (++update_ == 0) {  // wrapped: no ref may look resolved
+    for (SectionRef& r : refs_) r.update = 0;
+    update_ = 1;
+  }
   resolvedList_.clear();
   slabsUsed_ = 0;
 }
 
 void LightFrame::resolve(int index) {
-  resolved_[static_cast<std::size_t>(index)] = 1;
   resolvedList_.push_back(index);
   SectionRef* refs = chunkRefs(index);
-  std::fill(refs, refs + kRefSections, SectionRef{});
+  SectionRef stamped;
+  stamped.update = update_;
+  std::fill(refs, refs + kRefSections, stamped);
   const int x = index % stride_ - 1, z = index / stride_ - 1;
   if (x < 0 || x >= width_ || z < 0 || z >= depth_) return;  // the ring around the window
   Chunk* chunk = window_->chunks[static_cast<std::size_t>(z * width_ + x)];

@@ -44,6 +44,7 @@ struct SectionRef {
   const std::uint16_t* emitters = nullptr;  // the section's count in ChunkLight::emitters: at 0 no cell emits
   const std::int16_t* skyTop = nullptr;  // the chunk's heightmap
   int minY = 0;                          // world y of the section's bottom layer
+  std::uint32_t update = 0;              // the frame's update count when it was resolved
 
   // The slab as bytes, for whole-section copies and comparisons.
   std::uint8_t* levelBytes() { return reinterpret_cast<std::uint8_t*>(levels); }
@@ -108,9 +109,9 @@ class LightFrame {
   }
   // The section's ref, its levels left packed: its layer is read as it is.
   SectionRef& packedRef(int index) {
-    const int chunk = index / kRefSections;
-    if (!resolved_[static_cast<std::size_t>(chunk)]) resolve(chunk);
-    return refs_[static_cast<std::size_t>(index)];
+    SectionRef& r = refs_[static_cast<std::size_t>(index)];
+    if (r.update != update_) resolve(index / kRefSections);
+    return r;
   }
   // The ref of a position that was queued: its section was resolved and unpacked then.
   SectionRef& queuedRef(int index) { return refs_[static_cast<std::size_t>(index)]; }
@@ -135,7 +136,7 @@ class LightFrame {
   int stride_ = 0;  // grid chunks per row: width_ + 2
   std::int32_t across_[6] = {};
   std::vector<SectionRef> refs_;
-  std::vector<std::uint8_t> resolved_;
+  std::uint32_t update_ = 0;  // counts resets: refs stamped with an older count are not resolved yet
   std::vector<int> resolvedList_;
   using Slab = std::array<Level, Section::kVolume>;
   std::vector<std::unique_ptr<Slab>> slabs_;  // kept between updates
