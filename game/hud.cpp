@@ -203,7 +203,7 @@ void Hud::settingsTab(GameSettings& s, MenuResult& out) {
   }
   ImGui::SliderFloat("Distance (blocks)", &sh.distance, 16.0f, 512.0f, "%.0f");
   out.rendererChanged |= released();
-  ImGui::SliderInt("PCF samples (N: (2N+1)^2 grid or disk)", &sh.pcfSamples, 0, 8);
+  ImGui::SliderInt("PCF samples (N: (2N+1)^2 grid; disk, tent: on)", &sh.pcfSamples, 0, 8);
   out.rendererChanged |= released();
   ImGui::SliderFloat("PCF radius", &sh.pcfRadius, 0.0f, 8.0f, "%.1f");
   out.rendererChanged |= released();

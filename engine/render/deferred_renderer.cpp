@@ -57,6 +57,8 @@ std::vector<ShaderDefine> lightingDefines(const RendererOptions& options) {
     if (const int n = std::clamp(options.shadow.pcfSamples, 0, 8); n > 0) {
       if (options.shadow.pcfPattern == PcfPattern::Disk) {
         defines.push_back({"PCF_DISK", "1"});
+      } else if (options.shadow.pcfPattern == PcfPattern::Tent) {
+        defines.push_back({"PCF_TENT", "1"});
       } else {
         defines.push_back({"PCF_GRID_SIDE", std::to_string(2 * n + 1)});
       }

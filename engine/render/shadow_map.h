@@ -21,7 +21,7 @@ namespace terrasol {
 enum class ShadowMode { Warped, Cascaded };
 enum class ShadowWarp { None, Square, Radial };
 inline constexpr int kMaxShadowCascades = 4;
-enum class PcfPattern { Grid, Disk };
+enum class PcfPattern { Grid, Disk, Tent };
 
 struct ShadowSettings {
   bool enabled = true;
@@ -34,7 +34,7 @@ struct ShadowSettings {
   int pcfSamples = 1;           // N: (2N + 1)^2 grid taps, or a 16-tap disk; 0 = one tap
   float pcfRadius = 1.0f;       // texels of the shadow map, or blocks with pcfRadiusInBlocks
   bool pcfRadiusInBlocks = false;
-  PcfPattern pcfPattern = PcfPattern::Disk;
+  PcfPattern pcfPattern = PcfPattern::Tent;
   float shiftAhead = 0.0f;      // warped mode: the map's centre moves this fraction of `distance` ahead
                                 // of the camera (horizontally), as Luanti does: more map where one looks
   int updateFrames = 1;         // with FrameInputs::reuseShadowMap: a changed map is redrawn over this

@@ -48,13 +48,13 @@ struct SceneShadow {
   int pcfSamples = 1;            // 0..8
   float pcfRadius = 1.0f;        // 0..32, in pcfRadiusUnit
   std::string pcfRadiusUnit = "texels";  // one of kPcfRadiusUnits
-  std::string pcfPattern = "disk";  // one of kPcfPatterns
+  std::string pcfPattern = "tent";  // one of kPcfPatterns
   float shiftAhead = 0.0f;       // 0..0.9 of distance (warped mode)
   int updateFrames = 1;          // 1..16: frames a changed map is spread over (the game; renders draw it whole)
 };
 inline constexpr std::array<std::string_view, 2> kShadowModes = {"warped", "cascaded"};
 inline constexpr std::array<std::string_view, 3> kShadowWarps = {"none", "square", "radial"};
-inline constexpr std::array<std::string_view, 2> kPcfPatterns = {"grid", "disk"};
+inline constexpr std::array<std::string_view, 3> kPcfPatterns = {"grid", "disk", "tent"};
 inline constexpr std::array<std::string_view, 2> kPcfRadiusUnits = {"texels", "blocks"};
 
 // "props": a glTF model placed in the world (engine/scene/prop_placement.h turns it into a transform).

@@ -14,7 +14,8 @@ uniform mat4 u_shadowMatrices[SHADOW_MAX_CASCADES];  // camera-relative world ->
 uniform float u_shadowTexelWorlds[SHADOW_MAX_CASCADES];  // blocks per texel of each layer, unwarped
 uniform float u_shadowDepthRanges[SHADOW_MAX_CASCADES];  // blocks from each layer's near to far plane
 uniform float u_shadowResolution;  // texels per side
-// PCF_DISK: the 16-tap rotated Poisson disk; PCF_GRID_SIDE S: S^2 grid taps; neither: one tap.
+// PCF_DISK: the 16-tap rotated Poisson disk; PCF_GRID_SIDE S: S^2 grid taps; PCF_TENT: four bilinear
+// taps; none: one tap.
 uniform float u_pcfRadius;         // texels, or blocks with u_pcfRadiusInBlocks
 uniform bool u_pcfRadiusInBlocks;
 uniform bool u_shadowLive;         // false when no pass ran this frame (no light above the horizon)
@@ -68,7 +69,7 @@ ShadowLookup shadowLookup(vec3 position, vec3 vertexNormal, float cosTheta) {
   float tanTheta = min(sinTheta / max(c, 1e-3), 10.0);  // grazing light: tan -> infinity, clamped
   // A radius in blocks covers fewer texels where texels are large (far from the camera in a warped map).
   float radius = u_pcfRadiusInBlocks ? min(u_pcfRadius / texel, 32.0) : u_pcfRadius;
-#if defined(PCF_DISK) || defined(PCF_GRID_SIDE)
+#if defined(PCF_DISK) || defined(PCF_GRID_SIDE) || defined(PCF_TENT)
   float spread = 1.0 + radius;
 #else
   float spread = 1.0;
@@ -94,6 +95,12 @@ float shadowVisibility(ShadowLookup l, vec2 pixel) {
   float lit = 0.0;
   for (int i = 0; i < 16; ++i) lit += shadowTap(l.uv, l.layer, l.depth, rotation * kPoisson[i] * l.radius);
   return lit / 16.0;
+#elif defined(PCF_TENT)
+  // Four bilinear compares half the radius apart: at a radius of one texel, the 3x3 tent (1 2 1)^2 / 16
+  // of nine point taps, for the price of four.
+  vec2 h = vec2(0.5 * l.radius);
+  return 0.25 * (shadowTap(l.uv, l.layer, l.depth, -h) + shadowTap(l.uv, l.layer, l.depth, vec2(h.x, -h.y)) +
+                 shadowTap(l.uv, l.layer, l.depth, vec2(-h.x, h.y)) + shadowTap(l.uv, l.layer, l.depth, h));
 #elif defined(PCF_GRID_SIDE)
   const int n = PCF_GRID_SIDE / 2;
   float step = l.radius / float(n);

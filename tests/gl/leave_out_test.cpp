@@ -63,7 +63,7 @@ TEST_F(LeaveOutTest, MapsNoPackHasAreNotSampledAndChangeNoPixel) {
   scene.packs = {std::filesystem::path(TERRASOL_SOURCE_DIR) / ".." / "shared" / "testdata" / "packs" / "pixel_perfection_ce"};
   SceneRenderer lean(scene);
   EXPECT_TRUE(hasVariant(lean, "gbuffer+NO_NORMAL_MAPS+NO_SPECULAR_MAPS"));
-  EXPECT_TRUE(hasVariant(lean, "lighting+SHADOWS+PCF_DISK+NO_NORMAL_MAPS+NO_SPECULAR_MAPS"));
+  EXPECT_TRUE(hasVariant(lean, "lighting+SHADOWS+PCF_TENT+NO_NORMAL_MAPS+NO_SPECULAR_MAPS"));
   scene.leaveOutAbsentMaps = false;
   SceneRenderer full(scene);
   EXPECT_TRUE(hasVariant(full, "gbuffer"));
@@ -90,7 +90,7 @@ TEST_F(LeaveOutTest, MapsNoPackHasAreNotSampledAndChangeNoPixel) {
   // With the default pack (which has both) nothing is left out.
   SceneRenderer pbr(loadScene(kScenes / "pack_pixel_perfection.json"));
   EXPECT_TRUE(hasVariant(pbr, "gbuffer"));
-  EXPECT_TRUE(hasVariant(pbr, "lighting+SHADOWS+PCF_DISK"));
+  EXPECT_TRUE(hasVariant(pbr, "lighting+SHADOWS+PCF_TENT"));
   context_->checkErrors("absent maps");
 }
 

@@ -164,7 +164,7 @@ TEST_F(PropsTest, AlphaModesMaskAndBlend) {
   scene.props[0].model = editedBox("blend", {{"alphaMode", "BLEND"}, {"pbrMetallicRoughness", {{"baseColorFactor", {0.8, 0, 0, 0.5}}}}});
   SceneRenderer blendRenderer(scene);
   const RenderedFrame blended = blendRenderer.renderFrame(0);
-  EXPECT_TRUE(hasVariant(blendRenderer, "prop_translucent+SHADOWS+PCF_DISK"));
+  EXPECT_TRUE(hasVariant(blendRenderer, "prop_translucent+SHADOWS+PCF_TENT"));
   const glm::vec3 b = colourAt(blended, top), o = colourAt(opaque, top), g = colourAt(bare, top);
   EXPECT_GT(b.g, o.g + 0.05f) << "the green grass shows through";
   EXPECT_GT(b.r, g.r + 0.05f) << "the red box tints it";

@@ -56,7 +56,7 @@ TEST_F(ShadowTest, ExtremeSettingsStayFiniteAndSane) {
   struct Case {
     const char* name;
     void (*change)(SceneFile&);
-    const char* lighting = "lighting+SHADOWS+PCF_DISK";  // the variant the filter settings pick
+    const char* lighting = "lighting+SHADOWS+PCF_TENT";  // the variant the filter settings pick
   };
   const Case cases[] = {
       {"sun 0.5 degrees up", [](SceneFile& s) { s.time = 33; }},
@@ -81,6 +81,12 @@ TEST_F(ShadowTest, ExtremeSettingsStayFiniteAndSane) {
          s.shadow.resolution = 256;
        }},
       {"one tap, no PCF", [](SceneFile& s) { s.shadow.pcfSamples = 0; }, "lighting+SHADOWS"},
+      {"disk PCF, radius 3", [](SceneFile& s) {
+         s.shadow.pcfPattern = "disk";
+         s.shadow.pcfRadius = 3.0f;
+       },
+       "lighting+SHADOWS+PCF_DISK"},
+      {"tent PCF, radius 8", [](SceneFile& s) { s.shadow.pcfRadius = 8.0f; }},
       {"grid PCF, 3 samples, radius 4", [](SceneFile& s) {
          s.shadow.pcfPattern = "grid";
          s.shadow.pcfSamples = 3;
