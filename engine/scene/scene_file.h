@@ -48,7 +48,7 @@ struct SceneShadow {
   int pcfSamples = 1;            // 0..8
   float pcfRadius = 1.0f;        // 0..32, in pcfRadiusUnit
   std::string pcfRadiusUnit = "texels";  // one of kPcfRadiusUnits
-  std::string pcfPattern = "tent";  // one of kPcfPatterns
+  std::string pcfPattern = "tent";       // one of kPcfPatterns
   float shiftAhead = 0.0f;       // 0..0.9 of distance (warped mode)
   int updateFrames = 1;          // 1..16: frames a changed map is spread over (the game; renders draw it whole)
 };

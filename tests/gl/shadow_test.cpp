@@ -70,24 +70,28 @@ TEST_F(ShadowTest, ExtremeSettingsStayFiniteAndSane) {
       {"distance 1024", [](SceneFile& s) { s.shadow.distance = 1024.0f; }},
       {"4 cascades", [](SceneFile& s) { s.shadow.mode = "cascaded"; }},
       {"map shifted 0.9 ahead", [](SceneFile& s) { s.shadow.shiftAhead = 0.9f; }},
-      {"PCF radius 0.25 blocks, 8 samples", [](SceneFile& s) {
+      {"PCF radius 0.25 blocks, 8 samples",
+       [](SceneFile& s) {
          s.shadow.pcfRadiusUnit = "blocks";
          s.shadow.pcfRadius = 0.25f;
          s.shadow.pcfSamples = 8;
        }},
-      {"2 cascades at 256 texels", [](SceneFile& s) {
+      {"2 cascades at 256 texels",
+       [](SceneFile& s) {
          s.shadow.mode = "cascaded";
          s.shadow.cascades = 2;
          s.shadow.resolution = 256;
        }},
       {"one tap, no PCF", [](SceneFile& s) { s.shadow.pcfSamples = 0; }, "lighting+SHADOWS"},
-      {"disk PCF, radius 3", [](SceneFile& s) {
+      {"disk PCF, radius 3",
+       [](SceneFile& s) {
          s.shadow.pcfPattern = "disk";
          s.shadow.pcfRadius = 3.0f;
        },
        "lighting+SHADOWS+PCF_DISK"},
       {"tent PCF, radius 8", [](SceneFile& s) { s.shadow.pcfRadius = 8.0f; }},
-      {"grid PCF, 3 samples, radius 4", [](SceneFile& s) {
+      {"grid PCF, 3 samples, radius 4",
+       [](SceneFile& s) {
          s.shadow.pcfPattern = "grid";
          s.shadow.pcfSamples = 3;
          s.shadow.pcfRadius = 4.0f;

@@ -44,7 +44,9 @@ ShadowSettings shadowSettingsOf(const SceneShadow& s) {
   out.warpStrength = s.warpStrength;
   out.pcfSamples = s.pcfSamples;
   out.pcfRadius = s.pcfRadius;
-  out.pcfPattern = s.pcfPattern == "grid" ? PcfPattern::Grid : s.pcfPattern == "tent" ? PcfPattern::Tent : PcfPattern::Disk;
+  out.pcfPattern = s.pcfPattern == "grid"   ? PcfPattern::Grid
+                   : s.pcfPattern == "tent" ? PcfPattern::Tent
+                                            : PcfPattern::Disk;
   out.pcfRadiusInBlocks = s.pcfRadiusUnit == "blocks";
   out.shiftAhead = s.shiftAhead;
   out.updateFrames = s.updateFrames;
