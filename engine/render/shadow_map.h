@@ -31,7 +31,7 @@ struct ShadowSettings {
   float distance = 128.0f;      // blocks from the camera to the map's edge
   ShadowWarp warp = ShadowWarp::Radial;
   float warpStrength = 0.85f;   // [0, 1): 0 = no warp
-  int pcfSamples = 1;           // N: (2N + 1)^2 grid taps, or a 16-tap disk; 0 = one tap
+  int pcfSamples = 1;           // N: (2N + 1)^2 grid taps; above 0 the disk or tent pattern; 0 = one tap
   float pcfRadius = 1.0f;       // texels of the shadow map, or blocks with pcfRadiusInBlocks
   bool pcfRadiusInBlocks = false;
   PcfPattern pcfPattern = PcfPattern::Tent;
