@@ -50,6 +50,35 @@ TEST_F(ShadowTest, NoonShadowsMatchRayTracedTruth) {
   EXPECT_GT(100.0 * static_cast<double>(none.error.total.falseLit) / static_cast<double>(none.error.total.evaluated), 5.0);
 }
 
+// The tent's four bilinear taps sit half the radius apart: at radius 0 they are one tap, exactly; at
+// radius 1 they soften the edges of shadows, so pixels there differ from the one tap's.
+TEST_F(ShadowTest, TentIsOneTapAtRadiusZeroAndSoftensEdgesAtOne) {
+  SceneFile scene = loadScene(kScenes / "shadow_noon.json");
+  scene.width = 320;
+  scene.height = 180;
+  auto render = [&](int samples, float radius) {
+    SceneFile s = scene;
+    s.shadow.pcfPattern = "tent";
+    s.shadow.pcfSamples = samples;
+    s.shadow.pcfRadius = radius;
+    SceneRenderer renderer(s);
+    return renderer.renderFrame(0).image;
+  };
+  const Image oneTap = render(0, 1.0f), tent0 = render(1, 0.0f), tent1 = render(1, 1.0f);
+  context_->checkErrors("tent");
+  auto differing = [](const Image& a, const Image& b) {
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < a.rgba.size(); i += 4) {
+      n += !std::equal(a.rgba.begin() + static_cast<std::ptrdiff_t>(i), a.rgba.begin() + static_cast<std::ptrdiff_t>(i) + 3,
+                       b.rgba.begin() + static_cast<std::ptrdiff_t>(i));
+    }
+    return n;
+  };
+  ASSERT_EQ(oneTap.rgba.size(), tent0.rgba.size());
+  EXPECT_EQ(differing(oneTap, tent0), 0u);
+  EXPECT_GT(differing(oneTap, tent1), 100u);
+}
+
 // Each stiff setting: rendered without NaN or Inf, and still mostly right.
 TEST_F(ShadowTest, ExtremeSettingsStayFiniteAndSane) {
   const SceneFile base = loadScene(kScenes / "shadow_noon.json");
