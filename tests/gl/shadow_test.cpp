@@ -71,7 +71,8 @@ TEST_F(ShadowTest, TentIsOneTapAtRadiusZeroAndWidensPenumbraeWithItsRadius) {
     request.readBack = true;
     RenderedFrame f = renderer.renderFrame(0, request);
     const auto partial = [](const glm::vec4& p) { return p.a > 0.02f && p.a < 0.98f; };
-    return Frame{std::move(f.image), static_cast<std::size_t>(std::count_if(f.pixels.scene.begin(), f.pixels.scene.end(), partial))};
+    return Frame{std::move(f.image), static_cast<std::size_t>(std::count_if(f.pixels.scene.begin(),
+                                                                            f.pixels.scene.end(), partial))};
   };
   const Frame oneTap = render(0, 1.0f), tent0 = render(1, 0.0f), tent4 = render(1, 4.0f);
   context_->checkErrors("tent");
