@@ -11,11 +11,12 @@ layout(location = GB_SPECULAR) out vec4 o_specular;
 layout(location = GB_LIGHT) out vec4 o_light;
 
 void main() {
-  vec4 albedo = texture(u_atlasAlbedo, v_uv);
+  AtlasCoord at = atlasCoord();
+  vec4 albedo = atlasTexel(u_atlasAlbedo, at);
 #ifdef CUTOUT
   if (albedo.a < 0.5) discard;
 #endif
-  vec4 normalTexel = normalTexelAt(v_uv);
+  vec4 normalTexel = normalTexelAt(at);
   o_albedo = vec4(albedo.rgb * v_tint * vertexAo(), normalTexel.b);
 #ifdef NO_NORMAL_MAPS
   o_normals = vec4(octEncode(vertexNormal()), 0.0, 0.0);  // RG16F: the surface normal is the vertex normal
@@ -23,7 +24,7 @@ void main() {
   o_normals = vec4(octEncode(mappedNormal(normalTexel)), octEncode(vertexNormal()));
 #endif
 #ifndef NO_SPECULAR_MAPS
-  o_specular = specularTexelAt(v_uv);
+  o_specular = specularTexelAt(at);
 #endif
   o_light = vec4(v_light, 1.0);
 }

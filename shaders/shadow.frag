@@ -3,9 +3,10 @@
 // TRANSLUCENT, the colour light keeps through the surface: white where clear, its own colour where
 // opaque (a coloured filter, like water's blue).
 
+#include "lib/atlas_sample.glsl"
+
 layout(binding = UNIT_ATLAS_ALBEDO) uniform sampler2D u_atlasAlbedo;
 
-in vec2 v_uv;
 in vec3 v_tint;
 
 #ifdef TRANSLUCENT
@@ -13,7 +14,7 @@ layout(location = OUT_COLOR) out vec4 o_transmittance;
 #endif
 
 void main() {
-  vec4 albedo = texture(u_atlasAlbedo, v_uv);
+  vec4 albedo = atlasTexel(u_atlasAlbedo, atlasCoord());
 #ifdef CUTOUT
   if (albedo.a < 0.5) discard;
 #endif

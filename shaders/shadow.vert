@@ -12,6 +12,7 @@ uniform vec3 u_sectionOffset;  // section's minimum corner minus the camera posi
 uniform vec3 u_tints[4];       // linear; index 0 is white
 
 out vec2 v_uv;
+flat out vec2 v_tile;
 out vec3 v_tint;
 
 void main() {
@@ -19,6 +20,7 @@ void main() {
   vec4 p = u_shadowMatrix * vec4(u_sectionOffset + v.position, 1.0);
   p.xy = warpShadow(p.xy);
   gl_Position = p;
-  v_uv = atlasUv(v.texture, v.uv);
+  v_uv = v.uv;
+  v_tile = atlasTile(v.texture);
   v_tint = u_tints[v.tint];
 }

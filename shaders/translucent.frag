@@ -12,8 +12,9 @@
 layout(location = OUT_COLOR) out vec4 o_color;
 
 void main() {
-  vec4 albedo = texture(u_atlasAlbedo, v_uv);
-  vec4 normalTexel = normalTexelAt(v_uv);
+  AtlasCoord at = atlasCoord();
+  vec4 albedo = atlasTexel(u_atlasAlbedo, at);
+  vec4 normalTexel = normalTexelAt(at);
   Surface s;
   s.albedo = albedo.rgb * v_tint * vertexAo();
 #ifdef NO_NORMAL_MAPS
@@ -22,7 +23,7 @@ void main() {
   s.normal = mappedNormal(normalTexel);
 #endif
   s.vertexNormal = vertexNormal();
-  s.spec = specularTexelAt(v_uv);
+  s.spec = specularTexelAt(at);
   s.blockLight = v_light.x;
   s.skyLight = v_light.y;
   s.materialAo = normalTexel.b;

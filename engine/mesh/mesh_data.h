@@ -14,14 +14,21 @@
 
 namespace terrasol {
 
+// Which passes draw a quad. Merged quads (mesh/face_merge.h) stand in for the faces they join in the
+// camera's passes only: the shadow pass warps every vertex, and a large quad's straight edges would
+// not follow its warped faces' edges, so it keeps drawing those faces.
+enum class QuadRole : std::uint8_t { Both = 0, Faces = 1, Merged = 2 };  // Faces: light's view only
+inline constexpr int kQuadRoles = 3;
+
 // One vertex in 16 bytes:
 //   position: x | y << 10 | z << 20, in 1/32 block from the section's minimum corner (0..512 each)
-//   material: texture id (16 bits) | face (4 bits) << 16 | tint (2 bits) << 20
+//   material: texture id (16 bits) | face (4 bits) << 16 | tint (2 bits) << 20 | QuadRole (2 bits) << 22
 //             face 0..5 = Direction (normal along an axis), 6..9 = the diagonal planes of cross plants
 //   light:    block light sum (6 bits) | sky light sum (6 bits) << 6 | ambient occlusion 0..3 (2 bits) << 12
 //             smooth light sums the open cells among the four around a corner, and there are always
 //             ao + 1 of them (see the mesher), so the shader divides by that: sums are 0..60
-//   uv:       u | v << 5, in 1/16 of the texture (0..16), v = 0 at the texture's top row
+//   uv:       u | v << 9, in 1/16 of the texture (0..256: merged faces repeat it, mesh/face_merge.h),
+//             v = 0 at the texture's top row
 struct PackedVertex {
   std::uint32_t position;
   std::uint32_t material;
@@ -32,19 +39,24 @@ struct PackedVertex {
     return static_cast<std::uint32_t>(x32) | static_cast<std::uint32_t>(y32) << 10 |
            static_cast<std::uint32_t>(z32) << 20;
   }
+  static constexpr std::uint32_t packUv(int u, int v) {
+    return static_cast<std::uint32_t>(u) | static_cast<std::uint32_t>(v) << 9;
+  }
   int x32() const { return static_cast<int>(position & 1023); }
   int y32() const { return static_cast<int>((position >> 10) & 1023); }
   int z32() const { return static_cast<int>((position >> 20) & 1023); }
   int texture() const { return static_cast<int>(material & 0xFFFF); }
   int face() const { return static_cast<int>((material >> 16) & 15); }
   int tint() const { return static_cast<int>((material >> 20) & 3); }
+  QuadRole role() const { return static_cast<QuadRole>((material >> 22) & 3); }
+  void setRole(QuadRole r) { material = (material & ~(3u << 22)) | static_cast<std::uint32_t>(r) << 22; }
   int ao() const { return static_cast<int>((light >> 12) & 3); }
   int cellsLit() const { return ao() + 1; }  // how many cells the light sums add up
   // The averages x4, rounded: 0..60.
   int blockLight4() const { return (static_cast<int>(light & 63) * 4 + cellsLit() / 2) / cellsLit(); }
   int skyLight4() const { return (static_cast<int>((light >> 6) & 63) * 4 + cellsLit() / 2) / cellsLit(); }
-  int u() const { return static_cast<int>(uv & 31); }
-  int v() const { return static_cast<int>((uv >> 5) & 31); }
+  int u() const { return static_cast<int>(uv & 511); }
+  int v() const { return static_cast<int>((uv >> 9) & 511); }
   friend bool operator==(const PackedVertex&, const PackedVertex&) = default;
 };
 static_assert(sizeof(PackedVertex) == 16, "the G-buffer pass expects 16-byte vertices");
@@ -98,6 +110,12 @@ using PackedVertices = std::vector<PackedVertex, UninitialisedAllocator<PackedVe
 struct MeshData {
   PackedVertices vertices;  // 4 per quad
   std::size_t quads() const { return vertices.size() / 4; }
+  // The block faces, one quad each as the light's view draws them: all quads but the merged ones.
+  std::size_t faces() const {
+    std::size_t n = 0;
+    for (std::size_t q = 0; q < quads(); ++q) n += vertices[q * 4].role() != QuadRole::Merged ? 1 : 0;
+    return n;
+  }
 };
 
 // Which pairs of a section's six faces (Direction order) are joined by cells that are not opaque cubes:

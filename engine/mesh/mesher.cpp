@@ -1,5 +1,7 @@
 #include "mesh/mesher.h"
 
+#include "mesh/face_merge.h"
+
 #include <algorithm>
 #include <bit>
 #include <cstring>
@@ -61,7 +63,7 @@ constexpr auto kCorners = [] {
       table[d][c] = {offset(a.x, a.y, a.z), offset(b.x, b.y, b.z), offset(a.x + b.x, a.y + b.y, a.z + b.z),
                      PackedVertex::packPosition(16 + 16 * (f.n.x + a.x + b.x), y32, 16 + 16 * (f.n.z + a.z + b.z)),
                      y32 == 32,
-                     static_cast<std::uint32_t>(su > 0 ? 16 : 0) | static_cast<std::uint32_t>(sv > 0 ? 0 : 16) << 5};
+                     PackedVertex::packUv(su > 0 ? 16 : 0, sv > 0 ? 0 : 16)};
     }
   return table;
 }();
@@ -150,7 +152,6 @@ class Mesher {
   BlockId block(int x, int y, int z) const { return s_.blocks[static_cast<std::size_t>(SectionSnapshot::index(x, y, z))]; }
   bool opaqueAt(int i) const { return s_.opaque[static_cast<std::size_t>(i)] != 0; }
 
-  static std::uint32_t uv(int u, int v) { return static_cast<std::uint32_t>(u) | static_cast<std::uint32_t>(v) << 5; }
   // Appends quads to a layer's vertices, which are grown ahead (uninitialised) and cut to size at
   // the end: a quad costs a compare, not a resize.
   struct LayerWriter {
@@ -236,7 +237,7 @@ class Mesher {
     PackedVertex v[4];
     for (int c = 0; c < 4; ++c) {
       v[c] = {PackedVertex::packPosition(corners32[c].x, corners32[c].y, corners32[c].z),
-              material(e, e.texture[0], face), light, uv(uvs[c][0], uvs[c][1])};
+              material(e, e.texture[0], face), light, PackedVertex::packUv(uvs[c][0], uvs[c][1])};
     }
     std::copy_n(v, 4, out.quad());
   }
@@ -315,7 +316,9 @@ BlockMeshTable::BlockMeshTable(const BlockRegistry& blocks, const std::function<
 }
 
 SectionMesh meshSection(const SectionSnapshot& snapshot, const BlockMeshTable& table) {
-  return Mesher(snapshot, table).run();
+  SectionMesh mesh = Mesher(snapshot, table).run();
+  for (auto& layer : mesh.layers) mergeFaces(layer.vertices);
+  return mesh;
 }
 
 }  // namespace terrasol

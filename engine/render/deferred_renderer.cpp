@@ -86,8 +86,9 @@ glm::vec3 ambientTint(glm::vec3 zenith) {
 DeferredRenderer::DeferredRenderer(const ShaderPreprocessor& shaders, const Atlas& atlas, const BiomeTints& tints,
                                    const RendererOptions& options)
     : contents_(contentsFor(atlas, options)),
-      geometry_(build(shaders, variants_, "gbuffer.vert", "gbuffer.frag", contents_.defines())),
-      cutout_(build(shaders, variants_, "gbuffer.vert", "gbuffer.frag", with({{"CUTOUT", "1"}}, contents_.defines()))),
+      geometry_(build(shaders, variants_, "gbuffer.vert", "gbuffer.frag", with({{"SEAL_MERGED_EDGES", "1"}}, contents_.defines()))),
+      cutout_(build(shaders, variants_, "gbuffer.vert", "gbuffer.frag",
+                    with({{"CUTOUT", "1"}, {"SEAL_MERGED_EDGES", "1"}}, contents_.defines()))),
       lighting_(build(shaders, variants_, "fullscreen.vert", "lighting.frag",
                       with(lightingDefines(options), contents_.defines()))),
       translucent_(build(shaders, variants_, "gbuffer.vert", "translucent.frag",
@@ -221,8 +222,11 @@ void DeferredRenderer::geometryPass(const View& view, const SectionMeshes& meshe
   glEnable(GL_CULL_FACE);
   glDisable(GL_BLEND);
   glEnable(GL_FRAMEBUFFER_SRGB);  // the albedo target stores linear light sRGB-encoded
-  setMat4(geometry_.id(), "u_viewProjection", view.viewProjection);
-  setMat4(cutout_.id(), "u_viewProjection", view.viewProjection);
+  for (const GLuint program : {geometry_.id(), cutout_.id()}) {
+    setMat4(program, "u_viewProjection", view.viewProjection);
+    glProgramUniform2f(program, glGetUniformLocation(program, "u_viewportPixels"), static_cast<float>(gbuffer_->size().x),
+                       static_cast<float>(gbuffer_->size().y));
+  }
   const SectionDraw how{DrawOrder::NearestFirst, glm::vec3(0.0f), options_.cullFacesAway, true};
   drawSections(geometry_.id(), visible_, meshes, MeshLayer::Opaque, how);
   drawSections(cutout_.id(), visible_, meshes, MeshLayer::Cutout, how);
@@ -305,11 +309,6 @@ void DeferredRenderer::drawSections(GLuint program, const std::vector<Visible>& 
   for (const Draw& d : draws) {
     meshes.bindLayer(*d.layer);
     glProgramUniform3fv(program, offsetLocation, 1, glm::value_ptr(d.offset));
-    if (!how.cullFacesAway) {
-      glDrawElements(GL_TRIANGLES, d.layer->quads * 6, GL_UNSIGNED_INT, nullptr);
-      if (how.countQuads) stats_.quadsDrawn += d.layer->quads;
-      continue;
-    }
     // Face groups turned away from the camera for the whole section are never drawn: a face of normal
     // +x lies in a plane at x >= the section's corner, so it faces away from a camera (at 0) whenever
     // the corner's x >= 0; likewise for every direction. Runs of drawn groups become one range each.
@@ -319,15 +318,15 @@ void DeferredRenderer::drawSections(GLuint program, const std::vector<Visible>& 
     GLsizei counts[SectionMeshes::kFaceGroups];
     const void* offsets[SectionMeshes::kFaceGroups];
     GLsizei ranges = 0;
-    const auto& start = d.layer->groupStart;
     for (int g = 0; g < SectionMeshes::kFaceGroups; ++g) {
-      const GLsizei quads = start[static_cast<std::size_t>(g) + 1] - start[static_cast<std::size_t>(g)];
+      const auto [first, end] = d.layer->range(g, how.view);
+      const GLsizei quads = end - first;
       if (quads == 0) continue;
-      if (away[g]) {
+      if (how.cullFacesAway && away[g]) {
         if (how.countQuads) stats_.quadsFacingAway += quads;
         continue;
       }
-      const auto offset = reinterpret_cast<const void*>(static_cast<std::uintptr_t>(start[static_cast<std::size_t>(g)]) * 6 * sizeof(GLuint));
+      const auto offset = reinterpret_cast<const void*>(static_cast<std::uintptr_t>(first) * 6 * sizeof(GLuint));
       if (ranges > 0 && static_cast<const char*>(offsets[ranges - 1]) + counts[ranges - 1] * sizeof(GLuint) == offset) {
         counts[ranges - 1] += quads * 6;
       } else {

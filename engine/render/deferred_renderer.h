@@ -141,6 +141,7 @@ class DeferredRenderer {
     glm::vec3 axis{0.0f};
     bool cullFacesAway = false;
     bool countQuads = false;
+    SectionMeshes::View view = SectionMeshes::View::Camera;
   };
   void drawSections(GLuint program, const std::vector<Visible>& sections, const SectionMeshes& meshes,
                     MeshLayer layer, const SectionDraw& how);

@@ -9,19 +9,25 @@ namespace terrasol {
 
 namespace {
 
-int faceGroup(const PackedVertex& v) { return v.face() < 6 ? v.face() : SectionMeshes::kFaceGroups - 1; }
+// The run a quad is stored in: its face group (or the last group), then its role, light-only first.
+std::size_t runOf(const PackedVertex& v, bool byFace) {
+  const int group = byFace && v.face() < 6 ? v.face() : SectionMeshes::kFaceGroups - 1;
+  constexpr int kSlot[kQuadRoles] = {1, 0, 2};  // Both, Faces, Merged
+  return static_cast<std::size_t>(group * kQuadRoles + kSlot[static_cast<int>(v.role())]);
+}
 
 }  // namespace
 
-// A counting sort of the quads by face group; `start` receives each group's first quad.
-const PackedVertices& SectionMeshes::groupByFace(const MeshData& data, std::array<GLsizei, kFaceGroups + 1>& start) {
+// A stable counting sort of the quads into their runs; `start` receives each run's first quad.
+const PackedVertices& SectionMeshes::group(const MeshData& data, bool byFace,
+                                           std::array<GLsizei, kFaceGroups * kQuadRoles + 1>& start) {
   start.fill(0);
-  for (std::size_t q = 0; q < data.quads(); ++q) ++start[static_cast<std::size_t>(faceGroup(data.vertices[q * 4])) + 1];
-  for (int g = 0; g < kFaceGroups; ++g) start[static_cast<std::size_t>(g) + 1] += start[static_cast<std::size_t>(g)];
+  for (std::size_t q = 0; q < data.quads(); ++q) ++start[runOf(data.vertices[q * 4], byFace) + 1];
+  for (std::size_t r = 0; r + 1 < start.size(); ++r) start[r + 1] += start[r];
   grouped_.resize(data.vertices.size());
-  std::array<GLsizei, kFaceGroups + 1> next = start;
+  auto next = start;
   for (std::size_t q = 0; q < data.quads(); ++q) {
-    const auto at = static_cast<std::size_t>(next[static_cast<std::size_t>(faceGroup(data.vertices[q * 4]))]++);
+    const auto at = static_cast<std::size_t>(next[runOf(data.vertices[q * 4], byFace)]++);
     std::copy_n(data.vertices.begin() + static_cast<std::ptrdiff_t>(q * 4), 4, grouped_.begin() + static_cast<std::ptrdiff_t>(at * 4));
   }
   return grouped_;
@@ -51,12 +57,7 @@ void SectionMeshes::upload(const SectionMesh& mesh) {
     Layer& layer = section.layers[static_cast<std::size_t>(l)];
     layer.quads = static_cast<GLsizei>(data.quads());
     // Translucent quads keep the mesher's order (blending within a section depends on it): one group.
-    const PackedVertices& vertices =
-        static_cast<MeshLayer>(l) == MeshLayer::Translucent ? data.vertices : groupByFace(data, layer.groupStart);
-    if (static_cast<MeshLayer>(l) == MeshLayer::Translucent) {
-      layer.groupStart.fill(layer.quads);
-      layer.groupStart[0] = 0;
-    }
+    const PackedVertices& vertices = group(data, static_cast<MeshLayer>(l) != MeshLayer::Translucent, layer.start);
     layer.vertices = gl::Buffer::create();
     glNamedBufferStorage(layer.vertices.id(), static_cast<GLsizeiptr>(vertices.size() * sizeof(PackedVertex)),
                          vertices.data(), 0);

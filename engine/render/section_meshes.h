@@ -6,6 +6,7 @@
 #include <array>
 #include <cstdint>
 #include <map>
+#include <utility>
 #include <vector>
 
 #include "mesh/mesh_data.h"
@@ -34,12 +35,22 @@ class SectionMeshes {
   std::uint64_t generation() const { return generation_; }
 
   // Opaque and cutout quads are stored grouped by the face they show (Direction order, then everything
-  // else: cross plants), so a pass can leave out whole groups that face away from the camera.
+  // else: cross plants), so a pass can leave out whole groups that face away from the camera; the
+  // translucent layer is one group in the mesher's order. Within a group: the faces only the light's
+  // view draws, the quads both draw, the merged quads only the camera's view draws (QuadRole), so
+  // either view of a group is one run of quads.
   static constexpr int kFaceGroups = 7;
+  enum class View { Camera, Light };
   struct Layer {
     gl::Buffer vertices;
     GLsizei quads = 0;
-    std::array<GLsizei, kFaceGroups + 1> groupStart{};  // quad index of each group; [7] = quads
+    std::array<GLsizei, kFaceGroups * kQuadRoles + 1> start{};  // first quad of each group's role runs
+
+    // Quads [first, second) of `group` as `view` draws them.
+    std::pair<GLsizei, GLsizei> range(int group, View view) const {
+      const auto run = static_cast<std::size_t>(group * kQuadRoles + (view == View::Camera ? 1 : 0));
+      return {start[run], start[run + 2]};
+    }
   };
   struct Section {
     std::array<Layer, kMeshLayers> layers;
@@ -54,7 +65,7 @@ class SectionMeshes {
 
  private:
   void ensureIndices(GLsizei quads);
-  const PackedVertices& groupByFace(const MeshData& data, std::array<GLsizei, kFaceGroups + 1>& start);
+  const PackedVertices& group(const MeshData& data, bool byFace, std::array<GLsizei, kFaceGroups * kQuadRoles + 1>& start);
 
   std::map<SectionPos, Section> sections_;
   gl::VertexArray layout_;

@@ -127,7 +127,7 @@ void DeferredRenderer::drawShadowCasters(ShadowMap& map, const ShadowKey& key, c
       setWarpUniforms(program);
     }
     // Nearest the light first: the depth test then rejects what lies behind before it is shaded.
-    const SectionDraw how{DrawOrder::NearestFirst, fromLight, false, false};
+    const SectionDraw how{DrawOrder::NearestFirst, fromLight, false, false, SectionMeshes::View::Light};
     drawSections(shadow_.id(), casters, meshes, MeshLayer::Opaque, how);
     drawSections(shadowCutout_.id(), casters, meshes, MeshLayer::Cutout, how);
     // Props cast in the first slice of a spread rebuild (they are few).

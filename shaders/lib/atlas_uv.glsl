@@ -7,9 +7,10 @@ layout(std430, binding = STORAGE_TILES) readonly buffer Tiles {
   uint tiles[];  // atlas tile shown this frame by each texture id
 };
 
-// `uv`: 0..1 across the texture, v = 0 at its top row.
-vec2 atlasUv(int texture, vec2 uv) {
+// The top left corner of the tile `texture` shows this frame, in atlas UV (lib/atlas_sample.glsl
+// adds the UV within the tile per fragment).
+vec2 atlasTile(int texture) {
   int tile = int(tiles[texture]);
   vec2 corner = vec2(tile % u_atlasGrid.x, tile / u_atlasGrid.x) * float(u_atlasGrid.y) + 0.5 * float(u_atlasGrid.z);
-  return (corner + uv * float(u_atlasGrid.z)) / u_atlasSize;
+  return corner / u_atlasSize;
 }

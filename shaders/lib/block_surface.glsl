@@ -1,5 +1,6 @@
 // What the G-buffer and translucent passes share: a block fragment's albedo, normals and material.
 
+#include "lib/atlas_sample.glsl"
 #include "lib/octahedral.glsl"
 #include "lib/labpbr.glsl"
 
@@ -9,24 +10,23 @@ layout(binding = UNIT_ATLAS_SPECULAR) uniform sampler2D u_atlasSpecular;  // Lab
 
 // With NO_NORMAL_MAPS / NO_SPECULAR_MAPS (no loaded pack has any _n / _s) the atlases hold only
 // LabPBR's defaults, so those constants stand in and nothing is sampled: the same values, no fetch.
-vec4 normalTexelAt(vec2 uv) {
+vec4 normalTexelAt(AtlasCoord at) {
 #ifdef NO_NORMAL_MAPS
   return vec4(127.0 / 255.0, 127.0 / 255.0, 1.0, 1.0);  // labpbr::kDefaultNormal
 #else
-  return texture(u_atlasNormal, uv);
+  return atlasTexel(u_atlasNormal, at);
 #endif
 }
 
-vec4 specularTexelAt(vec2 uv) {
+vec4 specularTexelAt(AtlasCoord at) {
 #ifdef NO_SPECULAR_MAPS
   return vec4(0.0);  // labpbr::kDefaultSpecular
 #else
-  return texture(u_atlasSpecular, uv);
+  return atlasTexel(u_atlasSpecular, at);
 #endif
 }
 
 in vec3 v_position;
-in vec2 v_uv;
 in vec3 v_tint;
 in vec3 v_light;
 flat in int v_face;

@@ -7,7 +7,8 @@ struct BlockVertex {
   int tint;       // 0 none, 1 grass, 2 foliage, 3 water
   float blockLight, skyLight;  // 0..1
   float ao;                    // 0..1 (0 = darkest corner)
-  vec2 uv;                     // 0..1 across the texture, v = 0 at its top row
+  vec2 uv;                     // textures across (0..1, or up to 16 on a merged quad), v = 0 at the top row
+  bool merged;                 // QuadRole::Merged (mesh/face_merge.h)
 };
 
 BlockVertex unpackBlockVertex(uvec4 p) {
@@ -16,12 +17,13 @@ BlockVertex unpackBlockVertex(uvec4 p) {
   v.texture = int(p.y & 0xFFFFu);
   v.face = int((p.y >> 16) & 15u);
   v.tint = int((p.y >> 20) & 3u);
+  v.merged = ((p.y >> 22) & 3u) == 2u;
   // Light sums over the ao + 1 cells around the corner (PackedVertex::light).
   uint ao = (p.z >> 12) & 3u;
   float cells = float(ao + 1u) * 15.0;
   v.blockLight = float(p.z & 63u) / cells;
   v.skyLight = float((p.z >> 6) & 63u) / cells;
   v.ao = float(ao) / 3.0;
-  v.uv = vec2(p.w & 31u, (p.w >> 5) & 31u) / 16.0;
+  v.uv = vec2(p.w & 511u, (p.w >> 9) & 511u) / 16.0;
   return v;
 }

@@ -40,7 +40,7 @@ struct MeshWorld {
     return meshSection(snapshot, table);
   }
   std::size_t quads(MeshLayer layer, SectionPos s = {0, sectionOf(64), 0}) {
-    return mesh(s).layers[static_cast<std::size_t>(layer)].quads();
+    return mesh(s).layers[static_cast<std::size_t>(layer)].faces();  // block faces, before merging
   }
 
   World world;
@@ -91,7 +91,7 @@ TEST(Mesher, WaterSurfacesSitLowerUnlessWaterIsAbove) {
   w.set({4, 70, 3}, "water");
   auto mesh = w.mesh();
   const auto& water = mesh.layers[static_cast<std::size_t>(MeshLayer::Translucent)];
-  EXPECT_EQ(water.quads(), 10u) << "water hides water";
+  EXPECT_EQ(water.faces(), 10u) << "water hides water";
   int highest = 0;
   for (const auto& v : water.vertices) highest = std::max(highest, v.y32());
   EXPECT_EQ(highest, (70 & 15) * 32 + 28) << "2/16 below the block top";
@@ -351,6 +351,104 @@ TEST(MeshScheduler, RemeshesExactlyTheSectionsAnEditTouches) {
   }
   EXPECT_TRUE(sawEdited);
   for (const auto& m : results) EXPECT_NE(m.pos, (SectionPos{0, sectionOf(200), 0})) << "untouched sections stay";
+}
+
+// A quad's footprint: its face, its height along the normal and its extent on the three axes (1/32).
+struct Footprint {
+  int face, lo[3], hi[3];
+};
+Footprint footprintOf(const PackedVertex* q) {
+  Footprint f{q[0].face(), {512, 512, 512}, {0, 0, 0}};
+  for (int c = 0; c < 4; ++c) {
+    const int at[3] = {q[c].x32(), q[c].y32(), q[c].z32()};
+    for (int a = 0; a < 3; ++a) {
+      f.lo[a] = std::min(f.lo[a], at[a]);
+      f.hi[a] = std::max(f.hi[a], at[a]);
+    }
+  }
+  return f;
+}
+bool inside(const Footprint& small, const Footprint& big) {
+  if (small.face != big.face) return false;
+  for (int a = 0; a < 3; ++a)
+    if (small.lo[a] < big.lo[a] || small.hi[a] > big.hi[a]) return false;
+  return true;
+}
+
+// Every merged quad stands for exactly the faces stored for the light's view in its rectangle, all of
+// its material and light, and its UV runs as theirs do, one texture per block from its corner.
+void expectMergedQuadsMatchTheirFaces(const MeshData& layer, std::size_t& merged, std::size_t& facesMerged) {
+  std::vector<const PackedVertex*> faces, quads;
+  for (std::size_t q = 0; q < layer.quads(); ++q) {
+    const PackedVertex* v = &layer.vertices[q * 4];
+    if (v->role() == QuadRole::Faces) faces.push_back(v);
+    if (v->role() == QuadRole::Merged) quads.push_back(v);
+  }
+  std::vector<int> coveredBy(faces.size(), 0);
+  for (const PackedVertex* m : quads) {
+    const Footprint big = footprintOf(m);
+    const FaceBasis& basis = kFaceBases[m[0].face()];
+    int area = 1;
+    for (int a = 0; a < 3; ++a) area *= big.hi[a] > big.lo[a] ? (big.hi[a] - big.lo[a]) / 32 : 1;
+    int inRectangle = 0;
+    for (std::size_t f = 0; f < faces.size(); ++f) {
+      if (!inside(footprintOf(faces[f]), big)) continue;
+      ++inRectangle;
+      ++coveredBy[f];
+      EXPECT_EQ(faces[f][0].light, m[0].light);
+      EXPECT_EQ(faces[f][0].texture(), m[0].texture());
+      EXPECT_EQ(faces[f][0].tint(), m[0].tint());
+    }
+    EXPECT_GT(area, 1);
+    EXPECT_EQ(inRectangle, area) << "a merged quad replaces the faces of its whole rectangle";
+    for (int c = 0; c < 4; ++c) {
+      EXPECT_EQ(m[c].light, m[0].light);
+      // From corner 3 (u = 0, v = 0: the texture's top left), u grows along the tangent and v against up.
+      const glm::vec3 d(m[c].x32() - m[3].x32(), m[c].y32() - m[3].y32(), m[c].z32() - m[3].z32());
+      EXPECT_EQ(m[3].u(), 0);
+      EXPECT_EQ(m[3].v(), 0);
+      EXPECT_EQ(static_cast<float>(m[c].u()) * 2.0f, glm::dot(d, glm::vec3(basis.tangent[0], basis.tangent[1], basis.tangent[2])));
+      EXPECT_EQ(static_cast<float>(m[c].v()) * 2.0f, -glm::dot(d, glm::vec3(basis.up[0], basis.up[1], basis.up[2])));
+    }
+  }
+  for (std::size_t f = 0; f < faces.size(); ++f) EXPECT_EQ(coveredBy[f], 1) << "each merged face in one quad";
+  merged += quads.size();
+  facesMerged += faces.size();
+}
+
+TEST(Mesher, MergedQuadsStandForExactlyTheFacesTheyJoin) {
+  MeshWorld w("terrain");
+  const int surface = w.gen->surfaceHeight(8, 8);
+  w.set({8, surface + 1, 8}, "torch");  // light that varies across the ground: those faces stay apart
+  w.set({3, surface + 1, 3}, "water");
+  const auto mesh = w.mesh({0, sectionOf(surface), 0});
+  std::size_t merged = 0, facesMerged = 0;
+  for (const auto& layer : mesh.layers) expectMergedQuadsMatchTheirFaces(layer, merged, facesMerged);
+  EXPECT_GT(merged, 5u);
+  EXPECT_GT(facesMerged, 2 * merged);
+  const auto& opaque = mesh.layers[static_cast<std::size_t>(MeshLayer::Opaque)];
+  EXPECT_LT(opaque.quads() - facesMerged, opaque.faces()) << "the camera's view draws fewer quads";
+}
+
+TEST(Mesher, AnOpenFloorIsOneQuadSeenFromAbove) {
+  MeshWorld w;
+  for (int z = 0; z < 16; ++z)
+    for (int x = 0; x < 16; ++x) w.set({x, 64, z}, "stone");
+  const auto mesh = w.mesh();
+  const auto& opaque = mesh.layers[static_cast<std::size_t>(MeshLayer::Opaque)];
+  std::vector<const PackedVertex*> tops;
+  for (std::size_t q = 0; q < opaque.quads(); ++q) {
+    const PackedVertex* v = &opaque.vertices[q * 4];
+    if (v->face() == static_cast<int>(Direction::Up) && v->role() != QuadRole::Faces) tops.push_back(v);
+  }
+  ASSERT_EQ(tops.size(), 1u) << "256 tops under one light merge whole";
+  EXPECT_EQ(tops[0]->role(), QuadRole::Merged);
+  const Footprint f = footprintOf(tops[0]);
+  EXPECT_EQ(f.hi[0] - f.lo[0], 512);
+  EXPECT_EQ(f.hi[2] - f.lo[2], 512);
+  std::size_t merged = 0, facesMerged = 0;
+  expectMergedQuadsMatchTheirFaces(opaque, merged, facesMerged);
+  EXPECT_GE(facesMerged, 256u);
 }
 
 }  // namespace

@@ -1,0 +1,149 @@
+#include "mesh/face_merge.h"
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace terrasol {
+namespace {
+
+constexpr int kCornerSigns[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};  // (u, v) side of each corner
+
+// Per face (Direction order): the axis of the normal, of the tangent (u) and of up (v), and whether
+// tangent and up point along their axis or against it.
+struct Axes {
+  int n, t, b;
+  bool tAlong, bAlong;
+};
+constexpr int axisOf(const float (&v)[3]) { return v[0] != 0.0f ? 0 : v[1] != 0.0f ? 1 : 2; }
+constexpr auto kAxes = [] {
+  std::array<Axes, 6> axes{};
+  for (int d = 0; d < 6; ++d) {
+    const FaceBasis& f = kFaceBases[d];
+    const int t = axisOf(f.tangent), b = axisOf(f.up);
+    axes[static_cast<std::size_t>(d)] = {axisOf(f.normal), t, b, f.tangent[t] > 0.0f, f.up[b] > 0.0f};
+  }
+  return axes;
+}();
+
+int coordinate(const PackedVertex& v, int axis) { return axis == 0 ? v.x32() : axis == 1 ? v.y32() : v.z32(); }
+
+// The UV the mesher gives corner c of a full face, and a merged quad w x h faces across.
+std::uint32_t cornerUv(int c, int w, int h) {
+  return PackedVertex::packUv(kCornerSigns[c][0] > 0 ? 16 * w : 0, kCornerSigns[c][1] > 0 ? 0 : 16 * h);
+}
+
+// A face that can merge, where it lies: its plane (face and height along the normal) and its cell in
+// the plane, along the tangent's and up's axes.
+struct Candidate {
+  int plane, i, j;
+  std::uint32_t quad;
+};
+
+// A full block face (1 x 1 in its plane, corners in the mesher's order) with one light at all corners.
+bool candidate(const PackedVertex* q, Candidate& out) {
+  const int face = q[0].face();
+  if (face >= 6) return false;
+  const Axes& a = kAxes[static_cast<std::size_t>(face)];
+  const int height = coordinate(q[0], a.n);
+  int tMin = coordinate(q[0], a.t), bMin = coordinate(q[0], a.b);
+  for (int c = 1; c < 4; ++c) {
+    tMin = std::min(tMin, coordinate(q[c], a.t));
+    bMin = std::min(bMin, coordinate(q[c], a.b));
+  }
+  if (tMin % 32 != 0 || bMin % 32 != 0) return false;
+  for (int c = 0; c < 4; ++c) {
+    const bool tHigh = (kCornerSigns[c][0] > 0) == a.tAlong, bHigh = (kCornerSigns[c][1] > 0) == a.bAlong;
+    if (q[c].light != q[0].light || q[c].material != q[0].material || q[c].uv != cornerUv(c, 1, 1) ||
+        coordinate(q[c], a.n) != height || coordinate(q[c], a.t) != tMin + (tHigh ? 32 : 0) ||
+        coordinate(q[c], a.b) != bMin + (bHigh ? 32 : 0)) {
+      return false;
+    }
+  }
+  out.plane = face * 1024 + height;
+  out.i = tMin / 32;
+  out.j = bMin / 32;
+  return true;
+}
+
+}  // namespace
+
+std::size_t mergeFaces(PackedVertices& quads) {
+  // Out, in this order: quads both views draw, faces that merged (the light's view), merged quads.
+  PackedVertices both, faces, merged;
+  const auto append = [](PackedVertices& to, const PackedVertex* q, QuadRole role) {
+    for (int c = 0; c < 4; ++c) {
+      to.push_back(q[c]);
+      to.back().setRole(role);
+    }
+  };
+  std::vector<Candidate> candidates;
+  for (std::size_t k = 0; k < quads.size() / 4; ++k) {
+    Candidate c;
+    if (candidate(&quads[k * 4], c)) {
+      c.quad = static_cast<std::uint32_t>(k);
+      candidates.push_back(c);
+    } else {
+      append(both, &quads[k * 4], QuadRole::Both);
+    }
+  }
+  if (candidates.size() < 2) return 0;
+  std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) { return a.plane < b.plane; });
+
+  constexpr std::uint32_t kNone = ~0u;
+  std::array<std::uint32_t, 256> grid;  // quad per cell of one plane, kNone where none is left
+  const auto at = [&](int i, int j) { return grid[static_cast<std::size_t>(j * 16 + i)]; };
+  std::size_t facesMerged = 0;
+  for (std::size_t first = 0, last = 0; first < candidates.size(); first = last) {
+    grid.fill(kNone);
+    for (; last < candidates.size() && candidates[last].plane == candidates[first].plane; ++last) {
+      grid[static_cast<std::size_t>(candidates[last].j * 16 + candidates[last].i)] = candidates[last].quad;
+    }
+    const Axes& a = kAxes[static_cast<std::size_t>(candidates[first].plane / 1024)];
+    for (int j = 0; j < 16; ++j)
+      for (int i = 0; i < 16; ++i) {
+        const std::uint32_t q = at(i, j);
+        if (q == kNone) continue;
+        const auto same = [&](int x, int y) {
+          const std::uint32_t r = at(x, y);
+          return r != kNone && quads[r * 4].material == quads[q * 4].material && quads[r * 4].light == quads[q * 4].light;
+        };
+        // The widest run along i, then as many rows of it along j as match whole.
+        int w = 1, h = 1;
+        while (i + w < 16 && same(i + w, j)) ++w;
+        const auto rowMatches = [&](int y) {
+          for (int x = i; x < i + w; ++x)
+            if (!same(x, y)) return false;
+          return true;
+        };
+        while (j + h < 16 && rowMatches(j + h)) ++h;
+        if (w * h == 1) {
+          append(both, &quads[q * 4], QuadRole::Both);
+          grid[static_cast<std::size_t>(j * 16 + i)] = kNone;
+          continue;
+        }
+        PackedVertex out[4];
+        for (int c = 0; c < 4; ++c) {
+          // Corner c of the merged quad is corner c of the face in that corner of the rectangle.
+          const int ci = (kCornerSigns[c][0] > 0) == a.tAlong ? i + w - 1 : i;
+          const int cj = (kCornerSigns[c][1] > 0) == a.bAlong ? j + h - 1 : j;
+          out[c] = quads[at(ci, cj) * 4 + static_cast<std::uint32_t>(c)];
+          out[c].uv = cornerUv(c, w, h);
+        }
+        append(merged, out, QuadRole::Merged);
+        for (int y = j; y < j + h; ++y)
+          for (int x = i; x < i + w; ++x) {
+            append(faces, &quads[at(x, y) * 4], QuadRole::Faces);
+            grid[static_cast<std::size_t>(y * 16 + x)] = kNone;
+          }
+        facesMerged += static_cast<std::size_t>(w * h);
+      }
+  }
+  both.insert(both.end(), faces.begin(), faces.end());
+  both.insert(both.end(), merged.begin(), merged.end());
+  quads.swap(both);
+  return facesMerged;
+}
+
+}  // namespace terrasol
