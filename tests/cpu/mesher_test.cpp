@@ -451,5 +451,21 @@ TEST(Mesher, AnOpenFloorIsOneQuadSeenFromAbove) {
   EXPECT_GE(facesMerged, 256u);
 }
 
+TEST(Mesher, FacesUnderDifferentLightStayApart) {
+  MeshWorld w;
+  for (int z = 0; z < 16; ++z)
+    for (int x = 0; x < 16; ++x) w.set({x, 64, z}, "stone");
+  // A corridor one block wide: its floor is evenly darker at every corner (ambient occlusion 1) and
+  // runs straight into the open floor (3), so only the light tells the two apart.
+  for (int z = 0; z < 8; ++z) {
+    w.set({3, 65, z}, "stone");
+    w.set({5, 65, z}, "stone");
+  }
+  const auto mesh = w.mesh();
+  std::size_t merged = 0, facesMerged = 0;
+  expectMergedQuadsMatchTheirFaces(mesh.layers[static_cast<std::size_t>(MeshLayer::Opaque)], merged, facesMerged);
+  EXPECT_GT(merged, 2u);
+}
+
 }  // namespace
 }  // namespace terrasol
