@@ -16,7 +16,9 @@ struct Axes {
   int n, t, b;
   bool tAlong, bAlong;
 };
-constexpr int axisOf(const float (&v)[3]) { return v[0] != 0.0f ? 0 : v[1] != 0.0f ? 1 : 2; }
+constexpr int axisOf(const float (&v)[3]) {
+  return v[0] != 0.0f ? 0 : v[1] != 0.0f ? 1 : 2;
+}
 constexpr auto kAxes = [] {
   std::array<Axes, 6> axes{};
   for (int d = 0; d < 6; ++d) {
@@ -27,7 +29,9 @@ constexpr auto kAxes = [] {
   return axes;
 }();
 
-int coordinate(const PackedVertex& v, int axis) { return axis == 0 ? v.x32() : axis == 1 ? v.y32() : v.z32(); }
+int coordinate(const PackedVertex& v, int axis) {
+  return axis == 0 ? v.x32() : axis == 1 ? v.y32() : v.z32();
+}
 
 // The UV the mesher gives corner c of a full face, and a merged quad w x h faces across.
 std::uint32_t cornerUv(int c, int w, int h) {
@@ -89,7 +93,8 @@ std::size_t mergeFaces(PackedVertices& quads) {
     }
   }
   if (candidates.size() < 2) return 0;
-  std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) { return a.plane < b.plane; });
+  std::sort(candidates.begin(), candidates.end(),
+            [](const Candidate& a, const Candidate& b) { return a.plane < b.plane; });
 
   constexpr std::uint32_t kNone = ~0u;
   std::array<std::uint32_t, 256> grid;  // quad per cell of one plane, kNone where none is left
@@ -107,7 +112,8 @@ std::size_t mergeFaces(PackedVertices& quads) {
         if (q == kNone) continue;
         const auto same = [&](int x, int y) {
           const std::uint32_t r = at(x, y);
-          return r != kNone && quads[r * 4].material == quads[q * 4].material && quads[r * 4].light == quads[q * 4].light;
+          return r != kNone && quads[r * 4].material == quads[q * 4].material &&
+                 quads[r * 4].light == quads[q * 4].light;
         };
         // The widest run along i, then as many rows of it along j as match whole.
         int w = 1, h = 1;

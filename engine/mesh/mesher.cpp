@@ -1,11 +1,11 @@
 #include "mesh/mesher.h"
 
-#include "mesh/face_merge.h"
-
 #include <algorithm>
 #include <bit>
 #include <cstring>
 #include <utility>
+
+#include "mesh/face_merge.h"
 
 namespace terrasol {
 namespace {
@@ -60,10 +60,13 @@ constexpr auto kCorners = [] {
       const int su = kCornerSigns[c][0], sv = kCornerSigns[c][1];
       const Vec a{su * f.t.x, su * f.t.y, su * f.t.z}, b{sv * f.b.x, sv * f.b.y, sv * f.b.z};
       const int y32 = 16 + 16 * (f.n.y + a.y + b.y);
-      table[d][c] = {offset(a.x, a.y, a.z), offset(b.x, b.y, b.z), offset(a.x + b.x, a.y + b.y, a.z + b.z),
-                     PackedVertex::packPosition(16 + 16 * (f.n.x + a.x + b.x), y32, 16 + 16 * (f.n.z + a.z + b.z)),
-                     y32 == 32,
-                     PackedVertex::packUv(su > 0 ? 16 : 0, sv > 0 ? 0 : 16)};
+      table[d][c] = {
+          offset(a.x, a.y, a.z),
+          offset(b.x, b.y, b.z),
+          offset(a.x + b.x, a.y + b.y, a.z + b.z),
+          PackedVertex::packPosition(16 + 16 * (f.n.x + a.x + b.x), y32, 16 + 16 * (f.n.z + a.z + b.z)),
+          y32 == 32,
+          PackedVertex::packUv(su > 0 ? 16 : 0, sv > 0 ? 0 : 16)};
     }
   return table;
 }();

@@ -83,19 +83,22 @@ glm::vec3 ambientTint(glm::vec3 zenith) {
 
 }  // namespace
 
-DeferredRenderer::DeferredRenderer(const ShaderPreprocessor& shaders, const Atlas& atlas, const BiomeTints& tints,
-                                   const RendererOptions& options)
+DeferredRenderer::DeferredRenderer(const ShaderPreprocessor& shaders, const Atlas& atlas,
+                                   const BiomeTints& tints, const RendererOptions& options)
     : contents_(contentsFor(atlas, options)),
-      geometry_(build(shaders, variants_, "gbuffer.vert", "gbuffer.frag", with({{"SEAL_MERGED_EDGES", "1"}}, contents_.defines()))),
+      geometry_(build(shaders, variants_, "gbuffer.vert", "gbuffer.frag",
+                      with({{"SEAL_MERGED_EDGES", "1"}}, contents_.defines()))),
       cutout_(build(shaders, variants_, "gbuffer.vert", "gbuffer.frag",
                     with({{"CUTOUT", "1"}, {"SEAL_MERGED_EDGES", "1"}}, contents_.defines()))),
       lighting_(build(shaders, variants_, "fullscreen.vert", "lighting.frag",
                       with(lightingDefines(options), contents_.defines()))),
       translucent_(build(shaders, variants_, "gbuffer.vert", "translucent.frag",
                          with(lightingDefines(options), contents_.defines()))),
-      shadow_(options.shadow.enabled ? build(shaders, variants_, "shadow.vert", "shadow.frag") : gl::Program()),
-      shadowCutout_(options.shadow.enabled ? build(shaders, variants_, "shadow.vert", "shadow.frag", {{"CUTOUT", "1"}})
-                                           : gl::Program()),
+      shadow_(options.shadow.enabled ? build(shaders, variants_, "shadow.vert", "shadow.frag")
+                                     : gl::Program()),
+      shadowCutout_(options.shadow.enabled
+                        ? build(shaders, variants_, "shadow.vert", "shadow.frag", {{"CUTOUT", "1"}})
+                        : gl::Program()),
       shadowTranslucent_(options.shadow.enabled
                              ? build(shaders, variants_, "shadow.vert", "shadow.frag", {{"TRANSLUCENT", "1"}})
                              : gl::Program()),
@@ -224,8 +227,8 @@ void DeferredRenderer::geometryPass(const View& view, const SectionMeshes& meshe
   glEnable(GL_FRAMEBUFFER_SRGB);  // the albedo target stores linear light sRGB-encoded
   for (const GLuint program : {geometry_.id(), cutout_.id()}) {
     setMat4(program, "u_viewProjection", view.viewProjection);
-    glProgramUniform2f(program, glGetUniformLocation(program, "u_viewportPixels"), static_cast<float>(gbuffer_->size().x),
-                       static_cast<float>(gbuffer_->size().y));
+    glProgramUniform2f(program, glGetUniformLocation(program, "u_viewportPixels"),
+                       static_cast<float>(gbuffer_->size().x), static_cast<float>(gbuffer_->size().y));
   }
   const SectionDraw how{DrawOrder::NearestFirst, glm::vec3(0.0f), options_.cullFacesAway, true};
   drawSections(geometry_.id(), visible_, meshes, MeshLayer::Opaque, how);
@@ -326,7 +329,8 @@ void DeferredRenderer::drawSections(GLuint program, const std::vector<Visible>& 
         if (how.countQuads) stats_.quadsFacingAway += quads;
         continue;
       }
-      const auto offset = reinterpret_cast<const void*>(static_cast<std::uintptr_t>(first) * 6 * sizeof(GLuint));
+      const auto offset =
+          reinterpret_cast<const void*>(static_cast<std::uintptr_t>(first) * 6 * sizeof(GLuint));
       if (ranges > 0 && static_cast<const char*>(offsets[ranges - 1]) + counts[ranges - 1] * sizeof(GLuint) == offset) {
         counts[ranges - 1] += quads * 6;
       } else {

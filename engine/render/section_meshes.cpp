@@ -57,7 +57,8 @@ void SectionMeshes::upload(const SectionMesh& mesh) {
     Layer& layer = section.layers[static_cast<std::size_t>(l)];
     layer.quads = static_cast<GLsizei>(data.quads());
     // Translucent quads keep the mesher's order (blending within a section depends on it): one group.
-    const PackedVertices& vertices = group(data, static_cast<MeshLayer>(l) != MeshLayer::Translucent, layer.start);
+    const PackedVertices& vertices =
+        group(data, static_cast<MeshLayer>(l) != MeshLayer::Translucent, layer.start);
     layer.vertices = gl::Buffer::create();
     glNamedBufferStorage(layer.vertices.id(), static_cast<GLsizeiptr>(vertices.size() * sizeof(PackedVertex)),
                          vertices.data(), 0);

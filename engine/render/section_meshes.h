@@ -65,7 +65,8 @@ class SectionMeshes {
 
  private:
   void ensureIndices(GLsizei quads);
-  const PackedVertices& group(const MeshData& data, bool byFace, std::array<GLsizei, kFaceGroups * kQuadRoles + 1>& start);
+  const PackedVertices& group(const MeshData& data, bool byFace,
+                              std::array<GLsizei, kFaceGroups * kQuadRoles + 1>& start);
 
   std::map<SectionPos, Section> sections_;
   gl::VertexArray layout_;
