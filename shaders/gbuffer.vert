@@ -9,8 +9,9 @@ layout(location = ATTRIB_PACKED) in uvec4 a_packed;
 uniform mat4 u_viewProjection;  // camera at the origin: positions stay small far from the world's origin
 uniform vec3 u_sectionOffset;   // section's minimum corner minus the camera position (computed in double)
 uniform vec3 u_tints[4];        // linear; index 0 is white
-#ifdef SEAL_MERGED_EDGES
 uniform vec2 u_viewportPixels;
+uniform bool u_sealMergedEdges;  // the G-buffer pass; not the translucent one, whose blending would
+                                  // count an overlap twice
 
 const vec3 kFaceTangents[10] = FACE_TANGENTS;
 const vec3 kFaceUps[10] = FACE_UPS;
@@ -31,7 +32,6 @@ vec4 sealed(vec4 clip, vec3 position, BlockVertex v) {
   clip.xy += pixels / len * (1.0 / 32.0) * 2.0 / u_viewportPixels * clip.w;
   return clip;
 }
-#endif
 
 out vec3 v_position;  // camera-relative
 out vec2 v_uv;
@@ -49,7 +49,5 @@ void main() {
   v_light = vec3(v.blockLight, v.skyLight, v.ao);
   v_face = v.face;
   gl_Position = u_viewProjection * vec4(v_position, 1.0);
-#ifdef SEAL_MERGED_EDGES
-  if (v.merged) gl_Position = sealed(gl_Position, v_position, v);
-#endif
+  if (u_sealMergedEdges && v.merged) gl_Position = sealed(gl_Position, v_position, v);
 }

@@ -86,10 +86,8 @@ glm::vec3 ambientTint(glm::vec3 zenith) {
 DeferredRenderer::DeferredRenderer(const ShaderPreprocessor& shaders, const Atlas& atlas,
                                    const BiomeTints& tints, const RendererOptions& options)
     : contents_(contentsFor(atlas, options)),
-      geometry_(build(shaders, variants_, "gbuffer.vert", "gbuffer.frag",
-                      with({{"SEAL_MERGED_EDGES", "1"}}, contents_.defines()))),
-      cutout_(build(shaders, variants_, "gbuffer.vert", "gbuffer.frag",
-                    with({{"CUTOUT", "1"}, {"SEAL_MERGED_EDGES", "1"}}, contents_.defines()))),
+      geometry_(build(shaders, variants_, "gbuffer.vert", "gbuffer.frag", contents_.defines())),
+      cutout_(build(shaders, variants_, "gbuffer.vert", "gbuffer.frag", with({{"CUTOUT", "1"}}, contents_.defines()))),
       lighting_(build(shaders, variants_, "fullscreen.vert", "lighting.frag",
                       with(lightingDefines(options), contents_.defines()))),
       translucent_(build(shaders, variants_, "gbuffer.vert", "translucent.frag",
@@ -229,6 +227,7 @@ void DeferredRenderer::geometryPass(const View& view, const SectionMeshes& meshe
     setMat4(program, "u_viewProjection", view.viewProjection);
     glProgramUniform2f(program, glGetUniformLocation(program, "u_viewportPixels"),
                        static_cast<float>(gbuffer_->size().x), static_cast<float>(gbuffer_->size().y));
+    glProgramUniform1i(program, glGetUniformLocation(program, "u_sealMergedEdges"), 1);
   }
   const SectionDraw how{DrawOrder::NearestFirst, glm::vec3(0.0f), options_.cullFacesAway, true};
   drawSections(geometry_.id(), visible_, meshes, MeshLayer::Opaque, how);
