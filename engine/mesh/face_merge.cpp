@@ -8,8 +8,6 @@
 namespace terrasol {
 namespace {
 
-constexpr int kCornerSigns[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};  // (u, v) side of each corner
-
 // Per face (Direction order): the axis of the normal, of the tangent (u) and of up (v), and whether
 // tangent and up point along their axis or against it.
 struct Axes {

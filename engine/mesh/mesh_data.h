@@ -83,6 +83,10 @@ inline constexpr FaceBasis kFaceBases[10] = {
     {{-kHalfSqrt2, 0, -kHalfSqrt2}, {kHalfSqrt2, 0, -kHalfSqrt2}, {0, 1, 0}},   // and its back
 };
 
+// The corners of a full face quad in the order the mesher writes them: their side along the tangent (u)
+// and along up, (-,-) (+,-) (+,+) (-,+), counter-clockwise seen from outside.
+inline constexpr int kCornerSigns[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
+
 enum class MeshLayer : std::uint8_t { Opaque, Cutout, Translucent };
 inline constexpr int kMeshLayers = 3;
 

@@ -31,7 +31,6 @@ constexpr auto kFaces = [] {
   }
   return faces;
 }();
-constexpr int kCornerSigns[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
 
 constexpr int offset(int dx, int dy, int dz) {
   return dx + dz * SectionSnapshot::kSide + dy * SectionSnapshot::kSide * SectionSnapshot::kSide;
