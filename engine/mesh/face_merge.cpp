@@ -46,7 +46,8 @@ struct Candidate {
 // A full block face (1 x 1 in its plane, corners in the mesher's order) with one light at all corners.
 bool candidate(const PackedVertex* q, Candidate& out) {
   const int face = q[0].face();
-  if (face >= 6) return false;
+  if (face >= 6 || q[1].light != q[0].light || q[2].light != q[0].light || q[3].light != q[0].light)
+    return false;
   const Axes& a = kAxes[static_cast<std::size_t>(face)];
   const int height = coordinate(q[0], a.n);
   int tMin = coordinate(q[0], a.t), bMin = coordinate(q[0], a.b);
@@ -57,8 +58,8 @@ bool candidate(const PackedVertex* q, Candidate& out) {
   if (tMin % 32 != 0 || bMin % 32 != 0) return false;
   for (int c = 0; c < 4; ++c) {
     const bool tHigh = (kCornerSigns[c][0] > 0) == a.tAlong, bHigh = (kCornerSigns[c][1] > 0) == a.bAlong;
-    if (q[c].light != q[0].light || q[c].material != q[0].material || q[c].uv != cornerUv(c, 1, 1) ||
-        coordinate(q[c], a.n) != height || coordinate(q[c], a.t) != tMin + (tHigh ? 32 : 0) ||
+    if (q[c].material != q[0].material || q[c].uv != cornerUv(c, 1, 1) || coordinate(q[c], a.n) != height ||
+        coordinate(q[c], a.t) != tMin + (tHigh ? 32 : 0) ||
         coordinate(q[c], a.b) != bMin + (bHigh ? 32 : 0)) {
       return false;
     }
@@ -73,14 +74,20 @@ bool candidate(const PackedVertex* q, Candidate& out) {
 
 std::size_t mergeFaces(PackedVertices& quads) {
   // Out, in this order: quads both views draw, faces that merged (the light's view), merged quads.
-  PackedVertices both, faces, merged;
+  // Per thread and kept between calls, like the mesher's writers: no allocation once warm.
+  thread_local PackedVertices both, faces, merged;
+  thread_local std::vector<Candidate> candidates;
+  both.clear();
+  faces.clear();
+  merged.clear();
+  candidates.clear();
   const auto append = [](PackedVertices& to, const PackedVertex* q, QuadRole role) {
     for (int c = 0; c < 4; ++c) {
-      to.push_back(q[c]);
-      to.back().setRole(role);
+      PackedVertex v = q[c];
+      v.setRole(role);
+      to.push_back(v);
     }
   };
-  std::vector<Candidate> candidates;
   for (std::size_t k = 0; k < quads.size() / 4; ++k) {
     Candidate c;
     if (candidate(&quads[k * 4], c)) {
@@ -91,62 +98,67 @@ std::size_t mergeFaces(PackedVertices& quads) {
     }
   }
   if (candidates.size() < 2) return 0;
-  std::sort(candidates.begin(), candidates.end(),
-            [](const Candidate& a, const Candidate& b) { return a.plane < b.plane; });
+  // By plane, then row by row: each plane's candidates are visited in the grid's order.
+  std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
+    return a.plane != b.plane ? a.plane < b.plane : a.j != b.j ? a.j < b.j : a.i < b.i;
+  });
 
   constexpr std::uint32_t kNone = ~0u;
-  std::array<std::uint32_t, 256> grid;  // quad per cell of one plane, kNone where none is left
+  // Quad per cell of one plane, kNone where none is (left): every quad placed is taken out again, so
+  // the grid is empty between planes.
+  std::array<std::uint32_t, 256> grid;
+  grid.fill(kNone);
   const auto at = [&](int i, int j) { return grid[static_cast<std::size_t>(j * 16 + i)]; };
   std::size_t facesMerged = 0;
   for (std::size_t first = 0, last = 0; first < candidates.size(); first = last) {
-    grid.fill(kNone);
     for (; last < candidates.size() && candidates[last].plane == candidates[first].plane; ++last) {
       grid[static_cast<std::size_t>(candidates[last].j * 16 + candidates[last].i)] = candidates[last].quad;
     }
     const Axes& a = kAxes[static_cast<std::size_t>(candidates[first].plane / 1024)];
-    for (int j = 0; j < 16; ++j)
-      for (int i = 0; i < 16; ++i) {
-        const std::uint32_t q = at(i, j);
-        if (q == kNone) continue;
-        const auto same = [&](int x, int y) {
-          const std::uint32_t r = at(x, y);
-          return r != kNone && quads[r * 4].material == quads[q * 4].material &&
-                 quads[r * 4].light == quads[q * 4].light;
-        };
-        // The widest run along i, then as many rows of it along j as match whole.
-        int w = 1, h = 1;
-        while (i + w < 16 && same(i + w, j)) ++w;
-        const auto rowMatches = [&](int y) {
-          for (int x = i; x < i + w; ++x)
-            if (!same(x, y)) return false;
-          return true;
-        };
-        while (j + h < 16 && rowMatches(j + h)) ++h;
-        if (w * h == 1) {
-          append(both, &quads[q * 4], QuadRole::Both);
-          grid[static_cast<std::size_t>(j * 16 + i)] = kNone;
-          continue;
-        }
-        PackedVertex out[4];
-        for (int c = 0; c < 4; ++c) {
-          // Corner c of the merged quad is corner c of the face in that corner of the rectangle.
-          const int ci = (kCornerSigns[c][0] > 0) == a.tAlong ? i + w - 1 : i;
-          const int cj = (kCornerSigns[c][1] > 0) == a.bAlong ? j + h - 1 : j;
-          out[c] = quads[at(ci, cj) * 4 + static_cast<std::uint32_t>(c)];
-          out[c].uv = cornerUv(c, w, h);
-        }
-        append(merged, out, QuadRole::Merged);
-        for (int y = j; y < j + h; ++y)
-          for (int x = i; x < i + w; ++x) {
-            append(faces, &quads[at(x, y) * 4], QuadRole::Faces);
-            grid[static_cast<std::size_t>(y * 16 + x)] = kNone;
-          }
-        facesMerged += static_cast<std::size_t>(w * h);
+    for (std::size_t k = first; k < last; ++k) {
+      const int i = candidates[k].i, j = candidates[k].j;
+      const std::uint32_t q = at(i, j);
+      if (q == kNone) continue;  // taken by a rectangle already
+      const auto same = [&](int x, int y) {
+        const std::uint32_t r = at(x, y);
+        return r != kNone && quads[r * 4].material == quads[q * 4].material &&
+               quads[r * 4].light == quads[q * 4].light;
+      };
+      // The widest run along i, then as many rows of it along j as match whole.
+      int w = 1, h = 1;
+      while (i + w < 16 && same(i + w, j)) ++w;
+      const auto rowMatches = [&](int y) {
+        for (int x = i; x < i + w; ++x)
+          if (!same(x, y)) return false;
+        return true;
+      };
+      while (j + h < 16 && rowMatches(j + h)) ++h;
+      if (w * h == 1) {
+        append(both, &quads[q * 4], QuadRole::Both);
+        grid[static_cast<std::size_t>(j * 16 + i)] = kNone;
+        continue;
       }
+      PackedVertex out[4];
+      for (int c = 0; c < 4; ++c) {
+        // Corner c of the merged quad is corner c of the face in that corner of the rectangle.
+        const int ci = (kCornerSigns[c][0] > 0) == a.tAlong ? i + w - 1 : i;
+        const int cj = (kCornerSigns[c][1] > 0) == a.bAlong ? j + h - 1 : j;
+        out[c] = quads[at(ci, cj) * 4 + static_cast<std::uint32_t>(c)];
+        out[c].uv = cornerUv(c, w, h);
+      }
+      append(merged, out, QuadRole::Merged);
+      for (int y = j; y < j + h; ++y)
+        for (int x = i; x < i + w; ++x) {
+          append(faces, &quads[at(x, y) * 4], QuadRole::Faces);
+          grid[static_cast<std::size_t>(y * 16 + x)] = kNone;
+        }
+      facesMerged += static_cast<std::size_t>(w * h);
+    }
   }
-  both.insert(both.end(), faces.begin(), faces.end());
-  both.insert(both.end(), merged.begin(), merged.end());
-  quads.swap(both);
+  quads.resize(both.size() + faces.size() + merged.size());
+  auto to = std::copy(both.begin(), both.end(), quads.begin());
+  to = std::copy(faces.begin(), faces.end(), to);
+  std::copy(merged.begin(), merged.end(), to);
   return facesMerged;
 }
 

@@ -87,7 +87,8 @@ DeferredRenderer::DeferredRenderer(const ShaderPreprocessor& shaders, const Atla
                                    const BiomeTints& tints, const RendererOptions& options)
     : contents_(contentsFor(atlas, options)),
       geometry_(build(shaders, variants_, "gbuffer.vert", "gbuffer.frag", contents_.defines())),
-      cutout_(build(shaders, variants_, "gbuffer.vert", "gbuffer.frag", with({{"CUTOUT", "1"}}, contents_.defines()))),
+      cutout_(build(shaders, variants_, "gbuffer.vert", "gbuffer.frag",
+                    with({{"CUTOUT", "1"}}, contents_.defines()))),
       lighting_(build(shaders, variants_, "fullscreen.vert", "lighting.frag",
                       with(lightingDefines(options), contents_.defines()))),
       translucent_(build(shaders, variants_, "gbuffer.vert", "translucent.frag",
