@@ -180,11 +180,27 @@ class Mesher {
     const int here = SectionSnapshot::index(x, y, z);
     forEachDirection([&](auto d) {
       const bool loweredTop = d == static_cast<int>(Direction::Up) && top32 < 32;
-      const bool visible = faceVisible(id, e, here + kNeighbour[d]);
+      const bool visible = faceVisible(id, e, here + kNeighbour[d]) && !(e.foliage && deepInFoliage<d>(x, y, z));
       if (!visible && !loweredTop) return;
       // A lowered surface under an opaque block is lit from the liquid's own cell, not the dark block.
       face<d>(x, y, z, e, top32, visible ? here + kNeighbour[d] : here);
     });
+  }
+
+  // Leaves keep the faces between them, seen through each other's holes, but only near the crown's
+  // surface: a face into a leaf block with leaves (or an opaque cube) beyond it would be seen through
+  // at least two alpha-tested faces, which hide nearly all of it, so it is left out for the camera and
+  // the shadow map alike. Inside a forest's crowns most leaf faces are such. Looks no further than the
+  // snapshot, so a section's mesh still depends only on the cells next to it.
+  template <int D>
+  bool deepInFoliage(int x, int y, int z) const {
+    constexpr Vec n = kFaces[D].n;
+    const int bx = x + 2 * n.x, by = y + 2 * n.y, bz = z + 2 * n.z;
+    if (std::min({bx, by, bz}) < -1 || std::max({bx, by, bz}) > 16) return false;
+    const int next = SectionSnapshot::index(x + n.x, y + n.y, z + n.z);
+    const int far = SectionSnapshot::index(bx, by, bz);
+    return table_[s_.blocks[static_cast<std::size_t>(next)]].foliage &&
+           (opaqueAt(far) || table_[s_.blocks[static_cast<std::size_t>(far)]].foliage);
   }
 
   // f(std::integral_constant<int, d>) for each Direction d: per-face code with constant tables.
@@ -309,6 +325,7 @@ BlockMeshTable::BlockMeshTable(const BlockRegistry& blocks, const std::function<
     // Translucent blocks and clear cubes (glass: opacity 0) hide faces against themselves; leaves do not.
     e.cullSame = type.layer == RenderLayer::Translucent || type.shape == BlockShape::Liquid ||
                  (type.shape == BlockShape::Cube && type.opacity == 0);
+    e.foliage = type.shape == BlockShape::Cube && type.layer == RenderLayer::Cutout && !e.cullSame;
     e.tint = type.tint;
     for (int f = 0; f < 6; ++f) {
       e.texture[static_cast<std::size_t>(f)] = id == kAir ? 0 : textureOf(id, f);

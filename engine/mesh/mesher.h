@@ -36,6 +36,7 @@ class BlockMeshTable {
     MeshLayer layer;
     bool opaque;    // an opaque cube: hides neighbours' faces, darkens corners
     bool cullSame;  // hides faces against the same block
+    bool foliage;   // a see-through cube that keeps its faces against others of its kind: leaves
     Tint tint;
     std::array<std::uint16_t, 6> texture;
     std::array<std::uint32_t, 6> material;  // PackedVertex::material of each cube face

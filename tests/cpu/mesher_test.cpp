@@ -85,6 +85,23 @@ TEST(Mesher, CullingRulesForGlassLeavesAndWater) {
   EXPECT_EQ(w.quads(MeshLayer::Translucent), 5u) << "ice hides its face against stone";
 }
 
+TEST(Mesher, LeavesShowOnlyTheFacesNearTheCrownsSurface) {
+  // A 5^3 crown: along each axis a row of five leaf blocks keeps its outer face and the inner face
+  // just behind it at each end; the three faces deeper in are left out. 6 sides x 25 rows x 2.
+  MeshWorld w;
+  for (int y = 70; y <= 74; ++y)
+    for (int z = 4; z <= 8; ++z)
+      for (int x = 4; x <= 8; ++x) w.set({x, y, z}, "oak_leaves");
+  EXPECT_EQ(w.quads(MeshLayer::Cutout), 300u) << "all 6 x 125 faces would be 750";
+  // One more leaf on the -x side with stone beyond it: the stone hides the leaf's outer face, and
+  // also the inner face behind that, which nothing could be seen through; with air there both show.
+  w.set({3, 72, 6}, "oak_leaves");
+  w.set({2, 72, 6}, "stone");
+  const std::size_t withStone = w.quads(MeshLayer::Cutout);
+  w.set({2, 72, 6}, "air");
+  EXPECT_EQ(w.quads(MeshLayer::Cutout), withStone + 2);
+}
+
 TEST(Mesher, WaterSurfacesSitLowerUnlessWaterIsAbove) {
   MeshWorld w;
   w.set({3, 70, 3}, "water");
