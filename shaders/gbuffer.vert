@@ -13,6 +13,7 @@ uniform vec2 u_viewportPixels;
 uniform bool u_sealMergedEdges;  // the G-buffer pass; not the translucent one, whose blending would
                                   // count an overlap twice
 
+const vec3 kFaceNormals[10] = FACE_NORMALS;
 const vec3 kFaceTangents[10] = FACE_TANGENTS;
 const vec3 kFaceUps[10] = FACE_UPS;
 
@@ -38,7 +39,9 @@ out vec2 v_uv;
 flat out vec2 v_tile;
 out vec3 v_tint;
 out vec3 v_light;     // block, sky, ao
-flat out int v_face;
+flat out vec3 v_normal;
+flat out vec3 v_tangent;
+flat out vec3 v_up;
 
 void main() {
   BlockVertex v = unpackBlockVertex(a_packed);
@@ -47,7 +50,9 @@ void main() {
   v_tile = atlasTile(v.texture);
   v_tint = u_tints[v.tint];
   v_light = vec3(v.blockLight, v.skyLight, v.ao);
-  v_face = v.face;
+  v_normal = kFaceNormals[v.face];
+  v_tangent = kFaceTangents[v.face];
+  v_up = kFaceUps[v.face];
   gl_Position = u_viewProjection * vec4(v_position, 1.0);
   if (u_sealMergedEdges && v.merged) gl_Position = sealed(gl_Position, v_position, v);
 }

@@ -29,22 +29,21 @@ vec4 specularTexelAt(AtlasCoord at) {
 in vec3 v_position;
 in vec3 v_tint;
 in vec3 v_light;
-flat in int v_face;
-
-const vec3 kFaceNormals[10] = FACE_NORMALS;
-const vec3 kFaceTangents[10] = FACE_TANGENTS;
-const vec3 kFaceUps[10] = FACE_UPS;
+// The face's frame, looked up per vertex: indexing the tables here would gather per pixel.
+flat in vec3 v_normal;
+flat in vec3 v_tangent;
+flat in vec3 v_up;
 
 // Vanilla-like corner darkening: AO level 0..3 -> 0.4 .. 1.
 float vertexAo() { return mix(0.4, 1.0, v_light.z); }
 
-vec3 vertexNormal() { return kFaceNormals[v_face]; }
+vec3 vertexNormal() { return v_normal; }
 
 // The normal map in world space, faded back to the vertex normal where it would face away from the
 // viewer (the seeds' smoothstep), so no pixel is lit from behind.
 vec3 mappedNormal(vec4 normalTexel) {
-  vec3 N = kFaceNormals[v_face];
-  mat3 tbn = mat3(kFaceTangents[v_face], kFaceUps[v_face], N);
+  vec3 N = v_normal;
+  mat3 tbn = mat3(v_tangent, v_up, N);
   vec3 n = tbn * labpbrNormal(normalTexel);
   vec3 viewDir = v_position / max(length(v_position), 1e-6);
   float fade = smoothstep(-0.5, 0.5, dot(viewDir, n));

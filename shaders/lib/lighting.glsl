@@ -27,13 +27,18 @@ struct Surface {
   float materialAo;   // 1 = none
 };
 
-vec3 fresnelSchlick(vec3 f0, float cosTheta) {
-  return f0 + (1.0 - f0) * pow(1.0 - clamp(cosTheta, 0.0, 1.0), 5.0);
+// (1 - cos)^5 by multiplication: pow() is an exp2 and a log2, many times dearer on a CPU rasterizer.
+float schlickWeight(float cosTheta) {
+  float m = 1.0 - clamp(cosTheta, 0.0, 1.0);
+  float m2 = m * m;
+  return m2 * m2 * m;
 }
+
+vec3 fresnelSchlick(vec3 f0, float cosTheta) { return f0 + (1.0 - f0) * schlickWeight(cosTheta); }
 
 // Lagarde's roughness-aware Fresnel for light from the whole hemisphere (no single half vector).
 vec3 fresnelAmbient(vec3 f0, float cosTheta, float roughness) {
-  return f0 + (max(vec3(1.0 - roughness), f0) - f0) * pow(1.0 - clamp(cosTheta, 0.0, 1.0), 5.0);
+  return f0 + (max(vec3(1.0 - roughness), f0) - f0) * schlickWeight(cosTheta);
 }
 
 // Specular lobe times pi, without Fresnel; NdotL is applied by the caller.

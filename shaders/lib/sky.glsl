@@ -24,7 +24,11 @@ vec3 skyColor(vec3 dir) {
   vec3 color = kSkyRadiance * (up >= 0.0 ? mix(u_skyHorizon, u_skyZenith, sqrt(up))
                                          : mix(u_skyHorizon, u_skyHorizon * 0.7, min(-up * 2.0, 1.0)));
   float toSun = dot(dir, u_toSun);
-  color += u_sunColor * (0.5 * pow(max(toSun, 0.0), 24.0));  // glow around the sun
+  float glow = max(toSun, 0.0);
+  glow *= glow;
+  glow *= glow;
+  glow *= glow;  // ^8
+  color += u_sunColor * (0.5 * glow * glow * glow);  // glow around the sun: toSun^24, without pow()
   color += u_sunColor * 20.0 * smoothstep(kSunCos - 0.00006, kSunCos, toSun);
   color += u_moonColor * 10.0 * smoothstep(kMoonCos - 0.00004, kMoonCos, dot(dir, u_toMoon));
   if (u_starVisibility > 0.0 && up > 0.0) {
