@@ -2,6 +2,7 @@
 // Debug views: one G-buffer channel on screen, sRGB-encoded where it holds colour.
 
 #include "lib/color.glsl"
+#include "lib/gbuffer_albedo.glsl"
 #include "lib/octahedral.glsl"
 #include "lib/labpbr.glsl"
 
@@ -20,6 +21,7 @@ void main() {
   ivec2 p = ivec2(gl_FragCoord.xy);
   float depth = texelFetch(g_depth, p, 0).r;
   vec4 albedo = texelFetch(g_albedo, p, 0);
+  albedo.rgb = decodeAlbedo(albedo.rgb);
   vec4 normals = texelFetch(g_normals, p, 0);
 #ifdef NO_SPECULAR_MAPS
   vec4 spec = vec4(0.0);  // no _s target: every texel is LabPBR's default

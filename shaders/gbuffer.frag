@@ -2,6 +2,7 @@
 // G-buffer pass: opaque and (with CUTOUT) alpha-tested blocks. Layout: engine/render/gbuffer_layout.h.
 
 #include "lib/block_surface.glsl"
+#include "lib/gbuffer_albedo.glsl"
 
 layout(location = GB_ALBEDO) out vec4 o_albedo;
 layout(location = GB_NORMALS) out vec4 o_normals;
@@ -17,7 +18,7 @@ void main() {
   if (albedo.a < 0.5) discard;
 #endif
   vec4 normalTexel = normalTexelAt(at);
-  o_albedo = vec4(albedo.rgb * v_tint * vertexAo(), normalTexel.b);
+  o_albedo = vec4(encodeAlbedo(albedo.rgb * v_tint * vertexAo()), normalTexel.b);
 #ifdef NO_NORMAL_MAPS
   o_normals = vec4(octEncode(vertexNormal()), 0.0, 0.0);  // RG16F: the surface normal is the vertex normal
 #else

@@ -37,7 +37,7 @@ vec4 sealed(vec4 clip, vec3 position, BlockVertex v) {
 out vec3 v_position;  // camera-relative
 out vec2 v_uv;
 flat out vec2 v_tile;
-out vec3 v_tint;
+flat out vec3 v_tint;  // per quad
 out vec3 v_light;     // block, sky, ao
 flat out vec3 v_normal;
 flat out vec3 v_tangent;

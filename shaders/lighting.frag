@@ -2,6 +2,7 @@
 // Deferred lighting: reads the G-buffer, writes linear HDR radiance. Sky pixels (depth 1) skip the
 // lighting and show the sky; distant geometry fades into the sky colour (fog).
 
+#include "lib/gbuffer_albedo.glsl"
 #include "lib/octahedral.glsl"
 #include "lib/lighting.glsl"
 #include "lib/sky.glsl"
@@ -42,7 +43,7 @@ void main() {
   vec4 normals = texelFetch(g_normals, pixel, 0);
   vec4 light = texelFetch(g_light, pixel, 0);
   Surface s;
-  s.albedo = albedo.rgb;
+  s.albedo = decodeAlbedo(albedo.rgb);
   s.materialAo = albedo.a;
 #ifdef NO_NORMAL_MAPS
   s.normal = s.vertexNormal = octDecode(normals.xy);  // the only normal kept (gbuffer_layout.h)

@@ -3,6 +3,7 @@
 // are (engine/render/gbuffer_layout.h): vertex AO 1, the voxel light at the vertices.
 
 #include "lib/prop_surface.glsl"
+#include "lib/gbuffer_albedo.glsl"
 
 layout(location = GB_ALBEDO) out vec4 o_albedo;
 layout(location = GB_NORMALS) out vec4 o_normals;
@@ -16,7 +17,7 @@ void main() {
 #ifdef CUTOUT
   if (s.baseColor.a < u_alphaCutoff) discard;
 #endif
-  o_albedo = vec4(s.baseColor.rgb, s.occlusion);
+  o_albedo = vec4(encodeAlbedo(s.baseColor.rgb), s.occlusion);
 #ifdef NO_NORMAL_MAPS
   o_normals = vec4(octEncode(s.vertexNormal), 0.0, 0.0);
 #else

@@ -7,7 +7,7 @@
 
 layout(binding = UNIT_ATLAS_ALBEDO) uniform sampler2D u_atlasAlbedo;
 
-in vec3 v_tint;
+flat in vec3 v_tint;
 
 #ifdef TRANSLUCENT
 layout(location = OUT_COLOR) out vec4 o_transmittance;

@@ -13,7 +13,7 @@ uniform vec3 u_tints[4];       // linear; index 0 is white
 
 out vec2 v_uv;
 flat out vec2 v_tile;
-out vec3 v_tint;
+flat out vec3 v_tint;  // per quad
 
 void main() {
   BlockVertex v = unpackBlockVertex(a_packed);

@@ -67,13 +67,16 @@ float lightLevelBrightness(int level) {
 
 // Sky and block light add, as in vanilla, then clamp: a torch in daylight changes nothing, one at night
 // lights its surroundings warmly. Each term grows with its level, so the table is monotonic in both axes.
+LightmapColours lightmapColours(const DayState& day, std::int64_t ticks) {
+  return {skyLightColor(day), kBlockLightColor * blockFlicker(ticks), kAmbient};
+}
+
 Lightmap buildLightmap(const DayState& day, std::int64_t ticks) {
-  const glm::vec3 sky = skyLightColor(day);
-  const glm::vec3 block = kBlockLightColor * blockFlicker(ticks);
+  const LightmapColours c = lightmapColours(day, ticks);
   Lightmap map{};
   for (int s = 0; s < Lightmap::kSize; ++s) {
     for (int b = 0; b < Lightmap::kSize; ++b) {
-      const glm::vec3 light = kAmbient + sky * lightLevelBrightness(s) + block * lightLevelBrightness(b);
+      const glm::vec3 light = c.floor + c.sky * lightLevelBrightness(s) + c.block * lightLevelBrightness(b);
       map.texels[static_cast<std::size_t>(s * Lightmap::kSize + b)] = glm::clamp(light, 0.0f, 1.0f);
     }
   }

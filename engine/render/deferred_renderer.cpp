@@ -105,16 +105,10 @@ DeferredRenderer::DeferredRenderer(const ShaderPreprocessor& shaders, const Atla
       debug_(build(shaders, variants_, "fullscreen.vert", "debug_view.frag", contents_.defines())),
       outline_(build(shaders, variants_, "outline.vert", "outline.frag")),
       textures_(atlas, tints),
-      lightmap_(gl::Texture::create(GL_TEXTURE_2D)),
       empty_(gl::VertexArray::create()),
       options_(options),
       gpuTimer_(!softwareRenderer()) {
   if (options.props.any) buildPropPrograms(shaders);
-  glTextureStorage2D(lightmap_.id(), 1, GL_RGBA16F, Lightmap::kSize, Lightmap::kSize);
-  glTextureParameteri(lightmap_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-  glTextureParameteri(lightmap_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glTextureParameteri(lightmap_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  glTextureParameteri(lightmap_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
 }
 
 // Only the variants the placed props need: MASK and BLEND materials, shadows.
@@ -161,9 +155,7 @@ void DeferredRenderer::render(const FrameInputs& frame, const SectionMeshes& mes
   const double forwardLength = glm::length(forward);
   if (forwardLength > 1e-9) view.forward = forward / forwardLength;
 
-  const Lightmap lightmap = buildLightmap(view.day, frame.ticks);
-  glTextureSubImage2D(lightmap_.id(), 0, 0, 0, Lightmap::kSize, Lightmap::kSize, GL_RGB, GL_FLOAT,
-                      lightmap.texels.data());
+  view.lightmap = lightmapColours(view.day, frame.ticks);
   textures_.update(frame.ticks);
 
   PassClock clock(timings, gpuTimer_);
@@ -223,7 +215,6 @@ void DeferredRenderer::geometryPass(const View& view, const SectionMeshes& meshe
   glDepthMask(GL_TRUE);
   glEnable(GL_CULL_FACE);
   glDisable(GL_BLEND);
-  glEnable(GL_FRAMEBUFFER_SRGB);  // the albedo target stores linear light sRGB-encoded
   for (const GLuint program : {geometry_.id(), cutout_.id()}) {
     setMat4(program, "u_viewProjection", view.viewProjection);
     glProgramUniform2f(program, glGetUniformLocation(program, "u_viewportPixels"),
@@ -241,7 +232,6 @@ void DeferredRenderer::geometryPass(const View& view, const SectionMeshes& meshe
       drawProps(propCutout_.id(), *props_, visibleProps_, view.camera, AlphaMode::Mask, true);
     }
   }
-  glDisable(GL_FRAMEBUFFER_SRGB);
 }
 
 std::vector<DeferredRenderer::Visible> DeferredRenderer::sectionsInside(const FrustumPlanes& planes, glm::dvec3 camera,
@@ -352,7 +342,9 @@ void DeferredRenderer::setLightingUniforms(GLuint program, const View& view) con
   setVec3(program, "u_lightColor", day.lightColor);
   setVec3(program, "u_ambientTint", ambientTint(day.skyZenith));
   glProgramUniform1i(program, glGetUniformLocation(program, "u_materialAo"), view.materialAo ? 1 : 0);
-  glBindTextureUnit(slots::kUnitLightmap, lightmap_.id());
+  setVec3(program, "u_lightmapSky", view.lightmap.sky);
+  setVec3(program, "u_lightmapBlock", view.lightmap.block);
+  glProgramUniform1f(program, glGetUniformLocation(program, "u_lightmapFloor"), view.lightmap.floor);
   if (options_.shadow.enabled) setShadowUniforms(program, view.shadowLive);
 }
 

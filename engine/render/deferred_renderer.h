@@ -171,7 +171,6 @@ class DeferredRenderer {
   // Props' variants, each built only when a placed prop needs it (RendererOptions::props).
   gl::Program propGeometry_, propCutout_, propTranslucent_, propShadow_, propShadowCutout_, propShadowTranslucent_;
   BlockTextures textures_;
-  gl::Texture lightmap_;
   gl::VertexArray empty_;  // full-screen passes make their vertices from gl_VertexID
   std::optional<GBuffer> gbuffer_;
   RendererOptions options_;

@@ -8,6 +8,7 @@
 #include <glm/vec3.hpp>
 
 #include "core/day_cycle.h"
+#include "core/lightmap.h"
 #include "render/deferred_renderer.h"
 #include "render/frustum.h"
 
@@ -21,6 +22,7 @@ struct DeferredRenderer::View {
   glm::vec2 nearFar;
   glm::vec2 fogRange;
   DayState day;
+  LightmapColours lightmap;
   bool materialAo;
   bool shadowLive = false;  // the shadow pass ran this frame
   glm::dvec3 shadowCentreOffset{0.0};

@@ -3,12 +3,14 @@
 // injected #defines (gbufferDefines()), so the two can never disagree.
 //
 //   target  format          r                 g                 b                 a
-//   0       SRGB8_ALPHA8    albedo x vertex AO, linear light (stored sRGB-encoded)  material AO (_n blue)
+//   0       RGBA8           albedo x vertex AO, linear, stored as its square root             material AO (_n blue)
 //   1       RGBA16F         surface normal, octahedral xy       vertex normal, octahedral xy
 //   2       RGBA8           raw LabPBR specular (_s): smoothness, F0/metal id, porosity/SSS, emission
 //   3       RGBA8           block light 0..1      sky light 0..1    vertex AO 0..1   unused
 //   depth   DEPTH32F        hardware depth (1 = nothing drawn: sky)
 //
+// The albedo's square root (shaders/lib/gbuffer_albedo.glsl) keeps dark shades apart as sRGB would,
+// for far less than sRGB's exact curve costs a CPU rasterizer on every write and read.
 // Normals are in world space (y up). Light levels are the mesher's smooth averages / 15.
 // When no loaded pack has normal maps (NO_NORMAL_MAPS) the surface normal is the vertex normal, so
 // target 1 shrinks to RG16F holding only that; when none has specular maps (NO_SPECULAR_MAPS) target 2
@@ -29,7 +31,7 @@ inline constexpr int kSpecular = 2;
 inline constexpr int kLight = 3;
 inline constexpr int kTargets = 4;
 
-inline constexpr std::array<GLenum, kTargets> kFormats = {GL_SRGB8_ALPHA8, GL_RGBA16F, GL_RGBA8, GL_RGBA8};
+inline constexpr std::array<GLenum, kTargets> kFormats = {GL_RGBA8, GL_RGBA16F, GL_RGBA8, GL_RGBA8};
 inline constexpr GLenum kVertexNormalOnlyFormat = GL_RG16F;  // target 1 without normal maps
 inline constexpr GLenum kDepthFormat = GL_DEPTH_COMPONENT32F;
 

@@ -18,7 +18,6 @@ std::vector<ShaderDefine> slotDefines() {
       define("UNIT_ATLAS_ALBEDO", slots::kUnitAtlasAlbedo),
       define("UNIT_ATLAS_NORMAL", slots::kUnitAtlasNormal),
       define("UNIT_ATLAS_SPECULAR", slots::kUnitAtlasSpecular),
-      define("UNIT_LIGHTMAP", slots::kUnitLightmap),
       define("UNIT_SHADOW_MAP", slots::kUnitShadowMap),
       define("UNIT_TRANSLUCENT_DEPTH", slots::kUnitTranslucentDepth),
       define("UNIT_TRANSLUCENT_TINT", slots::kUnitTranslucentTint),

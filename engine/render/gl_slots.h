@@ -28,7 +28,6 @@ inline constexpr int kOutColor = 0;
 inline constexpr int kUnitAtlasAlbedo = 0;
 inline constexpr int kUnitAtlasNormal = 1;
 inline constexpr int kUnitAtlasSpecular = 2;
-inline constexpr int kUnitLightmap = 5;
 inline constexpr int kUnitShadowMap = 6;
 inline constexpr int kUnitTranslucentDepth = 7;
 inline constexpr int kUnitTranslucentTint = 8;

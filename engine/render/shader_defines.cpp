@@ -53,7 +53,7 @@ int GBufferContents::bytesPerPixel() const {
     switch (format(i)) {
       case GL_RGBA16F: bytes += 8; break;
       case GL_NONE: break;
-      default: bytes += 4; break;  // SRGB8_ALPHA8, RGBA8, RG16F
+      default: bytes += 4; break;  // RGBA8, RG16F
     }
   }
   return bytes;

@@ -8,7 +8,10 @@ uniform vec3 u_toLight;     // unit, towards the shadow-casting light (sun or mo
 uniform vec3 u_lightColor;  // its radiance, already faded to 0 at the horizon
 uniform vec3 u_ambientTint; // colour of sky light (the lightmap gives its brightness)
 uniform bool u_materialAo;  // use the _n blue channel
-layout(binding = UNIT_LIGHTMAP) uniform sampler2D u_lightmap;  // 16x16, x = block level, y = sky level
+// The lightmap's colours this frame (core/lightmap.h, LightmapColours).
+uniform vec3 u_lightmapSky;
+uniform vec3 u_lightmapBlock;
+uniform float u_lightmapFloor;
 
 // Radiance scales against the sun's ~3 at noon (day_cycle.h): full sky light as ambient, block light
 // at level 15, emission at full strength, and the floor that keeps unlit caves from pure black.
@@ -57,8 +60,16 @@ float specularLobe(float NdotH, float NdotV, float NdotL, float roughness) {
 #endif
 }
 
-vec3 sampleLightmap(float block, float sky) {
-  return texture(u_lightmap, (vec2(block, sky) * 15.0 + 0.5) / 16.0).rgb;
+// Vanilla's brightness curve f / (4 - 3f) of a level / 15 in [0, 1] (the divisor stays >= 1).
+float levelBrightness(float f) {
+  f = clamp(f, 0.0, 1.0);
+  return f / (4.0 - 3.0 * f);
+}
+
+// The lightmap (core/lightmap.h) at the G-buffer's smooth levels, block and sky light / 15: its own sum
+// evaluated here costs a software rasterizer far less than a filtered lookup in a 16x16 table.
+vec3 lightmapAt(float block, float sky) {
+  return clamp(u_lightmapFloor + u_lightmapSky * levelBrightness(sky) + u_lightmapBlock * levelBrightness(block), 0.0, 1.0);
 }
 
 // The direct light's shadow term (0 = in shadow, 1 = lit): the shadow map's lit fraction gated by sky
@@ -97,8 +108,8 @@ vec3 shade(Surface s, vec3 toViewer, float visibility, vec3 transmittance) {
   // Ambient: sky light from the lightmap, split into diffuse and a Fresnel reflection of the sky;
   // block light has no direction here (its sources' positions are unknown), so metals reflect it by F0.
   float ao = u_materialAo ? s.materialAo : 1.0;
-  vec3 sky = sampleLightmap(0.0, s.skyLight);
-  vec3 block = max(sampleLightmap(s.blockLight, s.skyLight) - sky, 0.0);
+  vec3 sky = lightmapAt(0.0, s.skyLight);
+  vec3 block = max(lightmapAt(s.blockLight, s.skyLight) - sky, 0.0);
   vec3 Fa = fresnelAmbient(m.f0, NdotV, m.roughness);
   color += ao * (kSkyAmbient * sky * u_ambientTint * (kd * (1.0 - Fa) * s.albedo + Fa) +
                  kBlockLight * block * (kd * s.albedo + (1.0 - kd) * m.f0));
