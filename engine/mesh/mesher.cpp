@@ -180,7 +180,8 @@ class Mesher {
     const int here = SectionSnapshot::index(x, y, z);
     forEachDirection([&](auto d) {
       const bool loweredTop = d == static_cast<int>(Direction::Up) && top32 < 32;
-      const bool visible = faceVisible(id, e, here + kNeighbour[d]) && !(e.foliage && deepInFoliage<d>(x, y, z));
+      const bool visible =
+          faceVisible(id, e, here + kNeighbour[d]) && !(e.foliage && deepInFoliage<d>(x, y, z));
       if (!visible && !loweredTop) return;
       // A lowered surface under an opaque block is lit from the liquid's own cell, not the dark block.
       face<d>(x, y, z, e, top32, visible ? here + kNeighbour[d] : here);

@@ -38,7 +38,8 @@ TEST_F(GameWindowTest, WindowShowsWhatHeadlessRenders) {
   // moved far enough, so the last frame depends on the ones before it.
   SceneRenderer scene(demoScene({320, 180}));
   Image headless;
-  for (int frame = 0; frame < kFrames; ++frame) headless = scene.renderFrame(demoFrame(frame * kFixedStep)).image;
+  for (int frame = 0; frame < kFrames; ++frame)
+    headless = scene.renderFrame(demoFrame(frame * kFixedStep)).image;
 
   const ImageComparison cmp = compareImages(window, headless, {});
   EXPECT_TRUE(cmp.matches) << cmp.failingPercent << " % of pixels differ, max " << cmp.maxError * 255.0;
