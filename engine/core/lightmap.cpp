@@ -65,12 +65,12 @@ float lightLevelBrightness(int level) {
   return f / (4.0f - 3.0f * f);
 }
 
-// Sky and block light add, as in vanilla, then clamp: a torch in daylight changes nothing, one at night
-// lights its surroundings warmly. Each term grows with its level, so the table is monotonic in both axes.
 LightmapColours lightmapColours(const DayState& day, std::int64_t ticks) {
   return {skyLightColor(day), kBlockLightColor * blockFlicker(ticks), kAmbient};
 }
 
+// Sky and block light add, as in vanilla, then clamp: a torch in daylight changes nothing, one at night
+// lights its surroundings warmly. Each term grows with its level, so the table is monotonic in both axes.
 Lightmap buildLightmap(const DayState& day, std::int64_t ticks) {
   const LightmapColours c = lightmapColours(day, ticks);
   Lightmap map{};

@@ -3,7 +3,7 @@
 // injected #defines (gbufferDefines()), so the two can never disagree.
 //
 //   target  format          r                 g                 b                 a
-//   0       RGBA8           sqrt(albedo x vertex AO), albedo linear                  material AO (_n blue)
+//   0       RGBA8           square root of linear albedo x vertex AO                 material AO (_n blue)
 //   1       RGBA16F         surface normal, octahedral xy       vertex normal, octahedral xy
 //   2       RGBA8           raw LabPBR specular (_s): smoothness, F0/metal id, porosity/SSS, emission
 //   3       RGBA8           block light 0..1      sky light 0..1    vertex AO 0..1   unused
