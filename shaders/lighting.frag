@@ -1,6 +1,7 @@
 #version 450 core
-// Deferred lighting: reads the G-buffer, writes linear HDR radiance. Sky pixels (depth 1) skip the
-// lighting and show the sky; distant geometry fades into the sky colour (fog).
+// Deferred lighting: reads the G-buffer, writes linear HDR radiance; distant geometry fades into the
+// sky colour (fog). Runs only where something was drawn: the depth test leaves sky pixels (depth 1)
+// to sky.frag.
 
 #include "lib/gbuffer_albedo.glsl"
 #include "lib/octahedral.glsl"
@@ -31,13 +32,7 @@ void main() {
   float depth = texelFetch(g_depth, pixel, 0).r;
   vec3 far = unproject(v_ndc, 1.0);
   vec3 viewDir = far / max(length(far), 1e-20);
-  // One sky colour serves both a sky pixel and the fog over a far surface: a software rasterizer
-  // runs both sides of a branch that its pixels disagree on.
   vec3 sky = skyColor(viewDir);
-  if (depth >= 1.0) {
-    o_color = vec4(sky, 1.0);
-    return;
-  }
   vec3 position = unproject(v_ndc, depth);
   vec4 albedo = texelFetch(g_albedo, pixel, 0);
   vec4 normals = texelFetch(g_normals, pixel, 0);

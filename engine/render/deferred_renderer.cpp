@@ -91,6 +91,7 @@ DeferredRenderer::DeferredRenderer(const ShaderPreprocessor& shaders, const Atla
                     with({{"CUTOUT", "1"}}, contents_.defines()))),
       lighting_(build(shaders, variants_, "fullscreen.vert", "lighting.frag",
                       with(lightingDefines(options), contents_.defines()))),
+      sky_(build(shaders, variants_, "fullscreen.vert", "sky.frag")),
       translucent_(build(shaders, variants_, "gbuffer.vert", "translucent.frag",
                          with(lightingDefines(options), contents_.defines()))),
       shadow_(options.shadow.enabled ? build(shaders, variants_, "shadow.vert", "shadow.frag")
@@ -361,22 +362,36 @@ void DeferredRenderer::setSkyUniforms(GLuint program, const View& view) const {
   glProgramUniform2fv(program, glGetUniformLocation(program, "u_fogRange"), 1, glm::value_ptr(view.fogRange));
 }
 
+// Lighting where the geometry pass drew something, sky elsewhere. Both draw a full-screen triangle at
+// depth 1 against a copy of the scene's depth, so a CPU rasterizer's early depth test skips the other
+// pass's pixels, block by block, before shading them.
 void DeferredRenderer::lightingPass(const View& view) {
   const GLuint program = lighting_.id();
   setLightingUniforms(program, view);
   setSkyUniforms(program, view);
   setMat4(program, "u_inverseViewProjection", view.inverseViewProjection);
+  setSkyUniforms(sky_.id(), view);
+  setMat4(sky_.id(), "u_inverseViewProjection", view.inverseViewProjection);
 
+  gbuffer_->copyDepthForLighting();
   glBindFramebuffer(GL_FRAMEBUFFER, gbuffer_->lightingFramebuffer());
   glViewport(0, 0, gbuffer_->size().x, gbuffer_->size().y);
-  glDisable(GL_DEPTH_TEST);
+  glEnable(GL_DEPTH_TEST);
+  glDepthMask(GL_FALSE);
   glDisable(GL_CULL_FACE);
   glDisable(GL_BLEND);
   gbuffer_->bindForReading();
-  glUseProgram(program);
   glBindVertexArray(empty_.id());
+  glUseProgram(program);
+  glDepthFunc(GL_GREATER);  // depth 1 lies beyond what was drawn
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glUseProgram(sky_.id());
+  glDepthFunc(GL_LEQUAL);  // only the cleared depth, 1, is not nearer
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glBindVertexArray(0);
+  glDepthFunc(GL_LESS);
+  glDepthMask(GL_TRUE);
+  glDisable(GL_DEPTH_TEST);
 }
 
 void DeferredRenderer::translucentPass(const View& view, const SectionMeshes& meshes) {

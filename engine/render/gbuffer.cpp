@@ -52,7 +52,9 @@ GBuffer::GBuffer(glm::ivec2 size, GBufferContents contents)
   scene_ = makeTarget(GL_RGBA16F, size);
   glNamedFramebufferTexture(geometry_.id(), GL_DEPTH_ATTACHMENT, depth_.id(), 0);
   glNamedFramebufferDrawBuffers(geometry_.id(), gbuffer::kTargets, drawBuffers.data());
+  lightingDepth_ = makeTarget(gbuffer::kDepthFormat, size);
   glNamedFramebufferTexture(lighting_.id(), GL_COLOR_ATTACHMENT0, scene_.id(), 0);
+  glNamedFramebufferTexture(lighting_.id(), GL_DEPTH_ATTACHMENT, lightingDepth_.id(), 0);
   glNamedFramebufferTexture(translucent_.id(), GL_COLOR_ATTACHMENT0, scene_.id(), 0);
   glNamedFramebufferTexture(translucent_.id(), GL_DEPTH_ATTACHMENT, depth_.id(), 0);
   checkComplete(geometry_.id(), "G-buffer");
@@ -75,6 +77,11 @@ GBufferPixels GBuffer::read() const {
   glGetTextureImage(scene_.id(), 0, GL_RGBA, GL_FLOAT, bytes(out.scene), out.scene.data());
   glGetTextureImage(target(gbuffer::kLight), 0, GL_RGBA, GL_UNSIGNED_BYTE, bytes(out.light), out.light.data());
   return out;
+}
+
+void GBuffer::copyDepthForLighting() const {
+  glCopyImageSubData(depth_.id(), GL_TEXTURE_2D, 0, 0, 0, 0, lightingDepth_.id(), GL_TEXTURE_2D, 0, 0, 0, 0, size_.x,
+                     size_.y, 1);
 }
 
 void GBuffer::bindForReading() const {

@@ -36,9 +36,14 @@ class GBuffer {
   GLuint scene() const { return scene_.id(); }  // RGBA16F, linear HDR
 
   GLuint geometryFramebuffer() const { return geometry_.id(); }  // every target + depth
-  GLuint lightingFramebuffer() const { return lighting_.id(); }  // scene only: the lighting pass samples depth
+  // The scene, with a copy of depth (copyDepthForLighting) that the lighting and sky draws are tested
+  // against: each runs only on its own pixels. The lighting shader samples the original, so no texture
+  // it reads is attached.
+  GLuint lightingFramebuffer() const { return lighting_.id(); }
   GLuint translucentFramebuffer() const { return translucent_.id(); }  // scene + depth, tested not written
 
+  // The depth the geometry pass wrote, into the lighting framebuffer's copy.
+  void copyDepthForLighting() const;
   // Binds the targets and depth to the texture units gbuffer_layout.h names.
   void bindForReading() const;
   // Reads depth, normals, light and the lit scene back (slow: for tests and reports).
@@ -48,7 +53,7 @@ class GBuffer {
   glm::ivec2 size_;
   GBufferContents contents_;
   std::array<gl::Texture, gbuffer::kTargets> targets_;
-  gl::Texture depth_, scene_;
+  gl::Texture depth_, lightingDepth_, scene_;
   gl::Framebuffer geometry_, lighting_, translucent_;
 };
 
