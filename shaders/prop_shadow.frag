@@ -20,6 +20,6 @@ void main() {
   if (base.a < u_alphaCutoff) discard;
 #endif
 #ifdef TRANSLUCENT
-  o_transmittance = vec4(mix(vec3(1.0), base.rgb, clamp(base.a, 0.0, 1.0)), 1.0);
+  o_transmittance = vec4(mix(vec3(1.0), base.rgb, clamp(base.a, 0.0, 1.0)), clamp(gl_FragCoord.z, 0.0, 1.0));
 #endif
 }

@@ -19,6 +19,7 @@ void main() {
   if (albedo.a < 0.5) discard;
 #endif
 #ifdef TRANSLUCENT
-  o_transmittance = vec4(mix(vec3(1.0), albedo.rgb * v_tint, albedo.a), 1.0);
+  // Alpha: the depth below which the colour applies (lib/shadow.glsl), clamped like the depth test.
+  o_transmittance = vec4(mix(vec3(1.0), albedo.rgb * v_tint, albedo.a), clamp(gl_FragCoord.z, 0.0, 1.0));
 #endif
 }

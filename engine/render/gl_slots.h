@@ -29,8 +29,7 @@ inline constexpr int kUnitAtlasAlbedo = 0;
 inline constexpr int kUnitAtlasNormal = 1;
 inline constexpr int kUnitAtlasSpecular = 2;
 inline constexpr int kUnitShadowMap = 6;
-inline constexpr int kUnitTranslucentDepth = 7;
-inline constexpr int kUnitTranslucentTint = 8;
+inline constexpr int kUnitTransmittance = 8;
 
 // A prop material's textures (glTF metallic-roughness), after every unit the passes above use.
 inline constexpr int kUnitPropBaseColor = 9;

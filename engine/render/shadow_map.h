@@ -66,13 +66,14 @@ class ShadowMap {
   // The framebuffer drawing translucent casters into `layer`: their depth and transmittance.
   GLuint translucentFramebuffer(int layer) const { return translucentFramebuffers_[static_cast<std::size_t>(layer)].id(); }
   GLuint depth() const { return depth_.id(); }
-  GLuint translucentDepth() const { return translucentDepth_.id(); }
+  // RGBA16: the colour light keeps through the nearest translucent caster, and that caster's depth.
   GLuint transmittance() const { return transmittance_.id(); }
   int resolution() const { return resolution_; }
 
  private:
   int resolution_ = 0, layers_ = 0;
-  gl::Texture depth_, translucentDepth_, transmittance_;
+  gl::Texture depth_, transmittance_;
+  gl::Texture translucentDepth_;  // only the translucent draw's depth test: the nearest caster is kept
   std::array<gl::Framebuffer, kMaxShadowCascades> framebuffers_, translucentFramebuffers_;
 };
 

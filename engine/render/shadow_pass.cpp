@@ -197,8 +197,7 @@ void DeferredRenderer::setShadowUniforms(GLuint program, bool live) const {
   glProgramUniform1i(program, glGetUniformLocation(program, "u_pcfRadiusInBlocks"), settings.pcfRadiusInBlocks ? 1 : 0);
   glProgramUniform1i(program, glGetUniformLocation(program, "u_shadowLive"), live ? 1 : 0);
   glBindTextureUnit(slots::kUnitShadowMap, shadowMap_.depth());
-  glBindTextureUnit(slots::kUnitTranslucentDepth, shadowMap_.translucentDepth());
-  glBindTextureUnit(slots::kUnitTranslucentTint, shadowMap_.transmittance());
+  glBindTextureUnit(slots::kUnitTransmittance, shadowMap_.transmittance());
 }
 
 }  // namespace terrasol

@@ -6,9 +6,9 @@
 #include "lib/shadow_warp.glsl"
 
 layout(binding = UNIT_SHADOW_MAP) uniform sampler2DArrayShadow u_shadowMap;  // opaque and cutout casters
-// Translucent casters (water, glass): the nearest one's depth and the colour light keeps through it.
-layout(binding = UNIT_TRANSLUCENT_DEPTH) uniform sampler2DArrayShadow u_translucentDepth;
-layout(binding = UNIT_TRANSLUCENT_TINT) uniform sampler2DArray u_translucentTint;
+// Translucent casters (water, glass): the colour light keeps through the nearest one, and its depth in
+// alpha (1 where there is none). Nearest texels: one fetch, no filtering.
+layout(binding = UNIT_TRANSMITTANCE) uniform sampler2DArray u_transmittance;
 uniform int u_cascades;                   // layers in use, 1..SHADOW_MAX_CASCADES
 uniform mat4 u_shadowMatrices[SHADOW_MAX_CASCADES];  // camera-relative world -> light clip space (unwarped)
 uniform float u_shadowTexelWorlds[SHADOW_MAX_CASCADES];  // blocks per texel of each layer, unwarped
@@ -116,7 +116,6 @@ float shadowVisibility(ShadowLookup l, vec2 pixel) {
 // The colour the light keeps after the nearest translucent caster above the point (white if none).
 vec3 shadowTransmittance(ShadowLookup l) {
   if (!l.inside) return vec3(1.0);
-  float before = texture(u_translucentDepth, vec4(l.uv, l.layer, l.depth));  // 1: not behind it
-  if (before >= 1.0) return vec3(1.0);
-  return mix(texture(u_translucentTint, vec3(l.uv, l.layer)).rgb, vec3(1.0), before);
+  vec4 caster = texture(u_transmittance, vec3(l.uv, l.layer));
+  return l.depth <= caster.a ? vec3(1.0) : caster.rgb;  // the same test as the opaque map's LEQUAL
 }
