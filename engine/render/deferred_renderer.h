@@ -23,6 +23,7 @@
 #include "render/props.h"
 #include "render/section_meshes.h"
 #include "render/shadow_map.h"
+#include "render/shadow_receivers.h"
 
 namespace terrasol {
 
@@ -63,6 +64,8 @@ struct RendererOptions {
   bool ggxSpecular = false;  // GGX/Smith instead of energy-conserving Blinn-Phong
   bool caveCulling = true;   // leave out sections hidden behind solid ground (render/cave_culling.h)
   bool cullFacesAway = true;  // leave out face groups turned away from the camera for a whole section
+  // Leave out shadow casters whose shadow can fall on nothing in view (render/shadow_receivers.h).
+  bool shadowCasterCulling = true;
   // With no _n (_s) in any loaded pack, the shaders use LabPBR's default instead of sampling it.
   bool leaveOutAbsentMaps = true;
   ShadowSettings shadow;
@@ -85,6 +88,7 @@ struct FrameStats {
   int sectionsHidden = 0;                     // inside the frustum, but cave culling left them out
   int shadowCasters = 0;                      // sections drawn into the shadow map
   int shadowCastersHidden = 0;                // inside the light's box, but no ray of it reaches them
+  int shadowCastersOffView = 0;               // lit, but their shadow falls on nothing in view
   std::int64_t quadsDrawn = 0;                // by the camera's passes (geometry, translucent)
   std::int64_t quadsFacingAway = 0;           // opaque and cutout quads left out: their face group faced away
   int propsDrawn = 0, propsCulled = 0;        // placed props inside / outside the frustum
@@ -155,6 +159,7 @@ class DeferredRenderer {
                                              const SectionMeshes& meshes, int* outside = nullptr);
   glm::dvec3 mapCentre(glm::dvec3 wanted);
   std::size_t visibleQuads(MeshLayer layer) const;
+  double lowestReceiver(glm::dvec3 camera) const;
   void setLightingUniforms(GLuint program, const View& view) const;
   void setSkyUniforms(GLuint program, const View& view) const;
   // Props (prop_pass.cpp): the instances inside `planes`, and a draw of the meshes whose material has
@@ -183,6 +188,7 @@ class DeferredRenderer {
     std::uint64_t meshes = 0;
     std::uint64_t props = 0;
     bool valid = false;
+    std::optional<ShadowReceivers> receivers;  // what the casters were chosen for; none: every caster
   } shadowKey_;
   struct ShadowBuild {                    // a map being rebuilt a slice a frame (update_frames > 1)
     ShadowKey key;

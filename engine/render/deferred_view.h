@@ -27,6 +27,7 @@ struct DeferredRenderer::View {
   bool shadowLive = false;  // the shadow pass ran this frame
   glm::dvec3 shadowCentreOffset{0.0};
   glm::dvec3 forward{0.0, 0.0, -1.0};  // unit view direction
+  ViewCone cone;                       // the view's receivers, for the shadow pass (after culling)
 };
 
 }  // namespace terrasol

@@ -16,12 +16,20 @@ namespace terrasol {
 using gl::setMat4;
 
 // The light's view, a layer per cascade: casters inside the layer's box (culled per section, and left
-// out when no ray of the light reaches them), opaque then alpha-tested, then translucent casters into
+// out when no ray of the light reaches them or their shadow falls on nothing in view), opaque then
+// alpha-tested, then translucent casters into
 // their own depth and colour. With `mayReuse` (the game) the maps are kept while nothing they show
 // changed, and with update_frames N > 1 a changed map is rebuilt a slice of its casters a frame into a
 // second map, swapped in when complete (Luanti's spread updates: no frame pays the whole pass).
 bool DeferredRenderer::shadowPass(const View& view, const SectionMeshes& meshes, bool mayReuse) {
   constexpr float kReuseCos = 0.99999962f;  // cos(0.05 degrees): 5 cm of edge movement 60 blocks away
+  // The view casters are chosen for is wider than the camera's, so a map drawn over several frames, or
+  // kept, still serves a camera that has turned or moved since: a new map is started once half the
+  // margin is used up, and the old one is dropped at once (the whole map drawn in one frame) only once
+  // all of it is (shadow_receivers.h). At sprint-flying speed a spread rebuild's 8 frames move the
+  // camera about 6 blocks, which the pulled-back apex absorbs.
+  constexpr float kMarginDegrees = 15.0f, kPullBack = 16.0f;
+  constexpr double kFloorDrop = 16.0;
   const ShadowSettings& settings = options_.shadow;
   const int layers = shadowLayers(settings);
   shadowMap_.ensure(settings.resolution, layers);
@@ -33,13 +41,19 @@ bool DeferredRenderer::shadowPass(const View& view, const SectionMeshes& meshes,
                                ? forward / along * static_cast<double>(settings.shiftAhead * settings.distance)
                                : glm::dvec3(0.0);
   const glm::dvec3 centre = mapCentre(view.camera + view.shadowCentreOffset + ahead);
-  const ShadowKey wanted{centre, view.day.toShadowLight, meshes.generation(), props_ ? props_->generation() : 0, true};
+  std::optional<ShadowReceivers> receivers;
+  if (options_.shadowCasterCulling) receivers.emplace(view.cone.widened(kMarginDegrees, kPullBack, kFloorDrop));
+  const ShadowKey wanted{centre, view.day.toShadowLight, meshes.generation(), props_ ? props_->generation() : 0, true,
+                         receivers};
+  const auto serves = [&](const ViewCone& cone) { return !shadowKey_.receivers || shadowKey_.receivers->contains(cone); };
   const bool unchanged = shadowKey_.valid && shadowKey_.centre == centre && shadowKey_.meshes == wanted.meshes &&
                          shadowKey_.props == wanted.props &&
-                         glm::dot(shadowKey_.toLight, wanted.toLight) > kReuseCos;
+                         glm::dot(shadowKey_.toLight, wanted.toLight) > kReuseCos &&
+                         serves(view.cone.widened(0.5f * kMarginDegrees, 0.5f * kPullBack, 0.5 * kFloorDrop));
   const int slices = mayReuse ? std::max(settings.updateFrames, 1) : 1;
   // A kept map must still cover the camera well; a jump (a teleport) redraws it whole at once.
-  const bool near = shadowKey_.valid && glm::length(centre - shadowKey_.centre) < 0.25 * settings.distance;
+  const bool near =
+      shadowKey_.valid && glm::length(centre - shadowKey_.centre) < 0.25 * settings.distance && serves(view.cone);
   if (mayReuse && unchanged && !build_) {
     rebaseShadowViews(view);
     return false;
@@ -108,6 +122,14 @@ void DeferredRenderer::drawShadowCasters(ShadowMap& map, const ShadowKey& key, c
       const auto dark = std::remove_if(casters.begin(), casters.end(), [&](const Visible& v) { return !lit.contains(v.pos); });
       stats_.shadowCastersHidden += static_cast<int>(casters.end() - dark);
       casters.erase(dark, casters.end());
+    }
+    if (key.receivers) {
+      const auto unseen = std::remove_if(casters.begin(), casters.end(), [&](const Visible& v) {
+        const glm::dvec3 lo = view.camera + glm::dvec3(v.offset);
+        return !key.receivers->mayShade(lo, lo + 16.0, key.toLight);
+      });
+      stats_.shadowCastersOffView += static_cast<int>(casters.end() - unseen);
+      casters.erase(unseen, casters.end());
     }
     if (slices > 1) {
       casters.erase(std::remove_if(casters.begin(), casters.end(), [&](const Visible& v) { return !inSlice(v.pos); }),

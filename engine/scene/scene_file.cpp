@@ -169,7 +169,7 @@ namespace {
 
 void parseRender(const json& render, SceneFile& scene) {
   checkObject(render, "render",
-              {"width", "height", "view_distance", "debug_view", "specular", "material_ao", "cave_culling",
+              {"width", "height", "view_distance", "debug_view", "specular", "material_ao", "cave_culling", "shadow_caster_culling",
                "cull_faces_away", "leave_out_absent_maps", "shadow"});
   if (const json* v = field(render, "width")) {
     scene.width = static_cast<int>(wholeNumber(*v, "render.width", 1, 8192));
@@ -186,6 +186,9 @@ void parseRender(const json& render, SceneFile& scene) {
   if (const json* v = field(render, "specular")) scene.specular = oneOf(*v, "render.specular", kSpecularModels);
   if (const json* v = field(render, "material_ao")) scene.materialAo = boolean(*v, "render.material_ao");
   if (const json* v = field(render, "cave_culling")) scene.caveCulling = boolean(*v, "render.cave_culling");
+  if (const json* v = field(render, "shadow_caster_culling")) {
+    scene.shadowCasterCulling = boolean(*v, "render.shadow_caster_culling");
+  }
   if (const json* v = field(render, "cull_faces_away")) scene.cullFacesAway = boolean(*v, "render.cull_faces_away");
   if (const json* v = field(render, "leave_out_absent_maps")) {
     scene.leaveOutAbsentMaps = boolean(*v, "render.leave_out_absent_maps");

@@ -34,7 +34,9 @@ WithAndWithout render(SceneFile scene, bool SceneFile::*rule) {
 
 TEST_F(LeaveOutTest, CaveCullingHidesSectionsAndCastersButNoPixel) {
   for (const char* name : {"noon_terrain", "shadow_cave_mouth", "night_cave_torches"}) {
-    const auto [culled, all] = render(loadScene(kScenes / (std::string(name) + ".json")), &SceneFile::caveCulling);
+    SceneFile scene = loadScene(kScenes / (std::string(name) + ".json"));
+    scene.shadowCasterCulling = false;  // it chooses casters by what is in view, which cave culling changes
+    const auto [culled, all] = render(scene, &SceneFile::caveCulling);
     EXPECT_GT(culled.stats.sectionsHidden, 0) << name;
     EXPECT_EQ(all.stats.sectionsHidden, 0) << name;
     EXPECT_EQ(culled.stats.sectionsDrawn + culled.stats.sectionsHidden, all.stats.sectionsDrawn) << name;
@@ -47,6 +49,18 @@ TEST_F(LeaveOutTest, CaveCullingHidesSectionsAndCastersButNoPixel) {
     }
   }
   context_->checkErrors("cave culling");
+}
+
+// Casters behind the camera, or off to its sides, shade nothing it sees.
+TEST_F(LeaveOutTest, ShadowCastersOffViewAreNotDrawnAndChangeNoPixel) {
+  for (const char* name : {"noon_terrain", "shadow_low_sun", "shadow_forest"}) {
+    const auto [culled, all] = render(loadScene(kScenes / (std::string(name) + ".json")), &SceneFile::shadowCasterCulling);
+    EXPECT_EQ(all.stats.shadowCastersOffView, 0) << name;
+    EXPECT_EQ(culled.stats.shadowCasters + culled.stats.shadowCastersOffView, all.stats.shadowCasters) << name;
+    EXPECT_TRUE(identical(culled.image, all.image)) << name << ": leaving casters out changed the image";
+    EXPECT_GT(culled.stats.shadowCastersOffView, 0) << name;
+  }
+  context_->checkErrors("shadow caster culling");
 }
 
 TEST_F(LeaveOutTest, FacesTurnedAwayAreNotDrawnAndChangeNoPixel) {

@@ -123,6 +123,7 @@ SceneRenderer::SceneRenderer(const SceneFile& scene) : scene_(scene), debugView_
   options.ggxSpecular = scene.specular == "ggx";
   options.shadow = shadowSettingsOf(scene.shadow);
   options.caveCulling = scene.caveCulling;
+  options.shadowCasterCulling = scene.shadowCasterCulling;
   options.leaveOutAbsentMaps = scene.leaveOutAbsentMaps;
   options.cullFacesAway = scene.cullFacesAway;
   gpu_ = std::make_unique<Gpu>(shaders, world_->atlas.atlas, tints, options, glm::ivec2(scene.width, scene.height), scene,
