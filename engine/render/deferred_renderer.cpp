@@ -162,8 +162,10 @@ void DeferredRenderer::render(const FrameInputs& frame, const SectionMeshes& mes
   PassClock clock(timings, gpuTimer_);
   props_ = frame.props && !frame.props->empty() && options_.props.any ? frame.props : nullptr;
   cull(view, meshes);
+  // Receivers down to the world's bottom: the lowest visible section jumps by a hundred blocks as a
+  // cave comes into view, and a floor that followed it would have the map redrawn at every jump.
   view.cone = {view.camera, glm::normalize(camera.lookAt), camera.up, camera.fovDegrees,
-               static_cast<float>(size.x) / static_cast<float>(size.y), camera.farPlane, lowestReceiver(view.camera)};
+               static_cast<float>(size.x) / static_cast<float>(size.y), camera.farPlane, static_cast<double>(kMinY)};
   // Below 0.1 % of its strength the light can show nothing (it is 0 at and under the horizon).
   view.shadowLive = options_.shadow.enabled && view.day.directStrength > 1e-3f;
   if (view.shadowLive) {
@@ -271,17 +273,6 @@ void DeferredRenderer::cull(const View& view, const SectionMeshes& meshes) {
     stats_.propsDrawn = static_cast<int>(visibleProps_.size());
     stats_.propsCulled = static_cast<int>(props_->instances().size() - visibleProps_.size());
   }
-}
-
-// World y of the lowest thing in view that can receive a shadow: a drawn section's or prop's bottom
-// (with none, the top of the world: nothing below needs a caster).
-double DeferredRenderer::lowestReceiver(glm::dvec3 camera) const {
-  double lowest = kMaxY + 16.0;
-  for (const Visible& v : visible_) lowest = std::min(lowest, camera.y + static_cast<double>(v.offset.y));
-  for (const int i : visibleProps_) {
-    lowest = std::min(lowest, props_->instances()[static_cast<std::size_t>(i)].placement.min.y);
-  }
-  return lowest;
 }
 
 std::size_t DeferredRenderer::visibleQuads(MeshLayer layer) const {

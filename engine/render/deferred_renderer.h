@@ -159,7 +159,6 @@ class DeferredRenderer {
                                              const SectionMeshes& meshes, int* outside = nullptr);
   glm::dvec3 mapCentre(glm::dvec3 wanted);
   std::size_t visibleQuads(MeshLayer layer) const;
-  double lowestReceiver(glm::dvec3 camera) const;
   void setLightingUniforms(GLuint program, const View& view) const;
   void setSkyUniforms(GLuint program, const View& view) const;
   // Props (prop_pass.cpp): the instances inside `planes`, and a draw of the meshes whose material has

@@ -29,7 +29,6 @@ bool DeferredRenderer::shadowPass(const View& view, const SectionMeshes& meshes,
   // all of it is (shadow_receivers.h). At sprint-flying speed a spread rebuild's 8 frames move the
   // camera about 6 blocks, which the pulled-back apex absorbs.
   constexpr float kMarginDegrees = 15.0f, kPullBack = 16.0f;
-  constexpr double kFloorDrop = 16.0;
   const ShadowSettings& settings = options_.shadow;
   const int layers = shadowLayers(settings);
   shadowMap_.ensure(settings.resolution, layers);
@@ -42,14 +41,14 @@ bool DeferredRenderer::shadowPass(const View& view, const SectionMeshes& meshes,
                                : glm::dvec3(0.0);
   const glm::dvec3 centre = mapCentre(view.camera + view.shadowCentreOffset + ahead);
   std::optional<ShadowReceivers> receivers;
-  if (options_.shadowCasterCulling) receivers.emplace(view.cone.widened(kMarginDegrees, kPullBack, kFloorDrop));
+  if (options_.shadowCasterCulling) receivers.emplace(view.cone.widened(kMarginDegrees, kPullBack));
   const ShadowKey wanted{centre, view.day.toShadowLight, meshes.generation(), props_ ? props_->generation() : 0, true,
                          receivers};
   const auto serves = [&](const ViewCone& cone) { return !shadowKey_.receivers || shadowKey_.receivers->contains(cone); };
   const bool unchanged = shadowKey_.valid && shadowKey_.centre == centre && shadowKey_.meshes == wanted.meshes &&
                          shadowKey_.props == wanted.props &&
                          glm::dot(shadowKey_.toLight, wanted.toLight) > kReuseCos &&
-                         serves(view.cone.widened(0.5f * kMarginDegrees, 0.5f * kPullBack, 0.5 * kFloorDrop));
+                         serves(view.cone.widened(0.5f * kMarginDegrees, 0.5f * kPullBack));
   const int slices = mayReuse ? std::max(settings.updateFrames, 1) : 1;
   // A kept map must still cover the camera well; a jump (a teleport) redraws it whole at once.
   const bool near =

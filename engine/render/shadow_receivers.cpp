@@ -25,7 +25,7 @@ Camera cameraOf(const ViewCone& view) {
 
 }  // namespace
 
-ViewCone ViewCone::widened(float degrees, float pullBack, double floorDrop) const {
+ViewCone ViewCone::widened(float degrees, float pullBack) const {
   // Half-angles, each side widened by `degrees`, short of a right angle so the cone stays a cone.
   constexpr float kMaxHalf = glm::radians(85.0f);
   const float vertical = glm::radians(std::clamp(fovDegrees, 1.0f, 170.0f)) * 0.5f;
@@ -37,7 +37,6 @@ ViewCone ViewCone::widened(float degrees, float pullBack, double floorDrop) cons
   wide.aspect = std::tan(h) / std::tan(v);
   wide.eye = eye - glm::dvec3(forward) * static_cast<double>(pullBack);
   wide.farPlane = farPlane + pullBack;
-  wide.floorY = floorY - floorDrop;
   return wide;
 }
 

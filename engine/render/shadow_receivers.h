@@ -1,8 +1,8 @@
 #pragma once
 // Which shadow casters can shade something the camera sees. Light reaches a receiver after passing
 // every caster above it along the light, so a caster matters only when its box, swept along the light
-// down to the lowest visible section, meets the camera's view. The rest (behind the camera, off to the
-// sides) are left out of the shadow pass.
+// down to the floor (the renderer's: the world's bottom), meets the camera's view. The rest (behind
+// the camera, or off to its sides, with the light) are left out of the shadow pass.
 //
 // A kept or spread-rebuilt map serves a camera that has moved on since it was drawn, so the view it is
 // drawn for is widened: a margin on every side and the apex pulled back along the view. The map still
@@ -24,11 +24,10 @@ struct ViewCone {
   float fovDegrees = 70.0f;              // vertical
   float aspect = 1.0f;
   float farPlane = 256.0f;
-  double floorY = 0.0;  // world y of the lowest visible receiver (section or prop bottom)
+  double floorY = 0.0;  // world y no receiver lies below
 
-  // The cone with `degrees` more on every side, its apex `pullBack` blocks behind and its floor
-  // `floorDrop` lower.
-  ViewCone widened(float degrees, float pullBack, double floorDrop) const;
+  // The cone with `degrees` more on every side and its apex `pullBack` blocks behind.
+  ViewCone widened(float degrees, float pullBack) const;
 };
 
 class ShadowReceivers {
