@@ -164,8 +164,13 @@ void DeferredRenderer::render(const FrameInputs& frame, const SectionMeshes& mes
   cull(view, meshes);
   // Receivers down to the world's bottom: the lowest visible section jumps by a hundred blocks as a
   // cave comes into view, and a floor that followed it would have the map redrawn at every jump.
-  view.cone = {view.camera, glm::normalize(camera.lookAt), camera.up, camera.fovDegrees,
-               static_cast<float>(size.x) / static_cast<float>(size.y), camera.farPlane, static_cast<double>(kMinY)};
+  view.cone.eye = view.camera;
+  view.cone.forward = glm::normalize(camera.lookAt);
+  view.cone.up = camera.up;
+  view.cone.fovDegrees = camera.fovDegrees;
+  view.cone.aspect = static_cast<float>(size.x) / static_cast<float>(size.y);
+  view.cone.farPlane = camera.farPlane;
+  view.cone.floorY = kMinY;
   // Below 0.1 % of its strength the light can show nothing (it is 0 at and under the horizon).
   view.shadowLive = options_.shadow.enabled && view.day.directStrength > 1e-3f;
   if (view.shadowLive) {

@@ -1,7 +1,7 @@
 #pragma once
 // The deferred pipeline, one frame at a time:
 //   geometry (opaque, then alpha-tested cutout) -> G-buffer
-//   lighting (full screen: LabPBR direct + ambient + block light + emission), then sky where nothing was drawn
+//   lighting (full screen: LabPBR direct + ambient + block light + emission), sky where nothing was drawn
 //   translucent (water, glass: lit forward, blended; left out when none is loaded)
 //   final (exposure, tone map, sRGB) -> the target framebuffer
 // A debug view replaces lighting, translucent and final with one pass showing a G-buffer channel.
@@ -171,7 +171,8 @@ class DeferredRenderer {
 
   std::vector<std::string> variants_;  // before the programs: building each one names it here
   GBufferContents contents_;           // likewise: the programs are built for it
-  gl::Program geometry_, cutout_, lighting_, sky_, translucent_, shadow_, shadowCutout_, shadowTranslucent_, final_, debug_, outline_;
+  gl::Program geometry_, cutout_, lighting_, sky_, translucent_, shadow_, shadowCutout_, shadowTranslucent_,
+      final_, debug_, outline_;
   // Props' variants, each built only when a placed prop needs it (RendererOptions::props).
   gl::Program propGeometry_, propCutout_, propTranslucent_, propShadow_, propShadowCutout_, propShadowTranslucent_;
   BlockTextures textures_;

@@ -80,8 +80,8 @@ GBufferPixels GBuffer::read() const {
 }
 
 void GBuffer::copyDepthForLighting() const {
-  glCopyImageSubData(depth_.id(), GL_TEXTURE_2D, 0, 0, 0, 0, lightingDepth_.id(), GL_TEXTURE_2D, 0, 0, 0, 0, size_.x,
-                     size_.y, 1);
+  glCopyImageSubData(depth_.id(), GL_TEXTURE_2D, 0, 0, 0, 0, lightingDepth_.id(), GL_TEXTURE_2D, 0, 0, 0, 0,
+                     size_.x, size_.y, 1);
 }
 
 void GBuffer::bindForReading() const {

@@ -40,19 +40,20 @@ bool DeferredRenderer::shadowPass(const View& view, const SectionMeshes& meshes,
                                ? forward / along * static_cast<double>(settings.shiftAhead * settings.distance)
                                : glm::dvec3(0.0);
   const glm::dvec3 centre = mapCentre(view.camera + view.shadowCentreOffset + ahead);
-  std::optional<ShadowReceivers> receivers;
-  if (options_.shadowCasterCulling) receivers.emplace(view.cone.widened(kMarginDegrees, kPullBack));
-  const ShadowKey wanted{centre, view.day.toShadowLight, meshes.generation(), props_ ? props_->generation() : 0, true,
-                         receivers};
-  const auto serves = [&](const ViewCone& cone) { return !shadowKey_.receivers || shadowKey_.receivers->contains(cone); };
-  const bool unchanged = shadowKey_.valid && shadowKey_.centre == centre && shadowKey_.meshes == wanted.meshes &&
-                         shadowKey_.props == wanted.props &&
+  const std::uint64_t propsGeneration = props_ ? props_->generation() : 0;
+  ShadowKey wanted{centre, view.day.toShadowLight, meshes.generation(), propsGeneration, true, std::nullopt};
+  if (options_.shadowCasterCulling) wanted.receivers.emplace(view.cone.widened(kMarginDegrees, kPullBack));
+  const auto serves = [&](const ViewCone& cone) {
+    return !shadowKey_.receivers || shadowKey_.receivers->contains(cone);
+  };
+  const bool unchanged = shadowKey_.valid && shadowKey_.centre == centre &&
+                         shadowKey_.meshes == wanted.meshes && shadowKey_.props == wanted.props &&
                          glm::dot(shadowKey_.toLight, wanted.toLight) > kReuseCos &&
                          serves(view.cone.widened(0.5f * kMarginDegrees, 0.5f * kPullBack));
   const int slices = mayReuse ? std::max(settings.updateFrames, 1) : 1;
   // A kept map must still cover the camera well; a jump (a teleport) redraws it whole at once.
-  const bool near =
-      shadowKey_.valid && glm::length(centre - shadowKey_.centre) < 0.25 * settings.distance && serves(view.cone);
+  const bool near = shadowKey_.valid && glm::length(centre - shadowKey_.centre) < 0.25 * settings.distance &&
+                    serves(view.cone);
   if (mayReuse && unchanged && !build_) {
     rebaseShadowViews(view);
     return false;

@@ -57,18 +57,16 @@ bool ShadowReceivers::mayShade(glm::dvec3 lo, glm::dvec3 hi, glm::vec3 toLight) 
 bool ShadowReceivers::contains(const ViewCone& view) const {
   if (view.floorY < floorY_) return false;
   const glm::vec3 apex(view.eye - origin_);
-  for (int i = 0; i < 5; ++i) {  // inside the sides and beyond the near plane
-    if (glm::dot(glm::vec3(planes_[static_cast<std::size_t>(i)]), apex) + planes_[static_cast<std::size_t>(i)].w < 0.0f) {
-      return false;
-    }
+  for (std::size_t i = 0; i < 5; ++i) {  // inside the sides and beyond the near plane
+    if (glm::dot(glm::vec3(planes_[i]), apex) + planes_[i].w < 0.0f) return false;
   }
   const Camera camera = cameraOf(view);
   const glm::mat4 inverse = glm::inverse(camera.projection(view.aspect) * camera.view());
   for (const glm::vec2 corner : {glm::vec2(-1, -1), glm::vec2(1, -1), glm::vec2(-1, 1), glm::vec2(1, 1)}) {
     const glm::vec4 far = inverse * glm::vec4(corner, 1.0f, 1.0f);
     const glm::vec3 ray = glm::vec3(far) / far.w;  // from the eye (at the origin) to a far corner
-    for (int i = 0; i < 4; ++i) {
-      if (glm::dot(glm::vec3(planes_[static_cast<std::size_t>(i)]), ray) < 0.0f) return false;
+    for (std::size_t i = 0; i < 4; ++i) {
+      if (glm::dot(glm::vec3(planes_[i]), ray) < 0.0f) return false;
     }
   }
   return true;

@@ -169,8 +169,8 @@ namespace {
 
 void parseRender(const json& render, SceneFile& scene) {
   checkObject(render, "render",
-              {"width", "height", "view_distance", "debug_view", "specular", "material_ao", "cave_culling", "shadow_caster_culling",
-               "cull_faces_away", "leave_out_absent_maps", "shadow"});
+              {"width", "height", "view_distance", "debug_view", "specular", "material_ao", "cave_culling",
+               "shadow_caster_culling", "cull_faces_away", "leave_out_absent_maps", "shadow"});
   if (const json* v = field(render, "width")) {
     scene.width = static_cast<int>(wholeNumber(*v, "render.width", 1, 8192));
   }

@@ -228,7 +228,8 @@ TEST(SceneFile, CaveCulling) {
   EXPECT_TRUE(parseScene("{}", "scenes/a.json").caveCulling);
   EXPECT_FALSE(parseScene(R"({"render": {"cave_culling": false}})", "scenes/a.json").caveCulling);
   EXPECT_TRUE(parseScene("{}", "scenes/a.json").shadowCasterCulling);
-  EXPECT_FALSE(parseScene(R"({"render": {"shadow_caster_culling": false}})", "scenes/a.json").shadowCasterCulling);
+  EXPECT_FALSE(
+      parseScene(R"({"render": {"shadow_caster_culling": false}})", "scenes/a.json").shadowCasterCulling);
   EXPECT_TRUE(failsWith(R"({"render": {"cave_culling": "no"}})", "render.cave_culling: expected true or false"));
 }
 

@@ -1,11 +1,11 @@
 // Which shadow casters the shadow pass keeps (render/shadow_receivers.h): geometry only, no GL.
 
+#include "render/shadow_receivers.h"
+
 #include <gtest/gtest.h>
 
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
-
-#include "render/shadow_receivers.h"
 
 namespace terrasol {
 namespace {
@@ -22,7 +22,9 @@ ViewCone camera() {
   return v;
 }
 
-glm::vec3 light(float x, float y) { return glm::normalize(glm::vec3(x, y, 0.0f)); }
+glm::vec3 light(float x, float y) {
+  return glm::normalize(glm::vec3(x, y, 0.0f));
+}
 
 TEST(ShadowReceivers, ACasterBehindTheCameraMattersOnlyWhenItsShadowFallsForward) {
   const ShadowReceivers view(camera());
@@ -63,8 +65,8 @@ TEST(ShadowReceivers, AWidenedViewServesViewsWithinItsMargin) {
     v.eye += by;
     return v;
   };
-  EXPECT_TRUE(wide.contains(moved({30.0, 0.0, 0.0})));   // forward: deeper inside
-  EXPECT_TRUE(wide.contains(moved({0.0, 0.0, 6.0})));    // sideways, within the pulled-back apex's reach
+  EXPECT_TRUE(wide.contains(moved({30.0, 0.0, 0.0})));    // forward: deeper inside
+  EXPECT_TRUE(wide.contains(moved({0.0, 0.0, 6.0})));     // sideways, within the pulled-back apex's reach
   EXPECT_FALSE(wide.contains(moved({-17.0, 0.0, 0.0})));  // behind the apex
   ViewCone lower = camera();
   lower.floorY = -1.0;

@@ -54,12 +54,15 @@ TEST_F(LeaveOutTest, CaveCullingHidesSectionsAndCastersButNoPixel) {
 // Casters behind the camera, or off to its sides, shade nothing it sees.
 TEST_F(LeaveOutTest, ShadowCastersOffViewAreNotDrawnAndChangeNoPixel) {
   for (const char* name : {"noon_terrain", "shadow_low_sun", "shadow_forest"}) {
-    const auto [culled, all] = render(loadScene(kScenes / (std::string(name) + ".json")), &SceneFile::shadowCasterCulling);
+    const auto [culled, all] =
+        render(loadScene(kScenes / (std::string(name) + ".json")), &SceneFile::shadowCasterCulling);
     EXPECT_EQ(all.stats.shadowCastersOffView, 0) << name;
-    EXPECT_EQ(culled.stats.shadowCasters + culled.stats.shadowCastersOffView, all.stats.shadowCasters) << name;
+    EXPECT_EQ(culled.stats.shadowCasters + culled.stats.shadowCastersOffView, all.stats.shadowCasters)
+        << name;
     EXPECT_TRUE(identical(culled.image, all.image)) << name << ": leaving casters out changed the image";
     if (std::string(name) == "noon_terrain") {
-      EXPECT_GT(culled.stats.shadowCastersOffView, 0) << "the terrain behind the camera shades nothing in view";
+      EXPECT_GT(culled.stats.shadowCastersOffView, 0)
+          << "the terrain behind the camera shades nothing in view";
     }
   }
   context_->checkErrors("shadow caster culling");
