@@ -165,7 +165,7 @@ void DeferredRenderer::render(const FrameInputs& frame, const SectionMeshes& mes
   // Receivers down to the world's bottom: the lowest visible section jumps by a hundred blocks as a
   // cave comes into view, and a floor that followed it would have the map redrawn at every jump.
   view.cone.eye = view.camera;
-  view.cone.forward = glm::normalize(camera.lookAt);
+  view.cone.forward = glm::vec3(view.forward);  // unit, or -z for a degenerate look-at
   view.cone.up = camera.up;
   view.cone.fovDegrees = camera.fovDegrees;
   view.cone.aspect = static_cast<float>(size.x) / static_cast<float>(size.y);
