@@ -5,6 +5,7 @@
 
 #include "lib/gbuffer_albedo.glsl"
 #include "lib/octahedral.glsl"
+#include "lib/screen_position.glsl"
 #include "lib/lighting.glsl"
 #include "lib/sky.glsl"
 #ifdef SHADOWS
@@ -17,21 +18,12 @@ layout(binding = GB_SPECULAR) uniform sampler2D g_specular;
 layout(binding = GB_LIGHT) uniform sampler2D g_light;
 layout(binding = GB_DEPTH_UNIT) uniform sampler2D g_depth;
 
-uniform mat4 u_inverseViewProjection;  // camera-relative
-
-in vec2 v_ndc;
 layout(location = OUT_COLOR) out vec4 o_color;
-
-vec3 unproject(vec2 ndc, float depth) {
-  vec4 p = u_inverseViewProjection * vec4(ndc, depth * 2.0 - 1.0, 1.0);
-  return p.xyz / p.w;
-}
 
 void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
   float depth = texelFetch(g_depth, pixel, 0).r;
-  vec3 far = unproject(v_ndc, 1.0);
-  vec3 viewDir = far / max(length(far), 1e-20);
+  vec3 viewDir = viewDirection();
   vec3 sky = skyColor(viewDir);
   vec3 position = unproject(v_ndc, depth);
   vec4 albedo = texelFetch(g_albedo, pixel, 0);

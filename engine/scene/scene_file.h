@@ -88,8 +88,7 @@ struct SceneFile {
   std::string specular = "blinn_phong";  // "render.specular": one of kSpecularModels
   bool materialAo = true;          // "render.material_ao": LabPBR _n blue darkens ambient light
   bool caveCulling = true;         // "render.cave_culling": leave out sections hidden behind solid ground
-  bool shadowCasterCulling =
-      true;  // "render.shadow_caster_culling": leave out casters shading nothing in view
+  bool shadowCasterCulling = true;  // "render.shadow_caster_culling": no caster shading nothing in view
   bool leaveOutAbsentMaps = true;  // "render.leave_out_absent_maps": no _n/_s sampling when no pack has them
   bool cullFacesAway = true;       // "render.cull_faces_away": face groups turned away are not drawn
   SceneShadow shadow;              // "render.shadow"
