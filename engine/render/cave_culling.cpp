@@ -11,25 +11,6 @@ namespace {
 constexpr glm::ivec3 kSteps[6] = {{-1, 0, 0}, {1, 0, 0}, {0, -1, 0}, {0, 1, 0}, {0, 0, -1}, {0, 0, 1}};
 constexpr int kDown = 2, kUp = 3;
 
-// One byte per section of the square of `radius` sections around `centre`'s chunk, the world's height.
-class SectionGrid {
- public:
-  SectionGrid(glm::ivec2 centre, int radius)
-      : centre_(centre), radius_(radius), side_(2 * radius + 1),
-        cells_(static_cast<std::size_t>(side_ * side_ * kSectionCount), 0) {}
-  // Null outside the grid.
-  std::uint8_t* at(glm::ivec3 s) {
-    const int dx = s.x - centre_.x + radius_, dz = s.z - centre_.y + radius_;
-    if (dx < 0 || dx >= side_ || dz < 0 || dz >= side_ || s.y < 0 || s.y >= kSectionCount) return nullptr;
-    return &cells_[static_cast<std::size_t>((s.y * side_ + dz) * side_ + dx)];
-  }
-
- private:
-  glm::ivec2 centre_;
-  int radius_, side_;
-  std::vector<std::uint8_t> cells_;
-};
-
 struct Step {
   glm::ivec3 at;       // section x, index, z
   int entered;         // the face it was entered through, -1 for the camera's
@@ -38,25 +19,33 @@ struct Step {
 
 }  // namespace
 
-std::vector<SectionPos> reachableSections(const SectionMeshes& meshes, glm::dvec3 camera, const FrustumPlanes& planes,
+SectionSet::SectionSet(glm::ivec2 centreChunk, int radius)
+    : centre_(centreChunk), radius_(radius), side_(2 * radius + 1),
+      cells_(static_cast<std::size_t>(side_ * side_ * kSectionCount), 0) {}
+
+const std::uint8_t* SectionSet::cell(glm::ivec3 s) const {
+  const int dx = s.x - centre_.x + radius_, dz = s.z - centre_.y + radius_;
+  if (dx < 0 || dx >= side_ || dz < 0 || dz >= side_ || s.y < 0 || s.y >= kSectionCount) return nullptr;
+  return &cells_[static_cast<std::size_t>((s.y * side_ + dz) * side_ + dx)];
+}
+
+SectionSet reachableSections(const SectionMeshes& meshes, glm::dvec3 camera, const FrustumPlanes& planes,
                                           int radius) {
   const glm::ivec3 eye(static_cast<int>(std::floor(camera.x / 16.0)),
                        static_cast<int>(std::floor((camera.y - kMinY) / 16.0)),
                        static_cast<int>(std::floor(camera.z / 16.0)));
-  SectionGrid seen({eye.x, eye.z}, radius);
+  SectionSet seen({eye.x, eye.z}, radius);
   const auto inView = [&](glm::ivec3 s) {
     const glm::dvec3 corner(s.x * 16.0, kMinY + s.y * 16.0, s.z * 16.0);
     return boxVisible(planes, glm::vec3(corner - camera), 16.0f);
   };
 
   std::deque<Step> queue;
-  std::vector<SectionPos> out;
   const auto reach = [&](glm::ivec3 s, int entered, unsigned travelled) {
-    std::uint8_t* mark = seen.at(s);
+    std::uint8_t* mark = seen.cell(s);
     if (!mark || *mark || !inView(s)) return;
-    *mark = 1;
+    *mark = SectionSet::kMember;
     queue.push_back({s, entered, travelled});
-    out.push_back({s.x, s.y, s.z});
   };
   if (eye.y >= 0 && eye.y < kSectionCount) {
     reach(eye, -1, 0u);
@@ -78,28 +67,23 @@ std::vector<SectionPos> reachableSections(const SectionMeshes& meshes, glm::dvec
       reach(step.at + kSteps[d], d ^ 1, step.travelled | (1u << d));
     }
   }
-  return out;
+  return seen;
 }
 
-std::vector<SectionPos> sectionsLitFrom(const SectionMeshes& meshes, glm::vec3 toLight, glm::dvec3 centre, int radius) {
+SectionSet sectionsLitFrom(const SectionMeshes& meshes, glm::vec3 toLight, glm::dvec3 centre, int radius) {
   const glm::ivec3 mid(static_cast<int>(std::floor(centre.x / 16.0)), 0, static_cast<int>(std::floor(centre.z / 16.0)));
-  // Per section: the faces it has been entered by (bits 0..5), and bit 6 once it is in the output.
-  SectionGrid entered({mid.x, mid.z}, radius);
+  // Per section: the faces it has been entered by (bits 0..5), and kMember once it is reached.
+  SectionSet entered({mid.x, mid.z}, radius);
   // The ways a ray moves: along each axis where -toLight has a component.
   unsigned along = 0;
   for (int d = 0; d < 6; ++d) {
     if (glm::dot(glm::vec3(kSteps[d]), -toLight) > 0.0f) along |= 1u << d;
   }
   std::deque<Step> queue;
-  std::vector<SectionPos> out;
   const auto enter = [&](glm::ivec3 s, int face) {
-    std::uint8_t* mark = entered.at(s);
+    std::uint8_t* mark = entered.cell(s);
     if (!mark || (*mark & (1u << face))) return;
-    *mark |= static_cast<std::uint8_t>(1u << face);
-    if (!(*mark & 64u)) {
-      *mark |= 64u;
-      out.push_back({s.x, s.y, s.z});
-    }
+    *mark |= static_cast<std::uint8_t>((1u << face) | SectionSet::kMember);
     queue.push_back({s, face, 0u});
   };
   // Rays come in through every face of the square's boundary that looks towards the light.
@@ -109,7 +93,7 @@ std::vector<SectionPos> sectionsLitFrom(const SectionMeshes& meshes, glm::vec3 t
         const glm::ivec3 s(mid.x + dx, y, mid.z + dz);
         for (int d = 0; d < 6; ++d) {
           if (!(along & (1u << (d ^ 1)))) continue;  // face d looks towards the light when rays move along d ^ 1
-          if (!entered.at(s + kSteps[d])) enter(s, d);
+          if (!entered.cell(s + kSteps[d])) enter(s, d);
         }
       }
   while (!queue.empty()) {
@@ -120,7 +104,7 @@ std::vector<SectionPos> sectionsLitFrom(const SectionMeshes& meshes, glm::vec3 t
       if ((along & (1u << d)) && linked(links, step.entered, d)) enter(step.at + kSteps[d], d ^ 1);
     }
   }
-  return out;
+  return entered;
 }
 
 }  // namespace terrasol

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <set>
 
 #include <glm/gtc/matrix_inverse.hpp>
 
@@ -265,8 +264,7 @@ void DeferredRenderer::cull(const View& view, const SectionMeshes& meshes) {
   visible_ = sectionsInside(view.frustum, view.camera, meshes, &stats_.sectionsCulled);
   if (options_.caveCulling) {
     const int radius = static_cast<int>(std::ceil(view.fogRange.y / 16.0f)) + 2;
-    std::set<SectionPos> reached;
-    for (const SectionPos& s : reachableSections(meshes, view.camera, view.frustum, radius)) reached.insert(s);
+    const SectionSet reached = reachableSections(meshes, view.camera, view.frustum, radius);
     const auto hidden = std::remove_if(visible_.begin(), visible_.end(), [&](const Visible& v) { return !reached.contains(v.pos); });
     stats_.sectionsHidden = static_cast<int>(visible_.end() - hidden);
     visible_.erase(hidden, visible_.end());

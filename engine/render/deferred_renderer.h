@@ -17,6 +17,7 @@
 
 #include "assets/shader_source.h"
 #include "render/block_textures.h"
+#include "render/cave_culling.h"
 #include "render/frustum.h"
 #include "render/gbuffer.h"
 #include "render/pass_clock.h"
@@ -193,11 +194,13 @@ class DeferredRenderer {
   struct ShadowBuild {                    // a map being rebuilt a slice a frame (update_frames > 1)
     ShadowKey key;
     int slice = 0;
+    std::optional<SectionSet> lit;  // walked once for all slices
   };
   std::optional<ShadowBuild> build_;
   ShadowMap building_;
-  void drawShadowCasters(ShadowMap& map, const ShadowKey& key, const View& view, const SectionMeshes& meshes,
-                         int slice, int slices);
+  std::optional<SectionSet> litSections(const ShadowKey& key, const SectionMeshes& meshes) const;
+  void drawShadowCasters(ShadowMap& map, const ShadowKey& key, const std::optional<SectionSet>& lit, const View& view,
+                         const SectionMeshes& meshes, int slice, int slices);
   bool gpuTimer_;  // timer queries for pass timings (a real GPU); else glFinish and the wall clock
   std::vector<Visible> visible_;  // this frame's sections inside the frustum
   std::vector<int> visibleProps_;  // this frame's prop instances inside the frustum

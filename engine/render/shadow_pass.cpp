@@ -1,7 +1,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <set>
 
 #include "render/cave_culling.h"
 #include "render/deferred_renderer.h"
@@ -59,9 +58,9 @@ bool DeferredRenderer::shadowPass(const View& view, const SectionMeshes& meshes,
     return false;
   }
   if (slices > 1 && near) {
-    if (!build_) build_ = ShadowBuild{wanted, 0};
+    if (!build_) build_ = ShadowBuild{wanted, 0, litSections(wanted, meshes)};
     building_.ensure(settings.resolution, layers);
-    drawShadowCasters(building_, build_->key, view, meshes, build_->slice, slices);
+    drawShadowCasters(building_, build_->key, build_->lit, view, meshes, build_->slice, slices);
     if (++build_->slice == slices) {
       std::swap(shadowMap_, building_);
       shadowKey_ = build_->key;
@@ -72,7 +71,7 @@ bool DeferredRenderer::shadowPass(const View& view, const SectionMeshes& meshes,
   }
   build_.reset();
   shadowKey_ = wanted;
-  drawShadowCasters(shadowMap_, wanted, view, meshes, 0, 1);
+  drawShadowCasters(shadowMap_, wanted, litSections(wanted, meshes), view, meshes, 0, 1);
   rebaseShadowViews(view);
   return true;
 }
@@ -86,10 +85,19 @@ void DeferredRenderer::rebaseShadowViews(const View& view) {
   }
 }
 
+// Sections no ray of the light can reach through open cells cast nothing (render/cave_culling.h). A
+// spread rebuild walks once, at its first slice: sections meshed since were open cells then, so they
+// are walked into like any open cell.
+std::optional<SectionSet> DeferredRenderer::litSections(const ShadowKey& key, const SectionMeshes& meshes) const {
+  if (!options_.caveCulling) return std::nullopt;
+  const float reach = cascadeDistance(options_.shadow, shadowLayers(options_.shadow) - 1);
+  return sectionsLitFrom(meshes, key.toLight, key.centre, static_cast<int>(std::ceil(reach / 16.0f)) + 2);
+}
+
 // Slice `slice` of `slices` of the casters (by a hash of their position, so each is in exactly one)
 // into `map`, cleared first by slice 0.
-void DeferredRenderer::drawShadowCasters(ShadowMap& map, const ShadowKey& key, const View& view,
-                                         const SectionMeshes& meshes, int slice, int slices) {
+void DeferredRenderer::drawShadowCasters(ShadowMap& map, const ShadowKey& key, const std::optional<SectionSet>& lit,
+                                         const View& view, const SectionMeshes& meshes, int slice, int slices) {
   const ShadowSettings& settings = options_.shadow;
   const int layers = shadowLayers(settings);
   glViewport(0, 0, settings.resolution, settings.resolution);
@@ -99,14 +107,6 @@ void DeferredRenderer::drawShadowCasters(ShadowMap& map, const ShadowKey& key, c
   glDisable(GL_CULL_FACE);   // single faces (the mesher drops hidden ones) must cast from both sides
   glEnable(GL_DEPTH_CLAMP);  // casters above the near plane still cast, flattened onto it
   glDisable(GL_BLEND);
-  // Sections no ray of the light can reach through open cells cast nothing (render/cave_culling.h).
-  std::set<SectionPos> lit;
-  if (options_.caveCulling) {
-    const float reach = cascadeDistance(settings, layers - 1);
-    for (const SectionPos& s : sectionsLitFrom(meshes, key.toLight, key.centre, static_cast<int>(std::ceil(reach / 16.0f)) + 2)) {
-      lit.insert(s);
-    }
-  }
   const auto inSlice = [&](SectionPos p) {
     const auto h = static_cast<std::uint32_t>(p.x * 73856093) ^ static_cast<std::uint32_t>(p.section * 19349663) ^
                    static_cast<std::uint32_t>(p.z * 83492791);
@@ -118,8 +118,8 @@ void DeferredRenderer::drawShadowCasters(ShadowMap& map, const ShadowKey& key, c
     const ShadowView light =
         shadowViewFor(settings.resolution, cascadeDistance(settings, layer), key.toLight, view.camera, key.centre);
     std::vector<Visible> casters = sectionsInside(frustumPlanes(light.matrix), view.camera, meshes);
-    if (options_.caveCulling) {
-      const auto dark = std::remove_if(casters.begin(), casters.end(), [&](const Visible& v) { return !lit.contains(v.pos); });
+    if (lit) {
+      const auto dark = std::remove_if(casters.begin(), casters.end(), [&](const Visible& v) { return !lit->contains(v.pos); });
       stats_.shadowCastersHidden += static_cast<int>(casters.end() - dark);
       casters.erase(dark, casters.end());
     }
