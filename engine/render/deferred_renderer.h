@@ -90,6 +90,7 @@ struct FrameStats {
   int shadowCasters = 0;                      // sections drawn into the shadow map
   int shadowCastersHidden = 0;                // inside the light's box, but no ray of it reaches them
   int shadowCastersOffView = 0;               // lit, but their shadow falls on nothing in view
+  int shadowSlices = 0;                       // of update_frames drawn this frame: 0 kept, all a whole draw
   std::int64_t quadsDrawn = 0;                // by the camera's passes (geometry, translucent)
   std::int64_t quadsFacingAway = 0;           // opaque and cutout quads left out: their face group faced away
   int propsDrawn = 0, propsCulled = 0;        // placed props inside / outside the frustum
@@ -198,9 +199,13 @@ class DeferredRenderer {
   };
   std::optional<ShadowBuild> build_;
   ShadowMap building_;
+  std::optional<glm::dvec3> lastWantedCentre_;  // last frame's, for how fast the map falls behind
   std::optional<SectionSet> litSections(const ShadowKey& key, const SectionMeshes& meshes) const;
+  struct ShadowSlices {
+    int first, count, of;
+  };
   void drawShadowCasters(ShadowMap& map, const ShadowKey& key, const std::optional<SectionSet>& lit, const View& view,
-                         const SectionMeshes& meshes, int slice, int slices);
+                         const SectionMeshes& meshes, ShadowSlices slices);
   bool gpuTimer_;  // timer queries for pass timings (a real GPU); else glFinish and the wall clock
   std::vector<Visible> visible_;  // this frame's sections inside the frustum
   std::vector<int> visibleProps_;  // this frame's prop instances inside the frustum

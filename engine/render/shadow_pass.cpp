@@ -38,7 +38,10 @@ bool DeferredRenderer::shadowPass(const View& view, const SectionMeshes& meshes,
   const glm::dvec3 ahead = settings.mode == ShadowMode::Warped && along > 1e-6
                                ? forward / along * static_cast<double>(settings.shiftAhead * settings.distance)
                                : glm::dvec3(0.0);
-  const glm::dvec3 centre = mapCentre(view.camera + view.shadowCentreOffset + ahead);
+  const glm::dvec3 wantedCentre = view.camera + view.shadowCentreOffset + ahead;
+  const double step = lastWantedCentre_ ? glm::length(wantedCentre - *lastWantedCentre_) : 0.0;
+  lastWantedCentre_ = wantedCentre;
+  const glm::dvec3 centre = mapCentre(wantedCentre);
   const std::uint64_t propsGeneration = props_ ? props_->generation() : 0;
   ShadowKey wanted{centre, view.day.toShadowLight, meshes.generation(), propsGeneration, true, std::nullopt};
   if (options_.shadowCasterCulling) wanted.receivers.emplace(view.cone.widened(kMarginDegrees, kPullBack));
@@ -51,8 +54,9 @@ bool DeferredRenderer::shadowPass(const View& view, const SectionMeshes& meshes,
                          serves(view.cone.widened(0.5f * kMarginDegrees, 0.5f * kPullBack));
   const int slices = mayReuse ? std::max(settings.updateFrames, 1) : 1;
   // A kept map must still cover the camera well; a jump (a teleport) redraws it whole at once.
-  const bool near = shadowKey_.valid && glm::length(centre - shadowKey_.centre) < 0.25 * settings.distance &&
-                    serves(view.cone);
+  const double reach = 0.25 * settings.distance;
+  const double used = glm::length(centre - shadowKey_.centre);
+  const bool near = shadowKey_.valid && used < reach && serves(view.cone);
   if (mayReuse && unchanged && !build_) {
     rebaseShadowViews(view);
     return false;
@@ -60,8 +64,19 @@ bool DeferredRenderer::shadowPass(const View& view, const SectionMeshes& meshes,
   if (slices > 1 && near) {
     if (!build_) build_ = ShadowBuild{wanted, 0, litSections(wanted, meshes)};
     building_.ensure(settings.resolution, layers);
-    drawShadowCasters(building_, build_->key, build_->lit, view, meshes, build_->slice, slices);
-    if (++build_->slice == slices) {
+    // The kept map serves until its centre is `reach` from the camera's. At a low frame rate a slice a
+    // frame would not finish the new map by then, and the kept one would be redrawn whole in one frame,
+    // again and again (hitches of a whole map). So, at the last frame's pace, a build is finished by the
+    // time its own centre is half `reach` behind (the next build then has the other half) and before
+    // the kept map runs out, spreading more slices a frame over the frames that leaves.
+    const auto framesUntil = [&](double distance) { return step > 0.0 ? std::max(std::ceil(distance / step), 1.0) : 1e9; };
+    const double frames = std::min(framesUntil(0.5 * reach - glm::length(centre - build_->key.centre)), framesUntil(reach - used));
+    const int remaining = slices - build_->slice;
+    const int count = std::clamp(static_cast<int>(std::ceil(remaining / frames)), 1, remaining);
+    drawShadowCasters(building_, build_->key, build_->lit, view, meshes, {build_->slice, count, slices});
+    build_->slice += count;
+    stats_.shadowSlices = count;
+    if (build_->slice == slices) {
       std::swap(shadowMap_, building_);
       shadowKey_ = build_->key;
       build_.reset();
@@ -71,7 +86,8 @@ bool DeferredRenderer::shadowPass(const View& view, const SectionMeshes& meshes,
   }
   build_.reset();
   shadowKey_ = wanted;
-  drawShadowCasters(shadowMap_, wanted, litSections(wanted, meshes), view, meshes, 0, 1);
+  drawShadowCasters(shadowMap_, wanted, litSections(wanted, meshes), view, meshes, {0, 1, 1});
+  stats_.shadowSlices = slices;
   rebaseShadowViews(view);
   return true;
 }
@@ -94,10 +110,10 @@ std::optional<SectionSet> DeferredRenderer::litSections(const ShadowKey& key, co
   return sectionsLitFrom(meshes, key.toLight, key.centre, static_cast<int>(std::ceil(reach / 16.0f)) + 2);
 }
 
-// Slice `slice` of `slices` of the casters (by a hash of their position, so each is in exactly one)
-// into `map`, cleared first by slice 0.
+// Slices `slices.first` .. `first + count - 1` of `slices.of` of the casters (by a hash of their
+// position, so each is in exactly one) into `map`, cleared first by slice 0.
 void DeferredRenderer::drawShadowCasters(ShadowMap& map, const ShadowKey& key, const std::optional<SectionSet>& lit,
-                                         const View& view, const SectionMeshes& meshes, int slice, int slices) {
+                                         const View& view, const SectionMeshes& meshes, ShadowSlices slices) {
   const ShadowSettings& settings = options_.shadow;
   const int layers = shadowLayers(settings);
   glViewport(0, 0, settings.resolution, settings.resolution);
@@ -110,7 +126,8 @@ void DeferredRenderer::drawShadowCasters(ShadowMap& map, const ShadowKey& key, c
   const auto inSlice = [&](SectionPos p) {
     const auto h = static_cast<std::uint32_t>(p.x * 73856093) ^ static_cast<std::uint32_t>(p.section * 19349663) ^
                    static_cast<std::uint32_t>(p.z * 83492791);
-    return static_cast<int>(h % static_cast<std::uint32_t>(slices)) == slice;
+    const int slice = static_cast<int>(h % static_cast<std::uint32_t>(slices.of));
+    return slice >= slices.first && slice < slices.first + slices.count;
   };
   const float farDepth = 1.0f;
   const glm::vec3 fromLight = -key.toLight;
@@ -131,13 +148,13 @@ void DeferredRenderer::drawShadowCasters(ShadowMap& map, const ShadowKey& key, c
       stats_.shadowCastersOffView += static_cast<int>(casters.end() - unseen);
       casters.erase(unseen, casters.end());
     }
-    if (slices > 1) {
+    if (slices.count < slices.of) {
       casters.erase(std::remove_if(casters.begin(), casters.end(), [&](const Visible& v) { return !inSlice(v.pos); }),
                     casters.end());
     }
     stats_.shadowCasters += static_cast<int>(casters.size());
     const GLuint opaque = map.framebuffer(layer), translucent = map.translucentFramebuffer(layer);
-    if (slice == 0) {
+    if (slices.first == 0) {
       const float clear[4] = {1.0f, 1.0f, 1.0f, 1.0f};
       glClearNamedFramebufferfv(opaque, GL_DEPTH, 0, &farDepth);
       glClearNamedFramebufferfv(translucent, GL_COLOR, 0, clear);
@@ -154,7 +171,7 @@ void DeferredRenderer::drawShadowCasters(ShadowMap& map, const ShadowKey& key, c
     drawSections(shadowCutout_.id(), casters, meshes, MeshLayer::Cutout, how);
     // Props cast in the first slice of a spread rebuild (they are few).
     std::vector<int> propCasters;
-    if (props_ && propShadow_.id() && slice == 0) {
+    if (props_ && propShadow_.id() && slices.first == 0) {
       propCasters = propsInside(frustumPlanes(light.matrix), view.camera, *props_);
       stats_.propShadowCasters += static_cast<int>(propCasters.size());
       for (const GLuint program : {propShadow_.id(), propShadowCutout_.id(), propShadowTranslucent_.id()}) {

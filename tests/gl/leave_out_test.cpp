@@ -142,5 +142,29 @@ TEST_F(LeaveOutTest, ASpreadShadowUpdateEndsWithTheMapAWholeUpdateDraws) {
   context_->checkErrors("spread shadow update");
 }
 
+// A camera moving a quarter of the kept map's allowance a frame (a low frame rate while flying) would
+// outrun a slice a frame: the kept map would run out mid-build and be redrawn whole, every fourth frame.
+// Instead each build is spread over the frames its pace leaves, and no frame draws the whole map.
+TEST_F(LeaveOutTest, AFastCameraGetsMoreSlicesAFrameNotAWholeRedraw) {
+  SceneFile scene = loadScene(kScenes / "shadow_noon.json");
+  scene.shadow.updateFrames = 4;
+  SceneRenderer spread(scene);
+  FrameRequest request;
+  request.reuseShadowMap = true;
+  const RenderedFrame first = spread.renderFrame(0, request);
+  ASSERT_EQ(first.stats.shadowSlices, 4) << "nothing kept yet: drawn whole";
+  const double reach = 0.25 * scene.shadow.distance;  // how far a kept map's centre may fall behind
+  int slices = 0;
+  for (int i = 1; i <= 8; ++i) {
+    request.shadowCentreOffset = glm::dvec3(0.25 * reach * i, 0.0, 0.0);
+    const RenderedFrame frame = spread.renderFrame(0, request);
+    EXPECT_EQ(frame.stats.shadowSlices, 2) << "frame " << i << ": half the map, so a build lands every second frame";
+    EXPECT_LT(frame.stats.shadowCasters, first.stats.shadowCasters) << "frame " << i;
+    slices += frame.stats.shadowSlices;
+  }
+  EXPECT_EQ(slices, 16) << "four maps in eight frames";
+  context_->checkErrors("fast spread shadow update");
+}
+
 }  // namespace
 }  // namespace terrasol
