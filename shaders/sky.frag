@@ -6,4 +6,4 @@
 
 layout(location = OUT_COLOR) out vec4 o_color;
 
-void main() { o_color = vec4(skyColor(viewDirection()), 1.0); }
+void main() { o_color = vec4(skyWithStars(viewDirection()), 1.0); }

@@ -31,6 +31,14 @@ vec3 skyColor(vec3 dir) {
   color += u_sunColor * (0.5 * glow * glow * glow);  // glow around the sun: toSun^24, without pow()
   color += u_sunColor * 20.0 * smoothstep(kSunCos - 0.00006, kSunCos, toSun);
   color += u_moonColor * 10.0 * smoothstep(kMoonCos - 0.00004, kMoonCos, dot(dir, u_toMoon));
+  return color;
+}
+
+// Stars, added where the sky itself shows: fog is the sky's colour behind a surface, and stars there
+// would glitter on distant hills (and cost every lit pixel, since llvmpipe runs both sides of a branch).
+vec3 skyWithStars(vec3 dir) {
+  vec3 color = skyColor(dir);
+  float up = dir.y;
   if (u_starVisibility > 0.0 && up > 0.0) {
     vec3 cell = floor(dir * 300.0);
     float star = step(0.9985, hash13(cell));
