@@ -70,6 +70,25 @@ TEST_F(SceneRenderTest, GgxSpecularIsAVariantOfItsOwn) {
   EXPECT_TRUE(testing::matchesGolden(ggx, "scene_metal_emissive_ggx"));
 }
 
+// Stars: single bright pixels on the night sky, none by day (sky.frag adds them where the sky shows).
+TEST_F(SceneRenderTest, StarsShowOnTheNightSkyAndNotByDay) {
+  SceneFile scene = loadScene(kScenes / "shadow_moon.json");
+  scene.cameraLookAt = scene.cameraPosition + glm::dvec3(0.3, 1.0, 0.2);  // up, away from the moon
+  const auto stars = [](const Image& image) {
+    int count = 0;
+    for (int y = 1; y + 1 < image.height; ++y)
+      for (int x = 1; x + 1 < image.width; ++x) {
+        const auto grey = [&](int px, int py) { const std::uint8_t* p = image.pixel(px, py); return (p[0] + p[1] + p[2]) / 3; };
+        const int around = (grey(x - 1, y) + grey(x + 1, y) + grey(x, y - 1) + grey(x, y + 1)) / 4;
+        if (grey(x, y) > around + 60) ++count;
+      }
+    return count;
+  };
+  EXPECT_GT(stars(render(scene)), 20) << "midnight";
+  scene.time = 6000;
+  EXPECT_EQ(stars(render(scene)), 0) << "noon";
+}
+
 TEST_F(SceneRenderTest, TheSameSceneRendersToIdenticalPixelsTwice) {
   const SceneFile scene = loadScene(kScenes / "water_glass.json");
   const Image first = render(scene);
