@@ -20,7 +20,9 @@ struct Step {
 }  // namespace
 
 SectionSet::SectionSet(glm::ivec2 centreChunk, int radius)
-    : centre_(centreChunk), radius_(radius), side_(2 * radius + 1),
+    : centre_(centreChunk),
+      radius_(radius),
+      side_(2 * radius + 1),
       cells_(static_cast<std::size_t>(side_ * side_ * kSectionCount), 0) {}
 
 const std::uint8_t* SectionSet::cell(glm::ivec3 s) const {
@@ -30,7 +32,7 @@ const std::uint8_t* SectionSet::cell(glm::ivec3 s) const {
 }
 
 SectionSet reachableSections(const SectionMeshes& meshes, glm::dvec3 camera, const FrustumPlanes& planes,
-                                          int radius) {
+                             int radius) {
   const glm::ivec3 eye(static_cast<int>(std::floor(camera.x / 16.0)),
                        static_cast<int>(std::floor((camera.y - kMinY) / 16.0)),
                        static_cast<int>(std::floor(camera.z / 16.0)));

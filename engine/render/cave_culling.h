@@ -40,7 +40,7 @@ class SectionSet {
 // The reachable sections within `radius` sections (horizontally) of the camera's. `planes` are
 // camera-relative, like every box test in the renderer.
 SectionSet reachableSections(const SectionMeshes& meshes, glm::dvec3 camera, const FrustumPlanes& planes,
-                                          int radius);
+                             int radius);
 
 // The same walk for a directional light shining along -`toLight`: from the sky and from the sides of
 // the square of `radius` sections around `centre` that face the light, moving only the ways its rays

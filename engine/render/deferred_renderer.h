@@ -204,8 +204,8 @@ class DeferredRenderer {
   struct ShadowSlices {
     int first, count, of;
   };
-  void drawShadowCasters(ShadowMap& map, const ShadowKey& key, const std::optional<SectionSet>& lit, const View& view,
-                         const SectionMeshes& meshes, ShadowSlices slices);
+  void drawShadowCasters(ShadowMap& map, const ShadowKey& key, const std::optional<SectionSet>& lit,
+                         const View& view, const SectionMeshes& meshes, ShadowSlices slices);
   bool gpuTimer_;  // timer queries for pass timings (a real GPU); else glFinish and the wall clock
   std::vector<Visible> visible_;  // this frame's sections inside the frustum
   std::vector<int> visibleProps_;  // this frame's prop instances inside the frustum

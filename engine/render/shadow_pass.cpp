@@ -69,8 +69,11 @@ bool DeferredRenderer::shadowPass(const View& view, const SectionMeshes& meshes,
     // again and again (hitches of a whole map). So, at the last frame's pace, a build is finished by the
     // time its own centre is half `reach` behind (the next build then has the other half) and before
     // the kept map runs out, spreading more slices a frame over the frames that leaves.
-    const auto framesUntil = [&](double distance) { return step > 0.0 ? std::max(std::ceil(distance / step), 1.0) : 1e9; };
-    const double frames = std::min(framesUntil(0.5 * reach - glm::length(centre - build_->key.centre)), framesUntil(reach - used));
+    const auto framesUntil = [&](double distance) {
+      return step > 0.0 ? std::max(std::ceil(distance / step), 1.0) : 1e9;
+    };
+    const double frames = std::min(framesUntil(0.5 * reach - glm::length(centre - build_->key.centre)),
+                                   framesUntil(reach - used));
     const int remaining = slices - build_->slice;
     const int count = std::clamp(static_cast<int>(std::ceil(remaining / frames)), 1, remaining);
     drawShadowCasters(building_, build_->key, build_->lit, view, meshes, {build_->slice, count, slices});
@@ -104,7 +107,8 @@ void DeferredRenderer::rebaseShadowViews(const View& view) {
 // Sections no ray of the light can reach through open cells cast nothing (render/cave_culling.h). A
 // spread rebuild walks once, at its first slice: sections meshed since were open cells then, so they
 // are walked into like any open cell.
-std::optional<SectionSet> DeferredRenderer::litSections(const ShadowKey& key, const SectionMeshes& meshes) const {
+std::optional<SectionSet> DeferredRenderer::litSections(const ShadowKey& key,
+                                                        const SectionMeshes& meshes) const {
   if (!options_.caveCulling) return std::nullopt;
   const float reach = cascadeDistance(options_.shadow, shadowLayers(options_.shadow) - 1);
   return sectionsLitFrom(meshes, key.toLight, key.centre, static_cast<int>(std::ceil(reach / 16.0f)) + 2);
@@ -112,8 +116,9 @@ std::optional<SectionSet> DeferredRenderer::litSections(const ShadowKey& key, co
 
 // Slices `slices.first` .. `first + count - 1` of `slices.of` of the casters (by a hash of their
 // position, so each is in exactly one) into `map`, cleared first by slice 0.
-void DeferredRenderer::drawShadowCasters(ShadowMap& map, const ShadowKey& key, const std::optional<SectionSet>& lit,
-                                         const View& view, const SectionMeshes& meshes, ShadowSlices slices) {
+void DeferredRenderer::drawShadowCasters(ShadowMap& map, const ShadowKey& key,
+                                         const std::optional<SectionSet>& lit, const View& view,
+                                         const SectionMeshes& meshes, ShadowSlices slices) {
   const ShadowSettings& settings = options_.shadow;
   const int layers = shadowLayers(settings);
   glViewport(0, 0, settings.resolution, settings.resolution);
@@ -136,7 +141,8 @@ void DeferredRenderer::drawShadowCasters(ShadowMap& map, const ShadowKey& key, c
         shadowViewFor(settings.resolution, cascadeDistance(settings, layer), key.toLight, view.camera, key.centre);
     std::vector<Visible> casters = sectionsInside(frustumPlanes(light.matrix), view.camera, meshes);
     if (lit) {
-      const auto dark = std::remove_if(casters.begin(), casters.end(), [&](const Visible& v) { return !lit->contains(v.pos); });
+      const auto dark = std::remove_if(casters.begin(), casters.end(),
+                                       [&](const Visible& v) { return !lit->contains(v.pos); });
       stats_.shadowCastersHidden += static_cast<int>(casters.end() - dark);
       casters.erase(dark, casters.end());
     }

@@ -158,7 +158,8 @@ TEST_F(LeaveOutTest, AFastCameraGetsMoreSlicesAFrameNotAWholeRedraw) {
   for (int i = 1; i <= 8; ++i) {
     request.shadowCentreOffset = glm::dvec3(0.25 * reach * i, 0.0, 0.0);
     const RenderedFrame frame = spread.renderFrame(0, request);
-    EXPECT_EQ(frame.stats.shadowSlices, 2) << "frame " << i << ": half the map, so a build lands every second frame";
+    EXPECT_EQ(frame.stats.shadowSlices, 2)
+        << "frame " << i << ": half the map, so a build lands every second frame";
     EXPECT_LT(frame.stats.shadowCasters, first.stats.shadowCasters) << "frame " << i;
     slices += frame.stats.shadowSlices;
   }

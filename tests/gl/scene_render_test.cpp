@@ -78,7 +78,10 @@ TEST_F(SceneRenderTest, StarsShowOnTheNightSkyAndNotByDay) {
     int count = 0;
     for (int y = 1; y + 1 < image.height; ++y)
       for (int x = 1; x + 1 < image.width; ++x) {
-        const auto grey = [&](int px, int py) { const std::uint8_t* p = image.pixel(px, py); return (p[0] + p[1] + p[2]) / 3; };
+        const auto grey = [&](int px, int py) {
+          const std::uint8_t* p = image.pixel(px, py);
+          return (p[0] + p[1] + p[2]) / 3;
+        };
         const int around = (grey(x - 1, y) + grey(x + 1, y) + grey(x, y - 1) + grey(x, y + 1)) / 4;
         if (grey(x, y) > around + 60) ++count;
       }
