@@ -113,13 +113,26 @@ TEST_F(LeaveOutTest, MapsNoPackHasAreNotSampledAndChangeNoPixel) {
   context_->checkErrors("absent maps");
 }
 
+// shadow_noon with its map rebuilt over four frames and kept between frames, after its first frame
+// (nothing kept yet: drawn whole).
+struct SpreadShadows {
+  SceneFile scene = [] {
+    SceneFile s = loadScene(kScenes / "shadow_noon.json");
+    s.shadow.updateFrames = 4;
+    return s;
+  }();
+  SceneRenderer spread{scene};
+  FrameRequest request = [] {
+    FrameRequest r;
+    r.reuseShadowMap = true;
+    return r;
+  }();
+  RenderedFrame first = spread.renderFrame(0, request);
+};
+
 TEST_F(LeaveOutTest, ASpreadShadowUpdateEndsWithTheMapAWholeUpdateDraws) {
-  SceneFile scene = loadScene(kScenes / "shadow_noon.json");
-  scene.shadow.updateFrames = 4;
-  SceneRenderer spread(scene);
-  FrameRequest request;
-  request.reuseShadowMap = true;
-  const RenderedFrame first = spread.renderFrame(0, request);  // nothing kept yet: drawn whole
+  SpreadShadows run;
+  auto& [scene, spread, request, first] = run;
   const int whole = first.stats.shadowCasters;
   // Moved past the re-centring distance, well inside a quarter of the map: rebuilt over 4 frames.
   request.shadowCentreOffset = glm::dvec3(12.0, 0.0, 0.0) * static_cast<double>(first.geometry.shadowTexelWorld);
@@ -146,12 +159,8 @@ TEST_F(LeaveOutTest, ASpreadShadowUpdateEndsWithTheMapAWholeUpdateDraws) {
 // outrun a slice a frame: the kept map would run out mid-build and be redrawn whole, every fourth frame.
 // Instead each build is spread over the frames its pace leaves, and no frame draws the whole map.
 TEST_F(LeaveOutTest, AFastCameraGetsMoreSlicesAFrameNotAWholeRedraw) {
-  SceneFile scene = loadScene(kScenes / "shadow_noon.json");
-  scene.shadow.updateFrames = 4;
-  SceneRenderer spread(scene);
-  FrameRequest request;
-  request.reuseShadowMap = true;
-  const RenderedFrame first = spread.renderFrame(0, request);
+  SpreadShadows run;
+  auto& [scene, spread, request, first] = run;
   ASSERT_EQ(first.stats.shadowSlices, 4) << "nothing kept yet: drawn whole";
   const double reach = 0.25 * scene.shadow.distance;  // how far a kept map's centre may fall behind
   int slices = 0;
