@@ -103,6 +103,10 @@ struct FrameStats {
 
 class DeferredRenderer {
  public:
+  // How far, as a fraction of the shadow distance, a kept map's centre may fall behind the camera's
+  // before it is redrawn whole; spread rebuilds are paced to land within it.
+  static constexpr double kKeptShadowReach = 0.25;
+
   DeferredRenderer(const ShaderPreprocessor& shaders, const Atlas& atlas, const BiomeTints& tints,
                    const RendererOptions& options = {});
 

@@ -54,7 +54,7 @@ bool DeferredRenderer::shadowPass(const View& view, const SectionMeshes& meshes,
                          serves(view.cone.widened(0.5f * kMarginDegrees, 0.5f * kPullBack));
   const int slices = mayReuse ? std::max(settings.updateFrames, 1) : 1;
   // A kept map must still cover the camera well; a jump (a teleport) redraws it whole at once.
-  const double reach = 0.25 * settings.distance;
+  const double reach = kKeptShadowReach * settings.distance;
   const double used = glm::length(centre - shadowKey_.centre);
   const bool near = shadowKey_.valid && used < reach && serves(view.cone);
   if (mayReuse && unchanged && !build_) {

@@ -162,7 +162,7 @@ TEST_F(LeaveOutTest, AFastCameraGetsMoreSlicesAFrameNotAWholeRedraw) {
   SpreadShadows run;
   auto& [scene, spread, request, first] = run;
   ASSERT_EQ(first.stats.shadowSlices, 4) << "nothing kept yet: drawn whole";
-  const double reach = 0.25 * scene.shadow.distance;  // how far a kept map's centre may fall behind
+  const double reach = DeferredRenderer::kKeptShadowReach * scene.shadow.distance;
   int slices = 0;
   for (int i = 1; i <= 8; ++i) {
     request.shadowCentreOffset = glm::dvec3(0.25 * reach * i, 0.0, 0.0);
