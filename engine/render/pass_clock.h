@@ -27,7 +27,7 @@ class PassClock {
   PassClock& operator=(const PassClock&) = delete;
 
   // Ends the pass running since the last lap (or construction).
-  void lap(const char* pass) {
+  void lap(const std::string& pass) {
     if (!timings_) return;
     if (gpuTimer_) {
       glEndQuery(GL_TIME_ELAPSED);
@@ -67,7 +67,7 @@ class PassClock {
   bool gpuTimer_;
   std::chrono::steady_clock::time_point start_;
   gl::Query current_;
-  std::vector<std::pair<const char*, gl::Query>> queries_;
+  std::vector<std::pair<std::string, gl::Query>> queries_;
 };
 
 // True on llvmpipe, softpipe and SwiftShader, whose timer queries measure nothing useful.

@@ -14,15 +14,6 @@ namespace terrasol {
 // sun and the camera's surroundings).
 constexpr float kCasterReach = 256.0f;
 
-int shadowLayers(const ShadowSettings& settings) {
-  return settings.mode == ShadowMode::Cascaded ? std::clamp(settings.cascades, 2, kMaxShadowCascades) : 1;
-}
-
-float cascadeDistance(const ShadowSettings& settings, int layer) {
-  const int layers = shadowLayers(settings);
-  return settings.distance / static_cast<float>(1 << (layers - 1 - layer));
-}
-
 ShadowView shadowViewFor(int resolution, float mapDistance, glm::vec3 toLight, glm::dvec3 camera, glm::dvec3 centre) {
   const glm::dvec3 z = glm::normalize(glm::dvec3(toLight));
   const glm::dvec3 hint = std::abs(z.y) < 0.99 ? glm::dvec3(0.0, 1.0, 0.0) : glm::dvec3(0.0, 0.0, 1.0);

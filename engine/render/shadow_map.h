@@ -14,32 +14,10 @@
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
+#include "core/render_settings.h"
 #include "render/gl/object.h"
 
 namespace terrasol {
-
-enum class ShadowMode { Warped, Cascaded };
-enum class ShadowWarp { None, Square, Radial };
-inline constexpr int kMaxShadowCascades = 4;
-enum class PcfPattern { Grid, Disk, Tent };
-
-struct ShadowSettings {
-  bool enabled = true;
-  ShadowMode mode = ShadowMode::Warped;
-  int cascades = 4;             // cascaded mode: 2..kMaxShadowCascades
-  int resolution = 2048;        // texels per side (of each cascade)
-  float distance = 128.0f;      // blocks from the camera to the map's edge
-  ShadowWarp warp = ShadowWarp::Radial;
-  float warpStrength = 0.85f;   // [0, 1): 0 = no warp
-  int pcfSamples = 1;           // N: (2N + 1)^2 grid taps; above 0 the disk or tent pattern; 0 = one tap
-  float pcfRadius = 1.0f;       // texels of the shadow map, or blocks with pcfRadiusInBlocks
-  bool pcfRadiusInBlocks = false;
-  PcfPattern pcfPattern = PcfPattern::Tent;
-  float shiftAhead = 0.0f;      // warped mode: the map's centre moves this fraction of `distance` ahead
-                                // of the camera (horizontally), as Luanti does: more map where one looks
-  int updateFrames = 1;         // with FrameInputs::reuseShadowMap: a changed map is redrawn over this
-                                // many frames into a second map (1..16; Luanti's shadow_update_frames)
-};
 
 // The light's orthographic view of the camera's surroundings.
 struct ShadowView {
@@ -52,10 +30,6 @@ struct ShadowView {
 // A map of `distance` blocks around `centre` (the camera; moved only to measure flicker), for positions
 // relative to `camera`. `toLight` must be unit length (DayState::toShadowLight).
 ShadowView shadowViewFor(int resolution, float distance, glm::vec3 toLight, glm::dvec3 camera, glm::dvec3 centre);
-
-// The layers the settings ask for: one (warped), or the cascades, smallest first (distance / 2^k).
-int shadowLayers(const ShadowSettings& settings);
-float cascadeDistance(const ShadowSettings& settings, int layer);
 
 class ShadowMap {
  public:

@@ -170,7 +170,7 @@ namespace {
 void parseRender(const json& render, SceneFile& scene) {
   checkObject(render, "render",
               {"width", "height", "view_distance", "debug_view", "specular", "material_ao", "cave_culling",
-               "shadow_caster_culling", "cull_faces_away", "leave_out_absent_maps", "shadow"});
+               "shadow_caster_culling", "cull_faces_away", "leave_out_absent_maps", "cull_passes", "shadow"});
   if (const json* v = field(render, "width")) {
     scene.width = static_cast<int>(wholeNumber(*v, "render.width", 1, 8192));
   }
@@ -190,6 +190,7 @@ void parseRender(const json& render, SceneFile& scene) {
     scene.shadowCasterCulling = boolean(*v, "render.shadow_caster_culling");
   }
   if (const json* v = field(render, "cull_faces_away")) scene.cullFacesAway = boolean(*v, "render.cull_faces_away");
+  if (const json* v = field(render, "cull_passes")) scene.cullPasses = boolean(*v, "render.cull_passes");
   if (const json* v = field(render, "leave_out_absent_maps")) {
     scene.leaveOutAbsentMaps = boolean(*v, "render.leave_out_absent_maps");
   }

@@ -91,6 +91,7 @@ struct SceneFile {
   bool shadowCasterCulling = true;  // "render.shadow_caster_culling": no caster shading nothing in view
   bool leaveOutAbsentMaps = true;  // "render.leave_out_absent_maps": no _n/_s sampling when no pack has them
   bool cullFacesAway = true;       // "render.cull_faces_away": face groups turned away are not drawn
+  bool cullPasses = true;          // "render.cull_passes": no pass whose output nothing reads, or with nothing to draw
   SceneShadow shadow;              // "render.shadow"
   glm::dvec3 cameraPosition{0.0, 80.0, 0.0};
   glm::dvec3 cameraLookAt{0.0, 80.0, -1.0};

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <filesystem>
 
+#include "render/shadow_schedule.h"
 #include "scene_render.h"
 #include "support/gl_test.h"
 #include "support/shader_variants.h"
@@ -49,6 +50,40 @@ TEST_F(LeaveOutTest, CaveCullingHidesSectionsAndCastersButNoPixel) {
     }
   }
   context_->checkErrors("cave culling");
+}
+
+std::string skipReason(const RenderedFrame& frame, const std::string& pass) {
+  for (const FrameStats::Skipped& s : frame.stats.passesSkipped) {
+    if (s.pass == pass) return s.why;
+  }
+  return "(ran)";
+}
+
+// The frame graph leaves out every pass whose output no pass that runs reads: a debug view replaces
+// the final image, so the lit scene, the translucent pass and the shadow map are not needed.
+TEST_F(LeaveOutTest, PassesADebugViewDoesNotReadAreCulledAndChangeNoPixel) {
+  SceneFile scene = loadScene(kScenes / "water_glass.json");  // shadows and water in view
+  scene.debugView = "normal";
+  const auto [culled, all] = render(scene, &SceneFile::cullPasses);
+  EXPECT_EQ(skipReason(culled, "final"), "debug_view replaces its target");
+  EXPECT_EQ(skipReason(culled, "lighting"), "no pass that runs reads its scene");
+  EXPECT_EQ(skipReason(culled, "translucent"), "no pass that runs reads its scene");
+  EXPECT_EQ(skipReason(culled, "shadow"), "no pass that runs reads its shadow_map");
+  EXPECT_EQ(culled.stats.shadowCasters, 0);
+  for (const char* pass : {"shadow", "lighting", "translucent", "final"}) {
+    EXPECT_EQ(skipReason(all, pass), "(ran)") << pass << " without the rule";
+  }
+  EXPECT_TRUE(identical(culled.image, all.image)) << "leaving the unread passes out changed the debug view";
+  context_->checkErrors("debug view culling");
+}
+
+TEST_F(LeaveOutTest, TheTranslucentPassIsLeftOutWithNothingTranslucentInViewAndChangesNoPixel) {
+  const auto [culled, all] = render(loadScene(kScenes / "stone_closeup.json"), &SceneFile::cullPasses);
+  EXPECT_EQ(skipReason(culled, "translucent"), "no translucent geometry in view");
+  EXPECT_EQ(skipReason(all, "translucent"), "(ran)");
+  EXPECT_EQ(all.stats.quadsDrawn, culled.stats.quadsDrawn) << "it had nothing to draw";
+  EXPECT_TRUE(identical(culled.image, all.image));
+  context_->checkErrors("translucent culling");
 }
 
 // Casters behind the camera, or off to its sides, shade nothing it sees.
@@ -162,7 +197,7 @@ TEST_F(LeaveOutTest, AFastCameraGetsMoreSlicesAFrameNotAWholeRedraw) {
   SpreadShadows run;
   auto& [scene, spread, request, first] = run;
   ASSERT_EQ(first.stats.shadowSlices, 4) << "nothing kept yet: drawn whole";
-  const double reach = DeferredRenderer::kKeptShadowReach * scene.shadow.distance;
+  const double reach = ShadowSchedule::kKeptReach * scene.shadow.distance;
   int slices = 0;
   for (int i = 1; i <= 8; ++i) {
     request.shadowCentreOffset = glm::dvec3(0.25 * reach * i, 0.0, 0.0);

@@ -5,12 +5,6 @@
 
 namespace terrasol::testing {
 
-std::filesystem::path testOutputDir() {
-  const std::filesystem::path dir = TERRASOL_TEST_OUTPUT_DIR;
-  std::filesystem::create_directories(dir);
-  return dir;
-}
-
 ::testing::AssertionResult matchesGolden(const Image& actual, const std::string& name,
                                          const ImageTolerance& tolerance) {
   const std::filesystem::path golden = std::filesystem::path(TERRASOL_GOLDEN_DIR) / (name + ".png");

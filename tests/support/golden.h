@@ -8,13 +8,11 @@
 #include <string>
 
 #include "assets/image.h"
+#include "support/world_support.h"
 
 namespace terrasol::testing {
 
 ::testing::AssertionResult matchesGolden(const Image& actual, const std::string& name,
                                          const ImageTolerance& tolerance = {});
-
-// build/test-output, created on demand.
-std::filesystem::path testOutputDir();
 
 }  // namespace terrasol::testing

@@ -1,9 +1,14 @@
 #include "support/world_support.h"
 
 #include "core/paths.h"
-#include "support/golden.h"
 
 namespace terrasol::testing {
+
+std::filesystem::path testOutputDir() {
+  const std::filesystem::path dir = TERRASOL_TEST_OUTPUT_DIR;
+  std::filesystem::create_directories(dir);
+  return dir;
+}
 
 const BlockRegistry& defaultBlocks() {
   static const BlockRegistry blocks = BlockRegistry::fromFile(resourcePackDir() / "default" / "blocks.json");

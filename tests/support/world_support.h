@@ -9,6 +9,8 @@
 
 namespace terrasol::testing {
 
+// build/test-output, created on demand.
+std::filesystem::path testOutputDir();
 // resourcepacks/default/blocks.json, loaded once per process.
 const BlockRegistry& defaultBlocks();
 // build/test-output/<name>, emptied.

@@ -1,10 +1,8 @@
+#include "render/prop_draw.h"
+
 #include <algorithm>
 
-#include "render/deferred_renderer.h"
 #include <glm/gtc/type_ptr.hpp>
-
-// The deferred renderer's props: culled by their world box, drawn mesh by mesh with their material's
-// uniforms and textures (engine/render/props.h), in the G-buffer, translucent and shadow passes.
 
 namespace terrasol {
 
@@ -31,7 +29,7 @@ struct PropUniforms {
 
 }  // namespace
 
-std::vector<int> DeferredRenderer::propsInside(const FrustumPlanes& planes, glm::dvec3 camera, const Props& props) {
+std::vector<int> propsInside(const FrustumPlanes& planes, glm::dvec3 camera, const Props& props) {
   std::vector<int> inside;
   const auto& instances = props.instances();
   for (std::size_t i = 0; i < instances.size(); ++i) {
@@ -41,10 +39,9 @@ std::vector<int> DeferredRenderer::propsInside(const FrustumPlanes& planes, glm:
   return inside;
 }
 
-bool DeferredRenderer::visibleBlendedProps() const {
-  if (!props_ || !propTranslucent_.id()) return false;
-  for (const int i : visibleProps_) {
-    const Props::GpuModel& model = props_->models()[static_cast<std::size_t>(props_->instances()[static_cast<std::size_t>(i)].model)];
+bool anyBlended(const Props& props, const std::vector<int>& instances) {
+  for (const int i : instances) {
+    const Props::GpuModel& model = props.models()[static_cast<std::size_t>(props.instances()[static_cast<std::size_t>(i)].model)];
     for (const Props::Mesh& mesh : model.meshes) {
       if (model.materials[static_cast<std::size_t>(mesh.material)].params.alphaMode == AlphaMode::Blend) return true;
     }
@@ -52,8 +49,8 @@ bool DeferredRenderer::visibleBlendedProps() const {
   return false;
 }
 
-void DeferredRenderer::drawProps(GLuint program, const Props& props, const std::vector<int>& instances,
-                                 glm::dvec3 camera, AlphaMode mode, bool cullBackFaces) const {
+void drawProps(GLuint program, const Props& props, const std::vector<int>& instances, glm::dvec3 camera,
+               AlphaMode mode, bool cullBackFaces) {
   std::vector<int> order = instances;
   if (mode == AlphaMode::Blend) {  // farthest first, by the centre of their box
     auto distance = [&](int i) {

@@ -1,0 +1,44 @@
+#pragma once
+// The renderer's settings as typed values: what scene files ("render"), the game's settings file and
+// terrasol-render's --set give, parsed once at their edge (engine/scene/render_settings_json.h) and
+// compared as values. Plain C++.
+
+#include <algorithm>
+
+namespace terrasol {
+
+enum class ShadowMode { Warped, Cascaded };
+enum class ShadowWarp { None, Square, Radial };
+inline constexpr int kMaxShadowCascades = 4;
+enum class PcfPattern { Grid, Disk, Tent };
+
+// "render.shadow": the shadow map (engine/render/shadow_map.h draws it).
+struct ShadowSettings {
+  bool enabled = true;
+  ShadowMode mode = ShadowMode::Warped;
+  int cascades = 4;             // cascaded mode: 2..kMaxShadowCascades
+  int resolution = 2048;        // texels per side (of each cascade), 16..16384
+  float distance = 128.0f;      // blocks from the camera to the map's edge, 1..4096
+  ShadowWarp warp = ShadowWarp::Radial;
+  float warpStrength = 0.85f;   // [0, 1): 0 = no warp
+  int pcfSamples = 1;           // N: (2N + 1)^2 grid taps; above 0 the disk or tent pattern; 0 = one tap
+  float pcfRadius = 1.0f;       // texels of the shadow map, or blocks with pcfRadiusInBlocks (0..32)
+  bool pcfRadiusInBlocks = false;
+  PcfPattern pcfPattern = PcfPattern::Tent;
+  float shiftAhead = 0.0f;      // warped mode: the map's centre moves this fraction of `distance` ahead
+                                // of the camera (horizontally), as Luanti does: more map where one looks
+  int updateFrames = 1;         // with FrameInputs::reuseShadowMap: a changed map is redrawn over this
+                                // many frames into a second map (1..16; Luanti's shadow_update_frames)
+
+  bool operator==(const ShadowSettings&) const = default;
+};
+
+// The layers the settings ask for: one (warped), or the cascades, smallest first (distance / 2^k).
+inline int shadowLayers(const ShadowSettings& settings) {
+  return settings.mode == ShadowMode::Cascaded ? std::clamp(settings.cascades, 2, kMaxShadowCascades) : 1;
+}
+inline float cascadeDistance(const ShadowSettings& settings, int layer) {
+  return settings.distance / static_cast<float>(1 << (shadowLayers(settings) - 1 - layer));
+}
+
+}  // namespace terrasol

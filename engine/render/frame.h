@@ -1,0 +1,78 @@
+#pragma once
+// One frame as the renderer's passes share it: the view, what is visible, the targets, the shadow
+// lookup and the stats the passes add to. Built by DeferredRenderer::render; internal to engine/render.
+
+#include <array>
+#include <vector>
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include "core/day_cycle.h"
+#include "core/lightmap.h"
+#include "render/frame_inputs.h"
+#include "render/gbuffer.h"
+#include "render/section_meshes.h"
+#include "render/shadow_map.h"
+#include "render/shadow_receivers.h"
+#include "render/frame_graph.h"
+#include "render/frustum.h"
+
+namespace terrasol {
+
+// A section with a mesh inside a frustum.
+struct VisibleSection {
+  const SectionMeshes::Section* section;
+  glm::vec3 offset;  // section corner minus camera
+  SectionPos pos;
+};
+
+struct FrameView {
+  glm::dvec3 camera{0.0};
+  glm::mat4 viewProjection{1.0f};  // camera-relative
+  glm::mat4 inverseViewProjection{1.0f};
+  FrustumPlanes frustum{};  // camera-relative
+  glm::vec2 nearFar{0.0f};
+  glm::vec2 fogRange{0.0f};
+  DayState day;
+  LightmapColours lightmap;
+  bool materialAo = true;
+  bool shadowLive = false;  // shadows are on and a light is above the horizon
+  glm::dvec3 shadowCentreOffset{0.0};
+  glm::dvec3 forward{0.0, 0.0, -1.0};  // unit view direction
+  ViewCone cone;                       // the view's receivers, for the shadow pass
+};
+
+// What the lighting and translucent passes read of the shadow map (the shadow pass's).
+struct ShadowLookup {
+  const ShadowSettings* settings = nullptr;
+  const ShadowMap* map = nullptr;
+  const std::array<ShadowView, kMaxShadowCascades>* views = nullptr;  // this frame's, one per layer
+};
+
+// The frame graph's names for the frame's resources.
+struct FrameResources {
+  FrameGraph::Resource gbuffer, scene, shadowMap, target;
+};
+
+struct Frame {
+  Frame(const FrameInputs& inputs, const SectionMeshes& meshes, FrameStats& stats)
+      : inputs(inputs), meshes(meshes), stats(stats) {}
+
+  const FrameInputs& inputs;
+  const SectionMeshes& meshes;
+  FrameStats& stats;
+  FrameView view;
+  const Props* props = nullptr;         // null: none to draw
+  std::vector<VisibleSection> visible;  // inside the frustum, not hidden by cave culling
+  std::vector<int> visibleProps;        // prop instances inside the frustum
+  FrameResources resources{};
+  GBuffer* gbuffer = nullptr;           // realized by the graph before the first pass that needs it
+  GLuint target = 0;                    // the framebuffer drawn into (0: a window)
+  glm::ivec2 size{0};
+  ShadowLookup shadow;
+  bool shadowDrawn = false;             // the shadow pass drew or kept the map this frame
+};
+
+}  // namespace terrasol

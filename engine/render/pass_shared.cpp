@@ -1,0 +1,63 @@
+#include "render/pass_shared.h"
+
+#include <algorithm>
+
+namespace terrasol {
+
+namespace {
+
+// The maps no loaded pack has: nothing to sample (block_surface.glsl) and nothing to keep for them.
+// Props always carry a material (metallic-roughness becomes a LabPBR _s texel), and may have normal maps.
+GBufferContents contentsFor(const Atlas& atlas, const RendererOptions& options) {
+  return {!options.leaveOutAbsentMaps || atlas.anyNormalMap || options.props.normalMaps,
+          !options.leaveOutAbsentMaps || atlas.anySpecularMap || options.props.any};
+}
+
+}  // namespace
+
+PassShared::PassShared(const Atlas& atlas, const BiomeTints& tints, const RendererOptions& options)
+    : options(options),
+      contents(contentsFor(atlas, options)),
+      textures(atlas, tints),
+      empty(gl::VertexArray::create()) {}
+
+gl::Program VariantBuilder::operator()(const char* vertex, const char* fragment, std::vector<ShaderDefine> extra) const {
+  std::string name = std::string(fragment).substr(0, std::string(fragment).find('.'));
+  for (const ShaderDefine& d : extra) {
+    name += "+";
+    name += d.name;
+    if (d.value != "1") name += "=" + d.value;
+  }
+  shared_.variants.push_back(name);
+  std::vector<ShaderDefine> defines = rendererDefines();
+  for (auto& d : extra) defines.push_back(std::move(d));
+  return buildProgram(shaders_, {{GL_VERTEX_SHADER, vertex}, {GL_FRAGMENT_SHADER, fragment}}, defines);
+}
+
+std::vector<ShaderDefine> with(std::vector<ShaderDefine> a, const std::vector<ShaderDefine>& b) {
+  a.insert(a.end(), b.begin(), b.end());
+  return a;
+}
+
+std::vector<ShaderDefine> lightingDefines(const RendererOptions& options) {
+  std::vector<ShaderDefine> defines;
+  if (options.ggxSpecular) defines.push_back({"SPECULAR_GGX", "1"});
+  if (options.shadow.enabled) {
+    // The filter is fixed per renderer, so each shader holds only its own taps: a software rasterizer
+    // runs every branch that any pixel of a block takes, and a loop over a uniform count costs more.
+    // Neither define: one tap.
+    defines.push_back({"SHADOWS", "1"});
+    if (const int n = std::clamp(options.shadow.pcfSamples, 0, 8); n > 0) {
+      if (options.shadow.pcfPattern == PcfPattern::Disk) {
+        defines.push_back({"PCF_DISK", "1"});
+      } else if (options.shadow.pcfPattern == PcfPattern::Tent) {
+        defines.push_back({"PCF_TENT", "1"});
+      } else {
+        defines.push_back({"PCF_GRID_SIDE", std::to_string(2 * n + 1)});
+      }
+    }
+  }
+  return defines;
+}
+
+}  // namespace terrasol

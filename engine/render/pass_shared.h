@@ -1,0 +1,44 @@
+#pragma once
+// What the renderer's passes share for the renderer's life: its options, the G-buffer's contents,
+// the block textures, an empty vertex array, and the names of the shader variants built.
+
+#include <string>
+#include <vector>
+
+#include "assets/shader_source.h"
+#include "render/block_textures.h"
+#include "render/frame_inputs.h"
+#include "render/gbuffer.h"
+#include "render/gl/program.h"
+#include "render/shader_defines.h"
+
+namespace terrasol {
+
+struct PassShared {
+  PassShared(const Atlas& atlas, const BiomeTints& tints, const RendererOptions& options);
+
+  RendererOptions options;
+  GBufferContents contents;   // the programs are built for it
+  BlockTextures textures;
+  gl::VertexArray empty;      // full-screen passes make their vertices from gl_VertexID
+  std::vector<std::string> variants;  // each program's name with the defines that chose it
+};
+
+// Builds programs and names each variant in `names`: the fragment stage and its defines ("gbuffer+CUTOUT").
+class VariantBuilder {
+ public:
+  VariantBuilder(const ShaderPreprocessor& shaders, PassShared& shared) : shaders_(shaders), shared_(shared) {}
+  gl::Program operator()(const char* vertex, const char* fragment, std::vector<ShaderDefine> extra = {}) const;
+  const RendererOptions& options() const { return shared_.options; }
+  const GBufferContents& contents() const { return shared_.contents; }
+
+ private:
+  const ShaderPreprocessor& shaders_;
+  PassShared& shared_;
+};
+
+std::vector<ShaderDefine> with(std::vector<ShaderDefine> a, const std::vector<ShaderDefine>& b);
+// The lit passes' variant: the specular lobe and the shadow filter.
+std::vector<ShaderDefine> lightingDefines(const RendererOptions& options);
+
+}  // namespace terrasol

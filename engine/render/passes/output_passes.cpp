@@ -1,0 +1,89 @@
+#include "render/passes/output_passes.h"
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include "render/gl/uniforms.h"
+
+namespace terrasol {
+
+namespace {
+
+// Scales the scene's radiance (noon sun ~3, full sky light 1) into the tone curve's range, so a
+// sunlit surface shows about its texture colour, as in vanilla.
+constexpr float kExposure = 0.3f;
+
+void drawFullScreen(GLuint program, const PassShared& shared, GLenum mode, GLsizei vertices) {
+  glUseProgram(program);
+  glBindVertexArray(shared.empty.id());
+  glDrawArrays(mode, 0, vertices);
+  glBindVertexArray(0);
+  glUseProgram(0);
+}
+
+void bindTarget(const Frame& frame) {
+  glBindFramebuffer(GL_FRAMEBUFFER, frame.target);
+  glViewport(0, 0, frame.size.x, frame.size.y);
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_CULL_FACE);
+}
+
+}  // namespace
+
+FinalPass::FinalPass(const VariantBuilder& build, PassShared& shared)
+    : shared_(shared), final_(build("fullscreen.vert", "final.frag")) {}
+
+void FinalPass::setup(FrameGraph::Builder& builder, Frame& frame) {
+  builder.read(frame.resources.scene);
+  builder.write(frame.resources.target);
+}
+
+void FinalPass::execute(Frame& frame) {
+  bindTarget(frame);
+  glBindTextureUnit(0, frame.gbuffer->scene());
+  glProgramUniform1f(final_.id(), glGetUniformLocation(final_.id(), "u_exposure"), kExposure);
+  drawFullScreen(final_.id(), shared_, GL_TRIANGLES, 3);
+}
+
+DebugViewPass::DebugViewPass(const VariantBuilder& build, PassShared& shared)
+    : shared_(shared), debug_(build("fullscreen.vert", "debug_view.frag", shared.contents.defines())) {}
+
+void DebugViewPass::setup(FrameGraph::Builder& builder, Frame& frame) {
+  if (frame.inputs.debugView == DebugView::None) return builder.skip("no debug view is chosen");
+  builder.read(frame.resources.gbuffer);
+  builder.write(frame.resources.target);
+}
+
+void DebugViewPass::execute(Frame& frame) {
+  const GLuint program = debug_.id();
+  glProgramUniform1i(program, glGetUniformLocation(program, "u_view"), static_cast<int>(frame.inputs.debugView));
+  bindTarget(frame);
+  frame.gbuffer->bindForReading();
+  glProgramUniform2fv(program, glGetUniformLocation(program, "u_nearFar"), 1, glm::value_ptr(frame.view.nearFar));
+  drawFullScreen(program, shared_, GL_TRIANGLES, 3);
+}
+
+OutlinePass::OutlinePass(const VariantBuilder& build, PassShared& shared)
+    : shared_(shared), outline_(build("outline.vert", "outline.frag")) {}
+
+void OutlinePass::setup(FrameGraph::Builder& builder, Frame& frame) {
+  if (!frame.inputs.outline) return builder.skip("no block is targeted");
+  builder.read(frame.resources.gbuffer);  // its depth
+  builder.read(frame.resources.target);
+  builder.write(frame.resources.target);
+}
+
+void OutlinePass::execute(Frame& frame) {
+  constexpr double kGrow = 0.002;  // Minecraft's: keeps the edges off the block's faces
+  const WorldBox& box = *frame.inputs.outline;
+  bindTarget(frame);
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+  glBindTextureUnit(0, frame.gbuffer->depth());
+  gl::setVec3(outline_.id(), "u_min", glm::vec3(box.min - kGrow - frame.view.camera));
+  gl::setVec3(outline_.id(), "u_max", glm::vec3(box.max + kGrow - frame.view.camera));
+  gl::setMat4(outline_.id(), "u_viewProjection", frame.view.viewProjection);
+  drawFullScreen(outline_.id(), shared_, GL_LINES, 24);
+  glDisable(GL_BLEND);
+}
+
+}  // namespace terrasol

@@ -1,0 +1,47 @@
+#pragma once
+// The light's view, a layer per cascade, into the shadow map the lit passes read. Casters are the
+// sections inside a layer's box, less those no ray of the light reaches (cave_culling.h) and those
+// whose shadow falls on nothing in view (shadow_receivers.h); opaque, then alpha-tested, then
+// translucent casters into their own depth and colour. When the map is drawn, kept or rebuilt a slice
+// a frame is ShadowSchedule's decision; a spread rebuild draws into a second map, swapped in when
+// complete.
+
+#include <array>
+#include <optional>
+
+#include "render/cave_culling.h"
+#include "render/pass_shared.h"
+#include "render/render_pass.h"
+#include "render/shadow_map.h"
+#include "render/shadow_schedule.h"
+
+namespace terrasol {
+
+class ShadowPass final : public RenderPass {
+ public:
+  ShadowPass(const VariantBuilder& build, PassShared& shared);
+
+  const char* name() const override { return "shadow"; }
+  void setup(FrameGraph::Builder& builder, Frame& frame) override;
+  void execute(Frame& frame) override;
+
+  // The map and this frame's views of it, for the lit passes.
+  ShadowLookup lookup() const { return {&shared_.options.shadow, &map_, &views_}; }
+
+ private:
+  void rebase(const Frame& frame);  // the shown map's matrices for this frame's (camera-relative) view
+  std::optional<SectionSet> litSections(const ShadowKey& key, const SectionMeshes& meshes) const;
+  void drawCasters(ShadowMap& map, const ShadowKey& key, const std::optional<SectionSet>& lit, Frame& frame,
+                   ShadowSlices slices);
+
+  PassShared& shared_;
+  gl::Program opaque_, cutout_, translucent_;
+  gl::Program propOpaque_, propCutout_, propTranslucent_;  // each only when a placed prop needs it
+  ShadowSchedule schedule_;
+  ShadowPlan plan_;  // this frame's, from setup
+  ShadowMap map_, building_;
+  std::optional<SectionSet> buildLit_;  // a spread rebuild's lit sections, walked once at its first slice
+  std::array<ShadowView, kMaxShadowCascades> views_{};
+};
+
+}  // namespace terrasol

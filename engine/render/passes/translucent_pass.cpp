@@ -1,0 +1,55 @@
+#include "render/passes/translucent_pass.h"
+
+#include "render/frame_uniforms.h"
+#include "render/gl/uniforms.h"
+#include "render/prop_draw.h"
+#include "render/section_draw.h"
+
+namespace terrasol {
+
+TranslucentPass::TranslucentPass(const VariantBuilder& build, PassShared& shared)
+    : shared_(shared),
+      blocks_(build("gbuffer.vert", "translucent.frag", with(lightingDefines(shared.options), shared.contents.defines()))) {
+  if (!shared.options.props.blend) return;
+  props_ = build("prop.vert", "prop_translucent.frag", with(lightingDefines(shared.options), shared.contents.defines()));
+}
+
+void TranslucentPass::setup(FrameGraph::Builder& builder, Frame& frame) {
+  const bool props = frame.props && props_.id() && anyBlended(*frame.props, frame.visibleProps);
+  if (shared_.options.cullPasses && quadsIn(frame.visible, MeshLayer::Translucent) == 0 && !props) {
+    return builder.skip("no translucent geometry in view");
+  }
+  builder.read(frame.resources.gbuffer);  // its depth
+  if (shared_.options.shadow.enabled) builder.read(frame.resources.shadowMap);
+  builder.read(frame.resources.scene);
+  builder.write(frame.resources.scene);
+}
+
+void TranslucentPass::execute(Frame& frame) {
+  const FrameView& view = frame.view;
+  setLightingUniforms(blocks_.id(), view, frame.shadow);
+  setSkyUniforms(blocks_.id(), view);
+  glBindFramebuffer(GL_FRAMEBUFFER, frame.gbuffer->translucentFramebuffer());
+  glViewport(0, 0, frame.gbuffer->size().x, frame.gbuffer->size().y);
+  glEnable(GL_DEPTH_TEST);
+  glDepthMask(GL_FALSE);  // tested against the opaque scene, never hiding each other
+  glEnable(GL_CULL_FACE);
+  glEnable(GL_BLEND);
+  // Premultiplied colour; alpha keeps the lighting pass's shadow term of the surface behind.
+  glBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
+  gl::setMat4(blocks_.id(), "u_viewProjection", view.viewProjection);
+  drawSections(blocks_.id(), shared_.textures, frame.visible, frame.meshes, MeshLayer::Translucent,
+               {DrawOrder::FarthestFirst, glm::vec3(0.0f), false, &frame.stats});
+  if (frame.props && props_.id()) {
+    const GLuint program = props_.id();
+    setLightingUniforms(program, view, frame.shadow);
+    setSkyUniforms(program, view);
+    gl::setMat4(program, "u_viewProjection", view.viewProjection);
+    drawProps(program, *frame.props, frame.visibleProps, view.camera, AlphaMode::Blend, true);
+  }
+  glDisable(GL_BLEND);
+  glDepthMask(GL_TRUE);
+  glDisable(GL_DEPTH_TEST);
+}
+
+}  // namespace terrasol

@@ -1,0 +1,22 @@
+#pragma once
+// Props in the renderer's passes: culled by their world box, drawn mesh by mesh with their material's
+// uniforms and textures (render/props.h), in the G-buffer, translucent and shadow passes.
+
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "render/frustum.h"
+#include "render/props.h"
+
+namespace terrasol {
+
+// The instances whose box is inside `planes` (relative to `camera`).
+std::vector<int> propsInside(const FrustumPlanes& planes, glm::dvec3 camera, const Props& props);
+// Whether a mesh of `instances` has a blended material (the translucent pass draws those).
+bool anyBlended(const Props& props, const std::vector<int>& instances);
+// The meshes of `instances` whose material has alpha mode `mode` (blended ones farthest first).
+void drawProps(GLuint program, const Props& props, const std::vector<int>& instances, glm::dvec3 camera,
+               AlphaMode mode, bool cullBackFaces);
+
+}  // namespace terrasol
