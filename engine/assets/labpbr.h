@@ -1,5 +1,5 @@
 #pragma once
-// LabPBR 1.3 decoding, exactly as ../shared/LABPBR.md gives it. The shaders implement the same rules;
+// LabPBR 1.3 decoding, exactly as the format gives it (docs/packs.md). The shaders implement the same rules;
 // these functions are the reference the tests check, and what the atlas builder uses for mipmaps.
 
 #include <cstdint>

@@ -42,6 +42,18 @@ fs::path dataRoot() {
   return root;
 }
 
+std::optional<fs::path> testDataDir(std::string* why) {
+  const char* env = std::getenv("TERRASOL_TESTDATA");
+  const fs::path dir = env && *env ? fs::path(env) : dataRoot().parent_path() / "shared" / "testdata";
+  std::error_code error;
+  if (fs::is_directory(dir, error)) return dir;
+  if (why) {
+    *why = env && *env ? "TERRASOL_TESTDATA (" + dir.string() + ") is not a directory"
+                       : "no third-party test data: " + dir.string() + " is absent and TERRASOL_TESTDATA is not set";
+  }
+  return std::nullopt;
+}
+
 fs::path shaderDir() { return dataRoot() / "shaders"; }
 fs::path resourcePackDir() { return dataRoot() / "resourcepacks"; }
 

@@ -2,6 +2,8 @@
 // Where Terrasol's data lives, independent of the working directory.
 
 #include <filesystem>
+#include <optional>
+#include <string>
 
 namespace terrasol {
 
@@ -12,6 +14,11 @@ std::filesystem::path dataRoot();
 
 std::filesystem::path shaderDir();        // dataRoot()/shaders
 std::filesystem::path resourcePackDir();  // dataRoot()/resourcepacks
+
+// Real third-party inputs for tests and benchmarks (packs, glTF samples), which the repository does
+// not hold: $TERRASOL_TESTDATA when set, else `shared/testdata` beside the data root when it exists.
+// `why` (when given) says what was looked for when there is none.
+std::optional<std::filesystem::path> testDataDir(std::string* why = nullptr);
 
 // Directory of the running executable (via /proc/self/exe).
 std::filesystem::path executableDir();

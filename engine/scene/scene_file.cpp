@@ -79,17 +79,31 @@ void parseWorld(const json& world, SceneFile& scene) {
   if (const json* v = field(world, "edits")) scene.edits = parseEdits(*v, "world.edits");
 }
 
-path resolvePack(const std::string& name, const path& sceneDir) {
+// A file a scene names: absolute, relative to the scene file, or under the third-party test data
+// folder with the prefix "$TERRASOL_TESTDATA/" (core/paths.h testDataDir); an error naming `key`
+// when that folder is absent.
+path resolvePath(const std::string& name, const path& sceneDir, const std::string& key) {
+  constexpr std::string_view kTestData = "$TERRASOL_TESTDATA/";
+  if (name.starts_with(kTestData)) {
+    std::string why;
+    const auto dir = testDataDir(&why);
+    if (!dir) fail(key, why);
+    return (*dir / name.substr(kTestData.size())).lexically_normal();
+  }
+  const path file(name);
+  return file.is_absolute() ? file : (sceneDir / file).lexically_normal();
+}
+
+path resolvePack(const std::string& name, const path& sceneDir, const std::string& key) {
   if (name == "default") return resourcePackDir() / "default";
-  const path pack(name);
-  return pack.is_absolute() ? pack : (sceneDir / pack).lexically_normal();
+  return resolvePath(name, sceneDir, key);
 }
 
 std::vector<path> parsePacks(const json& value, const path& sceneDir) {
   if (!value.is_array() || value.empty()) expected("packs", "a non-empty array of pack paths", value);
   std::vector<path> packs;
   for (std::size_t i = 0; i < value.size(); ++i) {
-    packs.push_back(resolvePack(nonEmptyString(value[i], element("packs", i)), sceneDir));
+    packs.push_back(resolvePack(nonEmptyString(value[i], element("packs", i)), sceneDir, element("packs", i)));
   }
   return packs;
 }
@@ -100,8 +114,7 @@ SceneProp parseProp(const json& value, const std::string& key, const path& scene
   if (!model) fail(key, "needs \"model\" (a .gltf or .glb file)");
   SceneProp prop;
   prop.key = key;
-  const path file = nonEmptyString(*model, member(key, "model"));
-  prop.model = file.is_absolute() || sceneDir.empty() ? file : (sceneDir / file).lexically_normal();
+  prop.model = resolvePath(nonEmptyString(*model, member(key, "model")), sceneDir, member(key, "model"));
   if (const json* v = field(value, "position")) prop.position = vec3(*v, member(key, "position"));
   if (const json* v = field(value, "rotation")) prop.rotation = glm::vec3(vec3(*v, member(key, "rotation")));
   if (const json* v = field(value, "scale")) prop.scale = numberIn(*v, member(key, "scale"), 0.0, 1000.0, true);

@@ -1,4 +1,4 @@
-// glTF models (assets/gltf_model.h): the Khronos samples in ../shared/testdata/gltf load in every form,
+// glTF models (assets/gltf_model.h): the Khronos samples of the third-party test data (support/test_data.h) load in every form,
 // missing normals and tangents are generated, and bad files end in an Error naming the file and the
 // place, never a crash.
 
@@ -12,12 +12,13 @@
 #include "assets/gltf_model.h"
 #include "core/error.h"
 #include "support/error_of.h"
+#include "support/test_data.h"
 #include "support/world_support.h"
 
 namespace terrasol {
 namespace {
 
-const std::filesystem::path kModels = std::filesystem::path(TERRASOL_SOURCE_DIR) / ".." / "shared" / "testdata" / "gltf";
+const std::filesystem::path kModels = testing::testData() / "gltf";  // the Khronos samples
 
 std::string errorOf(const std::filesystem::path& file) { return testing::errorOf([&] { loadModel(file); }); }
 
@@ -43,6 +44,7 @@ std::string errorAfter(const std::string& name, Edit&& edit) {
 }
 
 TEST(GltfModel, ParentNodesMoveTheirChildren) {
+  TERRASOL_SKIP_WITHOUT_TEST_DATA();
   // The textured box's root node turns it; a translation added to that node moves the child's mesh.
   const auto dir = copyOf("BoxTextured/glTF", "moved");
   nlohmann::json j = readJson(dir / "BoxTextured.gltf");
@@ -69,6 +71,7 @@ TEST(GltfModel, ParentNodesMoveTheirChildren) {
 }
 
 TEST(GltfModel, TheBoxLoadsWithItsMaterialAndRightAngledTangents) {
+  TERRASOL_SKIP_WITHOUT_TEST_DATA();
   const Model box = loadModel(kModels / "Box" / "glTF-Embedded" / "Box.gltf");
   ASSERT_EQ(box.meshes.size(), 1u);
   EXPECT_EQ(box.meshes[0].vertices.size(), 24u);
@@ -87,6 +90,7 @@ TEST(GltfModel, TheBoxLoadsWithItsMaterialAndRightAngledTangents) {
 }
 
 TEST(GltfModel, TheTexturedBoxIsTheSameInAllThreeForms) {
+  TERRASOL_SKIP_WITHOUT_TEST_DATA();
   const Model separate = loadModel(kModels / "BoxTextured" / "glTF" / "BoxTextured.gltf");
   const Model binary = loadModel(kModels / "BoxTextured" / "glTF-Binary" / "BoxTextured.glb");
   const Model embedded = loadModel(kModels / "BoxTextured" / "glTF-Embedded" / "BoxTextured.gltf");
@@ -108,6 +112,7 @@ TEST(GltfModel, TheTexturedBoxIsTheSameInAllThreeForms) {
 }
 
 TEST(GltfModel, TheCubeHasItsMetallicRoughnessTextureAndTangents) {
+  TERRASOL_SKIP_WITHOUT_TEST_DATA();
   const Model cube = loadModel(kModels / "Cube" / "glTF" / "Cube.gltf");
   ASSERT_FALSE(cube.meshes.empty());
   ASSERT_EQ(cube.materials.size(), 1u);
@@ -118,6 +123,7 @@ TEST(GltfModel, TheCubeHasItsMetallicRoughnessTextureAndTangents) {
 }
 
 TEST(GltfModel, MissingNormalsAreFlatAndTangentsFollowTheUvs) {
+  TERRASOL_SKIP_WITHOUT_TEST_DATA();
   const auto dir = copyOf("BoxTextured/glTF", "no_normals");
   nlohmann::json j = readJson(dir / "BoxTextured.gltf");
   j["meshes"][0]["primitives"][0]["attributes"].erase("NORMAL");
@@ -143,6 +149,7 @@ TEST(GltfModel, MissingNormalsAreFlatAndTangentsFollowTheUvs) {
 }
 
 TEST(GltfModel, BadFilesNameTheFileAndThePlace) {
+  TERRASOL_SKIP_WITHOUT_TEST_DATA();
   {  // a missing buffer file
     const auto dir = copyOf("BoxTextured/glTF", "missing_bin");
     std::filesystem::remove(dir / "BoxTextured0.bin");

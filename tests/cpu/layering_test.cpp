@@ -1,4 +1,4 @@
-// Keeps the arrows between engine folders pointing one way (../shared/STYLE.md): a folder may include
+// Keeps the arrows between folders pointing one way (docs/architecture.md): a folder may include
 // only the folders listed for it.
 
 #include <gtest/gtest.h>

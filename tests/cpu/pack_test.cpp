@@ -12,6 +12,7 @@
 #include "core/paths.h"
 #include "packgen.h"
 #include "support/pack_builder.h"
+#include "support/test_data.h"
 #include "support/world_support.h"
 
 namespace terrasol {
@@ -20,10 +21,8 @@ namespace {
 using testing::PackBuilder;
 using testing::solidImage;
 
-// ../shared/testdata sits beside the repository root on every developer machine and in CI.
-std::filesystem::path pixelPerfection() {
-  return std::filesystem::path(TERRASOL_SOURCE_DIR) / ".." / "shared" / "testdata" / "packs" / "pixel_perfection_ce";
-}
+// A real third-party pack (the test data's), where it is present.
+std::filesystem::path pixelPerfection() { return testing::testData() / "packs" / "pixel_perfection_ce"; }
 
 PackStack stackOf(std::initializer_list<std::filesystem::path> dirs) {
   PackStack stack;
@@ -174,7 +173,7 @@ TEST(Tints, ColormapsAreSampledLikeMinecraftAndDefaultsFillIn) {
   const BiomeTints none = loadTints(stackOf({pack.dir()}), problems);
   EXPECT_EQ(none.grass, kDefaultGrass);
   EXPECT_EQ(none.water, kDefaultWater);
-  ASSERT_TRUE(std::filesystem::is_directory(pixelPerfection())) << "test data missing: " << pixelPerfection();
+  TERRASOL_SKIP_WITHOUT_TEST_DATA();
   const BiomeTints real = loadTints(stackOf({pack.dir(), pixelPerfection()}), problems);
   EXPECT_TRUE(problems.empty()) << problemsText(problems);
   EXPECT_NE(real.grass, kDefaultGrass) << "pixel_perfection_ce's grass colormap is used";
@@ -317,7 +316,7 @@ TEST(ResourcePack, MalformedPackMcmetaIsNamed) {
 
 // The real third-party pack: palette PNGs of several bit depths with tRNS, animations, colormaps.
 TEST(ResourcePack, PixelPerfectionLoadsWithoutErrorsOverTheDefaultPack) {
-  ASSERT_TRUE(std::filesystem::is_directory(pixelPerfection())) << "test data missing: " << pixelPerfection();
+  TERRASOL_SKIP_WITHOUT_TEST_DATA();
   const PackStack stack = stackOf({resourcePackDir() / "default", pixelPerfection()});
   std::vector<PackProblem> problems;
   int animated = 0, loaded = 0;

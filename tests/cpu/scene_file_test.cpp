@@ -1,5 +1,7 @@
 #include "scene/scene_file.h"
 
+#include <cstdlib>
+
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -105,6 +107,29 @@ TEST(SceneFile, PackPathsResolveAgainstTheSceneDirectory) {
   EXPECT_EQ(scene.packs, expected);
   // With no file name, relative paths stay relative (to the working directory).
   EXPECT_EQ(parseScene(R"({"packs": ["hd"]})", "").packs, std::vector<std::filesystem::path>{"hd"});
+}
+
+// Paths under "$TERRASOL_TESTDATA/" name the optional third-party test data; without it the scene
+// says which key needed it.
+TEST(SceneFile, TestDataPathsResolveUnderTERRASOL_TESTDATAOrNameTheKey) {
+  const char* before = std::getenv("TERRASOL_TESTDATA");
+  const std::string saved = before ? before : "";
+  const auto dir = testing::scratchDir("scene_test_data");
+  setenv("TERRASOL_TESTDATA", dir.c_str(), 1);
+  const std::string json = R"({ "packs": ["default", "$TERRASOL_TESTDATA/packs/p"],
+                                "props": [{ "model": "$TERRASOL_TESTDATA/gltf/b.glb" }] })";
+  const SceneFile scene = parseScene(json, kFile);
+  EXPECT_EQ(scene.packs.back(), dir / "packs" / "p");
+  EXPECT_EQ(scene.props[0].model, dir / "gltf" / "b.glb");
+  setenv("TERRASOL_TESTDATA", (dir / "absent").c_str(), 1);
+  const std::string message = errorOf(json);
+  EXPECT_NE(message.find("packs[1]"), std::string::npos) << message;
+  EXPECT_NE(message.find("TERRASOL_TESTDATA"), std::string::npos) << message;
+  if (before) {
+    setenv("TERRASOL_TESTDATA", saved.c_str(), 1);
+  } else {
+    unsetenv("TERRASOL_TESTDATA");
+  }
 }
 
 TEST(SceneFile, LoadsFromDiskWithPacksBesideTheScene) {

@@ -1,7 +1,7 @@
 // Runs a fuzz target over seeds and deterministic mutations of them (truncations, byte flips, header
 // fields set to extremes), without libFuzzer, so every CI run exercises it. Texture seeds: the default
-// pack's PNGs and animations, and the palette PNGs of ../shared/testdata when present; model seeds:
-// the glTF samples there.
+// pack's PNGs and animations, and the palette PNGs of the third-party test data when present; model
+// seeds: the glTF samples there.
 //   terrasol-fuzz-corpus [--ext=.gltf,.glb] SEED_DIR...   (default --ext=.png)
 
 #include <cstdint>

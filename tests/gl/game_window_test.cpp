@@ -14,6 +14,7 @@
 #include "demo.h"
 #include "scene_render.h"
 #include "support/gl_test.h"
+#include "support/test_data.h"
 #include "support/golden.h"
 
 namespace terrasol {
@@ -111,7 +112,8 @@ TEST_F(GameWindowTest, APlacedPropIsLitSavedAndBackInTheNextRun) {
   const auto& dir = game.dir;
   std::filesystem::create_directories(dir / "world" / "props");
   // One model from the world's props folder (relative, as the menu offers it), one from anywhere.
-  const auto samples = std::filesystem::path(TERRASOL_SOURCE_DIR) / ".." / "shared" / "testdata" / "gltf";
+  TERRASOL_SKIP_WITHOUT_TEST_DATA();
+  const auto samples = testing::testData() / "gltf";
   std::filesystem::copy_file(samples / "BoxTextured" / "glTF-Binary" / "BoxTextured.glb", dir / "world" / "props" / "box.glb");
   const auto script = dir / "script.json";
   std::ofstream(script) << R"({ "step": 0.05, "events": [

@@ -7,6 +7,7 @@
 #include "render/shadow_schedule.h"
 #include "scene_render.h"
 #include "support/gl_test.h"
+#include "support/test_data.h"
 #include "support/shader_variants.h"
 #include "support/golden.h"
 
@@ -113,8 +114,9 @@ TEST_F(LeaveOutTest, FacesTurnedAwayAreNotDrawnAndChangeNoPixel) {
 
 TEST_F(LeaveOutTest, MapsNoPackHasAreNotSampledAndChangeNoPixel) {
   // Pixel Perfection CE alone: no _n, no _s anywhere.
+  TERRASOL_SKIP_WITHOUT_TEST_DATA();
   SceneFile scene = loadScene(kScenes / "pack_pixel_perfection.json");
-  scene.packs = {std::filesystem::path(TERRASOL_SOURCE_DIR) / ".." / "shared" / "testdata" / "packs" / "pixel_perfection_ce"};
+  scene.packs = {testing::testData() / "packs" / "pixel_perfection_ce"};
   SceneRenderer lean(scene);
   EXPECT_TRUE(hasVariant(lean, "gbuffer+NO_NORMAL_MAPS+NO_SPECULAR_MAPS"));
   EXPECT_TRUE(hasVariant(lean, "lighting+SHADOWS+PCF_TENT+NO_NORMAL_MAPS+NO_SPECULAR_MAPS"));

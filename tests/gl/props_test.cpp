@@ -15,6 +15,7 @@
 #include "core/error.h"
 #include "scene_render.h"
 #include "support/gl_test.h"
+#include "support/test_data.h"
 #include "support/shader_variants.h"
 #include "support/world_support.h"
 
@@ -24,10 +25,17 @@ namespace {
 using testing::hasAnyVariantOf;
 using testing::hasVariant;
 
-const std::filesystem::path kModels = std::filesystem::path(TERRASOL_SOURCE_DIR) / ".." / "shared" / "testdata" / "gltf";
+const std::filesystem::path kModels = testing::testData() / "gltf";  // the Khronos samples
 const std::filesystem::path kBox = kModels / "Box" / "glTF-Embedded" / "Box.gltf";  // red, 1 block, centred
 
-class PropsTest : public testing::GlTest {};
+// Every prop test places the Khronos samples: skipped where the third-party test data is absent.
+class PropsTest : public testing::GlTest {
+ protected:
+  void SetUp() override {
+    TERRASOL_SKIP_WITHOUT_TEST_DATA();
+    GlTest::SetUp();
+  }
+};
 
 // A flat world in the afternoon sun, the camera looking down at the origin from the south.
 SceneFile flatAfternoon(const std::string& shadowMode = "warped") {
@@ -218,7 +226,7 @@ TEST_F(PropsTest, NormalMapsAndEmissionReachTheGBufferEvenWithoutPackMaps) {
 
   // Pixel Perfection alone has no _n and no _s: only the prop keeps the surface normals and _s target.
   SceneFile scene = flatAfternoon();
-  scene.packs = {std::filesystem::path(TERRASOL_SOURCE_DIR) / ".." / "shared" / "testdata" / "packs" / "pixel_perfection_ce"};
+  scene.packs = {testing::testData() / "packs" / "pixel_perfection_ce"};
   const glm::dvec3 centre(0.5, 64.5, 0.5), top = centre + glm::dvec3(0.0, 0.5, 0.0);
   scene.props = {prop(dir / "BoxTextured.gltf", centre)};
   SceneRenderer renderer(scene);

@@ -2,6 +2,7 @@
 
 #include <benchmark/benchmark.h>
 
+#include <optional>
 #include <set>
 
 #include "assets/atlas.h"
@@ -20,11 +21,14 @@ std::vector<std::vector<std::string>> blockTextureNames() {
   return {names.begin(), names.end()};
 }
 
-PackStack stack(bool withPixelPerfection) {
+// With `withPixelPerfection`, the third-party test data's pack on top (null when that is absent).
+std::optional<PackStack> stack(bool withPixelPerfection) {
   PackStack packs;
   packs.push(ResourcePack::open(resourcePackDir() / "default"));
   if (withPixelPerfection) {
-    packs.push(ResourcePack::open(dataRoot() / ".." / "shared" / "testdata" / "packs" / "pixel_perfection_ce"));
+    const auto data = testDataDir();
+    if (!data) return std::nullopt;
+    packs.push(ResourcePack::open(*data / "packs" / "pixel_perfection_ce"));
   }
   return packs;
 }
@@ -38,14 +42,17 @@ std::vector<LoadedTexture> load(const PackStack& packs) {
 
 // Decoding every block texture and its companions (arg 1: pixel_perfection_ce over the default pack).
 void BM_PackLoadTextures(benchmark::State& state) {
-  const PackStack packs = stack(state.range(0) == 1);
-  for (auto _ : state) benchmark::DoNotOptimize(load(packs));
+  const auto packs = stack(state.range(0) == 1);
+  if (!packs) return state.SkipWithError("no third-party test data (TERRASOL_TESTDATA)");
+  for (auto _ : state) benchmark::DoNotOptimize(load(*packs));
 }
 BENCHMARK(BM_PackLoadTextures)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
 // Laying out and building the albedo, normal and specular atlases with all mip levels.
 void BM_AtlasBuild(benchmark::State& state) {
-  const auto textures = load(stack(state.range(0) == 1));
+  const auto packs = stack(state.range(0) == 1);
+  if (!packs) return state.SkipWithError("no third-party test data (TERRASOL_TESTDATA)");
+  const auto textures = load(*packs);
   Atlas atlas;
   for (auto _ : state) benchmark::DoNotOptimize(atlas = buildAtlas(textures));
   state.counters["tiles"] = atlas.columns * atlas.rows;
