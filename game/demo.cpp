@@ -5,7 +5,7 @@
 #include <string>
 
 #include "platform/egl/egl_context.h"
-#include "scene_render.h"
+#include "scene_render/scene_render.h"
 
 namespace terrasol {
 namespace {

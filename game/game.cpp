@@ -17,7 +17,7 @@
 #include "core/log.h"
 #include "core/paths.h"
 #include "game_renderer.h"
-#include "game_world.h"
+#include "pipeline/streamed_world.h"
 #include "hud.h"
 #include "input_script.h"
 #include "platform/glfw/glfw_window.h"

@@ -6,7 +6,7 @@
 #include "core/log.h"
 #include "game_props.h"
 #include "game_renderer.h"
-#include "game_world.h"
+#include "pipeline/streamed_world.h"
 #include "targeting.h"
 
 // Changing the world: breaking, placing and picking blocks, and placing props.

@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <vector>
 
-#include "placed_props.h"
+#include "scene_render/placed_props.h"
 #include "world/level.h"
 
 namespace terrasol {

@@ -4,7 +4,7 @@
 #include "core/paths.h"
 
 #include <nlohmann/json.hpp>
-#include "scene_render.h"
+#include "scene_render/scene_render.h"
 
 namespace terrasol {
 namespace {

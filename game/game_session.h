@@ -14,7 +14,7 @@
 #include "controls.h"
 #include "game_renderer.h"
 #include "game_props.h"
-#include "game_world.h"
+#include "pipeline/streamed_world.h"
 #include "hud.h"
 #include "input_script.h"
 #include "options.h"
@@ -90,7 +90,7 @@ class Game {
   BlockRegistry blocks_;
   GameRenderer renderer_;
   std::filesystem::path benchmarkDir_;  // a throwaway world for --benchmark
-  GameWorld world_;
+  StreamedWorld world_;
   std::unique_ptr<GameProps> props_;  // after the world: props light from it
   std::string selectedProp_;          // the model the place-prop key places
   Player player_;

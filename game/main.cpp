@@ -10,7 +10,7 @@
 #include "options.h"
 #include "platform/glfw/glfw_window.h"
 #include "render/gl/render_target.h"
-#include "scene_render.h"
+#include "scene_render/scene_render.h"
 
 namespace terrasol {
 namespace {

@@ -5,7 +5,7 @@
 #include <string>
 
 #include "core/log.h"
-#include "mesh/section_visibility.h"
+#include "mesh/section_mesh.h"
 
 namespace terrasol {
 
@@ -54,9 +54,7 @@ std::vector<SectionMesh> MeshScheduler::update(const World& world, std::size_t m
     const CaptureResult captured = captureSection(world, pos, job->snapshot);
     if (captured != CaptureResult::Captured) {
       latest_.erase(key(pos));  // any older job still running is dropped when it arrives
-      SectionMesh nothing{pos, {}};  // nothing visible: the old mesh goes
-      nothing.faceLinks = captured == CaptureResult::Buried ? kNoFacesLinked : kAllFacesLinked;
-      ready.push_back(std::move(nothing));
+      ready.push_back(uncapturedMesh(pos, captured));  // nothing visible: the old mesh goes
       continue;
     }
     ++taken;
@@ -99,8 +97,7 @@ void MeshScheduler::work() {
     }
     Done done{SectionMesh{job->snapshot.pos, {}}, job->generation};
     try {
-      done.mesh = meshSection(job->snapshot, table_);
-      done.mesh.faceLinks = sectionFaceLinks(job->snapshot);
+      done.mesh = meshWithLinks(job->snapshot, table_);
     } catch (const std::exception& e) {  // out of memory: an empty mesh, and the game goes on
       logError(std::string("meshing failed: ") + e.what());
     }

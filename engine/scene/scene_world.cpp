@@ -6,7 +6,7 @@
 
 #include "core/error.h"
 #include "mesh/mesh_scheduler.h"
-#include "mesh/section_visibility.h"
+#include "mesh/section_mesh.h"
 
 namespace terrasol {
 namespace {
@@ -99,16 +99,7 @@ std::vector<SectionMesh> SceneWorld::meshVisible(const BlockMeshTable& table) co
   for (int dz = -viewDistance_; dz <= viewDistance_; ++dz)
     for (int dx = -viewDistance_; dx <= viewDistance_; ++dx)
       for (int s = 0; s < kSectionCount; ++s) {
-        const SectionPos pos{centre_.x + dx, s, centre_.z + dz};
-        const CaptureResult captured = captureSection(world_, pos, snapshot);
-        if (captured == CaptureResult::Empty) continue;  // nothing drawn, every face sees every other
-        SectionMesh mesh{pos, {}};
-        if (captured == CaptureResult::Buried) {
-          mesh.faceLinks = kNoFacesLinked;
-        } else {
-          mesh = meshSection(snapshot, table);
-          mesh.faceLinks = sectionFaceLinks(snapshot);
-        }
+        SectionMesh mesh = meshFromWorld(world_, {centre_.x + dx, s, centre_.z + dz}, table, snapshot);
         // Kept even when empty: a closed section's links still hide what lies behind it.
         if (!mesh.empty() || mesh.faceLinks != kAllFacesLinked) meshes.push_back(std::move(mesh));
       }

@@ -1,5 +1,5 @@
 // The game's plain-C++ parts: player physics against Minecraft's numbers, block picking, controls,
-// input scripts, settings files, and a world that saves and reopens with its edits and their light.
+// input scripts and settings files.
 
 #include <gtest/gtest.h>
 
@@ -10,7 +10,6 @@
 #include "controls.h"
 #include "frame_rate.h"
 #include "core/error.h"
-#include "game_world.h"
 #include "input_script.h"
 #include "player.h"
 #include "settings.h"
@@ -350,94 +349,6 @@ TEST(SettingsTest, MalformedSettingsNameTheKey) {
   EXPECT_NE(error(R"({"keys": {"jump": "ESCAPE"}})").find("keys.jump"), std::string::npos);
   EXPECT_NE(error(R"({"packs": [{"enabled": true}]})").find("packs[0]"), std::string::npos);
   EXPECT_NE(error(R"({"fov": )").find("settings.json:1:"), std::string::npos);
-}
-
-// Streams until the chunks around the origin are in and meshed.
-void settle(GameWorld& w) {
-  for (int i = 0; i < 20000; ++i) {
-    w.update({0, 0}, std::chrono::steady_clock::now() + std::chrono::milliseconds(50));
-    const WorldCounts c = w.counts();
-    if (c.pending == 0 && c.meshDirty == 0 && c.meshInFlight == 0 && c.loaded > 0) return;
-    std::this_thread::sleep_for(std::chrono::milliseconds(1));
-  }
-  FAIL() << "the world never settled";
-}
-
-TEST(GameWorldTest, EditsTheirLightTimeAndPlayerSurviveSavingAndReopening) {
-  const auto dir = scratchDir("game_world");
-  std::filesystem::remove_all(dir);
-  const BlockMeshTable table(defaultBlocks(), [](BlockId, int) { return std::uint16_t(0); });
-  const BlockId torch = defaultBlocks().id("torch");
-  BlockPos broken, placed;
-  std::vector<std::uint8_t> lightBefore;
-  const auto lightAround = [](const GameWorld& w, BlockPos at) {
-    std::vector<std::uint8_t> out;
-    for (int dz = -3; dz <= 3; ++dz)
-      for (int dy = -3; dy <= 3; ++dy)
-        for (int dx = -3; dx <= 3; ++dx) out.push_back(w.light().lightAt(at.offset(dx, dy, dz), LightChannel::Block));
-    return out;
-  };
-  {
-    GameWorld w(dir, 42, defaultBlocks(), table, 2, 2);
-    EXPECT_TRUE(w.isNew());
-    settle(w);
-    const auto y = w.surfaceY(3, 3);
-    ASSERT_TRUE(y);
-    broken = {3, *y, 3};
-    placed = {5, *y + 1, 3};
-    ASSERT_TRUE(w.setBlock(broken, kAir));
-    w.setBlock(placed, kAir);
-    ASSERT_TRUE(w.setBlock(placed, torch));
-    EXPECT_EQ(w.light().lightAt(placed, LightChannel::Block), 14);
-    lightBefore = lightAround(w, placed);
-    w.level().time = 12345;
-    w.level().playerPosition = {1.5, 90.0, 2.5};
-    w.level().playerYaw = 33.0f;
-    w.save();
-  }
-  GameWorld w(dir, 7, defaultBlocks(), table, 2, 2);
-  EXPECT_FALSE(w.isNew());
-  EXPECT_EQ(w.level().seed, 42u) << "an existing world keeps its seed";
-  EXPECT_EQ(w.level().time, 12345);
-  EXPECT_EQ(w.level().playerPosition, glm::dvec3(1.5, 90.0, 2.5));
-  EXPECT_EQ(w.level().playerYaw, 33.0f);
-  settle(w);
-  EXPECT_EQ(w.world().getBlock(broken), kAir);
-  EXPECT_EQ(w.world().getBlock(placed), torch);
-  EXPECT_EQ(w.light().lightAt(placed, LightChannel::Block), 14);
-  EXPECT_EQ(lightAround(w, placed), lightBefore);
-}
-
-TEST(GameWorldTest, MeshesOnlyChunksWithAllNeighboursAndDropsThemWhenTheyLeave) {
-  const auto dir = scratchDir("game_world_stream");
-  std::filesystem::remove_all(dir);
-  const BlockMeshTable table(defaultBlocks(), [](BlockId, int) { return std::uint16_t(0); });
-  GameWorld w(dir, 1, defaultBlocks(), table, 2, 2);
-  settle(w);
-  EXPECT_EQ(w.counts().loaded, 49u);    // view distance 2 + 1 ring: 7 x 7
-  EXPECT_EQ(w.counts().meshable, 25u);  // the inner 5 x 5
-  w.setViewDistance(0);  // loads 1 ring, unloads beyond 2
-  std::vector<SectionMesh> out = w.update({0, 0}, std::chrono::steady_clock::now());
-  EXPECT_EQ(w.counts().loaded, 25u);
-  EXPECT_EQ(w.counts().meshable, 9u);
-  std::size_t removed = 0;
-  for (const SectionMesh& m : out) removed += m.empty() && (std::abs(m.pos.x) == 2 || std::abs(m.pos.z) == 2);
-  EXPECT_EQ(removed, 16u * kSectionCount);
-}
-
-TEST(GameWorldTest, AMalformedLevelFileIsAClearErrorAndIsNotOverwritten) {
-  const auto dir = scratchDir("game_world_bad");
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  { std::ofstream(dir / "level.json") << "{ \"seed\": "; }
-  const BlockMeshTable table(defaultBlocks(), [](BlockId, int) { return std::uint16_t(0); });
-  try {
-    GameWorld w(dir, 1, defaultBlocks(), table, 2, 1);
-    FAIL() << "no error";
-  } catch (const Error& e) {
-    EXPECT_NE(std::string(e.what()).find("level.json"), std::string::npos) << e.what();
-  }
-  EXPECT_EQ(readTextFile(dir / "level.json"), "{ \"seed\": ");
 }
 
 }  // namespace

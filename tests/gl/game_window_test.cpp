@@ -12,7 +12,7 @@
 
 #include "core/error.h"
 #include "demo.h"
-#include "scene_render.h"
+#include "scene_render/scene_render.h"
 #include "support/gl_test.h"
 #include "support/test_data.h"
 #include "support/golden.h"

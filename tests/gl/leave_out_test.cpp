@@ -5,7 +5,7 @@
 #include <filesystem>
 
 #include "render/shadow_schedule.h"
-#include "scene_render.h"
+#include "scene_render/scene_render.h"
 #include "support/gl_test.h"
 #include "support/test_data.h"
 #include "support/shader_variants.h"

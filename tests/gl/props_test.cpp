@@ -13,7 +13,7 @@
 
 #include "core/day_cycle.h"
 #include "core/error.h"
-#include "scene_render.h"
+#include "scene_render/scene_render.h"
 #include "support/gl_test.h"
 #include "support/test_data.h"
 #include "support/shader_variants.h"

@@ -5,8 +5,8 @@
 #include <cmath>
 #include <filesystem>
 
-#include "scene_render.h"
-#include "shadow_truth.h"
+#include "scene_render/scene_render.h"
+#include "scene_render/shadow_truth.h"
 #include "support/gl_test.h"
 #include "support/golden.h"
 #include "support/shader_variants.h"

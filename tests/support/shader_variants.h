@@ -7,7 +7,7 @@
 #include <algorithm>
 #include <string>
 
-#include "scene_render.h"
+#include "scene_render/scene_render.h"
 
 namespace terrasol::testing {
 

@@ -11,7 +11,7 @@
 #include "core/error.h"
 #include "core/paths.h"
 #include "core/tool_main.h"
-#include "game_world.h"
+#include "pipeline/streamed_world.h"
 #include "region_export.h"
 #include "scene/scene_world.h"
 
@@ -82,7 +82,7 @@ int run(int argc, char** argv) {
     meshes = meshRegion(world.world(), *region, table);
   } else {
     if (!std::filesystem::exists(input / "level.json")) throw Error(input.string() + ": not a world (no level.json)");
-    GameWorld world(input, 0, blocks, table, radius, 2);
+    StreamedWorld world(input, 0, blocks, table, radius, 2);
     const ChunkPos chunk = ChunkPos::of({centre.x, 0, centre.z});
     for (int i = 0; i < 100000; ++i) {
       world.update(chunk, std::chrono::steady_clock::now() + std::chrono::milliseconds(50));

@@ -8,6 +8,7 @@
 #include <glm/common.hpp>
 
 #include "core/error.h"
+#include "mesh/section_mesh.h"
 
 #define TINYGLTF_NO_STB_IMAGE
 #define TINYGLTF_NO_STB_IMAGE_WRITE
@@ -83,8 +84,7 @@ std::vector<SectionMesh> meshRegion(const World& world, const Region& region, co
   for (int cz = chunkOf(region.min.z); cz <= chunkOf(region.max.z); ++cz)
     for (int cx = chunkOf(region.min.x); cx <= chunkOf(region.max.x); ++cx)
       for (int s = s0; s <= s1; ++s) {
-        if (captureSection(world, {cx, s, cz}, snapshot) != CaptureResult::Captured) continue;
-        SectionMesh mesh = meshSection(snapshot, table);
+        SectionMesh mesh = meshFromWorld(world, {cx, s, cz}, table, snapshot);
         if (!mesh.empty()) meshes.push_back(std::move(mesh));
       }
   return meshes;

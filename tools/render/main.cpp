@@ -19,8 +19,8 @@
 #include "platform/egl/egl_context.h"
 #include "progress.h"
 #include "render/gl/program.h"
-#include "scene_render.h"
-#include "shadow_truth.h"
+#include "scene_render/scene_render.h"
+#include "scene_render/shadow_truth.h"
 #include "sweep.h"
 
 namespace terrasol {

@@ -4,8 +4,8 @@
 #include <fstream>
 
 #include "core/error.h"
-#include "scene_render.h"
-#include "shadow_truth.h"
+#include "scene_render/scene_render.h"
+#include "scene_render/shadow_truth.h"
 #include "sweep_plot.h"
 
 namespace terrasol {

@@ -1,4 +1,4 @@
-#include "scene_render.h"
+#include "scene_render/scene_render.h"
 
 #include <algorithm>
 #include <chrono>
@@ -9,7 +9,7 @@
 #include "render/gl/render_target.h"
 #include "scene/block_atlas.h"
 #include "scene/camera_path.h"
-#include "placed_props.h"
+#include "scene_render/placed_props.h"
 #include "scene/scene_world.h"
 
 namespace terrasol {

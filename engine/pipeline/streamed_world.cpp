@@ -1,4 +1,4 @@
-#include "game_world.h"
+#include "pipeline/streamed_world.h"
 
 #include <algorithm>
 
@@ -21,7 +21,7 @@ Level openLevel(const std::filesystem::path& dir, std::uint64_t seed, bool& isNe
 
 }  // namespace
 
-GameWorld::GameWorld(const std::filesystem::path& dir, std::uint64_t seed, const BlockRegistry& blocks,
+StreamedWorld::StreamedWorld(const std::filesystem::path& dir, std::uint64_t seed, const BlockRegistry& blocks,
                      const BlockMeshTable& table, int viewDistance, int threads)
     : level_(openLevel(dir, seed, isNew_)),
       world_(blocks),
@@ -35,20 +35,20 @@ GameWorld::GameWorld(const std::filesystem::path& dir, std::uint64_t seed, const
   if (isNew_) saveLevel(storage_.levelFile(), level_);  // the directory is a world from now on
 }
 
-GameWorld::~GameWorld() = default;
+StreamedWorld::~StreamedWorld() = default;
 
-bool GameWorld::allNeighboursLoaded(ChunkPos pos) const {
+bool StreamedWorld::allNeighboursLoaded(ChunkPos pos) const {
   for (int dz = -1; dz <= 1; ++dz)
     for (int dx = -1; dx <= 1; ++dx)
       if (!world_.isLoaded({pos.x + dx, pos.z + dz})) return false;
   return true;
 }
 
-void GameWorld::markChunkDirty(ChunkPos pos) {
+void StreamedWorld::markChunkDirty(ChunkPos pos) {
   for (int s = 0; s < kSectionCount; ++s) mesher_->markDirty({pos.x, s, pos.z});
 }
 
-void GameWorld::chunkAdded(ChunkPos pos) {
+void StreamedWorld::chunkAdded(ChunkPos pos) {
   light_.chunkLoaded(pos);
   // The chunk and each neighbour become meshable once all their neighbours are here.
   for (int dz = -1; dz <= 1; ++dz)
@@ -61,7 +61,7 @@ void GameWorld::chunkAdded(ChunkPos pos) {
     }
 }
 
-void GameWorld::chunkRemoved(ChunkPos pos) {
+void StreamedWorld::chunkRemoved(ChunkPos pos) {
   light_.chunkUnloading(pos);
   for (int dz = -1; dz <= 1; ++dz)
     for (int dx = -1; dx <= 1; ++dx) {
@@ -71,7 +71,7 @@ void GameWorld::chunkRemoved(ChunkPos pos) {
     }
 }
 
-std::vector<SectionMesh> GameWorld::update(ChunkPos centre, std::chrono::steady_clock::time_point deadline) {
+std::vector<SectionMesh> StreamedWorld::update(ChunkPos centre, std::chrono::steady_clock::time_point deadline) {
   streamer_.update(centre, [&] { return std::chrono::steady_clock::now() < deadline; });
   for (const SectionPos& s : light_.takeChangedSections()) {
     if (meshable_.contains({s.x, s.z})) mesher_->markDirty(s);
@@ -85,7 +85,7 @@ std::vector<SectionMesh> GameWorld::update(ChunkPos centre, std::chrono::steady_
   return out;
 }
 
-std::optional<BlockChange> GameWorld::setBlock(const BlockPos& pos, BlockId id) {
+std::optional<BlockChange> StreamedWorld::setBlock(const BlockPos& pos, BlockId id) {
   std::optional<BlockChange> change = world_.setBlock(pos, id);
   if (!change) return change;
   light_.blockChanged(*change);
@@ -93,15 +93,15 @@ std::optional<BlockChange> GameWorld::setBlock(const BlockPos& pos, BlockId id) 
   return change;
 }
 
-void GameWorld::setViewDistance(int chunks) { streamer_.setRadius(chunks + 1); }
+void StreamedWorld::setViewDistance(int chunks) { streamer_.setRadius(chunks + 1); }
 
-void GameWorld::remeshAll(const BlockMeshTable& table) {
+void StreamedWorld::remeshAll(const BlockMeshTable& table) {
   mesher_.reset();  // joins its workers before the old table goes
   mesher_ = std::make_unique<MeshScheduler>(table, threads_);
   for (ChunkPos c : meshable_) markChunkDirty(c);
 }
 
-std::optional<int> GameWorld::surfaceY(int x, int z) const {
+std::optional<int> StreamedWorld::surfaceY(int x, int z) const {
   if (!world_.isLoaded(ChunkPos::of({x, 0, z}))) return std::nullopt;
   for (int y = kMaxY - 1; y >= kMinY; --y) {
     const BlockType& type = world_.blocks()[world_.getBlock({x, y, z})];
@@ -110,12 +110,12 @@ std::optional<int> GameWorld::surfaceY(int x, int z) const {
   return kMinY;
 }
 
-void GameWorld::save() {
+void StreamedWorld::save() {
   streamer_.saveAll();
   saveLevel(storage_.levelFile(), level_);
 }
 
-WorldCounts GameWorld::counts() const {
+WorldCounts StreamedWorld::counts() const {
   return {world_.chunkCount(), streamer_.pending(), meshable_.size(), mesher_->dirty(), mesher_->inFlight()};
 }
 

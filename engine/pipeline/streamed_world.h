@@ -22,13 +22,13 @@ struct WorldCounts {
   std::size_t loaded = 0, pending = 0, meshable = 0, meshDirty = 0, meshInFlight = 0;
 };
 
-class GameWorld {
+class StreamedWorld {
  public:
   // Opens DIR (level.json and the saved chunks) or creates it with `seed` (a new world's seed; an
   // existing world keeps its own). Throws Error naming the file when level.json is malformed.
-  GameWorld(const std::filesystem::path& dir, std::uint64_t seed, const BlockRegistry& blocks,
+  StreamedWorld(const std::filesystem::path& dir, std::uint64_t seed, const BlockRegistry& blocks,
             const BlockMeshTable& table, int viewDistance, int threads);
-  ~GameWorld();
+  ~StreamedWorld();
 
   bool isNew() const { return isNew_; }
   Level& level() { return level_; }

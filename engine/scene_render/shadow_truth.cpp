@@ -1,4 +1,4 @@
-#include "shadow_truth.h"
+#include "scene_render/shadow_truth.h"
 
 #include <algorithm>
 #include <cmath>

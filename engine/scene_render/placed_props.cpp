@@ -1,4 +1,4 @@
-#include "placed_props.h"
+#include "scene_render/placed_props.h"
 
 #include <algorithm>
 #include <cmath>
