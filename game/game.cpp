@@ -226,7 +226,7 @@ void Game::handleInput(const FrameInput& in, double dt) {
   if (in.wasPressed(Action::PlaceProp)) placeProp(selectedProp_);
   if (in.wasPressed(Action::DebugOverlay)) showOverlay_ = !showOverlay_;
   if (in.wasPressed(Action::Screenshot)) screenshotRequested_ = true;
-  if (in.wasPressed(Action::DebugView)) debugView_ = (debugView_ + 1) % static_cast<int>(std::size(kDebugViewNames));
+  if (in.wasPressed(Action::DebugView)) debugView_ = (debugView_ + 1) % static_cast<int>(std::size(kDebugViews));
   if (in.wasPressed(Action::TimeFaster)) timeSpeed_ = (timeSpeed_ + 1) % static_cast<int>(std::size(kTimeSpeeds));
   if (in.wasPressed(Action::TimeStop)) timeStopped_ = !timeStopped_;
   if (in.wasPressed(Action::TimeSet)) {

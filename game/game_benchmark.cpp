@@ -80,10 +80,10 @@ int Game::runBenchmark() {
   if (frames.empty()) throw Error("--benchmark: no frame was drawn");
   const FrameRateSummary fps = summarizeFrames(frames);
   const glm::ivec2 size = window_.framebufferSize();
-  const SceneShadow& s = settings_.shadow;
+  const ShadowSettings& s = settings_.shadow;
   std::printf("benchmark: %zu frames in %.1f s at %dx%d, view %d chunks, shadows %s\n", fps.frames, t, size.x, size.y,
               settings_.viewDistance,
-              s.enabled ? format("%s %d^2 over %.0f blocks, pcf %d, updates over %d frames", s.mode.c_str(), s.resolution,
+              s.enabled ? format("%s %d^2 over %.0f blocks, pcf %d, updates over %d frames", std::string(nameOf(s.mode, kShadowModes)).c_str(), s.resolution,
                                  s.distance, s.pcfSamples, s.updateFrames).c_str()
                         : "off");
   std::printf("benchmark: median %.1f fps (%.2f ms), 1%% low %.1f fps (%.2f ms), mean %.1f fps\n", fps.medianFps,

@@ -72,10 +72,11 @@ std::vector<std::string> Game::overlayRight() const {
   out.push_back("GL: " + glRenderer_);
   const glm::ivec2 size = drawableSize();
   out.push_back(format("Display: %dx%d, view %d chunks, fov %.0f", size.x, size.y, settings_.viewDistance, settings_.fov));
-  const SceneShadow& s = settings_.shadow;
-  out.push_back(s.enabled ? format("Shadows: %s %d^2, %.0f blocks, pcf %d", s.mode.c_str(), s.resolution, s.distance, s.pcfSamples)
+  const ShadowSettings& s = settings_.shadow;
+  out.push_back(s.enabled ? format("Shadows: %s %d^2, %.0f blocks, pcf %d", std::string(nameOf(s.mode, kShadowModes)).c_str(),
+                                   s.resolution, s.distance, s.pcfSamples)
                           : std::string("Shadows: off"));
-  out.push_back(format("Debug view (F4): %s", kDebugViewNames[debugView_]));
+  out.push_back(format("Debug view (F4): %s", std::string(kDebugViews[static_cast<std::size_t>(debugView_)]).c_str()));
   if (target_) {
     const BlockPos b = target_->block;
     out.push_back(format("Targeted block: %d %d %d", b.x, b.y, b.z));

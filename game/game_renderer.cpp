@@ -3,8 +3,6 @@
 #include "core/error.h"
 #include "core/paths.h"
 
-#include <nlohmann/json.hpp>
-#include "scene_render/scene_render.h"
 
 namespace terrasol {
 namespace {
@@ -21,10 +19,10 @@ PackStack openPacks(const std::vector<PackChoice>& packs, std::vector<std::strin
   return stack;
 }
 
-std::unique_ptr<DeferredRenderer> makeRenderer(const BlockAssets& assets, const SceneShadow& shadow,
+std::unique_ptr<DeferredRenderer> makeRenderer(const BlockAssets& assets, const ShadowSettings& shadow,
                                                const PropNeeds& props) {
   RendererOptions options;
-  options.shadow = shadowSettingsOf(shadow);
+  options.shadow = shadow;
   options.props = props;
   return std::make_unique<DeferredRenderer>(ShaderPreprocessor(shaderDir()), assets.atlas.atlas, assets.tints, options);
 }
@@ -61,9 +59,8 @@ void GameRenderer::commit(std::unique_ptr<BlockAssets> assets) {
 }
 
 void GameRenderer::applySettings(const GameSettings& settings) {
-  const SceneShadow& s = settings.shadow;
-  if (shadowJson(s) == shadowJson(shadow_)) return;
-  shadow_ = s;
+  if (settings.shadow == shadow_) return;
+  shadow_ = settings.shadow;
   icons_.reset();
   renderer_ = makeRenderer(*assets_, shadow_, propNeeds_);
 }

@@ -50,7 +50,7 @@ class GameRenderer {
   const BlockRegistry& blocks_;
   std::unique_ptr<BlockAssets> assets_;
   std::unique_ptr<DeferredRenderer> renderer_;
-  SceneShadow shadow_;
+  ShadowSettings shadow_;
   PropNeeds propNeeds_;
   SectionMeshes meshes_;
   gl::TextureView icons_;  // of renderer_'s atlas; remade with it

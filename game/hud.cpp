@@ -18,13 +18,16 @@ constexpr ImGuiWindowFlags kOverlayFlags = ImGuiWindowFlags_NoDecoration | ImGui
                                            ImGuiWindowFlags_NoNav | ImGuiWindowFlags_AlwaysAutoResize;
 
 // A combo over fixed names; true when the choice changed.
-bool comboOf(const char* label, std::string& value, std::span<const std::string_view> names) {
+// A combo box over an enum, by its names (in the enum's order).
+template <class E>
+bool comboOf(const char* label, E& value, std::span<const std::string_view> names) {
   bool changed = false;
-  if (ImGui::BeginCombo(label, value.c_str())) {
-    for (std::string_view n : names) {
-      const bool selected = value == n;
-      if (ImGui::Selectable(std::string(n).c_str(), selected) && !selected) {
-        value = std::string(n);
+  const auto current = static_cast<std::size_t>(value);
+  if (ImGui::BeginCombo(label, std::string(names[current]).c_str())) {
+    for (std::size_t i = 0; i < names.size(); ++i) {
+      const bool selected = i == current;
+      if (ImGui::Selectable(std::string(names[i]).c_str(), selected) && !selected) {
+        value = static_cast<E>(i);
         changed = true;
       }
     }
@@ -181,10 +184,10 @@ void Hud::settingsTab(GameSettings& s, MenuResult& out) {
   out.settingsChanged |= ImGui::Checkbox("VSync", &s.vsync);
   ImGui::Separator();
   ImGui::TextUnformatted("Shadows");
-  SceneShadow& sh = s.shadow;
+  ShadowSettings& sh = s.shadow;
   out.rendererChanged |= ImGui::Checkbox("Shadows", &sh.enabled);
   out.rendererChanged |= comboOf("Mode", sh.mode, kShadowModes);
-  if (sh.mode == "cascaded") {
+  if (sh.mode == ShadowMode::Cascaded) {
     ImGui::SliderInt("Cascades", &sh.cascades, 2, 4);
     out.rendererChanged |= released();
   } else {

@@ -23,13 +23,13 @@ struct GameSettings {
   float fov = 70.0f;                // degrees, 30..110
   float mouseSensitivity = 0.15f;   // degrees per pixel, 0.01..2
   float sunPathRotation = -25.0f;   // degrees, -90..90
-  SceneShadow shadow = defaultShadow();
+  ShadowSettings shadow = defaultShadow();
   std::vector<PackChoice> packs;    // stacked bottom to top over the default pack
   KeyBindings keys;
   bool vsync = true;
 
-  static SceneShadow defaultShadow() {
-    SceneShadow s;
+  static ShadowSettings defaultShadow() {
+    ShadowSettings s;
     s.resolution = 1024;  // a 1024^2 map over 96 blocks, warped: sharp near, cheap on llvmpipe
     s.distance = 96.0f;
     s.updateFrames = 8;   // Luanti's default: a changed map is spread over 8 frames

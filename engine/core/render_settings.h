@@ -1,16 +1,39 @@
 #pragma once
 // The renderer's settings as typed values: what scene files ("render"), the game's settings file and
-// terrasol-render's --set give, parsed once at their edge (engine/scene/render_settings_json.h) and
-// compared as values. Plain C++.
+// terrasol-render's --set give, parsed once at their edge (scene/scene_file.h: parseScene,
+// parseShadow) and compared as values. Plain C++.
 
 #include <algorithm>
+#include <array>
+#include <cstddef>
+#include <string_view>
 
 namespace terrasol {
 
+// Each enum's names in files (scene "render", the game's settings), in the enum's order.
 enum class ShadowMode { Warped, Cascaded };
+inline constexpr std::array<std::string_view, 2> kShadowModes = {"warped", "cascaded"};
 enum class ShadowWarp { None, Square, Radial };
-inline constexpr int kMaxShadowCascades = 4;
+inline constexpr std::array<std::string_view, 3> kShadowWarps = {"none", "square", "radial"};
 enum class PcfPattern { Grid, Disk, Tent };
+inline constexpr std::array<std::string_view, 3> kPcfPatterns = {"grid", "disk", "tent"};
+inline constexpr std::array<std::string_view, 2> kPcfRadiusUnits = {"texels", "blocks"};  // pcfRadiusInBlocks
+inline constexpr int kMaxShadowCascades = 4;
+
+// Specular lobes of the lighting: energy-conserving Blinn-Phong or GGX with Smith visibility.
+enum class SpecularModel { BlinnPhong, Ggx };
+inline constexpr std::array<std::string_view, 2> kSpecularModels = {"blinn_phong", "ggx"};
+
+// G-buffer channels the debug views show, in this order ("none" = the lit image).
+enum class DebugView { None, Albedo, Normal, VertexNormal, Specular, Lightmap, Depth, Ao, Emission };
+inline constexpr std::array<std::string_view, 9> kDebugViews = {
+    "none", "albedo", "normal", "vertex_normal", "specular", "lightmap", "depth", "ao", "emission"};
+
+// The file name of an enum value.
+template <class E, std::size_t N>
+constexpr std::string_view nameOf(E value, const std::array<std::string_view, N>& names) {
+  return names[static_cast<std::size_t>(value)];
+}
 
 // "render.shadow": the shadow map (engine/render/shadow_map.h draws it).
 struct ShadowSettings {

@@ -15,11 +15,6 @@
 
 namespace terrasol {
 
-// G-buffer channels the debug views show, in this order ("none" = the lit image).
-enum class DebugView { None, Albedo, Normal, VertexNormal, Specular, Lightmap, Depth, Ao, Emission };
-inline constexpr const char* kDebugViewNames[] = {"none",     "albedo", "normal", "vertex_normal", "specular",
-                                                  "lightmap", "depth",  "ao",     "emission"};
-
 // A box in world coordinates (blocks).
 struct WorldBox {
   glm::dvec3 min{0.0}, max{0.0};
@@ -69,7 +64,7 @@ struct FrameGeometry {
   glm::mat4 viewProjection{1.0f};         // camera-relative
   glm::mat4 inverseViewProjection{1.0f};
   glm::vec3 toLight{0.0f, 1.0f, 0.0f};    // the shadow-casting light
-  bool shadowLive = false;                // the shadow pass ran
+  bool shadowLive = false;                // the shadow map shows this frame's light (drawn or kept)
   float shadowTexelWorld = 0.0f;          // blocks per texel of the unwarped shadow map (its first layer)
 };
 

@@ -3,6 +3,7 @@
 // path ("render.shadow.resolution", "events[3].key") and what was expected, and the caller adds the
 // file. Throws Error.
 
+#include <algorithm>
 #include <cstdint>
 #include <filesystem>
 #include <initializer_list>
@@ -41,6 +42,12 @@ double finiteNumber(const json& value, const std::string& key);
 float numberIn(const json& value, const std::string& key, double lo, double hi, bool open);
 std::string nonEmptyString(const json& value, const std::string& key);
 std::string oneOf(const json& value, const std::string& key, std::span<const std::string_view> names);
+// The enum value whose name (in `names`, in the enum's order) the string is.
+template <class E>
+E enumOf(const json& value, const std::string& key, std::span<const std::string_view> names) {
+  const std::string name = oneOf(value, key, names);
+  return static_cast<E>(std::find(names.begin(), names.end(), name) - names.begin());
+}
 glm::dvec3 vec3(const json& value, const std::string& key);
 bool boolean(const json& value, const std::string& key);
 

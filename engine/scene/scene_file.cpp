@@ -128,22 +128,24 @@ std::vector<SceneProp> parseProps(const json& value, const path& sceneDir) {
   return props;
 }
 
-void parsePcf(const json& pcf, const std::string& key, SceneShadow& shadow) {
+void parsePcf(const json& pcf, const std::string& key, ShadowSettings& shadow) {
   checkObject(pcf, key, {"samples", "radius", "radius_unit", "pattern"});
   if (const json* v = field(pcf, "samples")) shadow.pcfSamples = static_cast<int>(wholeNumber(*v, member(key, "samples"), 0, 8));
   if (const json* v = field(pcf, "radius")) shadow.pcfRadius = numberIn(*v, member(key, "radius"), 0.0, 32.0, false);
-  if (const json* v = field(pcf, "pattern")) shadow.pcfPattern = oneOf(*v, member(key, "pattern"), kPcfPatterns);
-  if (const json* v = field(pcf, "radius_unit")) shadow.pcfRadiusUnit = oneOf(*v, member(key, "radius_unit"), kPcfRadiusUnits);
+  if (const json* v = field(pcf, "pattern")) shadow.pcfPattern = enumOf<PcfPattern>(*v, member(key, "pattern"), kPcfPatterns);
+  if (const json* v = field(pcf, "radius_unit")) {
+    shadow.pcfRadiusInBlocks = oneOf(*v, member(key, "radius_unit"), kPcfRadiusUnits) == "blocks";
+  }
 }
 
 }  // namespace
 
-void parseShadow(const nlohmann::json& value, const std::string& key, SceneShadow& shadow) {
+void parseShadow(const nlohmann::json& value, const std::string& key, ShadowSettings& shadow) {
   checkObject(value, key,
               {"enabled", "mode", "cascades", "resolution", "distance", "warp", "warp_strength", "pcf", "shift_ahead",
                "update_frames"});
   if (const json* v = field(value, "enabled")) shadow.enabled = boolean(*v, member(key, "enabled"));
-  if (const json* v = field(value, "mode")) shadow.mode = oneOf(*v, member(key, "mode"), kShadowModes);
+  if (const json* v = field(value, "mode")) shadow.mode = enumOf<ShadowMode>(*v, member(key, "mode"), kShadowModes);
   if (const json* v = field(value, "cascades")) {
     shadow.cascades = static_cast<int>(wholeNumber(*v, member(key, "cascades"), 2, 4));
   }
@@ -151,7 +153,7 @@ void parseShadow(const nlohmann::json& value, const std::string& key, SceneShado
     shadow.resolution = static_cast<int>(wholeNumber(*v, member(key, "resolution"), 16, 16384));
   }
   if (const json* v = field(value, "distance")) shadow.distance = numberIn(*v, member(key, "distance"), 1.0, 4096.0, false);
-  if (const json* v = field(value, "warp")) shadow.warp = oneOf(*v, member(key, "warp"), kShadowWarps);
+  if (const json* v = field(value, "warp")) shadow.warp = enumOf<ShadowWarp>(*v, member(key, "warp"), kShadowWarps);
   if (const json* v = field(value, "warp_strength")) {
     const double a = finiteNumber(*v, member(key, "warp_strength"));
     if (a < 0.0 || a >= 1.0) expected(member(key, "warp_strength"), "a number from 0 up to (not including) 1", *v);
@@ -164,18 +166,19 @@ void parseShadow(const nlohmann::json& value, const std::string& key, SceneShado
   }
 }
 
-nlohmann::json shadowJson(const SceneShadow& s) {
+nlohmann::json shadowJson(const ShadowSettings& s) {
   return {{"enabled", s.enabled},
-          {"mode", s.mode},
+          {"mode", nameOf(s.mode, kShadowModes)},
           {"cascades", s.cascades},
           {"resolution", s.resolution},
           {"distance", s.distance},
-          {"warp", s.warp},
+          {"warp", nameOf(s.warp, kShadowWarps)},
           {"warp_strength", s.warpStrength},
           {"shift_ahead", s.shiftAhead},
           {"update_frames", s.updateFrames},
-          {"pcf", {{"samples", s.pcfSamples}, {"radius", s.pcfRadius}, {"radius_unit", s.pcfRadiusUnit},
-                   {"pattern", s.pcfPattern}}}};
+          {"pcf", {{"samples", s.pcfSamples}, {"radius", s.pcfRadius},
+                   {"radius_unit", nameOf(s.pcfRadiusInBlocks ? 1 : 0, kPcfRadiusUnits)},
+                   {"pattern", nameOf(s.pcfPattern, kPcfPatterns)}}}};
 }
 
 namespace {
@@ -194,9 +197,9 @@ void parseRender(const json& render, SceneFile& scene) {
     scene.viewDistance = static_cast<int>(wholeNumber(*v, "render.view_distance", 0, 32));
   }
   if (const json* v = field(render, "debug_view")) {
-    scene.debugView = oneOf(*v, "render.debug_view", kDebugViews);
+    scene.debugView = enumOf<DebugView>(*v, "render.debug_view", kDebugViews);
   }
-  if (const json* v = field(render, "specular")) scene.specular = oneOf(*v, "render.specular", kSpecularModels);
+  if (const json* v = field(render, "specular")) scene.specular = enumOf<SpecularModel>(*v, "render.specular", kSpecularModels);
   if (const json* v = field(render, "material_ao")) scene.materialAo = boolean(*v, "render.material_ao");
   if (const json* v = field(render, "cave_culling")) scene.caveCulling = boolean(*v, "render.cave_culling");
   if (const json* v = field(render, "shadow_caster_culling")) {

@@ -13,6 +13,8 @@
 #include <string_view>
 #include <vector>
 
+#include "core/render_settings.h"
+
 namespace terrasol {
 
 struct SceneEdit {
@@ -35,27 +37,6 @@ struct CameraPath {
   int frames = 1;  // 1..100000
   std::vector<CameraKeyframe> keyframes;  // at least one
 };
-
-// "render.shadow": the shadow map (engine/render/shadow_map.h has the meaning of each).
-struct SceneShadow {
-  bool enabled = true;
-  std::string mode = "warped";   // one of kShadowModes
-  int cascades = 4;              // "cascaded": 2..4 maps, each twice the distance of the one before
-  int resolution = 2048;         // 16..16384 texels per side
-  float distance = 128.0f;       // blocks, 1..4096
-  std::string warp = "radial";   // one of kShadowWarps
-  float warpStrength = 0.85f;    // [0, 1)
-  int pcfSamples = 1;            // 0..8
-  float pcfRadius = 1.0f;        // 0..32, in pcfRadiusUnit
-  std::string pcfRadiusUnit = "texels";  // one of kPcfRadiusUnits
-  std::string pcfPattern = "tent";       // one of kPcfPatterns
-  float shiftAhead = 0.0f;       // 0..0.9 of distance (warped mode)
-  int updateFrames = 1;          // 1..16: frames a changed map is spread over (the game; renders draw it whole)
-};
-inline constexpr std::array<std::string_view, 2> kShadowModes = {"warped", "cascaded"};
-inline constexpr std::array<std::string_view, 3> kShadowWarps = {"none", "square", "radial"};
-inline constexpr std::array<std::string_view, 3> kPcfPatterns = {"grid", "disk", "tent"};
-inline constexpr std::array<std::string_view, 2> kPcfRadiusUnits = {"texels", "blocks"};
 
 // "props": a glTF model placed in the world (engine/scene/prop_placement.h turns it into a transform).
 struct SceneProp {
@@ -84,15 +65,15 @@ struct SceneFile {
   float sunPathRotation = 0.0f;    // degrees in [-90, 90], tilts the sun and moon path
   int width = 320, height = 180;   // pixels, 1..8192 each
   int viewDistance = 4;            // chunks, 0..32
-  std::string debugView = "none";  // "render.debug_view": one of kDebugViews
-  std::string specular = "blinn_phong";  // "render.specular": one of kSpecularModels
+  DebugView debugView = DebugView::None;               // "render.debug_view": one of kDebugViews
+  SpecularModel specular = SpecularModel::BlinnPhong;  // "render.specular": one of kSpecularModels
   bool materialAo = true;          // "render.material_ao": LabPBR _n blue darkens ambient light
   bool caveCulling = true;         // "render.cave_culling": leave out sections hidden behind solid ground
   bool shadowCasterCulling = true;  // "render.shadow_caster_culling": no caster shading nothing in view
   bool leaveOutAbsentMaps = true;  // "render.leave_out_absent_maps": no _n/_s sampling when no pack has them
   bool cullFacesAway = true;       // "render.cull_faces_away": face groups turned away are not drawn
   bool cullPasses = true;          // "render.cull_passes": no pass whose output nothing reads, or with nothing to draw
-  SceneShadow shadow;              // "render.shadow"
+  ShadowSettings shadow;           // "render.shadow"
   glm::dvec3 cameraPosition{0.0, 80.0, 0.0};
   glm::dvec3 cameraLookAt{0.0, 80.0, -1.0};
   float fov = 70.0f;  // vertical degrees, in (0, 180)
@@ -103,13 +84,6 @@ struct SceneFile {
   int frameCount() const { return cameraPath ? cameraPath->frames : 1; }
 };
 
-// Specular lobes of the lighting: energy-conserving Blinn-Phong (the seeds') or GGX with Smith visibility.
-inline constexpr std::array<std::string_view, 2> kSpecularModels = {"blinn_phong", "ggx"};
-
-// Debug views of the G-buffer, "none" first.
-inline constexpr std::array<std::string_view, 9> kDebugViews = {
-    "none", "albedo", "normal", "vertex_normal", "specular", "lightmap", "depth", "ao", "emission"};
-
 // Throws Error "<file>: <key>: <what is wrong>", e.g. "scenes/a.json: camera.position: expected an array
 // of 3 numbers"; JSON syntax errors as "<file>:<line>:<column>: invalid JSON: ...". `file` names the scene
 // in messages and is the base for relative pack paths (may be empty: then messages start with the key).
@@ -118,8 +92,8 @@ SceneFile parseScene(std::string_view json, const std::filesystem::path& file);
 // "<file>: <key>: <what>", the form of every error about a scene's content, also for problems found
 // after parsing (an unknown block name, a pack that cannot be opened).
 // A "render.shadow" object (also the game's settings) at key path `key`, over `shadow`'s values; and back.
-void parseShadow(const nlohmann::json& value, const std::string& key, SceneShadow& shadow);
-nlohmann::json shadowJson(const SceneShadow& shadow);
+void parseShadow(const nlohmann::json& value, const std::string& key, ShadowSettings& shadow);
+nlohmann::json shadowJson(const ShadowSettings& shadow);
 
 std::string sceneError(const SceneFile& scene, std::string_view key, std::string_view what);
 

@@ -33,34 +33,6 @@ double msSince(std::chrono::steady_clock::time_point start) {
 
 }  // namespace
 
-ShadowSettings shadowSettingsOf(const SceneShadow& s) {
-  ShadowSettings out;
-  out.enabled = s.enabled;
-  out.mode = s.mode == "cascaded" ? ShadowMode::Cascaded : ShadowMode::Warped;
-  out.cascades = s.cascades;
-  out.resolution = s.resolution;
-  out.distance = s.distance;
-  out.warp = s.warp == "none" ? ShadowWarp::None : s.warp == "square" ? ShadowWarp::Square : ShadowWarp::Radial;
-  out.warpStrength = s.warpStrength;
-  out.pcfSamples = s.pcfSamples;
-  out.pcfRadius = s.pcfRadius;
-  out.pcfPattern = s.pcfPattern == "grid"   ? PcfPattern::Grid
-                   : s.pcfPattern == "tent" ? PcfPattern::Tent
-                                            : PcfPattern::Disk;
-  out.pcfRadiusInBlocks = s.pcfRadiusUnit == "blocks";
-  out.shiftAhead = s.shiftAhead;
-  out.updateFrames = s.updateFrames;
-  return out;
-}
-
-DebugView debugViewOf(const SceneFile& scene) {
-  for (std::size_t i = 0; i < std::size(kDebugViewNames); ++i) {
-    if (scene.debugView == kDebugViewNames[i]) return static_cast<DebugView>(i);
-  }
-  throw Error(sceneError(scene, "render.debug_view", "unknown view \"" + scene.debugView + "\""));
-}
-
-
 // The CPU side: blocks, atlas, the mesher's table and the world, kept for edits keyed to frames.
 struct SceneRenderer::World {
   World(const SceneFile& scene, const PackStack& packs)
@@ -108,7 +80,7 @@ struct SceneRenderer::Gpu {
   RenderTarget target;
 };
 
-SceneRenderer::SceneRenderer(const SceneFile& scene) : scene_(scene), debugView_(debugViewOf(scene)) {
+SceneRenderer::SceneRenderer(const SceneFile& scene) : scene_(scene), debugView_(scene.debugView) {
   const auto start = std::chrono::steady_clock::now();
   const PackStack packs = openPacks(scene);
   world_ = std::make_unique<World>(scene, packs);
@@ -120,8 +92,8 @@ SceneRenderer::SceneRenderer(const SceneFile& scene) : scene_(scene), debugView_
 
   const ShaderPreprocessor shaders(shaderDir());
   RendererOptions options;
-  options.ggxSpecular = scene.specular == "ggx";
-  options.shadow = shadowSettingsOf(scene.shadow);
+  options.ggxSpecular = scene.specular == SpecularModel::Ggx;
+  options.shadow = scene.shadow;
   options.caveCulling = scene.caveCulling;
   options.shadowCasterCulling = scene.shadowCasterCulling;
   options.leaveOutAbsentMaps = scene.leaveOutAbsentMaps;

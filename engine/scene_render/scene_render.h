@@ -74,10 +74,4 @@ class SceneRenderer {
   std::unique_ptr<Gpu> gpu_;
 };
 
-// The renderer's shadow settings for a scene's (or the game's) "shadow" object.
-ShadowSettings shadowSettingsOf(const SceneShadow& shadow);
-
-// The DebugView of a scene's "render.debug_view" name; throws Error naming the key.
-DebugView debugViewOf(const SceneFile& scene);
-
 }  // namespace terrasol

@@ -143,7 +143,7 @@ TEST(CameraPath, OverridesChangeAnyValueAndAreChecked) {
   EXPECT_EQ(scene.width, 640);
   EXPECT_EQ(scene.cameraPath->keyframes[0].time, 777);
   EXPECT_EQ(scene.generator, "flat");
-  EXPECT_EQ(scene.specular, "ggx");
+  EXPECT_EQ(scene.specular, SpecularModel::Ggx);
   auto fails = [&](const std::string& setting, const std::string& part) {
     try {
       loadScene(file, {setting});

@@ -325,7 +325,7 @@ TEST(SettingsTest, SaveAndLoadRoundTripAndMissingMeansDefaults) {
   GameSettings s;
   s.viewDistance = 12;
   s.fov = 90.0f;
-  s.shadow.mode = "cascaded";
+  s.shadow.mode = ShadowMode::Cascaded;
   s.shadow.pcfSamples = 3;
   s.packs = {{dir / "packs" / "a", true}, {dir / "packs" / "b", false}};
   s.keys.bind(Action::Jump, GLFW_KEY_J);
@@ -333,7 +333,7 @@ TEST(SettingsTest, SaveAndLoadRoundTripAndMissingMeansDefaults) {
   const GameSettings back = loadSettings(file);
   EXPECT_EQ(back.viewDistance, 12);
   EXPECT_EQ(back.fov, 90.0f);
-  EXPECT_EQ(back.shadow.mode, "cascaded");
+  EXPECT_EQ(back.shadow, s.shadow) << "every shadow setting comes back";
   EXPECT_EQ(back.shadow.pcfSamples, 3);
   EXPECT_EQ(back.packs, s.packs);
   EXPECT_EQ(back.keys.key(Action::Jump), GLFW_KEY_J);

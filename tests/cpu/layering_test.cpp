@@ -64,7 +64,9 @@ std::vector<Violation> check(const std::filesystem::path& root, const std::strin
         if (!std::filesystem::exists(entry.path().parent_path() / target)) {
           found.push_back({where, "includes \"" + target + "\", which is not beside it (another folder's own header)"});
         }
-      } else if (const std::string prefix = target.substr(0, slash); kEngine.contains(prefix) && !ok.contains(prefix)) {
+      } else if (const std::string prefix = target.substr(0, slash); !kEngine.contains(prefix)) {
+        found.push_back({where, "includes " + prefix + "/, which is not an engine folder"});
+      } else if (!ok.contains(prefix)) {
         found.push_back({where, area + "/" + folder + " must not include " + prefix + "/"});
       }
     }

@@ -64,7 +64,7 @@ std::string skipReason(const RenderedFrame& frame, const std::string& pass) {
 // the final image, so the lit scene, the translucent pass and the shadow map are not needed.
 TEST_F(LeaveOutTest, PassesADebugViewDoesNotReadAreCulledAndChangeNoPixel) {
   SceneFile scene = loadScene(kScenes / "water_glass.json");  // shadows and water in view
-  scene.debugView = "normal";
+  scene.debugView = DebugView::Normal;
   const auto [culled, all] = render(scene, &SceneFile::cullPasses);
   EXPECT_EQ(skipReason(culled, "final"), "debug_view replaces its target");
   EXPECT_EQ(skipReason(culled, "lighting"), "no pass that runs reads its scene");
@@ -136,12 +136,12 @@ TEST_F(LeaveOutTest, MapsNoPackHasAreNotSampledAndChangeNoPixel) {
   EXPECT_EQ(g.contents().bytesPerPixel(), 16);
   EXPECT_EQ(full.renderer().gbuffer()->contents().bytesPerPixel(), 24);
   // So does every debug view that reads them: the normals and the (default) specular data.
-  for (const char* view : {"normal", "vertex_normal", "specular"}) {
+  for (const DebugView view : {DebugView::Normal, DebugView::VertexNormal, DebugView::Specular}) {
     SceneFile viewScene = scene;
     viewScene.debugView = view;
     const Image a = SceneRenderer(viewScene).renderFrame(0).image;
     viewScene.leaveOutAbsentMaps = true;
-    EXPECT_TRUE(identical(a, SceneRenderer(viewScene).renderFrame(0).image)) << view;
+    EXPECT_TRUE(identical(a, SceneRenderer(viewScene).renderFrame(0).image)) << nameOf(view, kDebugViews);
   }
   // With the default pack (which has both) nothing is left out.
   SceneRenderer pbr(loadScene(kScenes / "pack_pixel_perfection.json"));

@@ -38,7 +38,7 @@ class PropsTest : public testing::GlTest {
 };
 
 // A flat world in the afternoon sun, the camera looking down at the origin from the south.
-SceneFile flatAfternoon(const std::string& shadowMode = "warped") {
+SceneFile flatAfternoon(ShadowMode shadowMode = ShadowMode::Warped) {
   SceneFile scene = parseScene(R"({ "world": { "generator": "flat" }, "time": 8000, "sun_path_rotation": -30,
       "render": { "width": 160, "height": 120, "view_distance": 1, "shadow": { "resolution": 1024, "distance": 32 } },
       "camera": { "position": [0.5, 72, 8.5], "look_at": [0.5, 64, 0.5], "fov": 60 } })",
@@ -75,7 +75,7 @@ float brightness(glm::vec3 c) { return c.r + c.g + c.b; }
 glm::vec3 toLightAt(const SceneFile& scene) { return dayStateAt(scene.time, scene.sunPathRotation).toShadowLight; }
 
 TEST_F(PropsTest, APropCastsItsShadowOnTheGroundInBothShadowModes) {
-  for (const char* mode : {"warped", "cascaded"}) {
+  for (const ShadowMode mode : {ShadowMode::Warped, ShadowMode::Cascaded}) {
     SceneFile scene = flatAfternoon(mode);
     const glm::dvec3 centre(0.5, 67.5, 0.5);
     // Where the light through the box's centre meets the grass (its top at y = 64).
@@ -85,19 +85,19 @@ TEST_F(PropsTest, APropCastsItsShadowOnTheGroundInBothShadowModes) {
     scene.props = {prop(kBox, centre, 2.0f)};
     SceneRenderer withProp(scene);
     const RenderedFrame shaded = withProp.renderFrame(0);
-    EXPECT_EQ(shaded.stats.propsDrawn, 1) << mode;
-    EXPECT_GE(shaded.stats.propShadowCasters, 1) << mode;
+    EXPECT_EQ(shaded.stats.propsDrawn, 1) << nameOf(mode, kShadowModes);
+    EXPECT_GE(shaded.stats.propShadowCasters, 1) << nameOf(mode, kShadowModes);
     EXPECT_LT(brightness(colourAt(shaded, shadow)), 0.7f * brightness(colourAt(bare, shadow)))
-        << mode << ": the ground under the box is in its shadow";
+        << nameOf(mode, kShadowModes) << ": the ground under the box is in its shadow";
     // And away from it the ground is as it was.
     const glm::dvec3 open = shadow + glm::dvec3(4.0, 0.0, 0.0);
-    EXPECT_NEAR(brightness(colourAt(shaded, open)), brightness(colourAt(bare, open)), 0.05f) << mode;
+    EXPECT_NEAR(brightness(colourAt(shaded, open)), brightness(colourAt(bare, open)), 0.05f) << nameOf(mode, kShadowModes);
   }
   context_->checkErrors("prop shadows");
 }
 
 TEST_F(PropsTest, APropInTheShadowOfABlockIsDarkerInBothShadowModes) {
-  for (const char* mode : {"warped", "cascaded"}) {
+  for (const ShadowMode mode : {ShadowMode::Warped, ShadowMode::Cascaded}) {
     SceneFile scene = flatAfternoon(mode);
     const glm::dvec3 centre(0.5, 64.5, 0.5);
     scene.props = {prop(kBox, centre)};
@@ -109,7 +109,7 @@ TEST_F(PropsTest, APropInTheShadowOfABlockIsDarkerInBothShadowModes) {
     const RenderedFrame shaded = SceneRenderer(scene).renderFrame(0);
     const glm::dvec3 top = centre + glm::dvec3(0.0, 0.5, 0.0);
     EXPECT_LT(brightness(colourAt(shaded, top)), 0.75f * brightness(colourAt(lit, top)))
-        << mode << ": the box's top is in the stone's shadow";
+        << nameOf(mode, kShadowModes) << ": the box's top is in the stone's shadow";
   }
   context_->checkErrors("shadows on props");
 }

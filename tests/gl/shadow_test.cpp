@@ -63,7 +63,7 @@ TEST_F(ShadowTest, TentIsOneTapAtRadiusZeroAndWidensPenumbraeWithItsRadius) {
   };
   auto render = [&](int samples, float radius) {
     SceneFile s = scene;
-    s.shadow.pcfPattern = "tent";
+    s.shadow.pcfPattern = PcfPattern::Tent;
     s.shadow.pcfSamples = samples;
     s.shadow.pcfRadius = radius;
     SceneRenderer renderer(s);
@@ -94,36 +94,36 @@ TEST_F(ShadowTest, ExtremeSettingsStayFiniteAndSane) {
       {"sun overhead, rotation 0", [](SceneFile& s) { s.sunPathRotation = 0.0f; }},
       {"warp strength 0", [](SceneFile& s) { s.shadow.warpStrength = 0.0f; }},
       {"warp strength 0.999", [](SceneFile& s) { s.shadow.warpStrength = 0.999f; }},
-      {"square warp", [](SceneFile& s) { s.shadow.warp = "square"; }},
+      {"square warp", [](SceneFile& s) { s.shadow.warp = ShadowWarp::Square; }},
       {"resolution 256", [](SceneFile& s) { s.shadow.resolution = 256; }},
       {"resolution 8192", [](SceneFile& s) { s.shadow.resolution = 8192; }},
       {"distance 8", [](SceneFile& s) { s.shadow.distance = 8.0f; }},
       {"distance 1024", [](SceneFile& s) { s.shadow.distance = 1024.0f; }},
-      {"4 cascades", [](SceneFile& s) { s.shadow.mode = "cascaded"; }},
+      {"4 cascades", [](SceneFile& s) { s.shadow.mode = ShadowMode::Cascaded; }},
       {"map shifted 0.9 ahead", [](SceneFile& s) { s.shadow.shiftAhead = 0.9f; }},
       {"PCF radius 0.25 blocks, 8 samples",
        [](SceneFile& s) {
-         s.shadow.pcfRadiusUnit = "blocks";
+         s.shadow.pcfRadiusInBlocks = true;
          s.shadow.pcfRadius = 0.25f;
          s.shadow.pcfSamples = 8;
        }},
       {"2 cascades at 256 texels",
        [](SceneFile& s) {
-         s.shadow.mode = "cascaded";
+         s.shadow.mode = ShadowMode::Cascaded;
          s.shadow.cascades = 2;
          s.shadow.resolution = 256;
        }},
       {"one tap, no PCF", [](SceneFile& s) { s.shadow.pcfSamples = 0; }, "lighting+SHADOWS"},
       {"disk PCF, radius 3",
        [](SceneFile& s) {
-         s.shadow.pcfPattern = "disk";
+         s.shadow.pcfPattern = PcfPattern::Disk;
          s.shadow.pcfRadius = 3.0f;
        },
        "lighting+SHADOWS+PCF_DISK"},
       {"tent PCF, radius 8", [](SceneFile& s) { s.shadow.pcfRadius = 8.0f; }},
       {"grid PCF, 3 samples, radius 4",
        [](SceneFile& s) {
-         s.shadow.pcfPattern = "grid";
+         s.shadow.pcfPattern = PcfPattern::Grid;
          s.shadow.pcfSamples = 3;
          s.shadow.pcfRadius = 4.0f;
        },
@@ -156,7 +156,7 @@ TEST_F(ShadowTest, ExtremeSettingsStayFiniteAndSane) {
 // round differently, and an alpha-tested plant's shadow then gains or loses a texel.)
 TEST_F(ShadowTest, CascadesMatchTruthAndDoNotFlicker) {
   SceneFile scene = loadScene(kScenes / "shadow_noon.json");
-  scene.shadow.mode = "cascaded";
+  scene.shadow.mode = ShadowMode::Cascaded;
   SceneRenderer renderer(scene);
   FrameRequest request;
   request.readBack = true;

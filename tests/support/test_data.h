@@ -1,6 +1,6 @@
 #pragma once
 // Real third-party inputs (packs, glTF samples) the repository does not hold: core/paths.h testDataDir
-// finds them ($TERRASOL_TESTDATA, else shared/testdata beside the checkout). A test that needs them is
+// finds them ($TERRASOL_TESTDATA, else shared/testdata beside the data root). A test that needs them is
 // skipped, with the reason, where they are absent.
 
 #include <filesystem>

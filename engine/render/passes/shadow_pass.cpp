@@ -41,7 +41,7 @@ void ShadowPass::setup(FrameGraph::Builder& builder, Frame& frame) {
     schedule_.commit(plan_);
     rebase(frame);
     frame.shadowDrawn = true;
-    return builder.skip("kept: the light, the map's centre and the meshes did not change");
+    return builder.skip("kept: nothing it shows changed and it still serves the view");
   }
   builder.write(frame.resources.shadowMap);
 }
