@@ -3,7 +3,8 @@
 // clamp(floor + sky * B(sky level) + block * B(block level), 0, 1) with vanilla's brightness curve B.
 // The colours change with the time of day; the 16x16 table of whole levels is the reference the
 // tests check, and the lighting shader evaluates the same sum at the pixel's smooth levels
-// (shaders/lib/lighting.glsl, lightmapAt). Pure math, no GL.
+// (shaders/lib/lighting.glsl, lightmapAt; tests/gl/glsl_reference_test.cpp checks the two agree).
+// Pure math, no GL.
 
 #include <array>
 #include <cstdint>

@@ -10,9 +10,6 @@
 
 namespace terrasol {
 
-// Casters this far beyond the map's reach towards the light still shadow it (a mountain between the
-// sun and the camera's surroundings).
-constexpr float kCasterReach = 256.0f;
 
 ShadowView shadowViewFor(int resolution, float mapDistance, glm::vec3 toLight, glm::dvec3 camera, glm::dvec3 centre) {
   const glm::dvec3 z = glm::normalize(glm::dvec3(toLight));
@@ -34,11 +31,11 @@ ShadowView shadowViewFor(int resolution, float mapDistance, glm::vec3 toLight, g
   const glm::mat4 recentre = glm::translate(glm::mat4(1.0f), glm::vec3(shift, 0.0));
   const float d = static_cast<float>(distance);
   // Light-space z grows towards the light: keep from `distance` below the camera to far above it.
-  const glm::mat4 ortho = glm::ortho(-d, d, -d, d, -(d + kCasterReach), d);
+  const glm::mat4 ortho = glm::ortho(-d, d, -d, d, -(d + kShadowCasterReach), d);
   ShadowView v;
   v.matrix = ortho * recentre * view;
   v.toLight = glm::vec3(z);
-  v.depthRange = 2.0f * d + kCasterReach;
+  v.depthRange = 2.0f * d + kShadowCasterReach;
   v.texelWorld = static_cast<float>(texel);
   return v;
 }

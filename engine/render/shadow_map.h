@@ -19,6 +19,10 @@
 
 namespace terrasol {
 
+// Casters this far beyond the map's reach towards the light still shadow it (a mountain between the
+// sun and the camera's surroundings); the shadow truth marches rays as far.
+inline constexpr float kShadowCasterReach = 256.0f;
+
 // The light's orthographic view of the camera's surroundings.
 struct ShadowView {
   glm::mat4 matrix;        // camera-relative world position -> light clip space, before the warp

@@ -6,6 +6,8 @@
 #include <glm/geometric.hpp>
 #include <glm/mat4x4.hpp>
 
+#include "core/octahedral.h"
+#include "render/shadow_map.h"
 #include "world/voxel_ray.h"
 
 namespace terrasol {
@@ -16,8 +18,6 @@ enum class Ray { Lit, Shadowed, Ambiguous };
 // How much a pixel's shadow term must change, across 0.5, to count as flicker.
 constexpr float kFlipMargin = 0.01f;
 
-// Casters beyond this along the ray are outside the shadow map too (shadow_map.cpp's reach).
-constexpr double kReachBeyondDistance = 256.0;
 
 // The first block along unit `dir` from `origin` decides: an opaque cube shadows, anything else drawn
 // (cutout, translucent) is ambiguous.
@@ -52,16 +52,6 @@ Ray truthAt(const World& world, glm::dvec3 point, glm::dvec3 normal, glm::dvec3 
   return centre;
 }
 
-glm::dvec3 octDecode(glm::vec2 e) {
-  glm::dvec3 n(e.x, e.y, 1.0 - std::abs(e.x) - std::abs(e.y));
-  if (n.z < 0.0) {
-    const double x = n.x, y = n.y;
-    n.x = (1.0 - std::abs(y)) * (x >= 0.0 ? 1.0 : -1.0);
-    n.y = (1.0 - std::abs(x)) * (y >= 0.0 ? 1.0 : -1.0);
-  }
-  return glm::normalize(n);
-}
-
 // A pixel as a world point and its vertex normal; false for sky.
 struct Surface {
   glm::dvec3 relative;  // camera-relative
@@ -74,7 +64,7 @@ bool surfaceAt(const GBufferPixels& f, const FrameGeometry& g, int x, int y, Sur
   const glm::vec4 ndc((x + 0.5f) / f.size.x * 2.0f - 1.0f, (y + 0.5f) / f.size.y * 2.0f - 1.0f, depth * 2.0f - 1.0f, 1.0f);
   const glm::vec4 p = g.inverseViewProjection * ndc;
   s.relative = glm::dvec3(p) / static_cast<double>(p.w);
-  s.normal = octDecode(glm::vec2(f.normals[i].z, f.normals[i].w));
+  s.normal = octDecode(glm::dvec2(f.normals[i].z, f.normals[i].w));
   return true;
 }
 
@@ -98,7 +88,7 @@ ShadowError measureShadowError(const World& world, const GBufferPixels& frame, c
       const double d = glm::length(s.relative);
       if (d > distance) continue;
       ShadowCounts& bucket = e.byDistance[static_cast<std::size_t>(bucketOf(d))];
-      const Ray truth = truthAt(world, geometry.camera + s.relative, s.normal, toLight, distance + kReachBeyondDistance);
+      const Ray truth = truthAt(world, geometry.camera + s.relative, s.normal, toLight, distance + static_cast<double>(kShadowCasterReach));
       for (ShadowCounts* c : {&e.total, &bucket}) {
         if (truth == Ray::Ambiguous) {
           ++c->ambiguous;

@@ -1,4 +1,5 @@
-// LabPBR 1.3 decoding, the same rules as engine/assets/labpbr.cpp (the tested reference).
+// LabPBR 1.3 decoding, the same rules as engine/assets/labpbr.cpp (the reference);
+// tests/gl/glsl_reference_test.cpp runs these on every texel value against it.
 
 // _n: rg = normal xy in LabPBR's DirectX convention (green points down the texture), b = AO.
 // Returns the tangent-space normal with +y up the texture and z >= 0; |xy| > 1 lands on the rim.

@@ -1,5 +1,6 @@
 // Octahedral normal encoding (the seeds' mapping) with a sign that is never 0: the seeds' sign()
-// sends n = (0, 0, -1) to (0, 0), which decodes to +z.
+// sends n = (0, 0, -1) to (0, 0), which decodes to +z. core/octahedral.h is the reference;
+// tests/gl/glsl_reference_test.cpp runs these against it.
 
 vec2 signNotZero(vec2 v) { return vec2(v.x >= 0.0 ? 1.0 : -1.0, v.y >= 0.0 ? 1.0 : -1.0); }
 
