@@ -7,6 +7,7 @@
 #include "light/light_frame.h"
 #include "light/propagator.h"
 #include "light/section_solver.h"
+#include "light/sky_columns.h"
 
 namespace terrasol {
 
@@ -14,77 +15,12 @@ using light::Cell;
 using light::kAllDirections;
 using light::Propagator;
 using light::SectionRef;
+using light::computeSkyTops;
+using light::fillOpenSky;
+using light::kHorizontal;
+using light::spreadTops;
 
 namespace {
-
-constexpr int kReach = 2;  // chunks an update can reach beyond its seeds (see light_frame.h)
-constexpr int kHorizontal[4] = {0, 1, 4, 5};  // West, East, North, South
-
-// Highest block with opacity >= 1 in each column; uniform sections are skipped whole.
-void computeSkyTops(const Chunk& chunk, const std::uint8_t* opacity, ChunkLight& light) {
-  light.skyTop.fill(static_cast<std::int16_t>(kMinY - 1));
-  std::array<bool, 256> done{};
-  int remaining = 256;
-  for (int s = kSectionCount - 1; s >= 0 && remaining > 0; --s) {
-    const Section& section = chunk.section(s);
-    if (section.isUniform()) {
-      if (opacity[section.uniformBlock()] == 0) continue;
-      for (std::size_t i = 0; i < 256; ++i) {
-        if (!done[i]) light.skyTop[i] = static_cast<std::int16_t>(kMinY + s * 16 + 15);
-      }
-      break;
-    }
-    for (int ly = 15; ly >= 0; --ly)
-      for (std::size_t i = 0; i < 256; ++i) {
-        if (done[i] || opacity[section.at(ly * 256 + static_cast<int>(i))] == 0) continue;
-        done[i] = true;
-        light.skyTop[i] = static_cast<std::int16_t>(kMinY + s * 16 + ly);
-        --remaining;
-      }
-  }
-}
-
-// Sky light 15 above each column's top, 0 elsewhere; whole sections stay uniform where they can.
-void fillOpenSky(ChunkLight& light) {
-  const auto [lowest, highest] = std::minmax_element(light.skyTop.begin(), light.skyTop.end());
-  for (int s = 0; s < kSectionCount; ++s) {
-    const int bottom = kMinY + s * 16;
-    NibbleArray& sky = light.sky[static_cast<std::size_t>(s)];
-    sky.fill(bottom > *highest ? 15 : 0);
-    if (bottom > *highest || bottom + 15 <= *lowest) continue;
-    for (int ly = 0; ly < 16; ++ly)
-      for (std::size_t i = 0; i < 256; ++i) {
-        if (bottom + ly > light.skyTop[i]) sky.set(ly * 256 + static_cast<int>(i), 15);
-      }
-  }
-}
-
-// For each column of a chunk: the highest sky top among its four horizontal neighbours (in this
-// chunk or the next; unlit neighbours do not count, they take no light), at least its own top + 1.
-// Open-sky cells up to that height border a darker cell, so sky light spreads from them.
-std::array<int, 256> spreadTops(const World& world, const Chunk& chunk) {
-  const ChunkPos pos = chunk.pos();
-  const Chunk* around[4];
-  for (int k = 0; k < 4; ++k) {
-    const BlockPos& o = kDirectionOffsets[kHorizontal[k]];
-    const Chunk* c = world.chunk({pos.x + o.x, pos.z + o.z});
-    around[k] = c && c->light().lit ? c : nullptr;
-  }
-  std::array<int, 256> tops;
-  for (int lz = 0; lz < 16; ++lz)
-    for (int lx = 0; lx < 16; ++lx) {
-      int highest = chunk.light().skyTop[static_cast<std::size_t>(lz * 16 + lx)] + 1;
-      for (int k = 0; k < 4; ++k) {
-        const BlockPos& o = kDirectionOffsets[kHorizontal[k]];
-        const int nx = lx + o.x, nz = lz + o.z;
-        const bool outside = nx < 0 || nx > 15 || nz < 0 || nz > 15;
-        const Chunk* c = outside ? around[k] : &chunk;
-        if (c) highest = std::max<int>(highest, c->light().skyTop[static_cast<std::size_t>((nz & 15) * 16 + (nx & 15))]);
-      }
-      tops[static_cast<std::size_t>(lz * 16 + lx)] = highest;
-    }
-  return tops;
-}
 
 const NibbleArray& layerOf(const ChunkLight& light, LightChannel channel, int section) {
   return channel == LightChannel::Block ? light.block[static_cast<std::size_t>(section)]
@@ -318,157 +254,6 @@ void LightEngine::seedSkyColumn(light::Propagator& p, const BlockPos& at, int ol
     if (level == 0) continue;
     p.setLight(cell, 0);
     p.decrease(at.x, y, at.z, level, kAllDirections);
-  }
-}
-
-// The levels a section's cells have by themselves, a byte each: their emission, or the open sky
-// column's 15 (and the top layer of the world, lit from the sky above through its own opacity).
-void LightEngine::ownLevels(const Chunk& chunk, int section, LightChannel channel, std::uint8_t* levels) const {
-  const Section& blocks = chunk.section(section);
-  if (channel == LightChannel::Block) {
-    if (chunk.light().emitters[static_cast<std::size_t>(section)] == 0) {
-      std::fill(levels, levels + Section::kVolume, 0);
-      return;
-    }
-    for (int i = 0; i < Section::kVolume; ++i) levels[i] = emission_[blocks.at(i)];
-    return;
-  }
-  const auto& tops = chunk.light().skyTop;
-  const int y0 = kMinY + section * 16;
-  for (int ly = 0; ly < 16; ++ly) {
-    const int y = y0 + ly;
-    for (std::size_t column = 0; column < 256; ++column) levels[ly * 256 + column] = y > tops[column] ? 15 : 0;
-  }
-  if (y0 + 15 != kMaxY - 1) return;
-  for (int column = 0; column < 256; ++column) {
-    std::uint8_t& level = levels[15 * 256 + column];
-    if (level == 0) level = light::topLayerSky(attenuation_[blocks.at(15 * 256 + column)]);
-  }
-}
-
-namespace {
-
-// True when a cell on the section's faces would get less light than it has (`current`).
-bool faceLosesLight(const std::uint8_t* current, const light::SectionSolver::Levels& levels) {
-  for (int q = 0; q < light::kByteWords; ++q) {
-    if (light::lowerBytes(light::byteWord(current, q), light::byteWord(levels.data(), q)) &
-        light::faceBytes(q)) {
-      return true;
-    }
-  }
-  return false;
-}
-
-// Calls fn(index) for each cell of a section whose own level (`levels`) must spread: emitters, and
-// open-sky cells up to the highest neighbouring column top (spreadTops); the rest of the open sky only
-// has 15s around it.
-template <class Fn>
-void forSources(const std::uint8_t* levels, LightChannel channel, bool emitters, const std::array<int, 256>& tops,
-                const std::array<std::int16_t, 256>& skyTop, int y0, Fn&& fn) {
-  if (channel == LightChannel::Block) {
-    if (!emitters) return;
-    for (int i = 0; i < Section::kVolume; ++i) {
-      if (levels[i] > 1) fn(i);
-    }
-    return;
-  }
-  for (int column = 0; column < 256; ++column) {
-    const int lo = std::max<int>(skyTop[static_cast<std::size_t>(column)] + 1, y0);
-    const int hi = std::min(tops[static_cast<std::size_t>(column)], y0 + 15);
-    for (int y = lo; y <= hi; ++y) fn((y - y0) * 256 + column);
-  }
-  if (y0 + 15 != kMaxY - 1) return;
-  for (int i = 15 * 256; i < Section::kVolume; ++i) {
-    if (levels[i] > 1 && levels[i] < 15) fn(i);  // the top layer under the sky (topLayerSky)
-  }
-}
-
-}  // namespace
-
-// The section's light is solved in bytes, from its own sources and the light around it
-// (SectionSolver), then written whole. Light leaving through a face that got brighter spreads on
-// outside. If a face cell got darker, light outside may have come from it, and the solver took some
-// of that back in: then the section is relit the general way instead.
-void LightEngine::relightSection(const SectionPos& s) {
-  Chunk* chunk = world_.chunk({s.x, s.z});
-  if (!chunk || !chunk->light().lit || s.section < 0 || s.section >= kSectionCount) return;
-  const int x0 = s.x * 16, y0 = kMinY + s.section * 16, z0 = s.z * 16;
-  const auto tops = spreadTops(world_, *chunk);
-  const light::ChunkWindow window(world_, {s.x - kReach, s.z - kReach}, {s.x + kReach, s.z + kReach});
-  const Section& blocks = chunk->section(s.section);
-  const BlockId uniform = blocks.uniformBlock();
-  light::SectionSolver& solver = *solver_;
-  solver.begin(blocks.blocks() ? blocks.blocks()->data() : &uniform,
-               blocks.blocks() ? Section::kVolume - 1 : 0, attenuation_.data());
-  for (const LightChannel channel : {LightChannel::Block, LightChannel::Sky}) {
-    Propagator p = propagator(window, channel);
-    Cell origin;
-    p.locate(x0, y0, z0, origin);
-    Cell beyond[6];  // each neighbouring section's cell 0, packed; ref null where not loaded
-    for (int d = 0; d < 6; ++d) {
-      const BlockPos& o = kDirectionOffsets[d];
-      if (!p.locatePacked(x0 + o.x * 16, y0 + o.y * 16, z0 + o.z * 16, beyond[d])) beyond[d].ref = nullptr;
-    }
-
-    // Every source offers its light. Open-sky cells above the neighbouring columns only have 15s
-    // around them and are left out.
-    auto& levels = solver.levels();
-    ownLevels(*chunk, s.section, channel, levels.data());
-    const bool emitters = chunk->light().emitters[static_cast<std::size_t>(s.section)] > 0;
-    forSources(levels.data(), channel, emitters, tops, chunk->light().skyTop, y0, [&](int i) { solver.seed(i); });
-    for (int d = 0; d < 6; ++d) {
-      if (!beyond[d].ref) continue;
-      const NibbleArray& n = *beyond[d].ref->layer;
-      if (n.isUniform() && n.uniformLevel() <= 1) continue;
-      for (const light::FaceCell& c : light::kFaceCells[static_cast<std::size_t>(d)]) solver.offer(c.ours, n.get(c.theirs));
-    }
-    solver.solve();
-
-    light::SectionRef& r = *origin.ref;
-    if (std::memcmp(levels.data(), r.levelBytes(), levels.size()) == 0) continue;  // nothing to write
-    if (faceLosesLight(r.levelBytes(), levels)) {
-      relightGeneral(p, *chunk, s, origin, beyond, tops, channel);
-    } else {
-      // Face cells light the cells beyond them where those are darker.
-      p.replaceLevels(r, origin.pos, levels.data());
-      for (int d = 0; d < 6; ++d) {
-        if (!beyond[d].ref) continue;
-        const NibbleArray& n = *beyond[d].ref->layer;
-        if (n.isUniform() && n.uniformLevel() >= 14) continue;
-        for (const light::FaceCell& c : light::kFaceCells[static_cast<std::size_t>(d)]) {
-          const std::uint8_t level = levels[c.ours];
-          if (level > 1 && n.get(c.theirs) + 1 < level) {
-            p.increase(Propagator::posOf(origin.pos, c.ours), level, static_cast<std::uint8_t>(1 << d));
-          }
-        }
-      }
-    }
-    p.run();
-  }
-  stats_.blockReads += solver.reads();
-}
-
-// Every cell gets its own level; light that left the section through a face cell that lost some is
-// removed outside. Then every source inside and the light just outside each face offer their light
-// again, through the general flood fill, which crosses the faces both ways.
-void LightEngine::relightGeneral(light::Propagator& p, const Chunk& chunk, const SectionPos& s, const Cell& origin,
-                                 const Cell* beyond, const std::array<int, 256>& tops, LightChannel channel) {
-  const int y0 = kMinY + s.section * 16;
-  auto& levels = solver_->levels();
-  ownLevels(chunk, s.section, channel, levels.data());
-  p.replaceLevels(*origin.ref, origin.pos, levels.data());
-  const bool emitters = chunk.light().emitters[static_cast<std::size_t>(s.section)] > 0;
-  forSources(levels.data(), channel, emitters, tops, chunk.light().skyTop, y0, [&](int i) {
-    p.increase(Propagator::posOf(origin.pos, i), levels[static_cast<std::size_t>(i)], kAllDirections);
-  });
-  for (int d = 0; d < 6; ++d) {
-    if (!beyond[d].ref) continue;
-    const NibbleArray& n = *beyond[d].ref->layer;
-    const auto toward = static_cast<std::uint8_t>(1 << light::opposite(d));
-    for (const light::FaceCell& c : light::kFaceCells[static_cast<std::size_t>(d)]) {
-      const std::uint8_t level = n.get(c.theirs);
-      if (level > 1 && levels[c.ours] + 1 < level) p.increase(Propagator::posOf(beyond[d].pos, c.theirs), level, toward);
-    }
   }
 }
 

@@ -71,6 +71,8 @@ class LightEngine {
   };
 
  private:
+  static constexpr int kReach = 2;  // chunks an update can reach beyond its seeds (see light_frame.h)
+
   // The flood fill of one channel over `window`, on the engine's reused frame and queues.
   light::Propagator propagator(const light::ChunkWindow& window, LightChannel channel);
   void seedEmitters(light::Propagator& p, Chunk& chunk);

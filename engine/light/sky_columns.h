@@ -1,0 +1,25 @@
+#pragma once
+// The open sky over a chunk, column by column: where each column's sky light starts, the open sky
+// filled in above it, and how high each column's open sky borders a darker neighbour (where sky light
+// spreads sideways). Used when a chunk is lit and when one of its sections is relit.
+
+#include <array>
+#include <cstdint>
+
+#include "world/chunk.h"
+#include "world/world.h"
+
+namespace terrasol::light {
+
+inline constexpr int kHorizontal[4] = {0, 1, 4, 5};  // West, East, North, South
+
+// Highest block with opacity >= 1 in each column; uniform sections are skipped whole.
+void computeSkyTops(const Chunk& chunk, const std::uint8_t* opacity, ChunkLight& light);
+// Sky light 15 above each column's top, 0 elsewhere; whole sections stay uniform where they can.
+void fillOpenSky(ChunkLight& light);
+// For each column of a chunk: the highest sky top among its four horizontal neighbours (in this
+// chunk or the next; unlit neighbours do not count, they take no light), at least its own top + 1.
+// Open-sky cells up to that height border a darker cell, so sky light spreads from them.
+std::array<int, 256> spreadTops(const World& world, const Chunk& chunk);
+
+}  // namespace terrasol::light
