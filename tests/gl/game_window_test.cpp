@@ -14,7 +14,7 @@
 #include "demo.h"
 #include "scene_render/scene_render.h"
 #include "support/gl_test.h"
-#include "support/test_data.h"
+#include "support/gltf_box.h"
 #include "support/golden.h"
 
 namespace terrasol {
@@ -112,16 +112,16 @@ TEST_F(GameWindowTest, APlacedPropIsLitSavedAndBackInTheNextRun) {
   const auto& dir = game.dir;
   std::filesystem::create_directories(dir / "world" / "props");
   // One model from the world's props folder (relative, as the menu offers it), one from anywhere.
-  TERRASOL_SKIP_WITHOUT_TEST_DATA();
-  const auto samples = testing::testData() / "gltf";
-  std::filesystem::copy_file(samples / "BoxTextured" / "glTF-Binary" / "BoxTextured.glb", dir / "world" / "props" / "box.glb");
+  testing::writeBoxGltf(dir / "world" / "props");
+  std::filesystem::create_directories(dir / "elsewhere");
+  const auto elsewhere = testing::writeBoxGltf(dir / "elsewhere", {{"pbrMetallicRoughness", {{"baseColorFactor", {0, 0, 0.8, 1}}}}});
   const auto script = dir / "script.json";
   std::ofstream(script) << R"({ "step": 0.05, "events": [
       { "t": 0.0, "look": [0, 60] },
-      { "t": 0.2, "command": "place_prop", "model": "props/box.glb" },
+      { "t": 0.2, "command": "place_prop", "model": "props/box.gltf" },
       { "t": 0.4, "look": [180, 60] },
       { "t": 0.6, "command": "place_prop", "model": ")" +
-                               (samples / "BoxTextured" / "glTF-Embedded" / "BoxTextured.gltf").string() + R"(" },
+                               elsewhere.string() + R"(" },
       { "t": 0.8, "look": [-45, 30] },
       { "t": 1.1, "command": "save" },
       { "t": 1.2, "command": "quit" } ] })";
@@ -130,7 +130,7 @@ TEST_F(GameWindowTest, APlacedPropIsLitSavedAndBackInTheNextRun) {
   ASSERT_EQ(runGame("--seed 5 " + common + " --input-script " + script.string() + " --report " + first.string()), 0);
   const nlohmann::json placed = readJson(first);
   ASSERT_EQ(placed["props"].size(), 2u) << placed.dump();
-  EXPECT_EQ(placed["props"][0]["model"], "props/box.glb");
+  EXPECT_EQ(placed["props"][0]["model"], "props/box.gltf");
   for (const auto& p : placed["props"]) {
     EXPECT_GT(p["light"][1].get<double>(), 0.5) << "outdoors by day: sky light at its vertices " << p.dump();
   }
@@ -144,13 +144,13 @@ TEST_F(GameWindowTest, APlacedPropIsLitSavedAndBackInTheNextRun) {
     EXPECT_EQ(reopened["props"][i]["position"], placed["props"][i]["position"]);
   }
   // A prop whose model went missing stays in the level, undrawn, and the game runs on.
-  std::filesystem::rename(dir / "world" / "props" / "box.glb", dir / "box.glb");
+  std::filesystem::rename(dir / "world" / "props" / "box.gltf", dir / "box.gltf");
   const auto third = dir / "third.json";
   ASSERT_EQ(runGame(common + " --frames 2 --report " + third.string()), 0);
   EXPECT_EQ(readJson(third)["props"].size(), 1u);
   EXPECT_EQ(readJson(dir / "world" / "level.json")["props"].size(), 2u) << "the broken one is kept for when the file comes back";
   // Back again, the box is where it was; looking at it as when it was placed and breaking removes it.
-  std::filesystem::rename(dir / "box.glb", dir / "world" / "props" / "box.glb");
+  std::filesystem::rename(dir / "box.gltf", dir / "world" / "props" / "box.gltf");
   const auto removeScript = dir / "remove.json";
   std::ofstream(removeScript) << R"({ "step": 0.05, "events": [
       { "t": 0.0, "look": [0, 60] }, { "t": 0.2, "button": "left" },
@@ -159,7 +159,7 @@ TEST_F(GameWindowTest, APlacedPropIsLitSavedAndBackInTheNextRun) {
   ASSERT_EQ(runGame(common + " --input-script " + removeScript.string() + " --report " + fourth.string()), 0);
   const nlohmann::json removed = readJson(fourth);
   ASSERT_EQ(removed["props"].size(), 1u) << removed.dump();
-  EXPECT_NE(removed["props"][0]["model"], "props/box.glb");
+  EXPECT_NE(removed["props"][0]["model"], "props/box.gltf");
   EXPECT_TRUE(removed["edits"].empty()) << "the click took the prop, not the block behind it";
   EXPECT_EQ(readJson(dir / "world" / "level.json")["props"].size(), 1u);
 }

@@ -15,6 +15,7 @@
 #include "core/error.h"
 #include "scene_render/scene_render.h"
 #include "support/gl_test.h"
+#include "support/gltf_box.h"
 #include "support/test_data.h"
 #include "support/shader_variants.h"
 #include "support/world_support.h"
@@ -25,16 +26,15 @@ namespace {
 using testing::hasAnyVariantOf;
 using testing::hasVariant;
 
-const std::filesystem::path kModels = testing::testData() / "gltf";  // the Khronos samples
-const std::filesystem::path kBox = kModels / "Box" / "glTF-Embedded" / "Box.gltf";  // red, 1 block, centred
+const std::filesystem::path kModels = testing::testData() / "gltf";  // the Khronos samples, where present
 
-// Every prop test places the Khronos samples: skipped where the third-party test data is absent.
 class PropsTest : public testing::GlTest {
  protected:
   void SetUp() override {
-    TERRASOL_SKIP_WITHOUT_TEST_DATA();
     GlTest::SetUp();
+    box_ = testing::writeBoxGltf(testing::scratchDir("props_box"));
   }
+  std::filesystem::path box_;  // red, 1 block, centred (support/gltf_box.h)
 };
 
 // A flat world in the afternoon sun, the camera looking down at the origin from the south.
@@ -82,7 +82,7 @@ TEST_F(PropsTest, APropCastsItsShadowOnTheGroundInBothShadowModes) {
     const glm::dvec3 toLight(toLightAt(scene));
     const glm::dvec3 shadow = centre - toLight * ((centre.y - 64.0) / toLight.y);
     const RenderedFrame bare = SceneRenderer(scene).renderFrame(0);
-    scene.props = {prop(kBox, centre, 2.0f)};
+    scene.props = {prop(box_, centre, 2.0f)};
     SceneRenderer withProp(scene);
     const RenderedFrame shaded = withProp.renderFrame(0);
     EXPECT_EQ(shaded.stats.propsDrawn, 1) << nameOf(mode, kShadowModes);
@@ -100,7 +100,7 @@ TEST_F(PropsTest, APropInTheShadowOfABlockIsDarkerInBothShadowModes) {
   for (const ShadowMode mode : {ShadowMode::Warped, ShadowMode::Cascaded}) {
     SceneFile scene = flatAfternoon(mode);
     const glm::dvec3 centre(0.5, 64.5, 0.5);
-    scene.props = {prop(kBox, centre)};
+    scene.props = {prop(box_, centre)};
     const RenderedFrame lit = SceneRenderer(scene).renderFrame(0);
     // A stone block three blocks up the light's way from the box's top shades it.
     const glm::dvec3 above = centre + glm::dvec3(0.0, 0.5, 0.0) + glm::dvec3(toLightAt(scene)) * 3.0;
@@ -124,7 +124,7 @@ TEST_F(PropsTest, APropNextToATorchTakesItsWarmBlockLight) {
   scene.cameraPosition = {0.5, 66.5, 3.0};
   scene.cameraLookAt = {0.5, 64.5, 0.5};
   const glm::dvec3 centre(0.5, 64.5, 0.5);
-  scene.props = {prop(kBox, centre)};
+  scene.props = {prop(box_, centre)};
   const RenderedFrame dark = SceneRenderer(scene).renderFrame(0);
   scene.edits.push_back({SceneEdit::Kind::Set, {2, 64, 1}, {2, 64, 1}, "torch", "world.edits[2]"});
   const RenderedFrame torchlit = SceneRenderer(scene).renderFrame(0);
@@ -135,22 +135,16 @@ TEST_F(PropsTest, APropNextToATorchTakesItsWarmBlockLight) {
   context_->checkErrors("prop light");
 }
 
-// The red box with its material edited: a copy in the test's scratch folder.
+// The red box with its material edited, in the test's scratch folder.
 std::filesystem::path editedBox(const std::string& name, const nlohmann::json& material) {
-  const auto dir = testing::scratchDir("props_" + name);
-  std::filesystem::create_directories(dir);
-  nlohmann::json j = nlohmann::json::parse(readTextFile(kBox));
-  j["materials"][0].merge_patch(material);
-  const auto file = dir / "Box.gltf";
-  std::ofstream(file) << j.dump();
-  return file;
+  return testing::writeBoxGltf(testing::scratchDir("props_" + name), material);
 }
 
 TEST_F(PropsTest, AlphaModesMaskAndBlend) {
   SceneFile scene = flatAfternoon();
   const glm::dvec3 centre(0.5, 64.5, 0.5), top = centre + glm::dvec3(0.0, 0.5, 0.0);
   const RenderedFrame bare = SceneRenderer(scene).renderFrame(0);
-  scene.props = {prop(kBox, centre)};
+  scene.props = {prop(box_, centre)};
   SceneRenderer opaqueRenderer(scene);
   const RenderedFrame opaque = opaqueRenderer.renderFrame(0);
   EXPECT_TRUE(hasVariant(opaqueRenderer, "prop"));
@@ -185,7 +179,7 @@ TEST_F(PropsTest, AlphaModesMaskAndBlend) {
 TEST_F(PropsTest, DebugViewsShowPropsLikeBlocks) {
   SceneFile scene = flatAfternoon();
   const glm::dvec3 centre(0.5, 64.5, 0.5), top = centre + glm::dvec3(0.0, 0.5, 0.0);
-  scene.props = {prop(kBox, centre)};
+  scene.props = {prop(box_, centre)};
   SceneRenderer renderer(scene);
   FrameRequest request;
   request.debugView = DebugView::VertexNormal;
@@ -205,6 +199,7 @@ TEST_F(PropsTest, DebugViewsShowPropsLikeBlocks) {
 }
 
 TEST_F(PropsTest, NormalMapsAndEmissionReachTheGBufferEvenWithoutPackMaps) {
+  TERRASOL_SKIP_WITHOUT_TEST_DATA();  // the textured sample, over a real pack with no _n or _s
   // The textured box with a normal map tilting every texel towards +u, and a white glow.
   const auto dir = testing::scratchDir("props_normal_map");
   std::filesystem::remove_all(dir);
@@ -267,7 +262,7 @@ TEST_F(PropsTest, BaseColourMipmapsAverageInLinearLight) {
 
 TEST_F(PropsTest, AMissingModelNamesThePropAndTheFile) {
   SceneFile scene = flatAfternoon();
-  scene.props = {prop(kModels / "nothing_here.glb", {0.5, 64.5, 0.5})};
+  scene.props = {prop(box_.parent_path() / "nothing_here.glb", {0.5, 64.5, 0.5})};
   try {
     SceneRenderer renderer(scene);
     FAIL() << "no error";
