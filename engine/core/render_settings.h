@@ -56,6 +56,19 @@ struct ShadowSettings {
   bool operator==(const ShadowSettings&) const = default;
 };
 
+// "render.reflections": screen-space reflections of smooth surfaces with a sky fallback
+// (render/passes/reflection_pass.h).
+struct ReflectionSettings {
+  bool enabled = false;
+  int maxSteps = 48;             // linear steps along the reflected ray (1..256), then a binary refinement
+  float thickness = 1.0f;        // blocks a hit may lie behind the depth buffer's surface (0.01..16)
+  float resolutionScale = 1.0f;  // the march runs at this fraction of the frame's size (0.25..1)
+  float minSmoothness = 0.6f;    // LabPBR smoothness (0..1) below which no ray is marched
+  float maxDistance = 64.0f;     // blocks a ray travels at most (1..1024)
+
+  bool operator==(const ReflectionSettings&) const = default;
+};
+
 // The layers the settings ask for: one (warped), or the cascades, smallest first (distance / 2^k).
 inline int shadowLayers(const ShadowSettings& settings) {
   return settings.mode == ShadowMode::Cascaded ? std::clamp(settings.cascades, 2, kMaxShadowCascades) : 1;

@@ -166,6 +166,20 @@ void parseShadow(const nlohmann::json& value, const std::string& key, ShadowSett
   }
 }
 
+void parseReflections(const nlohmann::json& value, const std::string& key, ReflectionSettings& r) {
+  checkObject(value, key, {"enabled", "max_steps", "thickness", "resolution_scale", "min_smoothness", "max_distance"});
+  if (const json* v = field(value, "enabled")) r.enabled = boolean(*v, member(key, "enabled"));
+  if (const json* v = field(value, "max_steps")) r.maxSteps = static_cast<int>(wholeNumber(*v, member(key, "max_steps"), 1, 256));
+  if (const json* v = field(value, "thickness")) r.thickness = numberIn(*v, member(key, "thickness"), 0.01, 16.0, false);
+  if (const json* v = field(value, "resolution_scale")) {
+    r.resolutionScale = numberIn(*v, member(key, "resolution_scale"), 0.25, 1.0, false);
+  }
+  if (const json* v = field(value, "min_smoothness")) {
+    r.minSmoothness = numberIn(*v, member(key, "min_smoothness"), 0.0, 1.0, false);
+  }
+  if (const json* v = field(value, "max_distance")) r.maxDistance = numberIn(*v, member(key, "max_distance"), 1.0, 1024.0, false);
+}
+
 nlohmann::json shadowJson(const ShadowSettings& s) {
   return {{"enabled", s.enabled},
           {"mode", nameOf(s.mode, kShadowModes)},
@@ -186,7 +200,8 @@ namespace {
 void parseRender(const json& render, SceneFile& scene) {
   checkObject(render, "render",
               {"width", "height", "view_distance", "debug_view", "specular", "material_ao", "cave_culling",
-               "shadow_caster_culling", "cull_faces_away", "leave_out_absent_maps", "cull_passes", "shadow"});
+               "shadow_caster_culling", "cull_faces_away", "leave_out_absent_maps", "cull_passes", "shadow",
+               "reflections"});
   if (const json* v = field(render, "width")) {
     scene.width = static_cast<int>(wholeNumber(*v, "render.width", 1, 8192));
   }
@@ -207,6 +222,7 @@ void parseRender(const json& render, SceneFile& scene) {
   }
   if (const json* v = field(render, "cull_faces_away")) scene.cullFacesAway = boolean(*v, "render.cull_faces_away");
   if (const json* v = field(render, "cull_passes")) scene.cullPasses = boolean(*v, "render.cull_passes");
+  if (const json* v = field(render, "reflections")) parseReflections(*v, "render.reflections", scene.reflections);
   if (const json* v = field(render, "leave_out_absent_maps")) {
     scene.leaveOutAbsentMaps = boolean(*v, "render.leave_out_absent_maps");
   }

@@ -74,6 +74,7 @@ struct SceneFile {
   bool cullFacesAway = true;       // "render.cull_faces_away": face groups turned away are not drawn
   bool cullPasses = true;          // "render.cull_passes": no pass whose output nothing reads, or with nothing to draw
   ShadowSettings shadow;           // "render.shadow"
+  ReflectionSettings reflections;  // "render.reflections"
   glm::dvec3 cameraPosition{0.0, 80.0, 0.0};
   glm::dvec3 cameraLookAt{0.0, 80.0, -1.0};
   float fov = 70.0f;  // vertical degrees, in (0, 180)
@@ -94,6 +95,8 @@ SceneFile parseScene(std::string_view json, const std::filesystem::path& file);
 // A "render.shadow" object (also the game's settings) at key path `key`, over `shadow`'s values; and back.
 void parseShadow(const nlohmann::json& value, const std::string& key, ShadowSettings& shadow);
 nlohmann::json shadowJson(const ShadowSettings& shadow);
+// A "render.reflections" object at key path `key`, over `reflections`' values.
+void parseReflections(const nlohmann::json& value, const std::string& key, ReflectionSettings& reflections);
 
 std::string sceneError(const SceneFile& scene, std::string_view key, std::string_view what);
 

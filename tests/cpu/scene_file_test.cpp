@@ -220,6 +220,25 @@ TEST(SceneFile, SpecularModelAndMaterialAo) {
       failsWith(R"({"render": {"material_ao": 1}})", "scenes/a.json: render.material_ao: expected true or false"));
 }
 
+TEST(SceneFile, ReflectionSettings) {
+  const SceneFile scene = parseScene(R"({"render": {"reflections": {"enabled": true, "max_steps": 64,
+      "thickness": 0.5, "resolution_scale": 0.5, "min_smoothness": 0.8, "max_distance": 32}}})", "scenes/a.json");
+  const ReflectionSettings& r = scene.reflections;
+  EXPECT_TRUE(r.enabled);
+  EXPECT_EQ(r.maxSteps, 64);
+  EXPECT_FLOAT_EQ(r.thickness, 0.5f);
+  EXPECT_FLOAT_EQ(r.resolutionScale, 0.5f);
+  EXPECT_FLOAT_EQ(r.minSmoothness, 0.8f);
+  EXPECT_FLOAT_EQ(r.maxDistance, 32.0f);
+  EXPECT_EQ(parseScene("{}", "a.json").reflections, ReflectionSettings{}) << "absent: the defaults";
+  EXPECT_TRUE(failsWith(R"({"render": {"reflections": {"max_steps": 0}}})", "render.reflections.max_steps: expected"));
+  EXPECT_TRUE(failsWith(R"({"render": {"reflections": {"resolution_scale": 0.1}}})",
+                        "render.reflections.resolution_scale: expected"));
+  EXPECT_TRUE(failsWith(R"({"render": {"reflections": {"min_smoothness": 1.5}}})",
+                        "render.reflections.min_smoothness: expected"));
+  EXPECT_TRUE(failsWith(R"({"render": {"reflections": {"mirror": true}}})", "render.reflections.mirror: unknown key"));
+}
+
 // Every name a file may give parses to the enum value of the same index.
 TEST(SceneFile, EveryEnumNameParsesToItsValue) {
   for (std::size_t i = 0; i < kDebugViews.size(); ++i) {
