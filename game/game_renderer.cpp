@@ -3,7 +3,6 @@
 #include "core/error.h"
 #include "core/paths.h"
 
-
 namespace terrasol {
 namespace {
 

@@ -17,8 +17,7 @@ constexpr ImGuiWindowFlags kOverlayFlags = ImGuiWindowFlags_NoDecoration | ImGui
                                            ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
                                            ImGuiWindowFlags_NoNav | ImGuiWindowFlags_AlwaysAutoResize;
 
-// A combo over fixed names; true when the choice changed.
-// A combo box over an enum, by its names (in the enum's order).
+// A combo box over an enum, by its names (in the enum's order); true when the choice changed.
 template <class E>
 bool comboOf(const char* label, E& value, std::span<const std::string_view> names) {
   bool changed = false;

@@ -44,7 +44,7 @@ fs::path dataRoot() {
 
 std::optional<fs::path> testDataDir(std::string* why) {
   const char* env = std::getenv("TERRASOL_TESTDATA");
-  const fs::path dir = env && *env ? fs::path(env) : dataRoot().parent_path() / "shared" / "testdata";
+  const fs::path dir = env && *env ? fs::path(env) : (dataRoot() / ".." / "shared" / "testdata").lexically_normal();
   std::error_code error;
   if (fs::is_directory(dir, error)) return dir;
   if (why) {

@@ -35,7 +35,7 @@ constexpr std::string_view nameOf(E value, const std::array<std::string_view, N>
   return names[static_cast<std::size_t>(value)];
 }
 
-// "render.shadow": the shadow map (engine/render/shadow_map.h draws it).
+// "render.shadow": the shadow map (render/passes/shadow_pass.h draws it, render/shadow_map.h holds it).
 struct ShadowSettings {
   bool enabled = true;
   ShadowMode mode = ShadowMode::Warped;

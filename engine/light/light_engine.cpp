@@ -1,9 +1,7 @@
 #include "light/light_engine.h"
 
 #include <algorithm>
-#include <cstring>
 
-#include "light/level_words.h"
 #include "light/light_frame.h"
 #include "light/propagator.h"
 #include "light/section_solver.h"
@@ -14,7 +12,6 @@ namespace terrasol {
 using light::Cell;
 using light::kAllDirections;
 using light::Propagator;
-using light::SectionRef;
 using light::computeSkyTops;
 using light::fillOpenSky;
 using light::kHorizontal;

@@ -16,7 +16,6 @@ namespace terrasol {
 using light::Cell;
 using light::kAllDirections;
 using light::Propagator;
-using light::SectionRef;
 using light::spreadTops;
 
 // The levels a section's cells have by themselves, a byte each: their emission, or the open sky

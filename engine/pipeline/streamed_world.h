@@ -1,5 +1,5 @@
 #pragma once
-// The game's world: a save directory, the chunks streamed around the player (generated or loaded on
+// A streamed world (the game's, and a saved world the exporter reads): a save directory, the chunks streamed around the player (generated or loaded on
 // worker threads), their light, and remeshing on worker threads. Each frame the game hands it the
 // player's chunk and a time budget; it returns finished meshes. Plain C++: tests play it with no GL.
 

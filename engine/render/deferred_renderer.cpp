@@ -55,8 +55,10 @@ void DeferredRenderer::render(const FrameInputs& inputs, const SectionMeshes& me
 
   for (const FrameGraph::Skipped& s : graph.skipped()) stats_.passesSkipped.push_back({s.pass, s.why});
   const FrameView& view = frame.view;
-  lastGeometry_ = {view.camera, view.viewProjection, view.inverseViewProjection, view.day.toShadowLight,
-                   frame.shadowDrawn, frame.shadowDrawn ? (*frame.shadow.views)[0].texelWorld : 0.0f};
+  const auto& ran = graph.executed();
+  const bool shown = frame.shadowDrawn && std::find(ran.begin(), ran.end(), "lighting") != ran.end();
+  lastGeometry_ = {view.camera, view.viewProjection, view.inverseViewProjection, view.day.toShadowLight, shown,
+                   shown ? (*frame.shadow.views)[0].texelWorld : 0.0f};
 }
 
 FrameView DeferredRenderer::viewFor(const FrameInputs& inputs, glm::ivec2 size) const {
@@ -81,7 +83,7 @@ FrameView DeferredRenderer::viewFor(const FrameInputs& inputs, glm::ivec2 size) 
   if (forwardLength > 1e-9) view.forward = forward / forwardLength;
   view.lightmap = lightmapColours(view.day, inputs.ticks);
   // Below 0.1 % of its strength the light can show nothing (it is 0 at and under the horizon).
-  view.shadowLive = shared_.options.shadow.enabled && view.day.directStrength > 1e-3f;
+  view.lightUp = shared_.options.shadow.enabled && view.day.directStrength > 1e-3f;
   // Receivers down to the world's bottom: the lowest visible section jumps by a hundred blocks as a
   // cave comes into view, and a floor that followed it would have the map redrawn at every jump.
   view.cone.eye = view.camera;

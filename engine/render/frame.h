@@ -11,22 +11,16 @@
 
 #include "core/day_cycle.h"
 #include "core/lightmap.h"
+#include "render/frame_graph.h"
 #include "render/frame_inputs.h"
+#include "render/frustum.h"
 #include "render/gbuffer.h"
 #include "render/section_meshes.h"
 #include "render/shadow_map.h"
 #include "render/shadow_receivers.h"
-#include "render/frame_graph.h"
-#include "render/frustum.h"
+#include "render/visible_section.h"
 
 namespace terrasol {
-
-// A section with a mesh inside a frustum.
-struct VisibleSection {
-  const SectionMeshes::Section* section;
-  glm::vec3 offset;  // section corner minus camera
-  SectionPos pos;
-};
 
 struct FrameView {
   glm::dvec3 camera{0.0};
@@ -38,7 +32,7 @@ struct FrameView {
   DayState day;
   LightmapColours lightmap;
   bool materialAo = true;
-  bool shadowLive = false;  // shadows are on and a light is above the horizon
+  bool lightUp = false;  // shadows are on and the shadow-casting light is above the horizon
   glm::dvec3 shadowCentreOffset{0.0};
   glm::dvec3 forward{0.0, 0.0, -1.0};  // unit view direction
   ViewCone cone;                       // the view's receivers, for the shadow pass
@@ -72,7 +66,9 @@ struct Frame {
   GLuint target = 0;                    // the framebuffer drawn into (0: a window)
   glm::ivec2 size{0};
   ShadowLookup shadow;
-  bool shadowDrawn = false;             // the shadow pass drew or kept the map this frame
+  // The shadow pass drew or kept the map this frame. (A frame whose passes never read the map, a debug
+  // view, does not move the schedule on; the next frame then sees the camera's pace over both.)
+  bool shadowDrawn = false;
 };
 
 }  // namespace terrasol

@@ -64,7 +64,7 @@ struct FrameGeometry {
   glm::mat4 viewProjection{1.0f};         // camera-relative
   glm::mat4 inverseViewProjection{1.0f};
   glm::vec3 toLight{0.0f, 1.0f, 0.0f};    // the shadow-casting light
-  bool shadowLive = false;                // the shadow map shows this frame's light (drawn or kept)
+  bool shadowMapShown = false;            // the lit passes read a shadow map (drawn this frame, or kept)
   float shadowTexelWorld = 0.0f;          // blocks per texel of the unwarped shadow map (its first layer)
 };
 

@@ -32,7 +32,7 @@ void setLightingUniforms(GLuint program, const FrameView& view, const ShadowLook
   setVec3(program, "u_lightmapSky", view.lightmap.sky);
   setVec3(program, "u_lightmapBlock", view.lightmap.block);
   glProgramUniform1f(program, glGetUniformLocation(program, "u_lightmapFloor"), view.lightmap.floor);
-  if (shadow.settings->enabled) setShadowUniforms(program, shadow, view.shadowLive);
+  if (shadow.settings->enabled) setShadowUniforms(program, shadow, view.lightUp);
 }
 
 void setSkyUniforms(GLuint program, const FrameView& view) {

@@ -29,8 +29,6 @@ class VariantBuilder {
  public:
   VariantBuilder(const ShaderPreprocessor& shaders, PassShared& shared) : shaders_(shaders), shared_(shared) {}
   gl::Program operator()(const char* vertex, const char* fragment, std::vector<ShaderDefine> extra = {}) const;
-  const RendererOptions& options() const { return shared_.options; }
-  const GBufferContents& contents() const { return shared_.contents; }
 
  private:
   const ShaderPreprocessor& shaders_;

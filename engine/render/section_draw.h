@@ -6,7 +6,10 @@
 #include <glm/vec3.hpp>
 
 #include "render/block_textures.h"
-#include "render/frame.h"
+#include "render/frame_inputs.h"
+#include "render/frustum.h"
+#include "render/section_meshes.h"
+#include "render/visible_section.h"
 
 namespace terrasol {
 

@@ -10,7 +10,6 @@
 
 namespace terrasol {
 
-
 ShadowView shadowViewFor(int resolution, float mapDistance, glm::vec3 toLight, glm::dvec3 camera, glm::dvec3 centre) {
   const glm::dvec3 z = glm::normalize(glm::dvec3(toLight));
   const glm::dvec3 hint = std::abs(z.y) < 0.99 ? glm::dvec3(0.0, 1.0, 0.0) : glm::dvec3(0.0, 0.0, 1.0);

@@ -7,7 +7,7 @@
 //   moves world points by fractions of a texel and casters' float vertices round differently after a
 //   step, so every step flips a few shadow edges; re-centring rarely turns that crawl into an
 //   occasional step.
-// - Keep (the game: FrameRequest::mayReuse): nothing the map shows changed (centre, meshes, props,
+// - Keep (the game: FrameInputs::reuseShadowMap): nothing the map shows changed (centre, meshes, props,
 //   the light within 0.05 degrees) and it still serves the view, so no shadow pass runs.
 // - Spread (update_frames N > 1, Luanti's shadow_update_frames): a changed map is rebuilt into a
 //   second map, slices of its casters a frame, and swapped in when complete; no frame pays the whole
@@ -62,7 +62,7 @@ struct ShadowPlan {
   ShadowSlices slices;    // Spread: this frame's; Whole: all of them
   bool startsBuild = false;  // Spread: the build's first slice (the map is cleared first)
   bool completes = false;    // Spread: the built map replaces the shown one after this slice
-  int slicesDrawn = 0;       // for the frame's stats: Spread its count, Whole `update_frames`, Keep 0
+  int slicesDrawn = 0;       // for the frame's stats: Spread its count, Whole all the slices there are, Keep 0
   glm::dvec3 wanted{0.0};    // where the camera wants the map this frame
   glm::dvec3 centre{0.0};    // where it is placed (re-centred rarely)
 };

@@ -18,7 +18,6 @@ enum class Ray { Lit, Shadowed, Ambiguous };
 // How much a pixel's shadow term must change, across 0.5, to count as flicker.
 constexpr float kFlipMargin = 0.01f;
 
-
 // The first block along unit `dir` from `origin` decides: an opaque cube shadows, anything else drawn
 // (cutout, translucent) is ambiguous.
 Ray march(const World& world, glm::dvec3 origin, glm::dvec3 dir, double maxDistance) {
@@ -84,7 +83,7 @@ ShadowError measureShadowError(const World& world, const GBufferPixels& frame, c
       if (!surfaceAt(frame, geometry, x, y, s) || !facesLight(s, geometry)) continue;
       const std::size_t i = static_cast<std::size_t>(y) * static_cast<std::size_t>(frame.size.x) + static_cast<std::size_t>(x);
       const float rendered = frame.scene[i].a;
-      if (frame.light[i].g == 0 && rendered > 0.0f && geometry.shadowLive) ++e.caveLeakPixels;
+      if (frame.light[i].g == 0 && rendered > 0.0f && geometry.shadowMapShown) ++e.caveLeakPixels;
       const double d = glm::length(s.relative);
       if (d > distance) continue;
       ShadowCounts& bucket = e.byDistance[static_cast<std::size_t>(bucketOf(d))];

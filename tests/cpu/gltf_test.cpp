@@ -18,7 +18,8 @@
 namespace terrasol {
 namespace {
 
-const std::filesystem::path kModels = testing::testData() / "gltf";  // the Khronos samples
+// The Khronos samples, where present (after TERRASOL_SKIP_WITHOUT_TEST_DATA).
+std::filesystem::path models() { return testing::testData() / "gltf"; }
 
 std::string errorOf(const std::filesystem::path& file) { return testing::errorOf([&] { loadModel(file); }); }
 
@@ -26,7 +27,7 @@ std::string errorOf(const std::filesystem::path& file) { return testing::errorOf
 std::filesystem::path copyOf(const std::string& sample, const std::string& name) {
   const auto dir = testing::scratchDir("gltf_" + name);
   std::filesystem::remove_all(dir);
-  std::filesystem::copy(kModels / sample, dir, std::filesystem::copy_options::recursive);
+  std::filesystem::copy(models() / sample, dir, std::filesystem::copy_options::recursive);
   return dir;
 }
 
@@ -56,7 +57,7 @@ TEST(GltfModel, ParentNodesMoveTheirChildren) {
   EXPECT_NEAR(moved.max.x, 10.5f, 1e-5f);
   EXPECT_NEAR(moved.min.y, -4.5f, 1e-5f);
   // The root's rotation (y up to z) turns the child's normals: the box's +y face points along -z or +z.
-  const Model box = loadModel(kModels / "BoxTextured" / "glTF" / "BoxTextured.gltf");
+  const Model box = loadModel(models() / "BoxTextured" / "glTF" / "BoxTextured.gltf");
   const Model raw = [&] {
     nlohmann::json r = readJson(dir / "BoxTextured.gltf");
     r["nodes"][0].erase("matrix");
@@ -72,7 +73,7 @@ TEST(GltfModel, ParentNodesMoveTheirChildren) {
 
 TEST(GltfModel, TheBoxLoadsWithItsMaterialAndRightAngledTangents) {
   TERRASOL_SKIP_WITHOUT_TEST_DATA();
-  const Model box = loadModel(kModels / "Box" / "glTF-Embedded" / "Box.gltf");
+  const Model box = loadModel(models() / "Box" / "glTF-Embedded" / "Box.gltf");
   ASSERT_EQ(box.meshes.size(), 1u);
   EXPECT_EQ(box.meshes[0].vertices.size(), 24u);
   EXPECT_EQ(box.meshes[0].indices.size(), 36u);
@@ -91,9 +92,9 @@ TEST(GltfModel, TheBoxLoadsWithItsMaterialAndRightAngledTangents) {
 
 TEST(GltfModel, TheTexturedBoxIsTheSameInAllThreeForms) {
   TERRASOL_SKIP_WITHOUT_TEST_DATA();
-  const Model separate = loadModel(kModels / "BoxTextured" / "glTF" / "BoxTextured.gltf");
-  const Model binary = loadModel(kModels / "BoxTextured" / "glTF-Binary" / "BoxTextured.glb");
-  const Model embedded = loadModel(kModels / "BoxTextured" / "glTF-Embedded" / "BoxTextured.gltf");
+  const Model separate = loadModel(models() / "BoxTextured" / "glTF" / "BoxTextured.gltf");
+  const Model binary = loadModel(models() / "BoxTextured" / "glTF-Binary" / "BoxTextured.glb");
+  const Model embedded = loadModel(models() / "BoxTextured" / "glTF-Embedded" / "BoxTextured.gltf");
   for (const Model* m : {&separate, &binary, &embedded}) {
     ASSERT_EQ(m->meshes.size(), 1u);
     EXPECT_EQ(m->meshes[0].vertices.size(), 24u);
@@ -113,7 +114,7 @@ TEST(GltfModel, TheTexturedBoxIsTheSameInAllThreeForms) {
 
 TEST(GltfModel, TheCubeHasItsMetallicRoughnessTextureAndTangents) {
   TERRASOL_SKIP_WITHOUT_TEST_DATA();
-  const Model cube = loadModel(kModels / "Cube" / "glTF" / "Cube.gltf");
+  const Model cube = loadModel(models() / "Cube" / "glTF" / "Cube.gltf");
   ASSERT_FALSE(cube.meshes.empty());
   ASSERT_EQ(cube.materials.size(), 1u);
   EXPECT_GE(cube.materials[0].baseColorImage, 0);
@@ -195,7 +196,7 @@ TEST(GltfModel, BadFilesNameTheFileAndThePlace) {
     std::ofstream(dir / "glTF-Binary" / "BoxTextured.glb", std::ios::binary | std::ios::trunc) << glb.substr(0, glb.size() / 2);
     EXPECT_NE(errorOf(dir / "glTF-Binary" / "BoxTextured.glb").find("BoxTextured.glb"), std::string::npos);
   }
-  EXPECT_NE(errorOf(kModels / "nowhere.glb").find("nowhere.glb"), std::string::npos);
+  EXPECT_NE(errorOf(models() / "nowhere.glb").find("nowhere.glb"), std::string::npos);
 }
 
 }  // namespace

@@ -111,7 +111,7 @@ TEST(ShadowScheduleTest, AFastCameraGetsMoreSlicesAFrameAndAJumpRedrawsWhole) {
 }
 
 TEST(ShadowScheduleTest, ATurnPastHalfTheMarginRebuildsAndPastAllOfItRedrawsWhole) {
-  ShadowSchedule schedule(settings(1), true);
+  ShadowSchedule schedule(settings(4), true);
   ShadowFrame f = frameAt({0.0, 80.0, 0.0});
   f.cone.aspect = 16.0f / 9.0f;
   step(schedule, f);
@@ -123,7 +123,8 @@ TEST(ShadowScheduleTest, ATurnPastHalfTheMarginRebuildsAndPastAllOfItRedrawsWhol
     return t;
   };
   EXPECT_EQ(step(schedule, turned(3.0f)).action, Action::Keep) << "inside half the margin";
-  EXPECT_EQ(step(schedule, turned(20.0f)).action, Action::Whole) << "past the margin";
+  EXPECT_EQ(step(schedule, turned(10.0f)).action, Action::Spread) << "past half the margin: a rebuild starts";
+  EXPECT_EQ(step(schedule, turned(20.0f)).action, Action::Whole) << "past the margin: the kept map is dropped";
 }
 
 }  // namespace

@@ -50,7 +50,9 @@ void main() {
   const auto bytesOut = bytesIn * per;
   gl::Buffer input = gl::Buffer::create(), output = gl::Buffer::create();
   glNamedBufferStorage(input.id(), bytesIn, in.data(), 0);
-  glNamedBufferStorage(output.id(), bytesOut, nullptr, GL_DYNAMIC_STORAGE_BIT);
+  // NaN everywhere first: an output the shader never writes fails every comparison.
+  const std::vector<glm::vec4> unwritten(in.size() * static_cast<std::size_t>(per), glm::vec4(std::nanf("")));
+  glNamedBufferStorage(output.id(), bytesOut, unwritten.data(), GL_DYNAMIC_STORAGE_BIT);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, input.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, output.id());
   glProgramUniform1ui(program.id(), glGetUniformLocation(program.id(), "u_count"), static_cast<GLuint>(in.size()));

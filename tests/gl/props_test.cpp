@@ -26,7 +26,8 @@ namespace {
 using testing::hasAnyVariantOf;
 using testing::hasVariant;
 
-const std::filesystem::path kModels = testing::testData() / "gltf";  // the Khronos samples, where present
+// The Khronos samples, where present (after TERRASOL_SKIP_WITHOUT_TEST_DATA).
+std::filesystem::path models() { return testing::testData() / "gltf"; }
 
 class PropsTest : public testing::GlTest {
  protected:
@@ -203,7 +204,7 @@ TEST_F(PropsTest, NormalMapsAndEmissionReachTheGBufferEvenWithoutPackMaps) {
   // The textured box with a normal map tilting every texel towards +u, and a white glow.
   const auto dir = testing::scratchDir("props_normal_map");
   std::filesystem::remove_all(dir);
-  std::filesystem::copy(kModels / "BoxTextured" / "glTF", dir);
+  std::filesystem::copy(models() / "BoxTextured" / "glTF", dir);
   Image tilted(4, 4);
   for (std::size_t i = 0; i < tilted.rgba.size(); i += 4) {
     tilted.rgba[i] = 218;  // x = 0.71

@@ -23,5 +23,7 @@ inline std::string testDataMissing() {
 }  // namespace terrasol::testing
 
 // In a test body or SetUp(): skips the test when the third-party test data is absent.
-#define TERRASOL_SKIP_WITHOUT_TEST_DATA()                                                   \
-  if (::terrasol::testing::testData().empty()) GTEST_SKIP() << ::terrasol::testing::testDataMissing()
+#define TERRASOL_SKIP_WITHOUT_TEST_DATA()                                                          \
+  do {                                                                                             \
+    if (::terrasol::testing::testData().empty()) GTEST_SKIP() << ::terrasol::testing::testDataMissing(); \
+  } while (0)

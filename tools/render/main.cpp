@@ -192,7 +192,7 @@ int renderScene(const Options& o, const SceneFile& scene, SceneRenderer& rendere
     saveImage(o.out / frameName("frame", i), frame.image);
     if (!o.report.empty()) {
       frames.push_back(frameReport(i, frame));
-      if (frame.geometry.shadowLive) frames.back()["shadow_error"] = shadowReport(renderer, i, frame, request);
+      if (frame.geometry.shadowMapShown) frames.back()["shadow_error"] = shadowReport(renderer, i, frame, request);
     }
     if (o.timings) {
       std::string line = frameName("frame", i) + ":";

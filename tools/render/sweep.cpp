@@ -51,7 +51,7 @@ Row measure(const std::filesystem::path& file, std::vector<std::string> settings
   const RenderedFrame frame = renderer.renderFrame(0, request);
   Row row;
   row.values = values;
-  if (frame.geometry.shadowLive) {
+  if (frame.geometry.shadowMapShown) {
     row.error = measureShadowError(renderer.world(), frame.pixels, frame.geometry, scene.shadow.distance);
   }
   for (const PassTiming& t : frame.timings) {

@@ -25,8 +25,7 @@ ShadowPass::ShadowPass(const VariantBuilder& build, PassShared& shared)
 
 void ShadowPass::setup(FrameGraph::Builder& builder, Frame& frame) {
   if (!shared_.options.shadow.enabled) return builder.skip("shadows are off");
-  // Below 0.1 % of its strength the light can show nothing (it is 0 at and under the horizon).
-  if (!frame.view.shadowLive) return builder.skip("neither sun nor moon is above the horizon");
+  if (!frame.view.lightUp) return builder.skip("neither sun nor moon is above the horizon");
   ShadowFrame schedule;
   schedule.camera = frame.view.camera;
   schedule.centreOffset = frame.view.shadowCentreOffset;
@@ -83,6 +82,39 @@ std::optional<SectionSet> ShadowPass::litSections(const ShadowKey& key, const Se
   return sectionsLitFrom(meshes, key.toLight, key.centre, static_cast<int>(std::ceil(reach / 16.0f)) + 2);
 }
 
+// The sections inside `light`'s box that cast into this draw: lit by it (`lit`), shading something in
+// view (the key's receivers), and in this draw's slices (by a hash of their position, so each is in
+// exactly one). Counts what is left out.
+std::vector<VisibleSection> ShadowPass::castersFor(const ShadowView& light, const ShadowKey& key,
+                                                   const std::optional<SectionSet>& lit, Frame& frame,
+                                                   ShadowSlices slices) const {
+  const glm::dvec3 camera = frame.view.camera;
+  FrameStats& stats = frame.stats;
+  const auto inSlice = [&](SectionPos p) {
+    const auto h = static_cast<std::uint32_t>(p.x * 73856093) ^ static_cast<std::uint32_t>(p.section * 19349663) ^
+                   static_cast<std::uint32_t>(p.z * 83492791);
+    const int slice = static_cast<int>(h % static_cast<std::uint32_t>(slices.of));
+    return slice >= slices.first && slice < slices.first + slices.count;
+  };
+  std::vector<VisibleSection> casters = sectionsInside(frustumPlanes(light.matrix), camera, frame.meshes);
+  const auto drop = [&](auto&& out) {
+    const auto end = std::remove_if(casters.begin(), casters.end(), out);
+    const int dropped = static_cast<int>(casters.end() - end);
+    casters.erase(end, casters.end());
+    return dropped;
+  };
+  if (lit) stats.shadowCastersHidden += drop([&](const VisibleSection& v) { return !lit->contains(v.pos); });
+  if (key.receivers) {
+    stats.shadowCastersOffView += drop([&](const VisibleSection& v) {
+      const glm::dvec3 lo = camera + glm::dvec3(v.offset);
+      return !key.receivers->mayShade(lo, lo + 16.0, key.toLight);
+    });
+  }
+  if (slices.count < slices.of) drop([&](const VisibleSection& v) { return !inSlice(v.pos); });
+  stats.shadowCasters += static_cast<int>(casters.size());
+  return casters;
+}
+
 // Slices `slices.first` .. `first + count - 1` of `slices.of` of the casters (by a hash of their
 // position, so each is in exactly one) into `map`, cleared first by slice 0.
 void ShadowPass::drawCasters(ShadowMap& map, const ShadowKey& key, const std::optional<SectionSet>& lit, Frame& frame,
@@ -97,33 +129,12 @@ void ShadowPass::drawCasters(ShadowMap& map, const ShadowKey& key, const std::op
   glDisable(GL_CULL_FACE);   // single faces (the mesher drops hidden ones) must cast from both sides
   glEnable(GL_DEPTH_CLAMP);  // casters above the near plane still cast, flattened onto it
   glDisable(GL_BLEND);
-  const auto inSlice = [&](SectionPos p) {
-    const auto h = static_cast<std::uint32_t>(p.x * 73856093) ^ static_cast<std::uint32_t>(p.section * 19349663) ^
-                   static_cast<std::uint32_t>(p.z * 83492791);
-    const int slice = static_cast<int>(h % static_cast<std::uint32_t>(slices.of));
-    return slice >= slices.first && slice < slices.first + slices.count;
-  };
-  const auto drop = [](std::vector<VisibleSection>& casters, auto&& out) {
-    const auto end = std::remove_if(casters.begin(), casters.end(), out);
-    const int dropped = static_cast<int>(casters.end() - end);
-    casters.erase(end, casters.end());
-    return dropped;
-  };
   const float farDepth = 1.0f;
   const glm::vec3 fromLight = -key.toLight;
   for (int layer = 0; layer < shadowLayers(settings); ++layer) {
     const ShadowView light =
         shadowViewFor(settings.resolution, cascadeDistance(settings, layer), key.toLight, camera, key.centre);
-    std::vector<VisibleSection> casters = sectionsInside(frustumPlanes(light.matrix), camera, frame.meshes);
-    if (lit) stats.shadowCastersHidden += drop(casters, [&](const VisibleSection& v) { return !lit->contains(v.pos); });
-    if (key.receivers) {
-      stats.shadowCastersOffView += drop(casters, [&](const VisibleSection& v) {
-        const glm::dvec3 lo = camera + glm::dvec3(v.offset);
-        return !key.receivers->mayShade(lo, lo + 16.0, key.toLight);
-      });
-    }
-    if (slices.count < slices.of) drop(casters, [&](const VisibleSection& v) { return !inSlice(v.pos); });
-    stats.shadowCasters += static_cast<int>(casters.size());
+    const std::vector<VisibleSection> casters = castersFor(light, key, lit, frame, slices);
     const GLuint opaque = map.framebuffer(layer), translucent = map.translucentFramebuffer(layer);
     if (slices.first == 0) {
       const float clear[4] = {1.0f, 1.0f, 1.0f, 1.0f};
