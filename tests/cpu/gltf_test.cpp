@@ -12,6 +12,7 @@
 #include "assets/gltf_model.h"
 #include "core/error.h"
 #include "support/error_of.h"
+#include "support/gltf_box.h"
 #include "support/test_data.h"
 #include "support/world_support.h"
 
@@ -34,14 +35,15 @@ std::filesystem::path copyOf(const std::string& sample, const std::string& name)
 nlohmann::json readJson(const std::filesystem::path& file) { return nlohmann::json::parse(readTextFile(file)); }
 void writeJson(const std::filesystem::path& file, const nlohmann::json& j) { std::ofstream(file) << j.dump(); }
 
-// The error loading the textured box (separate files) after `edit` changed its JSON.
+// The error loading the tests' own box (support/gltf_box.h: accessors 0 indices, 1 positions,
+// 2 normals; buffer box.bin) after `edit` changed its JSON.
 template <class Edit>
 std::string errorAfter(const std::string& name, Edit&& edit) {
-  const auto dir = copyOf("BoxTextured/glTF", name);
-  nlohmann::json j = readJson(dir / "BoxTextured.gltf");
+  const auto file = testing::writeBoxGltf(testing::scratchDir("gltf_" + name));
+  nlohmann::json j = readJson(file);
   edit(j);
-  writeJson(dir / "BoxTextured.gltf", j);
-  return errorOf(dir / "BoxTextured.gltf");
+  writeJson(file, j);
+  return errorOf(file);
 }
 
 TEST(GltfModel, ParentNodesMoveTheirChildren) {
@@ -150,13 +152,12 @@ TEST(GltfModel, MissingNormalsAreFlatAndTangentsFollowTheUvs) {
 }
 
 TEST(GltfModel, BadFilesNameTheFileAndThePlace) {
-  TERRASOL_SKIP_WITHOUT_TEST_DATA();
   {  // a missing buffer file
-    const auto dir = copyOf("BoxTextured/glTF", "missing_bin");
-    std::filesystem::remove(dir / "BoxTextured0.bin");
-    const std::string e = errorOf(dir / "BoxTextured.gltf");
-    EXPECT_NE(e.find("BoxTextured.gltf"), std::string::npos) << e;
-    EXPECT_NE(e.find("BoxTextured0.bin"), std::string::npos) << e;
+    const auto file = testing::writeBoxGltf(testing::scratchDir("gltf_missing_bin"));
+    std::filesystem::remove(file.parent_path() / "box.bin");
+    const std::string e = errorOf(file);
+    EXPECT_NE(e.find("box.gltf"), std::string::npos) << e;
+    EXPECT_NE(e.find("box.bin"), std::string::npos) << e;
   }
   {  // an accessor reaching past its buffer view
     const std::string e = errorAfter("long_accessor", [](nlohmann::json& j) { j["accessors"][2]["count"] = 100000; });
@@ -164,17 +165,10 @@ TEST(GltfModel, BadFilesNameTheFileAndThePlace) {
   }
   {  // an index past the vertices: every vertex attribute 3 long, the indices still up to 23
     const std::string e = errorAfter("bad_index", [](nlohmann::json& j) {
-      for (std::size_t a : {1u, 2u, 3u}) j["accessors"][a]["count"] = 3;
+      for (std::size_t a : {1u, 2u}) j["accessors"][a]["count"] = 3;
     });
     EXPECT_NE(e.find("indices"), std::string::npos) << e;
     EXPECT_NE(e.find("past the 3 vertices"), std::string::npos) << e;
-  }
-  {  // a corrupt image
-    const auto dir = copyOf("BoxTextured/glTF", "corrupt_image");
-    std::ofstream(dir / "CesiumLogoFlat.png", std::ios::binary | std::ios::trunc) << "\x89PNG\r\n\x1a\n but not really";
-    const std::string e = errorOf(dir / "BoxTextured.gltf");
-    EXPECT_NE(e.find("BoxTextured.gltf"), std::string::npos) << e;
-    EXPECT_NE(e.find("images[0]"), std::string::npos) << e;
   }
   {  // a required extension we do not have
     const std::string e = errorAfter("required_extension", [](nlohmann::json& j) {
@@ -185,8 +179,28 @@ TEST(GltfModel, BadFilesNameTheFileAndThePlace) {
     EXPECT_NE(e.find("not supported"), std::string::npos) << e;
   }
   {  // a node that is its own ancestor
-    const std::string e = errorAfter("cycle", [](nlohmann::json& j) { j["nodes"][1]["children"] = {0}; });
+    const std::string e = errorAfter("cycle", [](nlohmann::json& j) {
+      j["nodes"] = {{{"children", {1}}}, {{"mesh", 0}, {"children", {0}}}};
+    });
     EXPECT_NE(e.find("nodes["), std::string::npos) << e;
+  }
+  {  // malformed JSON
+    const auto file = testing::writeBoxGltf(testing::scratchDir("gltf_malformed"));
+    std::ofstream(file, std::ios::trunc) << "{ \"asset\": ";
+    EXPECT_NE(errorOf(file).find("box.gltf"), std::string::npos);
+  }
+  EXPECT_NE(errorOf(testing::scratchDir("gltf_nowhere") / "nowhere.glb").find("nowhere.glb"), std::string::npos);
+}
+
+// The samples' own files broken: an image and a binary container.
+TEST(GltfModel, BadSampleFilesNameTheFileAndThePlace) {
+  TERRASOL_SKIP_WITHOUT_TEST_DATA();
+  {  // a corrupt image
+    const auto dir = copyOf("BoxTextured/glTF", "corrupt_image");
+    std::ofstream(dir / "CesiumLogoFlat.png", std::ios::binary | std::ios::trunc) << "\x89PNG\r\n\x1a\n but not really";
+    const std::string e = errorOf(dir / "BoxTextured.gltf");
+    EXPECT_NE(e.find("BoxTextured.gltf"), std::string::npos) << e;
+    EXPECT_NE(e.find("images[0]"), std::string::npos) << e;
   }
   {  // malformed JSON and a truncated .glb
     const auto dir = copyOf("BoxTextured", "truncated");
@@ -196,7 +210,6 @@ TEST(GltfModel, BadFilesNameTheFileAndThePlace) {
     std::ofstream(dir / "glTF-Binary" / "BoxTextured.glb", std::ios::binary | std::ios::trunc) << glb.substr(0, glb.size() / 2);
     EXPECT_NE(errorOf(dir / "glTF-Binary" / "BoxTextured.glb").find("BoxTextured.glb"), std::string::npos);
   }
-  EXPECT_NE(errorOf(models() / "nowhere.glb").find("nowhere.glb"), std::string::npos);
 }
 
 }  // namespace
