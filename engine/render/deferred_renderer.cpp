@@ -18,6 +18,7 @@ DeferredRenderer::DeferredRenderer(const ShaderPreprocessor& shaders, const Atla
     : shared_(atlas, tints, options),
       geometry_(VariantBuilder(shaders, shared_), shared_),
       lighting_(VariantBuilder(shaders, shared_), shared_),
+      reflection_(VariantBuilder(shaders, shared_), shared_),
       translucent_(VariantBuilder(shaders, shared_), shared_),
       shadow_(VariantBuilder(shaders, shared_), shared_),
       final_(VariantBuilder(shaders, shared_), shared_),
@@ -46,8 +47,8 @@ void DeferredRenderer::render(const FrameInputs& inputs, const SectionMeshes& me
   };
   frame.resources = {graph.transient("gbuffer", realizeTargets), graph.transient("scene", realizeTargets),
                      graph.import("shadow_map"), graph.import("target")};
-  for (RenderPass* pass : std::initializer_list<RenderPass*>{&shadow_, &geometry_, &lighting_, &translucent_, &final_,
-                                                             &debug_, &outline_}) {
+  for (RenderPass* pass : std::initializer_list<RenderPass*>{&shadow_, &geometry_, &lighting_, &reflection_,
+                                                             &translucent_, &final_, &debug_, &outline_}) {
     addPass(graph, *pass, frame);
   }
   graph.output(frame.resources.target);

@@ -3,6 +3,7 @@
 //   shadow       the light's depth (and translucent casters' colour) -> shadow map, kept across frames
 //   geometry     opaque, then alpha-tested cutout -> G-buffer
 //   lighting     LabPBR direct + ambient + block light + emission where something was drawn, sky elsewhere
+//   reflection   screen-space reflections of smooth surfaces, with the sky where a ray finds nothing
 //   translucent  water, glass, blended props: lit forward, blended over the lit scene
 //   final        exposure, tone map, sRGB -> the target framebuffer
 //   debug_view   a G-buffer channel -> the target instead of the final image
@@ -25,6 +26,7 @@
 #include "render/passes/geometry_pass.h"
 #include "render/passes/lighting_pass.h"
 #include "render/passes/output_passes.h"
+#include "render/passes/reflection_pass.h"
 #include "render/passes/shadow_pass.h"
 #include "render/passes/translucent_pass.h"
 #include "render/section_meshes.h"
@@ -59,6 +61,7 @@ class DeferredRenderer {
   PassShared shared_;  // before the passes: they build their programs into it
   GeometryPass geometry_;
   LightingPass lighting_;
+  ReflectionPass reflection_;
   TranslucentPass translucent_;
   ShadowPass shadow_;
   FinalPass final_;

@@ -55,6 +55,7 @@ struct RendererOptions {
   // With no _n (_s) in any loaded pack, the shaders use LabPBR's default instead of sampling it.
   bool leaveOutAbsentMaps = true;
   ShadowSettings shadow;
+  ReflectionSettings reflections;
   PropNeeds props;  // what the props to be drawn need: no prop variant is built for none
 };
 

@@ -25,6 +25,8 @@ std::vector<ShaderDefine> slotDefines() {
       define("UNIT_PROP_NORMAL", slots::kUnitPropNormal),
       define("UNIT_PROP_EMISSIVE", slots::kUnitPropEmissive),
       define("UNIT_PROP_OCCLUSION", slots::kUnitPropOcclusion),
+      define("UNIT_REFLECTION_SCENE", slots::kUnitReflectionScene),
+      define("UNIT_REFLECTION", slots::kUnitReflection),
       define("STORAGE_TILES", slots::kStorageTiles),
   };
 }

@@ -38,6 +38,10 @@ inline constexpr int kUnitPropNormal = 11;
 inline constexpr int kUnitPropEmissive = 12;
 inline constexpr int kUnitPropOcclusion = 13;
 
+// The reflection pass: the lit scene it reflects, and its own result the composite adds.
+inline constexpr int kUnitReflectionScene = 14;
+inline constexpr int kUnitReflection = 15;
+
 // Shader storage buffers.
 inline constexpr int kStorageTiles = 0;  // atlas tile of each texture id for the current frame
 

@@ -15,6 +15,7 @@
 #include "core/error.h"
 #include "scene_render/scene_render.h"
 #include "support/gl_test.h"
+#include "support/frame_probe.h"
 #include "support/gltf_box.h"
 #include "support/test_data.h"
 #include "support/shader_variants.h"
@@ -23,6 +24,8 @@
 namespace terrasol {
 namespace {
 
+using testing::brightness;
+using testing::colourAt;
 using testing::hasAnyVariantOf;
 using testing::hasVariant;
 
@@ -57,21 +60,6 @@ SceneProp prop(const std::filesystem::path& model, glm::dvec3 position, float sc
   return p;
 }
 
-// Where a world point lands in the frame's image (top row first), and its colour there (3x3 mean).
-glm::vec3 colourAt(const RenderedFrame& frame, glm::dvec3 world) {
-  const glm::vec4 clip = frame.geometry.viewProjection * glm::vec4(glm::vec3(world - frame.geometry.camera), 1.0f);
-  const int w = frame.image.width, h = frame.image.height;
-  const int x = static_cast<int>((clip.x / clip.w * 0.5f + 0.5f) * static_cast<float>(w));
-  const int y = static_cast<int>((0.5f - clip.y / clip.w * 0.5f) * static_cast<float>(h));
-  glm::vec3 sum(0.0f);
-  for (int dy = -1; dy <= 1; ++dy)
-    for (int dx = -1; dx <= 1; ++dx) {
-      const std::uint8_t* p = frame.image.pixel(std::clamp(x + dx, 0, w - 1), std::clamp(y + dy, 0, h - 1));
-      sum += glm::vec3(p[0], p[1], p[2]) / 255.0f;
-    }
-  return sum / 9.0f;
-}
-float brightness(glm::vec3 c) { return c.r + c.g + c.b; }
 
 glm::vec3 toLightAt(const SceneFile& scene) { return dayStateAt(scene.time, scene.sunPathRotation).toShadowLight; }
 

@@ -1,0 +1,114 @@
+#include "render/passes/reflection_pass.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/error.h"
+#include "render/frame_uniforms.h"
+#include "render/gl/uniforms.h"
+#include "render/gl_slots.h"
+
+namespace terrasol {
+
+ReflectionPass::ReflectionPass(const VariantBuilder& build, PassShared& shared) : shared_(shared) {
+  if (!shared.options.reflections.enabled) return;
+  mask_ = build("fullscreen.vert", "reflection_mask.frag");
+  march_ = build("fullscreen.vert", "reflection.frag", shared.contents.defines());
+  composite_ = build("fullscreen.vert", "reflection_composite.frag");
+}
+
+void ReflectionPass::setup(FrameGraph::Builder& builder, Frame& frame) {
+  const ReflectionSettings& settings = shared_.options.reflections;
+  if (!settings.enabled) return builder.skip("reflections are off");
+  if (shared_.maxSmoothness < settings.minSmoothness && !frame.props) {
+    return builder.skip("no loaded texture is smooth enough");
+  }
+  builder.read(frame.resources.gbuffer);
+  builder.read(frame.resources.scene);
+  builder.write(frame.resources.scene);
+}
+
+void ReflectionPass::ensureTarget(glm::ivec2 size) {
+  if (size == size_) return;
+  size_ = size;
+  colour_ = gl::Texture::create(GL_TEXTURE_2D);
+  glTextureStorage2D(colour_.id(), 1, GL_RGBA16F, size.x, size.y);
+  glTextureParameteri(colour_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTextureParameteri(colour_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTextureParameteri(colour_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTextureParameteri(colour_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  depth_ = gl::Renderbuffer::create();
+  glNamedRenderbufferStorage(depth_.id(), GL_DEPTH_COMPONENT32F, size.x, size.y);
+  target_ = gl::Framebuffer::create();
+  glNamedFramebufferTexture(target_.id(), GL_COLOR_ATTACHMENT0, colour_.id(), 0);
+  glNamedFramebufferRenderbuffer(target_.id(), GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_.id());
+  if (glCheckNamedFramebufferStatus(target_.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+    throw Error("the reflection target is incomplete");
+  }
+}
+
+void ReflectionPass::setMarchUniforms(const Frame& frame) const {
+  const ReflectionSettings& settings = shared_.options.reflections;
+  const FrameView& view = frame.view;
+  const GLuint program = march_.id();
+  setLightingUniforms(program, view, frame.shadow);
+  setSkyUniforms(program, view);
+  gl::setMat4(program, "u_inverseViewProjection", view.inverseViewProjection);
+  gl::setMat4(program, "u_viewProjection", view.viewProjection);
+  gl::setVec3(program, "u_forward", glm::vec3(view.forward));
+  glProgramUniform1i(program, glGetUniformLocation(program, "u_maxSteps"), std::clamp(settings.maxSteps, 1, 256));
+  glProgramUniform1f(program, glGetUniformLocation(program, "u_thickness"), settings.thickness);
+  glProgramUniform1f(program, glGetUniformLocation(program, "u_maxDistance"), settings.maxDistance);
+  glProgramUniform1f(program, glGetUniformLocation(program, "u_minSmoothness"), settings.minSmoothness);
+  glProgramUniform1f(mask_.id(), glGetUniformLocation(mask_.id(), "u_minSmoothness"), settings.minSmoothness);
+}
+
+void ReflectionPass::execute(Frame& frame) {
+  const GBuffer& gbuffer = *frame.gbuffer;
+  const float scale = std::clamp(shared_.options.reflections.resolutionScale, 0.25f, 1.0f);
+  const glm::ivec2 size = glm::max(glm::ivec2(glm::round(glm::vec2(gbuffer.size()) * scale)), glm::ivec2(1));
+  ensureTarget(size);
+  setMarchUniforms(frame);
+
+  // The mask, then the march only where it left depth 0 (the triangle lies at depth 1).
+  glBindFramebuffer(GL_FRAMEBUFFER, target_.id());
+  glViewport(0, 0, size.x, size.y);
+  const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f}, farDepth = 1.0f;
+  glClearNamedFramebufferfv(target_.id(), GL_COLOR, 0, zero);
+  glClearNamedFramebufferfv(target_.id(), GL_DEPTH, 0, &farDepth);
+  glEnable(GL_DEPTH_TEST);
+  glDisable(GL_CULL_FACE);
+  glDisable(GL_BLEND);
+  gbuffer.bindForReading();
+  glBindTextureUnit(slots::kUnitReflectionScene, gbuffer.scene());
+  glBindVertexArray(shared_.empty.id());
+  glDepthFunc(GL_ALWAYS);
+  glDepthMask(GL_TRUE);
+  glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);  // the mask writes depth only: colour would be undefined
+  glUseProgram(mask_.id());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glDepthFunc(GL_GREATER);
+  glDepthMask(GL_FALSE);
+  glUseProgram(march_.id());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+
+  // Added where something was drawn (the lighting pass's copy of the scene's depth), alpha kept. The
+  // scene is drawn into now, so it is no longer bound for reading.
+  glBindTextureUnit(slots::kUnitReflectionScene, 0);
+  glBindFramebuffer(GL_FRAMEBUFFER, gbuffer.lightingFramebuffer());
+  glViewport(0, 0, gbuffer.size().x, gbuffer.size().y);
+  glEnable(GL_BLEND);
+  glBlendFuncSeparate(GL_ONE, GL_ONE, GL_ZERO, GL_ONE);
+  glBindTextureUnit(slots::kUnitReflection, colour_.id());
+  glUseProgram(composite_.id());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindVertexArray(0);
+  glUseProgram(0);
+  glDisable(GL_BLEND);
+  glDepthFunc(GL_LESS);
+  glDepthMask(GL_TRUE);
+  glDisable(GL_DEPTH_TEST);
+}
+
+}  // namespace terrasol

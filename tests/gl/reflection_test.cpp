@@ -1,0 +1,96 @@
+// Screen-space reflections (render/passes/reflection_pass.h): a polished iron floor mirrors the
+// blocks standing on it and the sky above, a sealed cave's floor reflects no sky, and the pass is
+// left out, changing no pixel, where it has nothing to do.
+
+#include <filesystem>
+
+#include "scene_render/scene_render.h"
+#include "support/frame_probe.h"
+#include "support/gl_test.h"
+
+namespace terrasol {
+namespace {
+
+using testing::brightness;
+using testing::colourAt;
+
+const std::filesystem::path kScenes = std::filesystem::path(TERRASOL_SOURCE_DIR) / "tests" / "scenes";
+
+class ReflectionTest : public testing::GlTest {};
+
+bool identical(const Image& a, const Image& b) { return compareImages(a, b, {0.0f, 0.0f}).matches; }
+
+RenderedFrame renderWith(SceneFile scene, bool reflections) {
+  scene.reflections.enabled = reflections;
+  FrameRequest request;
+  request.checkNan = true;
+  return SceneRenderer(scene).renderFrame(0, request);
+}
+
+TEST_F(ReflectionTest, APolishedFloorMirrorsTheBlocksOnItAndTheSky) {
+  const SceneFile scene = loadScene(kScenes / "mirror_floor.json");
+  const RenderedFrame on = renderWith(scene, true), off = renderWith(scene, false);
+  EXPECT_EQ(on.nanPixels, 0u);
+  // The glowstone pillar (x = 3, z = -3) seen in the floor: the camera's ray to its mirror image
+  // below the floor meets the floor here.
+  const glm::dvec3 pillarInFloor(2.64, 64.0, 0.36);
+  const glm::vec3 mirrored = colourAt(on, pillarInFloor), plain = colourAt(off, pillarInFloor);
+  EXPECT_GT(mirrored.r - mirrored.b, 0.15f) << "the warm pillar shows in the floor";
+  EXPECT_LT(plain.r - plain.b, 0.05f) << "without reflections the floor only tints the sky";
+  // Near the camera the floor looks steeply down and mirrors the sky overhead.
+  const glm::vec3 skyInFloor = colourAt(on, {0.5, 64.0, 5.0});
+  EXPECT_GT(skyInFloor.b, skyInFloor.r + 0.05f) << "blue sky in the floor";
+  EXPECT_FALSE(identical(on.image, off.image));
+  for (const FrameStats::Skipped& s : on.stats.passesSkipped) EXPECT_NE(s.pass, "reflection") << s.why;
+  context_->checkErrors("mirror floor");
+}
+
+// A sealed box of polished iron: sky light 0 inside, so a ray that finds nothing reflects darkness,
+// not the noon sky outside (the reflection twin of the shadows' cave leaks). Rays a block long find
+// little: the floor shows at most the dark walls beside it (the noon sky would add over 1.5).
+TEST_F(ReflectionTest, ASealedCaveFloorReflectsNoSky) {
+  SceneFile scene = parseScene(R"({
+      "world": { "generator": "flat", "edits": [
+        { "fill": [-5, 64, -5, 5, 70, 5], "block": "iron_block" },
+        { "fill": [-4, 65, -4, 4, 69, 4], "block": "air" } ] },
+      "packs": ["default", "../packs/extreme_materials"],
+      "time": 6000,
+      "render": { "width": 160, "height": 90, "view_distance": 1, "shadow": { "resolution": 256, "distance": 32 } },
+      "camera": { "position": [0.5, 68.5, 3.5], "look_at": [0.5, 65, -3], "fov": 80 } })",
+                               kScenes / "sealed_mirror.json");
+  scene.reflections.maxDistance = 1.0f;
+  const RenderedFrame on = renderWith(scene, true), off = renderWith(scene, false);
+  EXPECT_EQ(on.nanPixels, 0u);
+  for (const glm::dvec3 floor : {glm::dvec3(0.5, 65.0, 1.5), glm::dvec3(-2.5, 65.0, -1.5), glm::dvec3(2.5, 65.0, 0.0)}) {
+    EXPECT_LE(brightness(colourAt(on, floor)), brightness(colourAt(off, floor)) + 0.1f)
+        << "no sky reflected at " << floor.x << ", " << floor.z;
+  }
+  context_->checkErrors("sealed mirror");
+}
+
+std::string skipReason(const RenderedFrame& frame) {
+  for (const FrameStats::Skipped& s : frame.stats.passesSkipped) {
+    if (s.pass == "reflection") return s.why;
+  }
+  return "(ran)";
+}
+
+TEST_F(ReflectionTest, ThePassIsLeftOutWhereItHasNothingToDoAndNoPixelChanges) {
+  SceneFile scene = loadScene(kScenes / "noon_terrain.json");
+  const RenderedFrame off = renderWith(scene, false);
+  EXPECT_EQ(skipReason(off), "reflections are off");
+  // The default pack's smoothest texels (glass, water) stay under 0.99: nothing to reflect.
+  scene.reflections.minSmoothness = 0.99f;
+  const RenderedFrame rough = renderWith(scene, true);
+  EXPECT_EQ(skipReason(rough), "no loaded texture is smooth enough");
+  EXPECT_TRUE(identical(rough.image, off.image));
+  // On, with no smooth opaque surface in view: the pass runs, and its mask keeps every pixel as it was.
+  scene.reflections.minSmoothness = 0.6f;
+  const RenderedFrame on = renderWith(scene, true);
+  EXPECT_EQ(skipReason(on), "(ran)");
+  EXPECT_TRUE(identical(on.image, off.image));
+  context_->checkErrors("reflections left out");
+}
+
+}  // namespace
+}  // namespace terrasol

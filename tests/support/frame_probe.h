@@ -1,0 +1,31 @@
+#pragma once
+// Reading a rendered frame at a world point: where the point lands in the image and the colour there.
+
+#include <algorithm>
+#include <cstdint>
+
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include "scene_render/scene_render.h"
+
+namespace terrasol::testing {
+
+// The colour (0..1, a 3x3 mean) where world point `world` lands in the frame's image.
+inline glm::vec3 colourAt(const RenderedFrame& frame, glm::dvec3 world) {
+  const glm::vec4 clip = frame.geometry.viewProjection * glm::vec4(glm::vec3(world - frame.geometry.camera), 1.0f);
+  const int w = frame.image.width, h = frame.image.height;
+  const int x = static_cast<int>((clip.x / clip.w * 0.5f + 0.5f) * static_cast<float>(w));
+  const int y = static_cast<int>((0.5f - clip.y / clip.w * 0.5f) * static_cast<float>(h));
+  glm::vec3 sum(0.0f);
+  for (int dy = -1; dy <= 1; ++dy)
+    for (int dx = -1; dx <= 1; ++dx) {
+      const std::uint8_t* p = frame.image.pixel(std::clamp(x + dx, 0, w - 1), std::clamp(y + dy, 0, h - 1));
+      sum += glm::vec3(p[0], p[1], p[2]) / 255.0f;
+    }
+  return sum / 9.0f;
+}
+
+inline float brightness(glm::vec3 c) { return c.r + c.g + c.b; }
+
+}  // namespace terrasol::testing
