@@ -30,6 +30,7 @@ void DeferredRenderer::render(const FrameInputs& inputs, const SectionMeshes& me
                               glm::ivec2 size, std::vector<PassTiming>* timings) {
   if (size.x <= 0 || size.y <= 0) return;  // a minimised window: nothing to draw
   stats_ = {};
+  reflected_ = false;
   Frame frame{inputs, meshes, stats_};
   frame.view = viewFor(inputs, size);
   frame.target = framebuffer;
@@ -58,6 +59,7 @@ void DeferredRenderer::render(const FrameInputs& inputs, const SectionMeshes& me
   const FrameView& view = frame.view;
   const auto& ran = graph.executed();
   const bool shown = frame.shadowDrawn && std::find(ran.begin(), ran.end(), "lighting") != ran.end();
+  reflected_ = std::find(ran.begin(), ran.end(), "reflection") != ran.end();
   lastGeometry_ = {view.camera, view.viewProjection, view.inverseViewProjection, view.day.toShadowLight, shown,
                    shown ? (*frame.shadow.views)[0].texelWorld : 0.0f};
 }
@@ -116,6 +118,11 @@ void DeferredRenderer::cull(Frame& frame) const {
     stats.propsDrawn = static_cast<int>(frame.visibleProps.size());
     stats.propsCulled = static_cast<int>(frame.props->instances().size() - frame.visibleProps.size());
   }
+}
+
+std::optional<ReflectionPixels> DeferredRenderer::readReflections() const {
+  if (!reflected_) return std::nullopt;
+  return reflection_.read();
 }
 
 std::size_t nonFinitePixels(const GBufferPixels& g) {

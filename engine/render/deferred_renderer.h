@@ -53,6 +53,8 @@ class DeferredRenderer {
   const std::vector<std::string>& shaderVariants() const { return shared_.variants; }
   const GBufferContents& gbufferContents() const { return shared_.contents; }
   const FrameGeometry& lastGeometry() const { return lastGeometry_; }
+  // The last frame's reflection march, read back (slow: for reports); none when the pass did not run.
+  std::optional<ReflectionPixels> readReflections() const;
 
  private:
   FrameView viewFor(const FrameInputs& inputs, glm::ivec2 size) const;
@@ -71,6 +73,7 @@ class DeferredRenderer {
   bool gpuTimer_;  // timer queries for pass timings (a real GPU); else glFinish and the wall clock
   FrameStats stats_;
   FrameGeometry lastGeometry_;
+  bool reflected_ = false;  // the reflection pass ran in the last frame
 };
 
 // Pixels holding NaN or Inf in any float target (lit scene, normals, depth).

@@ -151,6 +151,7 @@ RenderedFrame SceneRenderer::renderFrame(int frame, const FrameRequest& request)
     out.pixels = gpu_->renderer.gbuffer()->read();
     out.nanPixels = nonFinitePixels(out.pixels);
   }
+  if (request.readBack) out.reflections = gpu_->renderer.readReflections();
   out.geometry = gpu_->renderer.lastGeometry();
   out.image = gpu_->target.readPixels();
   return out;

@@ -26,6 +26,7 @@ struct RenderedFrame {
   FrameStats stats;
   std::size_t nanPixels = 0;        // when asked for
   GBufferPixels pixels;             // with checkNan or readBack
+  std::optional<ReflectionPixels> reflections;  // with readBack, when the reflection pass ran
   FrameGeometry geometry;
 };
 

@@ -20,6 +20,7 @@
 #include "progress.h"
 #include "render/gl/program.h"
 #include "scene_render/scene_render.h"
+#include "scene_render/reflection_truth.h"
 #include "scene_render/shadow_truth.h"
 #include "sweep.h"
 
@@ -193,6 +194,12 @@ int renderScene(const Options& o, const SceneFile& scene, SceneRenderer& rendere
     if (!o.report.empty()) {
       frames.push_back(frameReport(i, frame));
       if (frame.geometry.shadowMapShown) frames.back()["shadow_error"] = shadowReport(renderer, i, frame, request);
+      if (frame.reflections) {
+        const ReflectionError error =
+            measureReflectionError(renderer.world(), frame.pixels, *frame.reflections, frame.geometry,
+                                   scene.reflections.maxDistance, renderer.renderer().gbufferContents().surfaceNormals);
+        frames.back()["reflection_error"] = reflectionErrorJson(error);
+      }
     }
     if (o.timings) {
       std::string line = frameName("frame", i) + ":";

@@ -37,10 +37,15 @@ void ReflectionPass::ensureTarget(glm::ivec2 size) {
   glTextureParameteri(colour_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
   glTextureParameteri(colour_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
   glTextureParameteri(colour_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  hits_ = gl::Texture::create(GL_TEXTURE_2D);
+  glTextureStorage2D(hits_.id(), 1, GL_RGBA32F, size.x, size.y);
   depth_ = gl::Renderbuffer::create();
   glNamedRenderbufferStorage(depth_.id(), GL_DEPTH_COMPONENT32F, size.x, size.y);
   target_ = gl::Framebuffer::create();
-  glNamedFramebufferTexture(target_.id(), GL_COLOR_ATTACHMENT0, colour_.id(), 0);
+  glNamedFramebufferTexture(target_.id(), GL_COLOR_ATTACHMENT0 + slots::kOutColor, colour_.id(), 0);
+  glNamedFramebufferTexture(target_.id(), GL_COLOR_ATTACHMENT0 + slots::kOutReflectionHit, hits_.id(), 0);
+  const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+  glNamedFramebufferDrawBuffers(target_.id(), 2, buffers);
   glNamedFramebufferRenderbuffer(target_.id(), GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_.id());
   if (glCheckNamedFramebufferStatus(target_.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
     throw Error("the reflection target is incomplete");
@@ -73,8 +78,9 @@ void ReflectionPass::execute(Frame& frame) {
   // The mask, then the march only where it left depth 0 (the triangle lies at depth 1).
   glBindFramebuffer(GL_FRAMEBUFFER, target_.id());
   glViewport(0, 0, size.x, size.y);
-  const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f}, farDepth = 1.0f;
-  glClearNamedFramebufferfv(target_.id(), GL_COLOR, 0, zero);
+  const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f}, notMarched[4] = {0.0f, 0.0f, -1.0f, 0.0f}, farDepth = 1.0f;
+  glClearNamedFramebufferfv(target_.id(), GL_COLOR, slots::kOutColor, zero);
+  glClearNamedFramebufferfv(target_.id(), GL_COLOR, slots::kOutReflectionHit, notMarched);
   glClearNamedFramebufferfv(target_.id(), GL_DEPTH, 0, &farDepth);
   glEnable(GL_DEPTH_TEST);
   glDisable(GL_CULL_FACE);
@@ -109,6 +115,19 @@ void ReflectionPass::execute(Frame& frame) {
   glDepthFunc(GL_LESS);
   glDepthMask(GL_TRUE);
   glDisable(GL_DEPTH_TEST);
+}
+
+ReflectionPixels ReflectionPass::read() const {
+  ReflectionPixels out;
+  if (!colour_) return out;
+  out.size = size_;
+  const std::size_t pixels = static_cast<std::size_t>(size_.x) * static_cast<std::size_t>(size_.y);
+  out.added.resize(pixels);
+  out.hits.resize(pixels);
+  const auto bytes = static_cast<GLsizei>(pixels * sizeof(glm::vec4));
+  glGetTextureImage(colour_.id(), 0, GL_RGBA, GL_FLOAT, bytes, out.added.data());
+  glGetTextureImage(hits_.id(), 0, GL_RGBA, GL_FLOAT, bytes, out.hits.data());
+  return out;
 }
 
 }  // namespace terrasol

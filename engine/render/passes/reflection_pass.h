@@ -6,10 +6,22 @@
 // where something was drawn. Has nothing to do when reflections are off or no loaded texture is
 // smooth enough.
 
+#include <vector>
+
+#include <glm/vec4.hpp>
+
 #include "render/pass_shared.h"
 #include "render/render_pass.h"
 
 namespace terrasol {
+
+// The last march read back (slow: for the reflection-error report), at the pass's own resolution,
+// rows bottom first.
+struct ReflectionPixels {
+  glm::ivec2 size{0};
+  std::vector<glm::vec4> added;  // rgb added to the lit scene; a: 1 where the ray hit
+  std::vector<glm::vec4> hits;   // xy: hit screen uv; z: 1 hit, 0 marched without a hit, -1 not marched
+};
 
 class ReflectionPass final : public RenderPass {
  public:
@@ -19,6 +31,8 @@ class ReflectionPass final : public RenderPass {
   void setup(FrameGraph::Builder& builder, Frame& frame) override;
   void execute(Frame& frame) override;
 
+  ReflectionPixels read() const;
+
  private:
   void ensureTarget(glm::ivec2 size);
   void setMarchUniforms(const Frame& frame) const;
@@ -27,6 +41,7 @@ class ReflectionPass final : public RenderPass {
   gl::Program mask_, march_, composite_;  // only when reflections are on
   glm::ivec2 size_{0};
   gl::Texture colour_;  // RGBA16F: rgb added to the scene, a: 1 where the ray hit something on screen
+  gl::Texture hits_;    // RGBA32F: where each ray hit (ReflectionPixels::hits)
   gl::Renderbuffer depth_;
   gl::Framebuffer target_;
 };
