@@ -1,28 +1,83 @@
 #include "sweep.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 
 #include "core/error.h"
 #include "scene_render/scene_render.h"
+#include "scene_render/reflection_truth.h"
 #include "scene_render/shadow_truth.h"
 #include "sweep_plot.h"
 
 namespace terrasol {
 namespace {
 
+// What a sweep measures: the shadows' error against shadow + lighting ms, or (when it sweeps a
+// render.reflections key) the reflections' against the reflection pass's ms.
+enum class Measure { Shadows, Reflections };
+
 struct Row {
   std::vector<std::string> values;  // one per sweep
-  ShadowError error;
-  double shadowMs = 0.0, lightingMs = 0.0, totalMs = 0.0;
+  std::vector<double> columns;      // the measure's own (columnNames)
+  double errorPct = 0.0, costMs = 0.0, totalMs = 0.0;
+  std::size_t evaluated = 0;
   bool pareto = false;
-
-  double errorPct() const {
-    const ShadowCounts& c = error.total;
-    return c.evaluated ? 100.0 * static_cast<double>(c.falseLit + c.falseShadow) / static_cast<double>(c.evaluated) : 0.0;
-  }
-  double costMs() const { return shadowMs + lightingMs; }
 };
+
+std::vector<const char*> columnNames(Measure m) {
+  if (m == Measure::Reflections) {
+    return {"evaluated_pixels", "agree_pct", "wrong_hit_pct", "missed_on_screen_pct", "missed_off_screen_pct",
+            "false_hit_pct", "sky_leak_pixels", "error_pct", "reflection_ms", "lighting_ms"};
+  }
+  return {"evaluated_pixels", "false_shadow_pct", "false_lit_pct", "error_pct", "ambiguous_pct", "shadow_ms", "lighting_ms"};
+}
+
+double pct(std::size_t n, std::size_t of) { return of ? 100.0 * static_cast<double>(n) / static_cast<double>(of) : 0.0; }
+
+double msOf(const RenderedFrame& frame, const char* pass) {
+  for (const PassTiming& t : frame.timings) {
+    if (t.pass == pass) return t.ms;
+  }
+  return 0.0;
+}
+
+void measureShadows(SceneRenderer& renderer, const RenderedFrame& frame, Row& row) {
+  ShadowCounts c;
+  if (frame.geometry.shadowMapShown) {
+    c = measureShadowError(renderer.world(), frame.pixels, frame.geometry, renderer.scene().shadow.distance).total;
+  }
+  const double shadow = msOf(frame, "shadow"), lighting = msOf(frame, "lighting");
+  row.evaluated = c.evaluated;
+  row.errorPct = pct(c.falseLit + c.falseShadow, c.evaluated);
+  row.costMs = shadow + lighting;
+  row.columns = {static_cast<double>(c.evaluated), pct(c.falseShadow, c.evaluated), pct(c.falseLit, c.evaluated),
+                 row.errorPct, pct(c.ambiguous, c.evaluated + c.ambiguous), shadow, lighting};
+}
+
+void measureReflections(SceneRenderer& renderer, const RenderedFrame& frame, Row& row) {
+  ReflectionError e;
+  if (frame.reflections) {
+    e = measureReflectionError(renderer.world(), frame.pixels, *frame.reflections, frame.geometry,
+                               renderer.scene().reflections.maxDistance,
+                               renderer.renderer().gbufferContents().surfaceNormals);
+  }
+  const ReflectionCounts& c = e.total;
+  const double reflection = msOf(frame, "reflection");
+  row.evaluated = c.evaluated;
+  row.errorPct = 100.0 - pct(c.agree, c.evaluated);
+  row.costMs = reflection;
+  row.columns = {static_cast<double>(c.evaluated), pct(c.agree, c.evaluated), pct(c.wrongHit, c.evaluated),
+                 pct(c.missedOnScreen, c.evaluated), pct(c.missedOffScreen, c.evaluated), pct(c.falseHit, c.evaluated),
+                 static_cast<double>(e.skyLeakPixels), row.errorPct, reflection, msOf(frame, "lighting")};
+}
+
+Measure measureOf(const std::vector<Sweep>& sweeps) {
+  for (const Sweep& s : sweeps) {
+    if (s.key.starts_with("render.reflections.")) return Measure::Reflections;
+  }
+  return Measure::Shadows;
+}
 
 // Every combination, the last sweep varying fastest.
 std::vector<std::vector<std::string>> combinations(const std::vector<Sweep>& sweeps) {
@@ -40,7 +95,7 @@ std::vector<std::vector<std::string>> combinations(const std::vector<Sweep>& swe
 }
 
 Row measure(const std::filesystem::path& file, std::vector<std::string> settings, const std::vector<Sweep>& sweeps,
-            const std::vector<std::string>& values) {
+            const std::vector<std::string>& values, Measure what) {
   for (std::size_t i = 0; i < sweeps.size(); ++i) settings.push_back(sweeps[i].key + "=" + values[i]);
   const SceneFile scene = loadScene(file, settings);
   SceneRenderer renderer(scene);
@@ -51,14 +106,12 @@ Row measure(const std::filesystem::path& file, std::vector<std::string> settings
   const RenderedFrame frame = renderer.renderFrame(0, request);
   Row row;
   row.values = values;
-  if (frame.geometry.shadowMapShown) {
-    row.error = measureShadowError(renderer.world(), frame.pixels, frame.geometry, scene.shadow.distance);
+  if (what == Measure::Reflections) {
+    measureReflections(renderer, frame, row);
+  } else {
+    measureShadows(renderer, frame, row);
   }
-  for (const PassTiming& t : frame.timings) {
-    if (t.pass == "shadow") row.shadowMs = t.ms;
-    if (t.pass == "lighting") row.lightingMs = t.ms;
-    row.totalMs += t.ms;
-  }
+  for (const PassTiming& t : frame.timings) row.totalMs += t.ms;
   return row;
 }
 
@@ -66,30 +119,29 @@ void markPareto(std::vector<Row>& rows) {
   for (Row& r : rows) {
     r.pareto = true;
     for (const Row& o : rows) {
-      const bool noWorse = o.costMs() <= r.costMs() && o.errorPct() <= r.errorPct();
-      const bool better = o.costMs() < r.costMs() || o.errorPct() < r.errorPct();
+      const bool noWorse = o.costMs <= r.costMs && o.errorPct <= r.errorPct;
+      const bool better = o.costMs < r.costMs || o.errorPct < r.errorPct;
       if (noWorse && better) r.pareto = false;
     }
   }
 }
 
-void writeCsv(const std::filesystem::path& file, const std::vector<Sweep>& sweeps, const std::vector<Row>& rows) {
+void writeCsv(const std::filesystem::path& file, const std::vector<Sweep>& sweeps, const std::vector<Row>& rows,
+              Measure what) {
   std::ofstream out(file);
   for (const Sweep& s : sweeps) out << s.key << ",";
-  out << "evaluated_pixels,false_shadow_pct,false_lit_pct,error_pct,ambiguous_pct,shadow_ms,lighting_ms,total_ms,pareto\n";
+  for (const char* name : columnNames(what)) out << name << ",";
+  out << "total_ms,pareto\n";
   for (const Row& r : rows) {
     for (const auto& v : r.values) out << v << ",";
-    const ShadowCounts& c = r.error.total;
-    const double n = static_cast<double>(std::max<std::size_t>(c.evaluated, 1));
-    out << c.evaluated << "," << 100.0 * static_cast<double>(c.falseShadow) / n << ","
-        << 100.0 * static_cast<double>(c.falseLit) / n << "," << r.errorPct() << ","
-        << 100.0 * static_cast<double>(c.ambiguous) / static_cast<double>(std::max<std::size_t>(c.evaluated + c.ambiguous, 1))
-        << "," << r.shadowMs << "," << r.lightingMs << "," << r.totalMs << "," << (r.pareto ? 1 : 0) << "\n";
+    for (const double c : r.columns) out << c << ",";
+    out << r.totalMs << "," << (r.pareto ? 1 : 0) << "\n";
   }
 }
 
 // Points coloured by the shadow mode or else the warp when swept (else by the first sweep's value).
-void writePlot(const std::filesystem::path& file, const std::vector<Sweep>& sweeps, const std::vector<Row>& rows) {
+void writePlot(const std::filesystem::path& file, const std::vector<Sweep>& sweeps, const std::vector<Row>& rows,
+               Measure what) {
   std::size_t by = 0;
   for (const char* key : {"render.shadow.warp", "render.shadow.mode"})
     for (std::size_t i = 0; i < sweeps.size(); ++i) {
@@ -99,9 +151,11 @@ void writePlot(const std::filesystem::path& file, const std::vector<Sweep>& swee
   for (const Row& r : rows) {
     const auto& names = sweeps[by].values;
     const int group = static_cast<int>(std::find(names.begin(), names.end(), r.values[by]) - names.begin());
-    points.push_back({r.costMs(), r.errorPct(), group, r.pareto});
+    points.push_back({r.costMs, r.errorPct, group, r.pareto});
   }
-  saveImage(file, scatterPlot(points, "shadow + lighting ms", "misclassified %", sweeps[by].values));
+  const bool reflections = what == Measure::Reflections;
+  saveImage(file, scatterPlot(points, reflections ? "reflection ms" : "shadow + lighting ms",
+                              reflections ? "disagreeing with the truth %" : "misclassified %", sweeps[by].values));
 }
 
 }  // namespace
@@ -124,20 +178,21 @@ Sweep parseSweep(const std::string& text) {
 
 int runSweep(const std::filesystem::path& scene, const std::vector<std::string>& overrides,
              const std::vector<Sweep>& sweeps, const std::filesystem::path& out) {
+  const Measure what = measureOf(sweeps);
   std::vector<Row> rows;
   for (const auto& values : combinations(sweeps)) {
-    rows.push_back(measure(scene, overrides, sweeps, values));
+    rows.push_back(measure(scene, overrides, sweeps, values, what));
     const Row& r = rows.back();
     std::string name;
     for (std::size_t i = 0; i < sweeps.size(); ++i) name += (i ? " " : "") + sweeps[i].key + "=" + values[i];
-    std::printf("%s: misclassified %.3f %% of %zu px, shadow %.1f ms + lighting %.1f ms\n", name.c_str(),
-                r.errorPct(), r.error.total.evaluated, r.shadowMs, r.lightingMs);
+    std::printf("%s: %s %.3f %% of %zu px, %.1f ms\n", name.c_str(),
+                what == Measure::Reflections ? "disagreeing" : "misclassified", r.errorPct, r.evaluated, r.costMs);
     std::fflush(stdout);
   }
   markPareto(rows);
   std::filesystem::create_directories(out);
-  writeCsv(out / "sweep.csv", sweeps, rows);
-  writePlot(out / "sweep.png", sweeps, rows);
+  writeCsv(out / "sweep.csv", sweeps, rows, what);
+  writePlot(out / "sweep.png", sweeps, rows, what);
   std::printf("terrasol-render: %zu combinations; wrote %s and %s\n", rows.size(), (out / "sweep.csv").string().c_str(),
               (out / "sweep.png").string().c_str());
   return static_cast<int>(rows.size());

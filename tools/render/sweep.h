@@ -1,7 +1,8 @@
 #pragma once
-// terrasol-render --sweep: every combination of the swept scene values rendered and measured (shadow
-// error against ray-traced truth, ms per pass), written as DIR/sweep.csv and plotted as DIR/sweep.png:
-// error against shadow + lighting ms, the Pareto front marked.
+// terrasol-render --sweep: every combination of the swept scene values rendered and measured against
+// ray-traced truth, written as DIR/sweep.csv and plotted as DIR/sweep.png with the Pareto front marked:
+// shadow error against shadow + lighting ms, or, when a render.reflections key is swept, the share of
+// reflections disagreeing with the truth against the reflection pass's ms.
 
 #include <filesystem>
 #include <string>
