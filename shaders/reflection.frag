@@ -27,7 +27,7 @@ uniform float u_maxDistance;    // blocks
 uniform float u_minSmoothness;
 
 layout(location = OUT_COLOR) out vec4 o_reflection;  // rgb: added to the lit scene; a: 1 hit, 0 sky
-layout(location = OUT_REFLECTION_HIT) out vec4 o_hit;  // xy: where the ray hit (screen uv), z: 1 hit, 0 none
+layout(location = OUT_REFLECTION_HIT) out vec4 o_hit;  // xy: hit screen uv; z: 1 hit, 0 none; w: distance
 
 ivec2 g_size;
 
@@ -112,5 +112,5 @@ void main() {
   float weight = smoothstep(u_minSmoothness, 1.0, m.smoothness);
   vec3 added = ao * weight * fresnelAmbient(m.f0, NdotV, m.roughness) * (reflected - ambient);
   o_reflection = vec4(fogged(added, position, vec3(0.0)), hit ? 1.0 : 0.0);  // fogged as the scene was
-  o_hit = vec4(hit ? hitUv : vec2(0.0), hit ? 1.0 : 0.0, 0.0);
+  o_hit = vec4(hit ? hitUv : vec2(0.0), hit ? 1.0 : 0.0, length(position));
 }

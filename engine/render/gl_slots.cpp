@@ -28,6 +28,7 @@ std::vector<ShaderDefine> slotDefines() {
       define("UNIT_PROP_OCCLUSION", slots::kUnitPropOcclusion),
       define("UNIT_REFLECTION_SCENE", slots::kUnitReflectionScene),
       define("UNIT_REFLECTION", slots::kUnitReflection),
+      define("UNIT_REFLECTION_HITS", slots::kUnitReflectionHits),
       define("STORAGE_TILES", slots::kStorageTiles),
   };
 }

@@ -42,6 +42,7 @@ inline constexpr int kUnitPropOcclusion = 13;
 // The reflection pass: the lit scene it reflects, and its own result the composite adds.
 inline constexpr int kUnitReflectionScene = 14;
 inline constexpr int kUnitReflection = 15;
+inline constexpr int kUnitReflectionHits = 16;
 
 // Shader storage buffers.
 inline constexpr int kStorageTiles = 0;  // atlas tile of each texture id for the current frame

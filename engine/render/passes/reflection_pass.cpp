@@ -65,7 +65,10 @@ void ReflectionPass::setMarchUniforms(const Frame& frame) const {
   glProgramUniform1f(program, glGetUniformLocation(program, "u_thickness"), settings.thickness);
   glProgramUniform1f(program, glGetUniformLocation(program, "u_maxDistance"), settings.maxDistance);
   glProgramUniform1f(program, glGetUniformLocation(program, "u_minSmoothness"), settings.minSmoothness);
-  glProgramUniform1f(mask_.id(), glGetUniformLocation(mask_.id(), "u_minSmoothness"), settings.minSmoothness);
+  for (const GLuint p : {mask_.id(), composite_.id()}) {
+    glProgramUniform1f(p, glGetUniformLocation(p, "u_minSmoothness"), settings.minSmoothness);
+  }
+  gl::setMat4(composite_.id(), "u_inverseViewProjection", view.inverseViewProjection);
 }
 
 void ReflectionPass::execute(Frame& frame) {
@@ -107,6 +110,7 @@ void ReflectionPass::execute(Frame& frame) {
   glEnable(GL_BLEND);
   glBlendFuncSeparate(GL_ONE, GL_ONE, GL_ZERO, GL_ONE);
   glBindTextureUnit(slots::kUnitReflection, colour_.id());
+  glBindTextureUnit(slots::kUnitReflectionHits, hits_.id());
   glUseProgram(composite_.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glBindVertexArray(0);
