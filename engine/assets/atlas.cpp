@@ -60,6 +60,23 @@ glm::vec4 Atlas::tileRect(int tile) const {
   return {x / w, y / h, (x + static_cast<float>(tileSize)) / w, (y + static_cast<float>(tileSize)) / h};
 }
 
+std::vector<float> textureSmoothness(const Atlas& atlas) {
+  std::vector<float> out(atlas.textures.size(), 0.0f);
+  if (atlas.specular.empty()) return out;
+  const Image& level = atlas.specular.front();
+  const int pad = atlas.tileSize / 2;
+  for (std::size_t t = 0; t < atlas.textures.size(); ++t) {
+    std::uint8_t most = 0;
+    for (int tile = atlas.textures[t].firstTile; tile < atlas.textures[t].firstTile + atlas.textures[t].frames; ++tile) {
+      const int x0 = (tile % atlas.columns) * atlas.slotSize + pad, y0 = (tile / atlas.columns) * atlas.slotSize + pad;
+      for (int y = y0; y < y0 + atlas.tileSize; ++y)
+        for (int x = x0; x < x0 + atlas.tileSize; ++x) most = std::max(most, level.pixel(x, y)[0]);
+    }
+    out[t] = static_cast<float>(most) / 255.0f;
+  }
+  return out;
+}
+
 int Atlas::find(const std::string& name) const {
   const auto it = byName.find(name);
   return it == byName.end() ? -1 : it->second;

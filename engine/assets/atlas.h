@@ -43,6 +43,9 @@ struct Atlas {
   int find(const std::string& name) const;
 };
 
+// Each texture's highest LabPBR smoothness (_s red, 0..1) over all its frames, by texture index.
+std::vector<float> textureSmoothness(const Atlas& atlas);
+
 // Lays out and builds the atlases. The tile size is the largest frame width, rounded up to a power
 // of two (at most 512); smaller textures are scaled up without filtering (pixel art stays crisp).
 Atlas buildAtlas(const std::vector<LoadedTexture>& textures);

@@ -13,21 +13,13 @@ GBufferContents contentsFor(const Atlas& atlas, const RendererOptions& options) 
           !options.leaveOutAbsentMaps || atlas.anySpecularMap || options.props.any};
 }
 
-// The highest LabPBR smoothness (_s red) any texel of the atlas holds.
-float maxSmoothnessOf(const Atlas& atlas) {
-  if (atlas.specular.empty()) return 0.0f;
-  const Image& level = atlas.specular.front();
-  std::uint8_t most = 0;
-  for (std::size_t i = 0; i < level.rgba.size(); i += 4) most = std::max(most, level.rgba[i]);
-  return static_cast<float>(most) / 255.0f;
-}
-
 }  // namespace
 
 PassShared::PassShared(const Atlas& atlas, const BiomeTints& tints, const RendererOptions& options)
     : options(options),
       contents(contentsFor(atlas, options)),
-      maxSmoothness(contents.specular ? maxSmoothnessOf(atlas) : 0.0f),
+      smoothness(contents.specular ? textureSmoothness(atlas) : std::vector<float>{}),
+      maxSmoothness(smoothness.empty() ? 0.0f : *std::max_element(smoothness.begin(), smoothness.end())),
       textures(atlas, tints),
       empty(gl::VertexArray::create()) {}
 

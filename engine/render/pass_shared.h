@@ -19,7 +19,8 @@ struct PassShared {
 
   RendererOptions options;
   GBufferContents contents;   // the programs are built for it
-  float maxSmoothness;        // of every loaded block texture's _s (0 without specular maps)
+  std::vector<float> smoothness;  // each atlas texture's highest _s smoothness (none without specular maps)
+  float maxSmoothness;            // of them all
   BlockTextures textures;
   gl::VertexArray empty;      // full-screen passes make their vertices from gl_VertexID
   std::vector<std::string> variants;  // each program's name with the defines that chose it

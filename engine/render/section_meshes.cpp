@@ -51,6 +51,15 @@ void SectionMeshes::upload(const SectionMesh& mesh) {
     return;
   }
   Section section;
+  for (const MeshLayer l : {MeshLayer::Opaque, MeshLayer::Cutout}) {
+    const PackedVertices& vertices = mesh.layers[static_cast<std::size_t>(l)].vertices;
+    for (std::size_t v = 0; v < vertices.size(); v += 4) {
+      const auto texture = static_cast<std::uint16_t>(vertices[v].texture());
+      if (std::find(section.textures.begin(), section.textures.end(), texture) == section.textures.end()) {
+        section.textures.push_back(texture);
+      }
+    }
+  }
   for (int l = 0; l < kMeshLayers; ++l) {
     const MeshData& data = mesh.layers[static_cast<std::size_t>(l)];
     if (data.vertices.empty()) continue;

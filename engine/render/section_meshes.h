@@ -54,6 +54,7 @@ class SectionMeshes {
   };
   struct Section {
     std::array<Layer, kMeshLayers> layers;
+    std::vector<std::uint16_t> textures;  // the texture ids of its opaque and cutout quads, each once
   };
   // In a fixed order, so frames are reproducible.
   const std::map<SectionPos, Section>& sections() const { return sections_; }

@@ -33,6 +33,18 @@ std::array<int, 3> slot(const Atlas& a, int tile, int level) {
   return {(tile % a.columns) * size, (tile / a.columns) * size, size};
 }
 
+// The reflection pass leaves out views whose textures are all rough: each texture's smoothest texel.
+TEST(Atlas, EachTexturesSmoothnessIsItsSmoothestTexel) {
+  Image polished = solidImage(16, 16, 40, 0, 0, 255);
+  polished.pixel(9, 3)[0] = 204;  // one texel of smoothness 0.8
+  const Atlas a = buildAtlas({plain("rough", 90, 90, 90), texture("polished", solidImage(16, 16, 200, 200, 200),
+                                                                   solidImage(16, 16, 127, 127, 255, 255), polished)});
+  const std::vector<float> smoothness = textureSmoothness(a);
+  ASSERT_EQ(smoothness.size(), 2u);
+  EXPECT_FLOAT_EQ(smoothness[static_cast<std::size_t>(a.find("rough"))], 0.0f);
+  EXPECT_FLOAT_EQ(smoothness[static_cast<std::size_t>(a.find("polished"))], 204.0f / 255.0f);
+}
+
 TEST(Atlas, ThreeAlignedAtlasesWithMipsDownToOneTexelAndNoBleeding) {
   const Atlas a = buildAtlas({plain("red", 255, 0, 0), plain("blue", 0, 0, 255), plain("green", 0, 255, 0)});
   EXPECT_EQ(a.tileSize, 16);

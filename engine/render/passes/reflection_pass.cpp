@@ -20,12 +20,24 @@ ReflectionPass::ReflectionPass(const VariantBuilder& build, PassShared& shared) 
 void ReflectionPass::setup(FrameGraph::Builder& builder, Frame& frame) {
   const ReflectionSettings& settings = shared_.options.reflections;
   if (!settings.enabled) return builder.skip("reflections are off");
-  if (shared_.maxSmoothness < settings.minSmoothness && !frame.props) {
-    return builder.skip("no loaded texture is smooth enough");
+  if (!frame.props) {  // props' materials may be smooth: they are not looked into
+    if (shared_.maxSmoothness < settings.minSmoothness) return builder.skip("no loaded texture is smooth enough");
+    if (shared_.options.cullPasses && !smoothInView(frame)) return builder.skip("nothing in view is smooth enough");
   }
   builder.read(frame.resources.gbuffer);
   builder.read(frame.resources.scene);
   builder.write(frame.resources.scene);
+}
+
+// Whether a section in view has a face whose texture reaches min_smoothness somewhere.
+bool ReflectionPass::smoothInView(const Frame& frame) const {
+  const std::vector<float>& smoothness = shared_.smoothness;
+  for (const VisibleSection& v : frame.visible) {
+    for (const std::uint16_t t : v.section->textures) {
+      if (t < smoothness.size() && smoothness[t] >= shared_.options.reflections.minSmoothness) return true;
+    }
+  }
+  return false;
 }
 
 void ReflectionPass::ensureTarget(glm::ivec2 size) {

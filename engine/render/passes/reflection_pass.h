@@ -3,8 +3,8 @@
 // the lit scene before the translucent pass. Three draws into a target of its own, at
 // render.reflections.resolution_scale of the frame: a mask (depth 0 where a surface is smooth enough),
 // the march (only there, by the depth test), then the result filtered up and added to the scene
-// where something was drawn. Has nothing to do when reflections are off or no loaded texture is
-// smooth enough.
+// where something was drawn. Has nothing to do when reflections are off, or no loaded texture, or
+// no texture of the sections in view, is smooth enough.
 
 #include <vector>
 
@@ -34,6 +34,7 @@ class ReflectionPass final : public RenderPass {
   ReflectionPixels read() const;
 
  private:
+  bool smoothInView(const Frame& frame) const;
   void ensureTarget(glm::ivec2 size);
   void setMarchUniforms(const Frame& frame) const;
 
