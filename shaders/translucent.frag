@@ -8,6 +8,27 @@
 #ifdef SHADOWS
 #include "lib/shadow.glsl"
 #endif
+#ifdef REFLECTIONS
+#include "lib/ssr.glsl"
+
+uniform float u_minSmoothness;
+
+// What the surface reflects beyond what `shade` gave it (its sky ambient, weighed by the coverage
+// `alpha` it is blended with): the reflected scene or sky, by Fresnel, faded in with smoothness.
+// Added unweighted by alpha, as a reflection lies on top of what the surface lets through.
+vec3 reflection(Surface s, vec3 toViewer, float alpha) {
+  Material m = labpbrMaterial(s.spec, s.albedo);
+  float weight = smoothstep(u_minSmoothness, 1.0, m.smoothness);
+  vec3 dir = reflect(-toViewer, s.normal);
+  dir = normalize(dir - s.vertexNormal * min(dot(dir, s.vertexNormal) - 0.01, 0.0));
+  vec2 hitUv;
+  bool hit = weight > 0.0 && march(v_position + s.vertexNormal * 0.02, dir, hitUv);
+  vec3 reflected = reflectedLight(dir, s.skyLight, hit, hitUv);
+  vec3 ambient = kSkyAmbient * lightmapAt(0.0, s.skyLight) * u_ambientTint;
+  float NdotV = max(dot(s.normal, toViewer), 1e-4);
+  return weight * fresnelAmbient(m.f0, NdotV, m.roughness) * (reflected - alpha * ambient);
+}
+#endif
 
 layout(location = OUT_COLOR) out vec4 o_color;
 
@@ -40,4 +61,7 @@ void main() {
 #endif
   vec3 lit = fogged(shade(s, toViewer, visibility, transmittance), v_position, skyColor(-toViewer));
   o_color = vec4(lit * albedo.a, albedo.a);
+#ifdef REFLECTIONS
+  o_color.rgb += fogged(reflection(s, toViewer, albedo.a), v_position, vec3(0.0));
+#endif
 }

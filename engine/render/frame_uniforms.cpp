@@ -47,6 +47,16 @@ void setSkyUniforms(GLuint program, const FrameView& view) {
   glProgramUniform2fv(program, glGetUniformLocation(program, "u_fogRange"), 1, glm::value_ptr(view.fogRange));
 }
 
+void setSsrUniforms(GLuint program, const FrameView& view, const ReflectionSettings& settings) {
+  gl::setMat4(program, "u_inverseViewProjection", view.inverseViewProjection);
+  gl::setMat4(program, "u_viewProjection", view.viewProjection);
+  setVec3(program, "u_forward", glm::vec3(view.forward));
+  glProgramUniform1i(program, glGetUniformLocation(program, "u_maxSteps"), std::clamp(settings.maxSteps, 1, 256));
+  glProgramUniform1f(program, glGetUniformLocation(program, "u_thickness"), settings.thickness);
+  glProgramUniform1f(program, glGetUniformLocation(program, "u_maxDistance"), settings.maxDistance);
+  glProgramUniform1f(program, glGetUniformLocation(program, "u_minSmoothness"), settings.minSmoothness);
+}
+
 void setWarpUniforms(GLuint program, const ShadowSettings& settings) {
   const bool warped = settings.mode == ShadowMode::Warped;
   glProgramUniform1i(program, glGetUniformLocation(program, "u_shadowWarp"),

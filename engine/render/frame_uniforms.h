@@ -12,6 +12,8 @@ void setLightingUniforms(GLuint program, const FrameView& view, const ShadowLook
 void setSkyUniforms(GLuint program, const FrameView& view);
 // `live`: the map shows this frame's light (else the lookup is lit everywhere).
 void setShadowUniforms(GLuint program, const ShadowLookup& shadow, bool live);
+// The reflected rays' march (lib/ssr.glsl) and the smoothness they fade in from.
+void setSsrUniforms(GLuint program, const FrameView& view, const ReflectionSettings& settings);
 // Cascades are never warped.
 void setWarpUniforms(GLuint program, const ShadowSettings& settings);
 

@@ -34,6 +34,9 @@ class GBuffer {
   GLuint target(int index) const { return targets_[static_cast<std::size_t>(index)].id(); }
   GLuint depth() const { return depth_.id(); }
   GLuint scene() const { return scene_.id(); }  // RGBA16F, linear HDR
+  // The copy of depth the lighting pass tests against (copyDepthForLighting); never attached while the
+  // translucent pass draws, so it may sample it.
+  GLuint lightingDepth() const { return lightingDepth_.id(); }
 
   GLuint geometryFramebuffer() const { return geometry_.id(); }  // every target + depth
   // The scene, with a copy of depth (copyDepthForLighting) that the lighting and sky draws are tested

@@ -29,6 +29,7 @@ std::vector<ShaderDefine> slotDefines() {
       define("UNIT_REFLECTION_SCENE", slots::kUnitReflectionScene),
       define("UNIT_REFLECTION", slots::kUnitReflection),
       define("UNIT_REFLECTION_HITS", slots::kUnitReflectionHits),
+      define("UNIT_SSR_DEPTH", slots::kUnitSsrDepth),
       define("STORAGE_TILES", slots::kStorageTiles),
   };
 }

@@ -43,6 +43,7 @@ inline constexpr int kUnitPropOcclusion = 13;
 inline constexpr int kUnitReflectionScene = 14;
 inline constexpr int kUnitReflection = 15;
 inline constexpr int kUnitReflectionHits = 16;
+inline constexpr int kUnitSsrDepth = 17;  // the depth a reflected ray is marched against
 
 // Shader storage buffers.
 inline constexpr int kStorageTiles = 0;  // atlas tile of each texture id for the current frame

@@ -1,13 +1,8 @@
 // Where a full-screen pass's pixel looks (fullscreen.vert's v_ndc), camera-relative.
 
-uniform mat4 u_inverseViewProjection;  // camera-relative
+#include "lib/unproject.glsl"
 
 in vec2 v_ndc;
-
-vec3 unproject(vec2 ndc, float depth) {
-  vec4 p = u_inverseViewProjection * vec4(ndc, depth * 2.0 - 1.0, 1.0);
-  return p.xyz / p.w;
-}
 
 // The unit direction towards the pixel's point on the far plane.
 vec3 viewDirection() {

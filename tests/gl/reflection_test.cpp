@@ -8,6 +8,7 @@
 #include "scene_render/scene_render.h"
 #include "support/frame_probe.h"
 #include "support/gl_test.h"
+#include "support/shader_variants.h"
 
 namespace terrasol {
 namespace {
@@ -44,6 +45,21 @@ TEST_F(ReflectionTest, APolishedFloorMirrorsTheBlocksOnItAndTheSky) {
   EXPECT_FALSE(identical(on.image, off.image));
   for (const FrameStats::Skipped& s : on.stats.passesSkipped) EXPECT_NE(s.pass, "reflection") << s.why;
   context_->checkErrors("mirror floor");
+}
+
+// Water (F0 0.02) seen low over the pool mirrors the pillar on the far shore: the translucent pass
+// marches the same rays against the opaque scene.
+TEST_F(ReflectionTest, WaterMirrorsThePillarOnTheShore) {
+  const SceneFile scene = loadScene(kScenes / "lake_pillar.json");
+  const RenderedFrame on = renderWith(scene, true), off = renderWith(scene, false);
+  EXPECT_EQ(on.nanPixels, 0u);
+  // The pillar's middle (0.5, 65.5, -7.5) seen in the water (its surface at y = 63.875).
+  const glm::dvec3 pillarInWater(0.5, 63.875, 2.9);
+  const glm::vec3 mirrored = colourAt(on, pillarInWater), plain = colourAt(off, pillarInWater);
+  EXPECT_GT((mirrored.r - mirrored.b) - (plain.r - plain.b), 0.1f) << "the warm pillar shows in the water";
+  SceneRenderer renderer(scene);
+  EXPECT_TRUE(testing::hasVariant(renderer, "translucent+SHADOWS+PCF_TENT+REFLECTIONS"));
+  context_->checkErrors("water reflections");
 }
 
 // The march against ray-traced truth: from every marched pixel the same mirror ray walked through the

@@ -70,13 +70,7 @@ void ReflectionPass::setMarchUniforms(const Frame& frame) const {
   const GLuint program = march_.id();
   setLightingUniforms(program, view, frame.shadow);
   setSkyUniforms(program, view);
-  gl::setMat4(program, "u_inverseViewProjection", view.inverseViewProjection);
-  gl::setMat4(program, "u_viewProjection", view.viewProjection);
-  gl::setVec3(program, "u_forward", glm::vec3(view.forward));
-  glProgramUniform1i(program, glGetUniformLocation(program, "u_maxSteps"), std::clamp(settings.maxSteps, 1, 256));
-  glProgramUniform1f(program, glGetUniformLocation(program, "u_thickness"), settings.thickness);
-  glProgramUniform1f(program, glGetUniformLocation(program, "u_maxDistance"), settings.maxDistance);
-  glProgramUniform1f(program, glGetUniformLocation(program, "u_minSmoothness"), settings.minSmoothness);
+  setSsrUniforms(program, view, settings);
   for (const GLuint p : {mask_.id(), composite_.id()}) {
     glProgramUniform1f(p, glGetUniformLocation(p, "u_minSmoothness"), settings.minSmoothness);
   }
@@ -102,6 +96,7 @@ void ReflectionPass::execute(Frame& frame) {
   glDisable(GL_BLEND);
   gbuffer.bindForReading();
   glBindTextureUnit(slots::kUnitReflectionScene, gbuffer.scene());
+  glBindTextureUnit(slots::kUnitSsrDepth, gbuffer.depth());
   glBindVertexArray(shared_.empty.id());
   glDepthFunc(GL_ALWAYS);
   glDepthMask(GL_TRUE);

@@ -2,6 +2,7 @@
 
 #include "render/frame_uniforms.h"
 #include "render/gl/uniforms.h"
+#include "render/gl_slots.h"
 #include "render/prop_draw.h"
 #include "render/section_draw.h"
 
@@ -9,7 +10,10 @@ namespace terrasol {
 
 TranslucentPass::TranslucentPass(const VariantBuilder& build, PassShared& shared)
     : shared_(shared),
-      blocks_(build("gbuffer.vert", "translucent.frag", with(lightingDefines(shared.options), shared.contents.defines()))) {
+      blocks_(build("gbuffer.vert", "translucent.frag",
+                    with(with(lightingDefines(shared.options), shared.contents.defines()),
+                         shared.options.reflections.enabled ? std::vector<ShaderDefine>{{"REFLECTIONS", "1"}}
+                                                            : std::vector<ShaderDefine>{}))) {
   if (!shared.options.props.blend) return;
   props_ = build("prop.vert", "prop_translucent.frag", with(lightingDefines(shared.options), shared.contents.defines()));
 }
@@ -29,6 +33,7 @@ void TranslucentPass::execute(Frame& frame) {
   const FrameView& view = frame.view;
   setLightingUniforms(blocks_.id(), view, frame.shadow);
   setSkyUniforms(blocks_.id(), view);
+  if (shared_.options.reflections.enabled) copyScene(frame);
   glBindFramebuffer(GL_FRAMEBUFFER, frame.gbuffer->translucentFramebuffer());
   glViewport(0, 0, frame.gbuffer->size().x, frame.gbuffer->size().y);
   glEnable(GL_DEPTH_TEST);
@@ -50,6 +55,25 @@ void TranslucentPass::execute(Frame& frame) {
   glDisable(GL_BLEND);
   glDepthMask(GL_TRUE);
   glDisable(GL_DEPTH_TEST);
+}
+
+// The lit opaque scene as it is now, for water and glass to reflect; and the depth their rays march against.
+void TranslucentPass::copyScene(const Frame& frame) {
+  const GBuffer& gbuffer = *frame.gbuffer;
+  if (copySize_ != gbuffer.size()) {
+    copySize_ = gbuffer.size();
+    sceneCopy_ = gl::Texture::create(GL_TEXTURE_2D);
+    glTextureStorage2D(sceneCopy_.id(), 1, GL_RGBA16F, copySize_.x, copySize_.y);
+    glTextureParameteri(sceneCopy_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTextureParameteri(sceneCopy_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTextureParameteri(sceneCopy_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTextureParameteri(sceneCopy_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  }
+  glCopyImageSubData(gbuffer.scene(), GL_TEXTURE_2D, 0, 0, 0, 0, sceneCopy_.id(), GL_TEXTURE_2D, 0, 0, 0, 0,
+                     copySize_.x, copySize_.y, 1);
+  glBindTextureUnit(slots::kUnitReflectionScene, sceneCopy_.id());
+  glBindTextureUnit(slots::kUnitSsrDepth, gbuffer.lightingDepth());
+  setSsrUniforms(blocks_.id(), frame.view, shared_.options.reflections);
 }
 
 }  // namespace terrasol

@@ -17,9 +17,13 @@ class TranslucentPass final : public RenderPass {
   void execute(Frame& frame) override;
 
  private:
+  void copyScene(const Frame& frame);
   PassShared& shared_;
   gl::Program blocks_;
   gl::Program props_;  // only when a placed prop has a blended material
+  // With reflections: the lit opaque scene copied before blending over it, for the reflected rays.
+  glm::ivec2 copySize_{0};
+  gl::Texture sceneCopy_;
 };
 
 }  // namespace terrasol

@@ -1,0 +1,70 @@
+// Screen-space reflection: a reflected ray marched against the opaque scene's depth (steps growing
+// with the distance, then a binary refinement), and what it sees: the lit scene where it hits, else
+// the sky in its direction dimmed by the surface's sky light, so a cave never mirrors a bright sky.
+// Shared by the reflection pass (opaque surfaces) and the translucent pass (water, glass). Needs
+// lib/lighting.glsl (levelBrightness) and lib/sky.glsl (skyColor) before it.
+
+#include "lib/unproject.glsl"
+
+layout(binding = UNIT_SSR_DEPTH) uniform sampler2D u_ssrDepth;        // the opaque scene's depth
+layout(binding = UNIT_REFLECTION_SCENE) uniform sampler2D u_ssrScene;  // the lit opaque scene
+
+uniform mat4 u_viewProjection;  // camera-relative
+uniform vec3 u_forward;         // unit view direction: depth along it decides in front or behind
+uniform int u_maxSteps;
+uniform float u_thickness;      // blocks a hit may lie behind the depth buffer's surface
+uniform float u_maxDistance;    // blocks
+
+bool offScreen(vec2 uv) { return any(lessThan(uv, vec2(0.0))) || any(greaterThanEqual(uv, vec2(1.0))); }
+
+// Where `p` lands on screen; false behind the camera.
+bool screenOf(vec3 p, out vec2 uv) {
+  vec4 clip = u_viewProjection * vec4(p, 1.0);
+  uv = clip.xy / max(clip.w, 1e-4) * 0.5 + 0.5;
+  return clip.w > 1e-4;
+}
+
+// How far `p` lies behind the depth buffer's surface at its pixel (negative: in front). 0: off
+// screen or behind the camera; 1: over sky (nothing to hit there); 2: measured.
+int behindBy(vec3 p, out float behind, out vec2 uv) {
+  behind = 0.0;
+  if (!screenOf(p, uv) || offScreen(uv)) return 0;
+  float depth = texelFetch(u_ssrDepth, ivec2(uv * vec2(textureSize(u_ssrDepth, 0))), 0).r;
+  if (depth >= 1.0) return 1;
+  behind = dot(p - unproject(uv * 2.0 - 1.0, depth), u_forward);
+  return 2;
+}
+
+bool march(vec3 origin, vec3 dir, out vec2 hitUv) {
+  float near = 0.0;
+  for (int i = 1; i <= u_maxSteps; ++i) {
+    float f = float(i) / float(u_maxSteps);
+    float t = u_maxDistance * f * f;  // fine steps near the surface, where most hits are
+    float behind;
+    vec2 uv;
+    int seen = behindBy(origin + dir * t, behind, uv);
+    if (seen == 0) return false;  // the ray left the screen: what it would hit is not in the image
+    if (seen == 2 && behind > 0.0 && behind < u_thickness + t * 0.02) {
+      float far = t;
+      for (int k = 0; k < 6; ++k) {  // the crossing between the last point in front and this one
+        float mid = 0.5 * (near + far);
+        if (behindBy(origin + dir * mid, behind, uv) == 2 && behind > 0.0) far = mid; else near = mid;
+      }
+      return screenOf(origin + dir * far, hitUv) && !offScreen(hitUv);
+    }
+    if (seen == 1 || behind <= 0.0) near = t;
+  }
+  return false;
+}
+
+// Screen edges hold no more of the reflected world: hits near them fade to the sky fallback.
+float edgeFade(vec2 uv) {
+  vec2 d = min(uv, 1.0 - uv);
+  return smoothstep(0.0, 0.05, min(d.x, d.y));
+}
+
+// What a ray in `dir` reflects: the hit's lit colour, else the sky times the sky light's brightness.
+vec3 reflectedLight(vec3 dir, float skyLight, bool hit, vec2 hitUv) {
+  vec3 sky = skyColor(dir) * levelBrightness(skyLight);
+  return hit ? mix(sky, texture(u_ssrScene, hitUv).rgb, edgeFade(hitUv)) : sky;
+}
