@@ -11,8 +11,11 @@ layout(binding = GB_NORMALS) uniform sampler2D g_normals;
 layout(binding = GB_SPECULAR) uniform sampler2D g_specular;
 layout(binding = GB_LIGHT) uniform sampler2D g_light;
 layout(binding = GB_DEPTH_UNIT) uniform sampler2D g_depth;
+layout(binding = UNIT_REFLECTION) uniform sampler2D u_reflection;
+layout(binding = UNIT_REFLECTION_HITS) uniform sampler2D u_hits;
+uniform bool u_reflected;   // the reflection pass ran this frame (else its views are black)
 
-uniform int u_view;         // index in kDebugViews (scene_file.h), 1..
+uniform int u_view;         // index in kDebugViews (core/render_settings.h), 1..
 uniform vec2 u_nearFar;
 
 layout(location = OUT_COLOR) out vec4 o_color;
@@ -46,6 +49,13 @@ void main() {
     c = vec3(log2(max(linear, u_nearFar.x) / u_nearFar.x) / log2(u_nearFar.y / u_nearFar.x));
   } else if (u_view == 7) c = vec3(light.z, albedo.a, 0.0);
   else if (u_view == 8) c = vec3(labpbrMaterial(spec, albedo.rgb).emission);
+  else if (u_view >= 9 && u_reflected) {
+    vec2 uv = gl_FragCoord.xy / vec2(textureSize(g_depth, 0));
+    vec4 hit = texture(u_hits, uv);
+    // Hits white, rays that found nothing blue, pixels not marched black; or what the pass added.
+    if (u_view == 9) c = hit.z > 0.5 ? vec3(1.0) : hit.z > -0.5 ? vec3(0.1, 0.2, 0.8) : vec3(0.0);
+    else c = linearToSrgb(clamp(abs(texture(u_reflection, uv).rgb) * 0.5, 0.0, 1.0));
+  }
   if (depth >= 1.0 && u_view != 6) c = vec3(0.0);
   o_color = vec4(c, 1.0);
 }

@@ -24,10 +24,17 @@ inline constexpr int kMaxShadowCascades = 4;
 enum class SpecularModel { BlinnPhong, Ggx };
 inline constexpr std::array<std::string_view, 2> kSpecularModels = {"blinn_phong", "ggx"};
 
-// G-buffer channels the debug views show, in this order ("none" = the lit image).
-enum class DebugView { None, Albedo, Normal, VertexNormal, Specular, Lightmap, Depth, Ao, Emission };
-inline constexpr std::array<std::string_view, 9> kDebugViews = {
-    "none", "albedo", "normal", "vertex_normal", "specular", "lightmap", "depth", "ao", "emission"};
+// What the debug views show, in this order ("none" = the lit image): G-buffer channels, then the
+// reflection pass's hit mask and what it added (black when the pass did not run).
+enum class DebugView {
+  None, Albedo, Normal, VertexNormal, Specular, Lightmap, Depth, Ao, Emission, ReflectionHits, Reflection
+};
+inline constexpr std::array<std::string_view, 11> kDebugViews = {
+    "none", "albedo", "normal", "vertex_normal", "specular", "lightmap", "depth", "ao", "emission",
+    "reflection_hits", "reflection"};
+inline constexpr bool showsReflections(DebugView v) {
+  return v == DebugView::ReflectionHits || v == DebugView::Reflection;
+}
 
 // The file name of an enum value.
 template <class E, std::size_t N>

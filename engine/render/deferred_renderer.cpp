@@ -47,7 +47,7 @@ void DeferredRenderer::render(const FrameInputs& inputs, const SectionMeshes& me
     frame.gbuffer = &*gbuffer_;
   };
   frame.resources = {graph.transient("gbuffer", realizeTargets), graph.transient("scene", realizeTargets),
-                     graph.import("shadow_map"), graph.import("target")};
+                     graph.import("shadow_map"), graph.import("target"), graph.transient("reflections")};
   for (RenderPass* pass : std::initializer_list<RenderPass*>{&shadow_, &geometry_, &lighting_, &reflection_,
                                                              &translucent_, &final_, &debug_, &outline_}) {
     addPass(graph, *pass, frame);

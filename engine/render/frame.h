@@ -48,6 +48,12 @@ struct ShadowLookup {
 // The frame graph's names for the frame's resources.
 struct FrameResources {
   FrameGraph::Resource gbuffer, scene, shadowMap, target;
+  FrameGraph::Resource reflections;  // the reflection pass's own targets (its debug views read them)
+};
+
+// The reflection pass's targets this frame, for the debug views.
+struct ReflectionTargets {
+  GLuint added = 0, hits = 0;
 };
 
 struct Frame {
@@ -66,6 +72,7 @@ struct Frame {
   GLuint target = 0;                    // the framebuffer drawn into (0: a window)
   glm::ivec2 size{0};
   ShadowLookup shadow;
+  ReflectionTargets reflections;
   // The shadow pass drew or kept the map this frame. (A frame whose passes never read the map, a debug
   // view, does not move the schedule on; the next frame then sees the camera's pace over both.)
   bool shadowDrawn = false;

@@ -34,6 +34,10 @@ FrameGraph::Resource FrameGraph::transient(std::string name, std::function<void(
 
 void FrameGraph::output(Resource r) { outputs_.push_back(r); }
 
+bool FrameGraph::written(Resource r) const {
+  return versions_[static_cast<std::size_t>(resources_[static_cast<std::size_t>(r)].latest)].writer >= 0;
+}
+
 void FrameGraph::add(std::string name, const std::function<void(Builder&)>& setup, std::function<void()> run) {
   const int index = static_cast<int>(passes_.size());
   passes_.push_back({std::move(name), std::move(run), {}, {}, {}, false});

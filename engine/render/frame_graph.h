@@ -31,6 +31,7 @@ class FrameGraph {
     // Nothing to do this frame (its inputs are empty): the pass is left out, and so are its
     // declarations, so later readers see the version before it.
     void skip(std::string why);
+    bool written(Resource r) const { return graph_.written(r); }
 
    private:
     friend class FrameGraph;
@@ -41,6 +42,8 @@ class FrameGraph {
 
   // Lives beyond the frame (the window, a kept shadow map): reading it needs no writer this frame.
   Resource import(std::string name);
+  // Whether a pass added so far (and not skipped) writes `r`.
+  bool written(Resource r) const;
   // Made for the frame: `realize` runs before the first pass that touches it, and only if one runs.
   Resource transient(std::string name, std::function<void()> realize = {});
   // The frame's result: what every kept pass leads to.

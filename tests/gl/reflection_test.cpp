@@ -47,6 +47,25 @@ TEST_F(ReflectionTest, APolishedFloorMirrorsTheBlocksOnItAndTheSky) {
   context_->checkErrors("mirror floor");
 }
 
+// F4's reflection views: the hit mask (white hit, blue found nothing, black not marched) keeps the
+// reflection pass and the lighting it reads, though the final image is replaced.
+TEST_F(ReflectionTest, TheHitMaskViewShowsWhereRaysHit) {
+  SceneFile scene = loadScene(kScenes / "mirror_floor.json");
+  scene.debugView = DebugView::ReflectionHits;
+  const RenderedFrame mask = SceneRenderer(scene).renderFrame(0);
+  EXPECT_GT(colourAt(mask, {2.64, 64.0, 0.36}).r, 0.9f) << "the pillar's reflection: a hit";
+  const glm::vec3 sky = colourAt(mask, {0.5, 64.0, 5.0});
+  EXPECT_GT(sky.b, sky.r + 0.3f) << "the sky overhead: marched, nothing hit";
+  EXPECT_LT(brightness(colourAt(mask, {0.5, 64.5, -1.5})), 0.05f) << "the gold block is not smooth: not marched";
+  for (const FrameStats::Skipped& s : mask.stats.passesSkipped) {
+    EXPECT_TRUE(s.pass != "reflection" && s.pass != "lighting") << s.pass << ": " << s.why;
+  }
+  scene.reflections.enabled = false;
+  const RenderedFrame off = SceneRenderer(scene).renderFrame(0);
+  EXPECT_LT(brightness(colourAt(off, {2.64, 64.0, 0.36})), 0.05f) << "no pass, nothing shown";
+  context_->checkErrors("reflection debug views");
+}
+
 // Water (F0 0.02) seen low over the pool mirrors the pillar on the far shore: the translucent pass
 // marches the same rays against the opaque scene.
 TEST_F(ReflectionTest, WaterMirrorsThePillarOnTheShore) {

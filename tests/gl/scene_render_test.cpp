@@ -46,6 +46,7 @@ INSTANTIATE_TEST_SUITE_P(Scenes, SceneGoldenTest,
 TEST_F(SceneRenderTest, EveryDebugViewMatchesItsGolden) {
   SceneRenderer renderer(loadScene(kScenes / "metal_emissive.json"));
   for (std::size_t v = 1; v < kDebugViews.size(); ++v) {
+    if (showsReflections(static_cast<DebugView>(v))) continue;  // reflections are off here (reflection_test.cpp)
     const Image image = renderer.render(static_cast<DebugView>(v));
     const std::string name(kDebugViews[v]);
     context_->checkErrors(name.c_str());

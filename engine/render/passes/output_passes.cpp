@@ -3,6 +3,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "render/gl/uniforms.h"
+#include "render/gl_slots.h"
 
 namespace terrasol {
 
@@ -50,6 +51,10 @@ DebugViewPass::DebugViewPass(const VariantBuilder& build, PassShared& shared)
 void DebugViewPass::setup(FrameGraph::Builder& builder, Frame& frame) {
   if (frame.inputs.debugView == DebugView::None) return builder.skip("no debug view is chosen");
   builder.read(frame.resources.gbuffer);
+  // The reflection views keep the reflection pass (and what it reads) when it has work to do.
+  if (showsReflections(frame.inputs.debugView) && builder.written(frame.resources.reflections)) {
+    builder.read(frame.resources.reflections);
+  }
   builder.write(frame.resources.target);
 }
 
@@ -58,6 +63,9 @@ void DebugViewPass::execute(Frame& frame) {
   glProgramUniform1i(program, glGetUniformLocation(program, "u_view"), static_cast<int>(frame.inputs.debugView));
   bindTarget(frame);
   frame.gbuffer->bindForReading();
+  glBindTextureUnit(slots::kUnitReflection, frame.reflections.added);
+  glBindTextureUnit(slots::kUnitReflectionHits, frame.reflections.hits);
+  glProgramUniform1i(program, glGetUniformLocation(program, "u_reflected"), frame.reflections.hits != 0 ? 1 : 0);
   glProgramUniform2fv(program, glGetUniformLocation(program, "u_nearFar"), 1, glm::value_ptr(frame.view.nearFar));
   drawFullScreen(program, shared_, GL_TRIANGLES, 3);
 }

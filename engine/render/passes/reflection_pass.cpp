@@ -27,6 +27,7 @@ void ReflectionPass::setup(FrameGraph::Builder& builder, Frame& frame) {
   builder.read(frame.resources.gbuffer);
   builder.read(frame.resources.scene);
   builder.write(frame.resources.scene);
+  builder.write(frame.resources.reflections);
 }
 
 // Whether a section in view has a face whose texture reaches min_smoothness somewhere.
@@ -82,6 +83,7 @@ void ReflectionPass::execute(Frame& frame) {
   const float scale = std::clamp(shared_.options.reflections.resolutionScale, 0.25f, 1.0f);
   const glm::ivec2 size = glm::max(glm::ivec2(glm::round(glm::vec2(gbuffer.size()) * scale)), glm::ivec2(1));
   ensureTarget(size);
+  frame.reflections = {colour_.id(), hits_.id()};
   setMarchUniforms(frame);
 
   // The mask, then the march only where it left depth 0 (the triangle lies at depth 1).
