@@ -19,9 +19,11 @@ PackStack openPacks(const std::vector<PackChoice>& packs, std::vector<std::strin
 }
 
 std::unique_ptr<DeferredRenderer> makeRenderer(const BlockAssets& assets, const ShadowSettings& shadow,
+                                               const ReflectionSettings& reflections,
                                                const PropNeeds& props) {
   RendererOptions options;
   options.shadow = shadow;
+  options.reflections = reflections;
   options.props = props;
   return std::make_unique<DeferredRenderer>(ShaderPreprocessor(shaderDir()), assets.atlas.atlas, assets.tints, options);
 }
@@ -43,8 +45,9 @@ BlockAssets::BlockAssets(const BlockRegistry& blocks, const PackStack& stack, st
 GameRenderer::GameRenderer(const BlockRegistry& blocks, const GameSettings& settings)
     : blocks_(blocks),
       assets_(BlockAssets::load(blocks, settings.packs)),
-      renderer_(makeRenderer(*assets_, settings.shadow, {})),
-      shadow_(settings.shadow) {}
+      renderer_(makeRenderer(*assets_, settings.shadow, settings.reflections, {})),
+      shadow_(settings.shadow),
+      reflections_(settings.reflections) {}
 
 std::unique_ptr<BlockAssets> GameRenderer::loadPacks(const std::vector<PackChoice>& packs) const {
   return BlockAssets::load(blocks_, packs);
@@ -53,22 +56,23 @@ std::unique_ptr<BlockAssets> GameRenderer::loadPacks(const std::vector<PackChoic
 void GameRenderer::commit(std::unique_ptr<BlockAssets> assets) {
   assets_ = std::move(assets);
   icons_.reset();
-  renderer_ = makeRenderer(*assets_, shadow_, propNeeds_);
+  renderer_ = makeRenderer(*assets_, shadow_, reflections_, propNeeds_);
   meshes_.clear();  // their tiles index the old atlas; the remeshed sections come back
 }
 
 void GameRenderer::applySettings(const GameSettings& settings) {
-  if (settings.shadow == shadow_) return;
+  if (settings.shadow == shadow_ && settings.reflections == reflections_) return;
   shadow_ = settings.shadow;
+  reflections_ = settings.reflections;
   icons_.reset();
-  renderer_ = makeRenderer(*assets_, shadow_, propNeeds_);
+  renderer_ = makeRenderer(*assets_, shadow_, reflections_, propNeeds_);
 }
 
 void GameRenderer::setPropNeeds(const PropNeeds& needs) {
   if (needs == propNeeds_) return;
   propNeeds_ = needs;
   icons_.reset();
-  renderer_ = makeRenderer(*assets_, shadow_, propNeeds_);
+  renderer_ = makeRenderer(*assets_, shadow_, reflections_, propNeeds_);
 }
 
 GLuint GameRenderer::iconTexture() {

@@ -33,7 +33,7 @@ class GameRenderer {
   // (the old table lives until the old mesher threads are gone). Throws Error for a bad pack.
   std::unique_ptr<BlockAssets> loadPacks(const std::vector<PackChoice>& packs) const;
   void commit(std::unique_ptr<BlockAssets> assets);
-  // New shader variants and shadow maps for changed shadow settings.
+  // New shader variants and targets for changed shadow or reflection settings.
   void applySettings(const GameSettings& settings);
   // The props' needs (render/props.h): new prop variants when they change.
   void setPropNeeds(const PropNeeds& needs);
@@ -51,6 +51,7 @@ class GameRenderer {
   std::unique_ptr<BlockAssets> assets_;
   std::unique_ptr<DeferredRenderer> renderer_;
   ShadowSettings shadow_;
+  ReflectionSettings reflections_;
   PropNeeds propNeeds_;
   SectionMeshes meshes_;
   gl::TextureView icons_;  // of renderer_'s atlas; remade with it

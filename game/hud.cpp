@@ -212,6 +212,14 @@ void Hud::settingsTab(GameSettings& s, MenuResult& out) {
   out.rendererChanged |= comboOf("PCF pattern", sh.pcfPattern, kPcfPatterns);
   ImGui::SliderInt("Update over frames", &sh.updateFrames, 1, 16);
   out.rendererChanged |= released();
+  ImGui::Separator();
+  ImGui::TextUnformatted("Reflections (smooth blocks, water, glass)");
+  ReflectionSettings& r = s.reflections;
+  out.rendererChanged |= ImGui::Checkbox("Reflections", &r.enabled);
+  ImGui::SliderFloat("Resolution scale", &r.resolutionScale, 0.25f, 1.0f, "%.2f");
+  out.rendererChanged |= released();
+  ImGui::SliderInt("Steps", &r.maxSteps, 4, 96);
+  out.rendererChanged |= released();
 }
 
 void Hud::packsTab(GameSettings& s, const std::vector<std::string>& loadedPacks, MenuResult& out) {

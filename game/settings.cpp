@@ -42,13 +42,15 @@ void parseKeys(const json& value, KeyBindings& keys) {
 }
 
 GameSettings parseRoot(const json& root, const path& dir) {
-  checkObject(root, "", {"view_distance", "fov", "mouse_sensitivity", "sun_path_rotation", "shadow", "packs", "keys", "vsync"});
+  checkObject(root, "", {"view_distance", "fov", "mouse_sensitivity", "sun_path_rotation", "shadow", "reflections", "packs",
+                         "keys", "vsync"});
   GameSettings s;
   if (const json* v = field(root, "view_distance")) s.viewDistance = static_cast<int>(wholeNumber(*v, "view_distance", 2, 32));
   if (const json* v = field(root, "fov")) s.fov = numberIn(*v, "fov", 30.0, 110.0, false);
   if (const json* v = field(root, "mouse_sensitivity")) s.mouseSensitivity = numberIn(*v, "mouse_sensitivity", 0.01, 2.0, false);
   if (const json* v = field(root, "sun_path_rotation")) s.sunPathRotation = numberIn(*v, "sun_path_rotation", -90.0, 90.0, false);
   if (const json* v = field(root, "shadow")) parseShadow(*v, "shadow", s.shadow);
+  if (const json* v = field(root, "reflections")) parseReflections(*v, "reflections", s.reflections);
   if (const json* v = field(root, "packs")) s.packs = parsePacks(*v, dir);
   if (const json* v = field(root, "keys")) parseKeys(*v, s.keys);
   if (const json* v = field(root, "vsync")) s.vsync = boolean(*v, "vsync");
@@ -81,7 +83,8 @@ void saveSettings(const std::filesystem::path& file, const GameSettings& s) {
   }
   const json root = {{"view_distance", s.viewDistance}, {"fov", s.fov},
                      {"mouse_sensitivity", s.mouseSensitivity}, {"sun_path_rotation", s.sunPathRotation},
-                     {"shadow", shadowJson(s.shadow)}, {"packs", packs}, {"keys", keys}, {"vsync", s.vsync}};
+                     {"shadow", shadowJson(s.shadow)}, {"reflections", reflectionsJson(s.reflections)},
+                     {"packs", packs}, {"keys", keys}, {"vsync", s.vsync}};
   if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path());
   writeFileAtomically(file, root.dump(2) + "\n");
 }

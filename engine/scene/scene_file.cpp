@@ -180,6 +180,11 @@ void parseReflections(const nlohmann::json& value, const std::string& key, Refle
   if (const json* v = field(value, "max_distance")) r.maxDistance = numberIn(*v, member(key, "max_distance"), 1.0, 1024.0, false);
 }
 
+nlohmann::json reflectionsJson(const ReflectionSettings& r) {
+  return {{"enabled", r.enabled},         {"max_steps", r.maxSteps},           {"thickness", r.thickness},
+          {"resolution_scale", r.resolutionScale}, {"min_smoothness", r.minSmoothness}, {"max_distance", r.maxDistance}};
+}
+
 nlohmann::json shadowJson(const ShadowSettings& s) {
   return {{"enabled", s.enabled},
           {"mode", nameOf(s.mode, kShadowModes)},

@@ -97,6 +97,7 @@ void parseShadow(const nlohmann::json& value, const std::string& key, ShadowSett
 nlohmann::json shadowJson(const ShadowSettings& shadow);
 // A "render.reflections" object at key path `key`, over `reflections`' values.
 void parseReflections(const nlohmann::json& value, const std::string& key, ReflectionSettings& reflections);
+nlohmann::json reflectionsJson(const ReflectionSettings& reflections);
 
 std::string sceneError(const SceneFile& scene, std::string_view key, std::string_view what);
 

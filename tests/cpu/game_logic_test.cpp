@@ -326,6 +326,8 @@ TEST(SettingsTest, SaveAndLoadRoundTripAndMissingMeansDefaults) {
   s.viewDistance = 12;
   s.fov = 90.0f;
   s.shadow.mode = ShadowMode::Cascaded;
+  s.reflections.enabled = true;
+  s.reflections.resolutionScale = 0.5f;
   s.shadow.pcfSamples = 3;
   s.packs = {{dir / "packs" / "a", true}, {dir / "packs" / "b", false}};
   s.keys.bind(Action::Jump, GLFW_KEY_J);
@@ -334,6 +336,7 @@ TEST(SettingsTest, SaveAndLoadRoundTripAndMissingMeansDefaults) {
   EXPECT_EQ(back.viewDistance, 12);
   EXPECT_EQ(back.fov, 90.0f);
   EXPECT_EQ(back.shadow, s.shadow) << "every shadow setting comes back";
+  EXPECT_EQ(back.reflections, s.reflections);
   EXPECT_EQ(back.shadow.pcfSamples, 3);
   EXPECT_EQ(back.packs, s.packs);
   EXPECT_EQ(back.keys.key(Action::Jump), GLFW_KEY_J);
