@@ -76,6 +76,13 @@ struct ReflectionSettings {
   bool operator==(const ReflectionSettings&) const = default;
 };
 
+// "render.water": how water's surface looks.
+struct WaterSettings {
+  bool waves = false;  // the surface moves with summed waves, deterministic in world time
+
+  bool operator==(const WaterSettings&) const = default;
+};
+
 // The layers the settings ask for: one (warped), or the cascades, smallest first (distance / 2^k).
 inline int shadowLayers(const ShadowSettings& settings) {
   return settings.mode == ShadowMode::Cascaded ? std::clamp(settings.cascades, 2, kMaxShadowCascades) : 1;

@@ -56,6 +56,7 @@ struct RendererOptions {
   bool leaveOutAbsentMaps = true;
   ShadowSettings shadow;
   ReflectionSettings reflections;
+  WaterSettings water;
   PropNeeds props;  // what the props to be drawn need: no prop variant is built for none
 };
 

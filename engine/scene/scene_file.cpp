@@ -206,7 +206,7 @@ void parseRender(const json& render, SceneFile& scene) {
   checkObject(render, "render",
               {"width", "height", "view_distance", "debug_view", "specular", "material_ao", "cave_culling",
                "shadow_caster_culling", "cull_faces_away", "leave_out_absent_maps", "cull_passes", "shadow",
-               "reflections"});
+               "reflections", "water"});
   if (const json* v = field(render, "width")) {
     scene.width = static_cast<int>(wholeNumber(*v, "render.width", 1, 8192));
   }
@@ -228,6 +228,10 @@ void parseRender(const json& render, SceneFile& scene) {
   if (const json* v = field(render, "cull_faces_away")) scene.cullFacesAway = boolean(*v, "render.cull_faces_away");
   if (const json* v = field(render, "cull_passes")) scene.cullPasses = boolean(*v, "render.cull_passes");
   if (const json* v = field(render, "reflections")) parseReflections(*v, "render.reflections", scene.reflections);
+  if (const json* v = field(render, "water")) {
+    checkObject(*v, "render.water", {"waves"});
+    if (const json* w = field(*v, "waves")) scene.water.waves = boolean(*w, "render.water.waves");
+  }
   if (const json* v = field(render, "leave_out_absent_maps")) {
     scene.leaveOutAbsentMaps = boolean(*v, "render.leave_out_absent_maps");
   }

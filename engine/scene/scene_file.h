@@ -75,6 +75,7 @@ struct SceneFile {
   bool cullPasses = true;          // "render.cull_passes": no pass whose output nothing reads, or with nothing to draw
   ShadowSettings shadow;           // "render.shadow"
   ReflectionSettings reflections;  // "render.reflections"
+  WaterSettings water;             // "render.water"
   glm::dvec3 cameraPosition{0.0, 80.0, 0.0};
   glm::dvec3 cameraLookAt{0.0, 80.0, -1.0};
   float fov = 70.0f;  // vertical degrees, in (0, 180)

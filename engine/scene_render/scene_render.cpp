@@ -100,6 +100,7 @@ SceneRenderer::SceneRenderer(const SceneFile& scene) : scene_(scene), debugView_
   options.cullFacesAway = scene.cullFacesAway;
   options.cullPasses = scene.cullPasses;
   options.reflections = scene.reflections;
+  options.water = scene.water;
   gpu_ = std::make_unique<Gpu>(shaders, world_->atlas.atlas, tints, options, glm::ivec2(scene.width, scene.height), scene,
                                world_->world);
   for (const auto& mesh : meshes) {

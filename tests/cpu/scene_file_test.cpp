@@ -237,6 +237,9 @@ TEST(SceneFile, ReflectionSettings) {
   EXPECT_TRUE(failsWith(R"({"render": {"reflections": {"min_smoothness": 1.5}}})",
                         "render.reflections.min_smoothness: expected"));
   EXPECT_TRUE(failsWith(R"({"render": {"reflections": {"mirror": true}}})", "render.reflections.mirror: unknown key"));
+  EXPECT_TRUE(parseScene(R"({"render": {"water": {"waves": true}}})", "a.json").water.waves);
+  EXPECT_FALSE(parseScene("{}", "a.json").water.waves);
+  EXPECT_TRUE(failsWith(R"({"render": {"water": {"waves": 1}}})", "render.water.waves: expected true or false"));
 }
 
 // Every name a file may give parses to the enum value of the same index.

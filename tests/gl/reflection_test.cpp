@@ -81,6 +81,22 @@ TEST_F(ReflectionTest, WaterMirrorsThePillarOnTheShore) {
   context_->checkErrors("water reflections");
 }
 
+// render.water.waves: the surface moves with world time and only with it (goldens stay stable).
+TEST_F(ReflectionTest, WavesMoveWithWorldTimeAndOnlyWithIt) {
+  SceneFile scene = loadScene(kScenes / "lake_pillar.json");
+  scene.water.waves = true;
+  const RenderedFrame a = renderWith(scene, true), again = renderWith(scene, true);
+  EXPECT_EQ(a.nanPixels, 0u);
+  EXPECT_TRUE(identical(a.image, again.image)) << "the same tick, the same waves";
+  scene.time += 10;  // half a second later
+  const RenderedFrame later = renderWith(scene, true);
+  EXPECT_FALSE(identical(a.image, later.image)) << "the waves moved";
+  scene.water.waves = false;
+  scene.time -= 10;
+  EXPECT_FALSE(identical(a.image, renderWith(scene, true).image)) << "still water looks different";
+  context_->checkErrors("waves");
+}
+
 // The march against ray-traced truth: from every marched pixel the same mirror ray walked through the
 // voxel grid. On the mirror floor most of them agree (a broken march agrees on 0.5 %) and no sky leaks.
 TEST_F(ReflectionTest, TheMarchAgreesWithTheRayTracedTruth) {

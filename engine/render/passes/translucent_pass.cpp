@@ -8,12 +8,34 @@
 
 namespace terrasol {
 
+namespace {
+
+// Water and glass reflecting (render.reflections) and water's waves (render.water.waves).
+std::vector<ShaderDefine> surfaceDefines(const RendererOptions& options) {
+  std::vector<ShaderDefine> defines;
+  if (options.reflections.enabled) defines.push_back({"REFLECTIONS", "1"});
+  if (options.water.waves) defines.push_back({"WAVES", "1"});
+  return defines;
+}
+
+// The waves' phase: world time in seconds, wrapped at a whole number of every wave's periods so it
+// stays exact after any number of ticks; their origin: the camera's position wrapped at 256 blocks
+// (in double), so a far camera sees the same waves as one at the origin.
+constexpr std::int64_t kWaveCycleTicks = 20 * 60 * 60;  // an hour
+
+void setWaveUniforms(GLuint program, const FrameInputs& inputs) {
+  const auto ticks = ((inputs.ticks % kWaveCycleTicks) + kWaveCycleTicks) % kWaveCycleTicks;
+  glProgramUniform1f(program, glGetUniformLocation(program, "u_waveTime"), static_cast<float>(ticks) / 20.0f);
+  const glm::dvec3 wrapped = glm::mod(inputs.cameraPosition, glm::dvec3(256.0));
+  gl::setVec3(program, "u_waveOrigin", glm::vec3(wrapped));
+}
+
+}  // namespace
+
 TranslucentPass::TranslucentPass(const VariantBuilder& build, PassShared& shared)
     : shared_(shared),
       blocks_(build("gbuffer.vert", "translucent.frag",
-                    with(with(lightingDefines(shared.options), shared.contents.defines()),
-                         shared.options.reflections.enabled ? std::vector<ShaderDefine>{{"REFLECTIONS", "1"}}
-                                                            : std::vector<ShaderDefine>{}))) {
+                    with(with(lightingDefines(shared.options), shared.contents.defines()), surfaceDefines(shared.options)))) {
   if (!shared.options.props.blend) return;
   props_ = build("prop.vert", "prop_translucent.frag", with(lightingDefines(shared.options), shared.contents.defines()));
 }
@@ -34,6 +56,7 @@ void TranslucentPass::execute(Frame& frame) {
   setLightingUniforms(blocks_.id(), view, frame.shadow);
   setSkyUniforms(blocks_.id(), view);
   if (shared_.options.reflections.enabled) copyScene(frame);
+  if (shared_.options.water.waves) setWaveUniforms(blocks_.id(), frame.inputs);
   glBindFramebuffer(GL_FRAMEBUFFER, frame.gbuffer->translucentFramebuffer());
   glViewport(0, 0, frame.gbuffer->size().x, frame.gbuffer->size().y);
   glEnable(GL_DEPTH_TEST);
