@@ -42,7 +42,7 @@ out vec3 v_light;     // block, sky, ao
 flat out vec3 v_normal;
 flat out vec3 v_tangent;
 flat out vec3 v_up;
-#ifdef WAVES
+#if defined(WAVES) || defined(REFLECTIONS)
 flat out float v_water;  // 1 on water's quads (tinted as water)
 #endif
 
@@ -56,7 +56,7 @@ void main() {
   v_normal = kFaceNormals[v.face];
   v_tangent = kFaceTangents[v.face];
   v_up = kFaceUps[v.face];
-#ifdef WAVES
+#if defined(WAVES) || defined(REFLECTIONS)
   v_water = v.tint == 3 ? 1.0 : 0.0;
 #endif
   gl_Position = u_viewProjection * vec4(v_position, 1.0);

@@ -28,10 +28,24 @@ vec3 reflection(Surface s, vec3 toViewer, float alpha) {
   float NdotV = max(dot(s.normal, toViewer), 1e-4);
   return weight * fresnelAmbient(m.f0, NdotV, m.roughness) * (reflected - alpha * ambient);
 }
+
+// What water lets through, bent: the opaque scene behind it, looked up a little off along the surface
+// normal (less with distance), unless what lies there is in front of the water (nothing in front is
+// smeared in).
+vec3 refracted(vec3 normal) {
+  vec2 size = vec2(textureSize(u_ssrScene, 0));
+  vec2 straight = gl_FragCoord.xy / size;
+  vec2 uv = clamp(straight + normal.xz * (0.6 / max(length(v_position), 1.0)), vec2(0.0), vec2(1.0));
+  float depth = texelFetch(u_ssrDepth, ivec2(uv * size), 0).r;
+  if (dot(unproject(uv * 2.0 - 1.0, depth) - v_position, u_forward) < 0.0) uv = straight;
+  return texture(u_ssrScene, uv).rgb;
+}
 #endif
 
-#ifdef WAVES
+#if defined(WAVES) || defined(REFLECTIONS)
 flat in float v_water;
+#endif
+#ifdef WAVES
 uniform float u_waveTime;    // seconds of world time (wrapped at an hour)
 uniform vec3 u_waveOrigin;   // the camera's world position wrapped at 256 blocks
 
@@ -86,6 +100,8 @@ void main() {
   vec3 lit = fogged(shade(s, toViewer, visibility, transmittance), v_position, skyColor(-toViewer));
   o_color = vec4(lit * albedo.a, albedo.a);
 #ifdef REFLECTIONS
+  // Water draws what it lets through itself, refracted, and so covers what lay behind it whole.
+  if (v_water > 0.5) o_color = vec4(o_color.rgb + refracted(s.normal) * (1.0 - albedo.a), 1.0);
   o_color.rgb += fogged(reflection(s, toViewer, albedo.a), v_position, vec3(0.0));
 #endif
 }
