@@ -5,14 +5,15 @@
 // Plain math, in double so CPU measurements lose nothing.
 
 #include <cmath>
-
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 namespace terrasol {
 
-inline glm::dvec2 signNotZero(glm::dvec2 v) { return {v.x >= 0.0 ? 1.0 : -1.0, v.y >= 0.0 ? 1.0 : -1.0}; }
+inline glm::dvec2 signNotZero(glm::dvec2 v) {
+  return {v.x >= 0.0 ? 1.0 : -1.0, v.y >= 0.0 ? 1.0 : -1.0};
+}
 
 inline glm::dvec2 octEncode(glm::dvec3 n) {
   n /= std::max(std::abs(n.x) + std::abs(n.y) + std::abs(n.z), 1e-20);

@@ -58,7 +58,9 @@ std::array<int, 256> spreadTops(const World& world, const Chunk& chunk) {
         const int nx = lx + o.x, nz = lz + o.z;
         const bool outside = nx < 0 || nx > 15 || nz < 0 || nz > 15;
         const Chunk* c = outside ? around[k] : &chunk;
-        if (c) highest = std::max<int>(highest, c->light().skyTop[static_cast<std::size_t>((nz & 15) * 16 + (nx & 15))]);
+        if (c)
+          highest =
+              std::max<int>(highest, c->light().skyTop[static_cast<std::size_t>((nz & 15) * 16 + (nx & 15))]);
       }
       tops[static_cast<std::size_t>(lz * 16 + lx)] = highest;
     }

@@ -16,7 +16,8 @@ SectionMesh uncapturedMesh(SectionPos pos, CaptureResult why) {
   return mesh;
 }
 
-SectionMesh meshFromWorld(const World& world, SectionPos pos, const BlockMeshTable& table, SectionSnapshot& scratch) {
+SectionMesh meshFromWorld(const World& world, SectionPos pos, const BlockMeshTable& table,
+                          SectionSnapshot& scratch) {
   const CaptureResult captured = captureSection(world, pos, scratch);
   return captured == CaptureResult::Captured ? meshWithLinks(scratch, table) : uncapturedMesh(pos, captured);
 }

@@ -13,6 +13,7 @@ SectionMesh meshWithLinks(const SectionSnapshot& snapshot, const BlockMeshTable&
 // No faces: all air (every face sees every other) or buried (no face sees another).
 SectionMesh uncapturedMesh(SectionPos pos, CaptureResult why);
 // Both on the calling thread, straight from the world; `scratch` is reused between calls.
-SectionMesh meshFromWorld(const World& world, SectionPos pos, const BlockMeshTable& table, SectionSnapshot& scratch);
+SectionMesh meshFromWorld(const World& world, SectionPos pos, const BlockMeshTable& table,
+                          SectionSnapshot& scratch);
 
 }  // namespace terrasol

@@ -3,11 +3,10 @@
 // lookup and the stats the passes add to. Built by DeferredRenderer::render; internal to engine/render.
 
 #include <array>
-#include <vector>
-
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <vector>
 
 #include "core/day_cycle.h"
 #include "core/lightmap.h"
@@ -68,8 +67,8 @@ struct Frame {
   std::vector<VisibleSection> visible;  // inside the frustum, not hidden by cave culling
   std::vector<int> visibleProps;        // prop instances inside the frustum
   FrameResources resources{};
-  GBuffer* gbuffer = nullptr;           // realized by the graph before the first pass that needs it
-  GLuint target = 0;                    // the framebuffer drawn into (0: a window)
+  GBuffer* gbuffer = nullptr;  // realized by the graph before the first pass that needs it
+  GLuint target = 0;           // the framebuffer drawn into (0: a window)
   glm::ivec2 size{0};
   ShadowLookup shadow;
   ReflectionTargets reflections;

@@ -32,13 +32,16 @@ FrameGraph::Resource FrameGraph::transient(std::string name, std::function<void(
   return r;
 }
 
-void FrameGraph::output(Resource r) { outputs_.push_back(r); }
+void FrameGraph::output(Resource r) {
+  outputs_.push_back(r);
+}
 
 bool FrameGraph::written(Resource r) const {
   return versions_[static_cast<std::size_t>(resources_[static_cast<std::size_t>(r)].latest)].writer >= 0;
 }
 
-void FrameGraph::add(std::string name, const std::function<void(Builder&)>& setup, std::function<void()> run) {
+void FrameGraph::add(std::string name, const std::function<void(Builder&)>& setup,
+                     std::function<void()> run) {
   const int index = static_cast<int>(passes_.size());
   passes_.push_back({std::move(name), std::move(run), {}, {}, {}, false});
   Builder builder(*this, index);
@@ -53,7 +56,8 @@ void FrameGraph::add(std::string name, const std::function<void(Builder&)>& setu
   for (int& r : pass.reads) {
     ResourceNode& resource = resources_[static_cast<std::size_t>(r)];
     if (!resource.imported && versions_[static_cast<std::size_t>(resource.latest)].writer < 0) {
-      throw std::logic_error("frame graph: " + pass.name + " reads " + resource.name + " before any pass writes it");
+      throw std::logic_error("frame graph: " + pass.name + " reads " + resource.name +
+                             " before any pass writes it");
     }
     r = resource.latest;
   }
@@ -67,11 +71,12 @@ void FrameGraph::add(std::string name, const std::function<void(Builder&)>& setu
 void FrameGraph::execute(const std::function<void(const std::string&)>& after, bool cull) {
   // Backwards from the outputs: a pass is needed when it wrote a version that is needed.
   std::vector<bool> neededVersion(versions_.size(), false);
-  for (const Resource r : outputs_) neededVersion[static_cast<std::size_t>(resources_[static_cast<std::size_t>(r)].latest)] = true;
+  for (const Resource r : outputs_)
+    neededVersion[static_cast<std::size_t>(resources_[static_cast<std::size_t>(r)].latest)] = true;
   for (auto pass = passes_.rbegin(); pass != passes_.rend(); ++pass) {
-    pass->needed = pass->skip.empty() && (!cull || std::any_of(pass->writes.begin(), pass->writes.end(), [&](int v) {
-                     return neededVersion[static_cast<std::size_t>(v)];
-                   }));
+    pass->needed = pass->skip.empty() &&
+                   (!cull || std::any_of(pass->writes.begin(), pass->writes.end(),
+                                         [&](int v) { return neededVersion[static_cast<std::size_t>(v)]; }));
     if (!pass->needed) continue;
     for (const int v : pass->reads) neededVersion[static_cast<std::size_t>(v)] = true;
   }

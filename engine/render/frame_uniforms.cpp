@@ -1,7 +1,6 @@
 #include "render/frame_uniforms.h"
 
 #include <algorithm>
-
 #include <glm/gtc/type_ptr.hpp>
 
 #include "render/gl/uniforms.h"
@@ -51,7 +50,8 @@ void setSsrUniforms(GLuint program, const FrameView& view, const ReflectionSetti
   gl::setMat4(program, "u_inverseViewProjection", view.inverseViewProjection);
   gl::setMat4(program, "u_viewProjection", view.viewProjection);
   setVec3(program, "u_forward", glm::vec3(view.forward));
-  glProgramUniform1i(program, glGetUniformLocation(program, "u_maxSteps"), std::clamp(settings.maxSteps, 1, 256));
+  glProgramUniform1i(program, glGetUniformLocation(program, "u_maxSteps"),
+                     std::clamp(settings.maxSteps, 1, 256));
   glProgramUniform1f(program, glGetUniformLocation(program, "u_thickness"), settings.thickness);
   glProgramUniform1f(program, glGetUniformLocation(program, "u_maxDistance"), settings.maxDistance);
   glProgramUniform1f(program, glGetUniformLocation(program, "u_minSmoothness"), settings.minSmoothness);
@@ -82,9 +82,12 @@ void setShadowUniforms(GLuint program, const ShadowLookup& shadow, bool live) {
                             glm::value_ptr(matrices[0]));
   glProgramUniform1fv(program, glGetUniformLocation(program, "u_shadowTexelWorlds"), layers, texels.data());
   glProgramUniform1fv(program, glGetUniformLocation(program, "u_shadowDepthRanges"), layers, ranges.data());
-  glProgramUniform1f(program, glGetUniformLocation(program, "u_shadowResolution"), static_cast<float>(settings.resolution));
-  glProgramUniform1f(program, glGetUniformLocation(program, "u_pcfRadius"), std::max(settings.pcfRadius, 0.0f));
-  glProgramUniform1i(program, glGetUniformLocation(program, "u_pcfRadiusInBlocks"), settings.pcfRadiusInBlocks ? 1 : 0);
+  glProgramUniform1f(program, glGetUniformLocation(program, "u_shadowResolution"),
+                     static_cast<float>(settings.resolution));
+  glProgramUniform1f(program, glGetUniformLocation(program, "u_pcfRadius"),
+                     std::max(settings.pcfRadius, 0.0f));
+  glProgramUniform1i(program, glGetUniformLocation(program, "u_pcfRadiusInBlocks"),
+                     settings.pcfRadiusInBlocks ? 1 : 0);
   glProgramUniform1i(program, glGetUniformLocation(program, "u_shadowLive"), live ? 1 : 0);
   glBindTextureUnit(slots::kUnitShadowMap, shadow.map->depth());
   glBindTextureUnit(slots::kUnitTransmittance, shadow.map->transmittance());

@@ -23,7 +23,8 @@ PassShared::PassShared(const Atlas& atlas, const BiomeTints& tints, const Render
       textures(atlas, tints),
       empty(gl::VertexArray::create()) {}
 
-gl::Program VariantBuilder::operator()(const char* vertex, const char* fragment, std::vector<ShaderDefine> extra) const {
+gl::Program VariantBuilder::operator()(const char* vertex, const char* fragment,
+                                       std::vector<ShaderDefine> extra) const {
   std::string name = std::string(fragment).substr(0, std::string(fragment).find('.'));
   for (const ShaderDefine& d : extra) {
     name += "+";

@@ -18,19 +18,21 @@ struct PassShared {
   PassShared(const Atlas& atlas, const BiomeTints& tints, const RendererOptions& options);
 
   RendererOptions options;
-  GBufferContents contents;   // the programs are built for it
+  GBufferContents contents;       // the programs are built for it
   std::vector<float> smoothness;  // each atlas texture's highest _s smoothness (none without specular maps)
   float maxSmoothness;            // of them all
   BlockTextures textures;
-  gl::VertexArray empty;      // full-screen passes make their vertices from gl_VertexID
+  gl::VertexArray empty;              // full-screen passes make their vertices from gl_VertexID
   std::vector<std::string> variants;  // each program's name with the defines that chose it
 };
 
 // Builds programs and names each variant in `names`: the fragment stage and its defines ("gbuffer+CUTOUT").
 class VariantBuilder {
  public:
-  VariantBuilder(const ShaderPreprocessor& shaders, PassShared& shared) : shaders_(shaders), shared_(shared) {}
-  gl::Program operator()(const char* vertex, const char* fragment, std::vector<ShaderDefine> extra = {}) const;
+  VariantBuilder(const ShaderPreprocessor& shaders, PassShared& shared)
+      : shaders_(shaders), shared_(shared) {}
+  gl::Program operator()(const char* vertex, const char* fragment,
+                         std::vector<ShaderDefine> extra = {}) const;
 
  private:
   const ShaderPreprocessor& shaders_;

@@ -2,9 +2,8 @@
 // Props in the renderer's passes: culled by their world box, drawn mesh by mesh with their material's
 // uniforms and textures (render/props.h), in the G-buffer, translucent and shadow passes.
 
-#include <vector>
-
 #include <glm/vec3.hpp>
+#include <vector>
 
 #include "render/frustum.h"
 #include "render/props.h"

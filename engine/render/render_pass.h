@@ -25,7 +25,8 @@ class RenderPass {
 
 inline void addPass(FrameGraph& graph, RenderPass& pass, Frame& frame) {
   graph.add(
-      pass.name(), [&](FrameGraph::Builder& builder) { pass.setup(builder, frame); }, [&] { pass.execute(frame); });
+      pass.name(), [&](FrameGraph::Builder& builder) { pass.setup(builder, frame); },
+      [&] { pass.execute(frame); });
 }
 
 }  // namespace terrasol

@@ -2,13 +2,12 @@
 
 #include <algorithm>
 #include <cstdint>
-
 #include <glm/gtc/type_ptr.hpp>
 
 namespace terrasol {
 
-std::vector<VisibleSection> sectionsInside(const FrustumPlanes& planes, glm::dvec3 camera, const SectionMeshes& meshes,
-                                           int* outside) {
+std::vector<VisibleSection> sectionsInside(const FrustumPlanes& planes, glm::dvec3 camera,
+                                           const SectionMeshes& meshes, int* outside) {
   std::vector<VisibleSection> inside;
   for (const auto& [pos, section] : meshes.sections()) {
     // In double: far from the origin a float cannot hold both the section and the small offset.
@@ -43,7 +42,8 @@ void drawSections(GLuint program, const BlockTextures& textures, const std::vect
   for (const VisibleSection& v : sections) {
     const auto& l = v.section->layers[static_cast<std::size_t>(layer)];
     const glm::vec3 centre = v.offset + glm::vec3(8.0f);
-    if (l.quads > 0) draws.push_back({&l, v.offset, alongAxis ? glm::dot(centre, how.axis) : glm::length(centre)});
+    if (l.quads > 0)
+      draws.push_back({&l, v.offset, alongAxis ? glm::dot(centre, how.axis) : glm::length(centre)});
   }
   if (draws.empty()) return;
   std::stable_sort(draws.begin(), draws.end(), [&](const Draw& a, const Draw& b) {
@@ -74,8 +74,10 @@ void drawSections(GLuint program, const BlockTextures& textures, const std::vect
         if (how.stats) how.stats->quadsFacingAway += quads;
         continue;
       }
-      const auto offset = reinterpret_cast<const void*>(static_cast<std::uintptr_t>(first) * 6 * sizeof(GLuint));
-      if (ranges > 0 && static_cast<const char*>(offsets[ranges - 1]) + counts[ranges - 1] * sizeof(GLuint) == offset) {
+      const auto offset =
+          reinterpret_cast<const void*>(static_cast<std::uintptr_t>(first) * 6 * sizeof(GLuint));
+      if (ranges > 0 &&
+          static_cast<const char*>(offsets[ranges - 1]) + counts[ranges - 1] * sizeof(GLuint) == offset) {
         counts[ranges - 1] += quads * 6;
       } else {
         counts[ranges] = quads * 6;

@@ -1,9 +1,8 @@
 #pragma once
 // Drawing sections' meshes, shared by the geometry, translucent and shadow passes.
 
-#include <vector>
-
 #include <glm/vec3.hpp>
+#include <vector>
 
 #include "render/block_textures.h"
 #include "render/frame_inputs.h"
@@ -14,8 +13,8 @@
 namespace terrasol {
 
 // The sections with a mesh whose box is inside `planes` (camera-relative); counts the others.
-std::vector<VisibleSection> sectionsInside(const FrustumPlanes& planes, glm::dvec3 camera, const SectionMeshes& meshes,
-                                           int* outside = nullptr);
+std::vector<VisibleSection> sectionsInside(const FrustumPlanes& planes, glm::dvec3 camera,
+                                           const SectionMeshes& meshes, int* outside = nullptr);
 
 // How drawSections orders and trims: sections by their centre's distance from the camera, or (with a
 // non-zero `axis`) by how far along `axis` it lies, nearest first so the depth test can reject hidden

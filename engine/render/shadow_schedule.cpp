@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-
 #include <glm/geometric.hpp>
 
 namespace terrasol {
@@ -24,18 +23,22 @@ ShadowPlan ShadowSchedule::plan(const ShadowFrame& frame) const {
   // Cascades are picked by distance from the camera, so only the single warped map moves ahead.
   const glm::dvec3 forward(frame.forward.x, 0.0, frame.forward.z);
   const double along = glm::length(forward);
-  const glm::dvec3 ahead = settings_.mode == ShadowMode::Warped && along > 1e-6
-                               ? forward / along * static_cast<double>(settings_.shiftAhead * settings_.distance)
-                               : glm::dvec3(0.0);
+  const glm::dvec3 ahead =
+      settings_.mode == ShadowMode::Warped && along > 1e-6
+          ? forward / along * static_cast<double>(settings_.shiftAhead * settings_.distance)
+          : glm::dvec3(0.0);
   plan.wanted = frame.camera + frame.centreOffset + ahead;
   plan.centre = recentred(plan.wanted);
   const double step = lastWanted_ ? glm::length(plan.wanted - *lastWanted_) : 0.0;
 
   ShadowKey wanted{plan.centre, frame.toLight, frame.meshes, frame.props, true, std::nullopt};
   if (casterCulling_) wanted.receivers.emplace(frame.cone.widened(kMarginDegrees, kPullBack));
-  const auto serves = [&](const ViewCone& cone) { return !shown_.receivers || shown_.receivers->contains(cone); };
+  const auto serves = [&](const ViewCone& cone) {
+    return !shown_.receivers || shown_.receivers->contains(cone);
+  };
   const bool unchanged = shown_.valid && shown_.centre == plan.centre && shown_.meshes == wanted.meshes &&
-                         shown_.props == wanted.props && glm::dot(shown_.toLight, wanted.toLight) > kReuseCos &&
+                         shown_.props == wanted.props &&
+                         glm::dot(shown_.toLight, wanted.toLight) > kReuseCos &&
                          serves(frame.cone.widened(0.5f * kMarginDegrees, 0.5f * kPullBack));
   const int slices = frame.mayReuse ? std::max(settings_.updateFrames, 1) : 1;
   // A kept map must still cover the camera well; a jump (a teleport) redraws it whole at once.

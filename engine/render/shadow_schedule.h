@@ -20,9 +20,8 @@
 // Plain C++, no GL; plan() decides, commit() applies a decision that was carried out.
 
 #include <cstdint>
-#include <optional>
-
 #include <glm/vec3.hpp>
+#include <optional>
 
 #include "core/render_settings.h"
 #include "render/shadow_receivers.h"
@@ -47,24 +46,24 @@ struct ShadowSlices {
 // One frame as the schedule sees it.
 struct ShadowFrame {
   glm::dvec3 camera{0.0};
-  glm::dvec3 centreOffset{0.0};   // FrameInputs::shadowCentreOffset
+  glm::dvec3 centreOffset{0.0};         // FrameInputs::shadowCentreOffset
   glm::dvec3 forward{0.0, 0.0, -1.0};   // unit view direction
-  glm::vec3 toLight{0.0f, 1.0f, 0.0f};   // unit
-  std::uint64_t meshes = 0, props = 0;   // generations
-  ViewCone cone;                         // the camera's receivers
-  bool mayReuse = false;                 // FrameInputs::reuseShadowMap
+  glm::vec3 toLight{0.0f, 1.0f, 0.0f};  // unit
+  std::uint64_t meshes = 0, props = 0;  // generations
+  ViewCone cone;                        // the camera's receivers
+  bool mayReuse = false;                // FrameInputs::reuseShadowMap
 };
 
 struct ShadowPlan {
   enum class Action { Keep, Spread, Whole };
   Action action = Action::Whole;
-  ShadowKey key;          // the map drawn (Spread: the one being built)
-  ShadowSlices slices;    // Spread: this frame's; Whole: all of them
+  ShadowKey key;             // the map drawn (Spread: the one being built)
+  ShadowSlices slices;       // Spread: this frame's; Whole: all of them
   bool startsBuild = false;  // Spread: the build's first slice (the map is cleared first)
   bool completes = false;    // Spread: the built map replaces the shown one after this slice
-  int slicesDrawn = 0;       // for the frame's stats: Spread its count, Whole all the slices there are, Keep 0
-  glm::dvec3 wanted{0.0};    // where the camera wants the map this frame
-  glm::dvec3 centre{0.0};    // where it is placed (re-centred rarely)
+  int slicesDrawn = 0;     // for the frame's stats: Spread its count, Whole all the slices there are, Keep 0
+  glm::dvec3 wanted{0.0};  // where the camera wants the map this frame
+  glm::dvec3 centre{0.0};  // where it is placed (re-centred rarely)
 };
 
 class ShadowSchedule {
@@ -96,7 +95,7 @@ class ShadowSchedule {
   bool casterCulling_;
   ShadowKey shown_;
   std::optional<Build> build_;
-  std::optional<glm::dvec3> centre_;  // where the map is centred, kept between frames
+  std::optional<glm::dvec3> centre_;      // where the map is centred, kept between frames
   std::optional<glm::dvec3> lastWanted_;  // last frame's, for how fast the map falls behind
 };
 

@@ -2,10 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <optional>
-
 #include <glm/geometric.hpp>
 #include <glm/mat4x4.hpp>
+#include <optional>
 
 #include "core/octahedral.h"
 #include "world/voxel_ray.h"
@@ -40,12 +39,14 @@ Truth trace(const World& world, glm::dvec3 origin, glm::dvec3 dir, double maxDis
 }
 
 glm::dvec3 unproject(const FrameGeometry& g, glm::dvec2 ndc, double depth) {
-  const glm::vec4 p = g.inverseViewProjection * glm::vec4(glm::vec2(ndc), static_cast<float>(depth * 2.0 - 1.0), 1.0f);
+  const glm::vec4 p =
+      g.inverseViewProjection * glm::vec4(glm::vec2(ndc), static_cast<float>(depth * 2.0 - 1.0), 1.0f);
   return glm::dvec3(p) / static_cast<double>(p.w);
 }
 
 std::size_t indexOf(glm::ivec2 pixel, glm::ivec2 size) {
-  return static_cast<std::size_t>(pixel.y) * static_cast<std::size_t>(size.x) + static_cast<std::size_t>(pixel.x);
+  return static_cast<std::size_t>(pixel.y) * static_cast<std::size_t>(size.x) +
+         static_cast<std::size_t>(pixel.x);
 }
 
 glm::ivec2 pixelAt(glm::dvec2 uv, glm::ivec2 size) {
@@ -58,17 +59,20 @@ glm::dvec3 vertexNormalAt(const GBufferPixels& f, std::size_t i, bool surfaceNor
 }
 
 // The block the G-buffer shows at `uv` (world), or nothing over sky.
-std::optional<glm::ivec3> blockAt(const GBufferPixels& f, const FrameGeometry& g, glm::dvec2 uv, bool surfaceNormals) {
+std::optional<glm::ivec3> blockAt(const GBufferPixels& f, const FrameGeometry& g, glm::dvec2 uv,
+                                  bool surfaceNormals) {
   const glm::ivec2 p = pixelAt(uv, f.size);
   const std::size_t i = indexOf(p, f.size);
   if (f.depth[i] >= 1.0f) return std::nullopt;
   const glm::dvec2 ndc = (glm::dvec2(p) + 0.5) / glm::dvec2(f.size) * 2.0 - 1.0;
-  const glm::dvec3 point = g.camera + unproject(g, ndc, f.depth[i]) - vertexNormalAt(f, i, surfaceNormals) * 0.01;
+  const glm::dvec3 point =
+      g.camera + unproject(g, ndc, f.depth[i]) - vertexNormalAt(f, i, surfaceNormals) * 0.01;
   return glm::ivec3(glm::floor(point));
 }
 
 // Whether the truth's hit point is what the screen shows there.
-bool visibleOnScreen(const GBufferPixels& f, const FrameGeometry& g, const Truth& truth, bool surfaceNormals) {
+bool visibleOnScreen(const GBufferPixels& f, const FrameGeometry& g, const Truth& truth,
+                     bool surfaceNormals) {
   const glm::vec4 clip = g.viewProjection * glm::vec4(glm::vec3(truth.point - g.camera), 1.0f);
   if (clip.w <= 1e-4f) return false;
   const glm::dvec2 uv = glm::dvec2(clip.x, clip.y) / static_cast<double>(clip.w) * 0.5 + 0.5;
@@ -77,7 +81,9 @@ bool visibleOnScreen(const GBufferPixels& f, const FrameGeometry& g, const Truth
   return shown && *shown == truth.block;
 }
 
-int bucketOf(double distance) { return distance < 8.0 ? 0 : distance < 32.0 ? 1 : distance < 64.0 ? 2 : 3; }
+int bucketOf(double distance) {
+  return distance < 8.0 ? 0 : distance < 32.0 ? 1 : distance < 64.0 ? 2 : 3;
+}
 
 void count(ReflectionCounts& c, const Truth& truth, const std::optional<glm::ivec3>& marched, bool visible) {
   if (truth.kind == Truth::Kind::Ambiguous) {
@@ -123,11 +129,13 @@ ReflectionError measureReflectionError(const World& world, const GBufferPixels& 
       const Truth truth = trace(world, g.camera + position + vertexNormal * 0.02, dir, maxDistance);
       const std::optional<glm::ivec3> marched =
           hit.z > 0.5f ? blockAt(f, g, glm::dvec2(hit.x, hit.y), surfaceNormals) : std::nullopt;
-      const bool visible = truth.kind == Truth::Kind::Block && !marched && visibleOnScreen(f, g, truth, surfaceNormals);
+      const bool visible =
+          truth.kind == Truth::Kind::Block && !marched && visibleOnScreen(f, g, truth, surfaceNormals);
       count(e.total, truth, marched, visible);
       count(e.byDistance[static_cast<std::size_t>(bucketOf(glm::length(position)))], truth, marched, visible);
       const glm::vec4 added = r.added[ri];
-      if (hit.z < 0.5f && f.light[gi].g == 0 && std::max({added.r, added.g, added.b}) > 1e-4f) ++e.skyLeakPixels;
+      if (hit.z < 0.5f && f.light[gi].g == 0 && std::max({added.r, added.g, added.b}) > 1e-4f)
+        ++e.skyLeakPixels;
     }
   return e;
 }

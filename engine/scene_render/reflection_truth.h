@@ -8,7 +8,6 @@
 
 #include <array>
 #include <cstddef>
-
 #include <nlohmann/json.hpp>
 
 #include "render/deferred_renderer.h"
@@ -17,13 +16,14 @@
 namespace terrasol {
 
 struct ReflectionCounts {
-  std::size_t evaluated = 0;        // marched pixels whose truth is decided
-  std::size_t agree = 0;            // the march and the truth hit the same block, or both nothing
-  std::size_t wrongHit = 0;         // both hit, different blocks
-  std::size_t missedOnScreen = 0;   // the truth's block is visible on screen; the march found nothing
-  std::size_t missedOffScreen = 0;  // the truth's block is off screen or hidden: no screen-space method sees it
-  std::size_t falseHit = 0;         // the truth finds nothing within max_distance; the march hit
-  std::size_t ambiguous = 0;        // the truth ray meets a cutout or partial block first (excluded)
+  std::size_t evaluated = 0;       // marched pixels whose truth is decided
+  std::size_t agree = 0;           // the march and the truth hit the same block, or both nothing
+  std::size_t wrongHit = 0;        // both hit, different blocks
+  std::size_t missedOnScreen = 0;  // the truth's block is visible on screen; the march found nothing
+  std::size_t missedOffScreen =
+      0;                      // the truth's block is off screen or hidden: no screen-space method sees it
+  std::size_t falseHit = 0;   // the truth finds nothing within max_distance; the march hit
+  std::size_t ambiguous = 0;  // the truth ray meets a cutout or partial block first (excluded)
 };
 
 struct ReflectionError {

@@ -1,10 +1,10 @@
 #include "render/frame_graph.h"
 
+#include <gtest/gtest.h>
+
 #include <stdexcept>
 #include <string>
 #include <vector>
-
-#include <gtest/gtest.h>
 
 namespace terrasol {
 namespace {
@@ -19,8 +19,8 @@ struct Pipeline {
   FrameGraph::Resource shadowMap = graph.import("shadow_map");
   FrameGraph::Resource target = graph.import("target");
 
-  void add(const std::string& name, std::vector<FrameGraph::Resource> reads, std::vector<FrameGraph::Resource> writes,
-           std::string skip = {}) {
+  void add(const std::string& name, std::vector<FrameGraph::Resource> reads,
+           std::vector<FrameGraph::Resource> writes, std::string skip = {}) {
     graph.add(
         name,
         [&](FrameGraph::Builder& b) {
@@ -34,7 +34,8 @@ struct Pipeline {
     add("shadow", {}, {shadowMap}, sunUp ? "" : "neither sun nor moon is above the horizon");
     add("geometry", {}, {gbuffer});
     add("lighting", {gbuffer, shadowMap}, {scene});
-    add("translucent", {gbuffer, shadowMap, scene}, {scene}, translucent ? "" : "no translucent geometry in view");
+    add("translucent", {gbuffer, shadowMap, scene}, {scene},
+        translucent ? "" : "no translucent geometry in view");
     add("final", {scene}, {target});
     add("debug_view", {gbuffer}, {target}, debugView ? "" : "no debug view is chosen");
     graph.output(target);
@@ -96,8 +97,10 @@ TEST(FrameGraphTest, TransientsAreRealizedOnceAndOnlyWhenARunningPassTouchesThem
   int realized = 0;
   const auto unused = graph.transient("unused", [&] { ++realized; });
   const auto target = graph.import("target");
-  graph.add("orphan", [&](FrameGraph::Builder& b) { b.write(unused); }, [] {});
-  graph.add("final", [&](FrameGraph::Builder& b) { b.write(target); }, [] {});
+  graph.add(
+      "orphan", [&](FrameGraph::Builder& b) { b.write(unused); }, [] {});
+  graph.add(
+      "final", [&](FrameGraph::Builder& b) { b.write(target); }, [] {});
   graph.output(target);
   graph.execute();
   EXPECT_EQ(realized, 0) << "the only writer was culled";
@@ -107,9 +110,12 @@ TEST(FrameGraphTest, TransientsAreRealizedOnceAndOnlyWhenARunningPassTouchesThem
 TEST(FrameGraphTest, ReadingATransientNoPassWroteIsAnError) {
   FrameGraph graph;
   const auto scene = graph.transient("scene");
-  EXPECT_THROW(graph.add("final", [&](FrameGraph::Builder& b) { b.read(scene); }, [] {}), std::logic_error);
+  EXPECT_THROW(graph.add(
+                   "final", [&](FrameGraph::Builder& b) { b.read(scene); }, [] {}),
+               std::logic_error);
   const auto kept = graph.import("kept");
-  EXPECT_NO_THROW(graph.add("reader", [&](FrameGraph::Builder& b) { b.read(kept); }, [] {}))
+  EXPECT_NO_THROW(graph.add(
+      "reader", [&](FrameGraph::Builder& b) { b.read(kept); }, [] {}))
       << "an imported resource lives beyond the frame";
 }
 

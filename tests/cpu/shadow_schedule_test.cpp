@@ -1,9 +1,9 @@
 #include "render/shadow_schedule.h"
 
-#include <cmath>
-
-#include <glm/trigonometric.hpp>
 #include <gtest/gtest.h>
+
+#include <cmath>
+#include <glm/trigonometric.hpp>
 
 namespace terrasol {
 namespace {
@@ -124,7 +124,8 @@ TEST(ShadowScheduleTest, ATurnPastHalfTheMarginRebuildsAndPastAllOfItRedrawsWhol
   };
   EXPECT_EQ(step(schedule, turned(3.0f)).action, Action::Keep) << "inside half the margin";
   EXPECT_EQ(step(schedule, turned(10.0f)).action, Action::Spread) << "past half the margin: a rebuild starts";
-  EXPECT_EQ(step(schedule, turned(20.0f)).action, Action::Whole) << "past the margin: the kept map is dropped";
+  EXPECT_EQ(step(schedule, turned(20.0f)).action, Action::Whole)
+      << "past the margin: the kept map is dropped";
 }
 
 }  // namespace

@@ -39,7 +39,8 @@ TEST(StreamedWorldTest, EditsTheirLightTimeAndPlayerSurviveSavingAndReopening) {
     std::vector<std::uint8_t> out;
     for (int dz = -3; dz <= 3; ++dz)
       for (int dy = -3; dy <= 3; ++dy)
-        for (int dx = -3; dx <= 3; ++dx) out.push_back(w.light().lightAt(at.offset(dx, dy, dz), LightChannel::Block));
+        for (int dx = -3; dx <= 3; ++dx)
+          out.push_back(w.light().lightAt(at.offset(dx, dy, dz), LightChannel::Block));
     return out;
   };
   {
@@ -81,7 +82,7 @@ TEST(StreamedWorldTest, MeshesOnlyChunksWithAllNeighboursAndDropsThemWhenTheyLea
   settle(w);
   EXPECT_EQ(w.counts().loaded, 49u);    // view distance 2 + 1 ring: 7 x 7
   EXPECT_EQ(w.counts().meshable, 25u);  // the inner 5 x 5
-  w.setViewDistance(0);  // loads 1 ring, unloads beyond 2
+  w.setViewDistance(0);                 // loads 1 ring, unloads beyond 2
   std::vector<SectionMesh> out = w.update({0, 0}, std::chrono::steady_clock::now());
   EXPECT_EQ(w.counts().loaded, 25u);
   EXPECT_EQ(w.counts().meshable, 9u);

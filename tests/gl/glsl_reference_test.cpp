@@ -6,11 +6,10 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
-#include <string>
-#include <vector>
-
 #include <glm/gtc/type_ptr.hpp>
 #include <glm/vec4.hpp>
+#include <string>
+#include <vector>
 
 #include "assets/labpbr.h"
 #include "core/error.h"
@@ -28,9 +27,11 @@ class GlslReferenceTest : public testing::GlTest {};
 
 // Runs `body` once per input in a compute shader that includes `library` (a file under shaders/).
 // The body reads `vec4 x` and writes `outputs[i * per + k]` for its `per` results.
-std::vector<glm::vec4> runGlsl(const std::string& library, const std::string& body, const std::vector<glm::vec4>& in,
-                               int per, const std::function<void(GLuint)>& uniforms = {}) {
-  const std::string source = "#version 450 core\nlayout(local_size_x = 64) in;\n#include \"" + library + "\"\n" +
+std::vector<glm::vec4> runGlsl(const std::string& library, const std::string& body,
+                               const std::vector<glm::vec4>& in, int per,
+                               const std::function<void(GLuint)>& uniforms = {}) {
+  const std::string source = "#version 450 core\nlayout(local_size_x = 64) in;\n#include \"" + library +
+                             "\"\n" +
                              R"(layout(std430, binding = 0) readonly buffer Inputs { vec4 inputs[]; };
 layout(std430, binding = 1) writeonly buffer Outputs { vec4 outputs[]; };
 uniform uint u_count;
@@ -38,14 +39,16 @@ void main() {
   uint i = gl_GlobalInvocationID.x;
   if (i >= u_count) return;
   vec4 x = inputs[i];
-  uint per = )" + std::to_string(per) + "u;\n" + body + "\n}\n";
+  uint per = )" + std::to_string(per) +
+                             "u;\n" + body + "\n}\n";
   const ShaderPreprocessor shaders([&](const std::string& path) -> std::optional<std::string> {
     if (path == "reference.comp") return source;
     const auto file = shaderDir() / path;
     if (!std::filesystem::exists(file)) return std::nullopt;
     return readTextFile(file);
   });
-  const gl::Program program = buildProgram(shaders, {{GL_COMPUTE_SHADER, "reference.comp"}}, rendererDefines());
+  const gl::Program program =
+      buildProgram(shaders, {{GL_COMPUTE_SHADER, "reference.comp"}}, rendererDefines());
   const auto bytesIn = static_cast<GLsizeiptr>(in.size() * sizeof(glm::vec4));
   const auto bytesOut = bytesIn * per;
   gl::Buffer input = gl::Buffer::create(), output = gl::Buffer::create();
@@ -55,7 +58,8 @@ void main() {
   glNamedBufferStorage(output.id(), bytesOut, unwritten.data(), GL_DYNAMIC_STORAGE_BIT);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, input.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, output.id());
-  glProgramUniform1ui(program.id(), glGetUniformLocation(program.id(), "u_count"), static_cast<GLuint>(in.size()));
+  glProgramUniform1ui(program.id(), glGetUniformLocation(program.id(), "u_count"),
+                      static_cast<GLuint>(in.size()));
   if (uniforms) uniforms(program.id());
   glUseProgram(program.id());
   glDispatchCompute(static_cast<GLuint>((in.size() + 63) / 64), 1, 1);
@@ -66,7 +70,9 @@ void main() {
   return out;
 }
 
-float largest(glm::vec3 a, glm::vec3 b) { return glm::length(a - b); }
+float largest(glm::vec3 a, glm::vec3 b) {
+  return glm::length(a - b);
+}
 
 TEST_F(GlslReferenceTest, OctahedralEncodingMatchesTheCppReference) {
   // Decoding: a 101 x 101 grid over [-1, 1]^2, edges and the folded corners included.
@@ -86,12 +92,15 @@ TEST_F(GlslReferenceTest, OctahedralEncodingMatchesTheCppReference) {
   for (int j = 0; j <= 40; ++j)
     for (int i = 0; i < 80; ++i) {
       const double theta = j * 3.14159265358979 / 40.0, phi = i * 3.14159265358979 / 40.0;
-      directions.emplace_back(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta), 0.0);
+      directions.emplace_back(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi),
+                              std::cos(theta), 0.0);
     }
-  for (const glm::vec4 axis : {glm::vec4(0, 0, -1, 0), glm::vec4(0, 0, 1, 0), glm::vec4(1, 0, 0, 0), glm::vec4(0, -1, 0, 0)}) {
+  for (const glm::vec4 axis :
+       {glm::vec4(0, 0, -1, 0), glm::vec4(0, 0, 1, 0), glm::vec4(1, 0, 0, 0), glm::vec4(0, -1, 0, 0)}) {
     directions.push_back(axis);
   }
-  const auto encoded = runGlsl("lib/octahedral.glsl", "outputs[i] = vec4(octEncode(x.xyz), 0.0, 0.0);", directions, 1);
+  const auto encoded =
+      runGlsl("lib/octahedral.glsl", "outputs[i] = vec4(octEncode(x.xyz), 0.0, 0.0);", directions, 1);
   worst = 0.0f;
   for (std::size_t k = 0; k < directions.size(); ++k) {
     const glm::vec2 cpu(octEncode(glm::dvec3(directions[k])));
@@ -109,7 +118,8 @@ TEST_F(GlslReferenceTest, LabPbrNormalDecodingMatchesTheCppReferenceForEveryTexe
   const auto gpu = runGlsl("lib/labpbr.glsl", "outputs[i] = vec4(labpbrNormal(x), 0.0);", texels, 1);
   float worst = 0.0f;
   for (std::size_t k = 0; k < texels.size(); ++k) {
-    const std::uint8_t rgba[4] = {static_cast<std::uint8_t>(k % 256), static_cast<std::uint8_t>(k / 256), 255, 255};
+    const std::uint8_t rgba[4] = {static_cast<std::uint8_t>(k % 256), static_cast<std::uint8_t>(k / 256), 255,
+                                  255};
     worst = std::max(worst, largest(glm::vec3(gpu[k]), labpbr::decodeNormal(rgba).normal));
   }
   EXPECT_LT(worst, 1e-5f) << "over all 65 536 red-green pairs";
@@ -122,9 +132,11 @@ TEST_F(GlslReferenceTest, LabPbrSpecularDecodingMatchesTheCppReferenceForEveryVa
   const auto gpu = runGlsl("lib/labpbr.glsl", R"(
     Material m = labpbrMaterial(x, vec3(0.8, 0.5, 0.2));
     outputs[i * per] = vec4(m.smoothness, m.roughness, m.emission, m.metal ? 1.0 : 0.0);
-    outputs[i * per + 1u] = vec4(m.f0, 0.0);)", texels, 2);
+    outputs[i * per + 1u] = vec4(m.f0, 0.0);)",
+                           texels, 2);
   for (int v = 0; v < 256; ++v) {
-    const std::uint8_t rgba[4] = {static_cast<std::uint8_t>(v), static_cast<std::uint8_t>(v), 0, static_cast<std::uint8_t>(v)};
+    const std::uint8_t rgba[4] = {static_cast<std::uint8_t>(v), static_cast<std::uint8_t>(v), 0,
+                                  static_cast<std::uint8_t>(v)};
     const labpbr::SpecularTexel cpu = labpbr::decodeSpecular(rgba, albedo);
     const glm::vec4 a = gpu[static_cast<std::size_t>(2 * v)], f0 = gpu[static_cast<std::size_t>(2 * v + 1)];
     EXPECT_NEAR(a.x, cpu.smoothness, 1e-6f) << v;
@@ -142,19 +154,20 @@ TEST_F(GlslReferenceTest, TheShadersLightmapIsTheCppTableAtWholeLevels) {
   for (const std::int64_t ticks : {0, 6000, 12500, 18000, 23000}) {
     const DayState day = dayStateAt(ticks, 0.0f);
     const LightmapColours colours = lightmapColours(day, ticks);
-    const auto gpu = runGlsl("lib/lighting.glsl", "outputs[i] = vec4(lightmapAt(x.x, x.y), 0.0);", levels, 1,
-                             [&](GLuint program) {
-                               glProgramUniform3fv(program, glGetUniformLocation(program, "u_lightmapSky"), 1,
-                                                   glm::value_ptr(colours.sky));
-                               glProgramUniform3fv(program, glGetUniformLocation(program, "u_lightmapBlock"), 1,
-                                                   glm::value_ptr(colours.block));
-                               glProgramUniform1f(program, glGetUniformLocation(program, "u_lightmapFloor"), colours.floor);
-                             });
+    const auto gpu = runGlsl(
+        "lib/lighting.glsl", "outputs[i] = vec4(lightmapAt(x.x, x.y), 0.0);", levels, 1, [&](GLuint program) {
+          glProgramUniform3fv(program, glGetUniformLocation(program, "u_lightmapSky"), 1,
+                              glm::value_ptr(colours.sky));
+          glProgramUniform3fv(program, glGetUniformLocation(program, "u_lightmapBlock"), 1,
+                              glm::value_ptr(colours.block));
+          glProgramUniform1f(program, glGetUniformLocation(program, "u_lightmapFloor"), colours.floor);
+        });
     const Lightmap table = buildLightmap(day, ticks);
     float worst = 0.0f;
     for (int sky = 0; sky < 16; ++sky)
       for (int block = 0; block < 16; ++block) {
-        worst = std::max(worst, largest(glm::vec3(gpu[static_cast<std::size_t>(sky * 16 + block)]), table.at(block, sky)));
+        worst = std::max(
+            worst, largest(glm::vec3(gpu[static_cast<std::size_t>(sky * 16 + block)]), table.at(block, sky)));
       }
     EXPECT_LT(worst, 1e-5f) << "at tick " << ticks;
   }

@@ -20,7 +20,9 @@ const std::filesystem::path kScenes = std::filesystem::path(TERRASOL_SOURCE_DIR)
 
 class ReflectionTest : public testing::GlTest {};
 
-bool identical(const Image& a, const Image& b) { return compareImages(a, b, {0.0f, 0.0f}).matches; }
+bool identical(const Image& a, const Image& b) {
+  return compareImages(a, b, {0.0f, 0.0f}).matches;
+}
 
 RenderedFrame renderWith(SceneFile scene, bool reflections) {
   scene.reflections.enabled = reflections;
@@ -56,7 +58,8 @@ TEST_F(ReflectionTest, TheHitMaskViewShowsWhereRaysHit) {
   EXPECT_GT(colourAt(mask, {2.64, 64.0, 0.36}).r, 0.9f) << "the pillar's reflection: a hit";
   const glm::vec3 sky = colourAt(mask, {0.5, 64.0, 5.0});
   EXPECT_GT(sky.b, sky.r + 0.3f) << "the sky overhead: marched, nothing hit";
-  EXPECT_LT(brightness(colourAt(mask, {0.5, 64.5, -1.5})), 0.05f) << "the gold block is not smooth: not marched";
+  EXPECT_LT(brightness(colourAt(mask, {0.5, 64.5, -1.5})), 0.05f)
+      << "the gold block is not smooth: not marched";
   for (const FrameStats::Skipped& s : mask.stats.passesSkipped) {
     EXPECT_TRUE(s.pass != "reflection" && s.pass != "lighting") << s.pass << ": " << s.why;
   }
@@ -106,9 +109,9 @@ TEST_F(ReflectionTest, TheMarchAgreesWithTheRayTracedTruth) {
   request.readBack = true;
   const RenderedFrame frame = renderer.renderFrame(0, request);
   ASSERT_TRUE(frame.reflections);
-  const ReflectionError error =
-      measureReflectionError(renderer.world(), frame.pixels, *frame.reflections, frame.geometry,
-                             scene.reflections.maxDistance, renderer.renderer().gbufferContents().surfaceNormals);
+  const ReflectionError error = measureReflectionError(renderer.world(), frame.pixels, *frame.reflections,
+                                                       frame.geometry, scene.reflections.maxDistance,
+                                                       renderer.renderer().gbufferContents().surfaceNormals);
   const ReflectionCounts& c = error.total;
   EXPECT_GT(c.evaluated, 10000u);
   EXPECT_GT(100.0 * static_cast<double>(c.agree) / static_cast<double>(c.evaluated), 90.0)  // 93 % at 320x180
@@ -134,7 +137,8 @@ TEST_F(ReflectionTest, ASealedCaveFloorReflectsNoSky) {
   scene.reflections.maxDistance = 1.0f;
   const RenderedFrame on = renderWith(scene, true), off = renderWith(scene, false);
   EXPECT_EQ(on.nanPixels, 0u);
-  for (const glm::dvec3 floor : {glm::dvec3(0.5, 65.0, 1.5), glm::dvec3(-2.5, 65.0, -1.5), glm::dvec3(2.5, 65.0, 0.0)}) {
+  for (const glm::dvec3 floor :
+       {glm::dvec3(0.5, 65.0, 1.5), glm::dvec3(-2.5, 65.0, -1.5), glm::dvec3(2.5, 65.0, 0.0)}) {
     EXPECT_LE(brightness(colourAt(on, floor)), brightness(colourAt(off, floor)) + 0.1f)
         << "no sky reflected at " << floor.x << ", " << floor.z;
   }

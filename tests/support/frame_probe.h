@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cstdint>
-
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
@@ -13,7 +12,8 @@ namespace terrasol::testing {
 
 // The colour (0..1, a 3x3 mean) where world point `world` lands in the frame's image.
 inline glm::vec3 colourAt(const RenderedFrame& frame, glm::dvec3 world) {
-  const glm::vec4 clip = frame.geometry.viewProjection * glm::vec4(glm::vec3(world - frame.geometry.camera), 1.0f);
+  const glm::vec4 clip =
+      frame.geometry.viewProjection * glm::vec4(glm::vec3(world - frame.geometry.camera), 1.0f);
   const int w = frame.image.width, h = frame.image.height;
   const int x = static_cast<int>((clip.x / clip.w * 0.5f + 0.5f) * static_cast<float>(w));
   const int y = static_cast<int>((0.5f - clip.y / clip.w * 0.5f) * static_cast<float>(h));
@@ -26,6 +26,8 @@ inline glm::vec3 colourAt(const RenderedFrame& frame, glm::dvec3 world) {
   return sum / 9.0f;
 }
 
-inline float brightness(glm::vec3 c) { return c.r + c.g + c.b; }
+inline float brightness(glm::vec3 c) {
+  return c.r + c.g + c.b;
+}
 
 }  // namespace terrasol::testing

@@ -24,7 +24,8 @@ std::filesystem::path writeBoxGltf(const std::filesystem::path& dir, const nlohm
     const auto base = static_cast<std::uint16_t>(positions.size() / 3);
     for (const auto [su, sv] : {std::array{-1, -1}, std::array{1, -1}, std::array{1, 1}, std::array{-1, 1}}) {
       for (int k = 0; k < 3; ++k) {
-        positions.push_back(0.5f * (f.normal[k] + static_cast<float>(su) * f.u[k] + static_cast<float>(sv) * f.v[k]));
+        positions.push_back(
+            0.5f * (f.normal[k] + static_cast<float>(su) * f.u[k] + static_cast<float>(sv) * f.v[k]));
         normals.push_back(f.normal[k]);
       }
     }
@@ -37,26 +38,42 @@ std::filesystem::path writeBoxGltf(const std::filesystem::path& dir, const nlohm
   bin.write(reinterpret_cast<const char*>(normals.data()), static_cast<std::streamsize>(vertexBytes));
   bin.close();
 
-  nlohmann::json red = {{"name", "Red"},
-                        {"pbrMetallicRoughness", {{"baseColorFactor", {0.8, 0.0, 0.0, 1.0}}, {"metallicFactor", 0.0}}}};
+  nlohmann::json red = {
+      {"name", "Red"},
+      {"pbrMetallicRoughness", {{"baseColorFactor", {0.8, 0.0, 0.0, 1.0}}, {"metallicFactor", 0.0}}}};
   red.merge_patch(material);
   const nlohmann::json gltf = {
       {"asset", {{"version", "2.0"}, {"generator", "Terrasol tests"}}},
       {"scene", 0},
       {"scenes", {{{"nodes", {0}}}}},
       {"nodes", {{{"mesh", 0}}}},
-      {"meshes", {{{"primitives", {{{"attributes", {{"POSITION", 1}, {"NORMAL", 2}}}, {"indices", 0}, {"material", 0}}}}}}},
+      {"meshes",
+       {{{"primitives",
+          {{{"attributes", {{"POSITION", 1}, {"NORMAL", 2}}}, {"indices", 0}, {"material", 0}}}}}}},
       {"materials", {red}},
       {"buffers", {{{"uri", "box.bin"}, {"byteLength", indexBytes + 2 * vertexBytes}}}},
       {"bufferViews",
        {{{"buffer", 0}, {"byteOffset", 0}, {"byteLength", indexBytes}, {"target", 34963}},
-        {{"buffer", 0}, {"byteOffset", indexBytes}, {"byteLength", 2 * vertexBytes}, {"byteStride", 12}, {"target", 34962}}}},
+        {{"buffer", 0},
+         {"byteOffset", indexBytes},
+         {"byteLength", 2 * vertexBytes},
+         {"byteStride", 12},
+         {"target", 34962}}}},
       {"accessors",
        {{{"bufferView", 0}, {"componentType", 5123}, {"count", indices.size()}, {"type", "SCALAR"}},
-        {{"bufferView", 1}, {"componentType", 5126}, {"count", 24}, {"type", "VEC3"},
-         {"min", {-0.5, -0.5, -0.5}}, {"max", {0.5, 0.5, 0.5}}},
-        {{"bufferView", 1}, {"byteOffset", vertexBytes}, {"componentType", 5126}, {"count", 24}, {"type", "VEC3"},
-         {"min", {-1.0, -1.0, -1.0}}, {"max", {1.0, 1.0, 1.0}}}}}};
+        {{"bufferView", 1},
+         {"componentType", 5126},
+         {"count", 24},
+         {"type", "VEC3"},
+         {"min", {-0.5, -0.5, -0.5}},
+         {"max", {0.5, 0.5, 0.5}}},
+        {{"bufferView", 1},
+         {"byteOffset", vertexBytes},
+         {"componentType", 5126},
+         {"count", 24},
+         {"type", "VEC3"},
+         {"min", {-1.0, -1.0, -1.0}},
+         {"max", {1.0, 1.0, 1.0}}}}}};
   const auto file = dir / "box.gltf";
   std::ofstream(file) << gltf.dump(1);
   return file;

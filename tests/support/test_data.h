@@ -3,17 +3,19 @@
 // finds them ($TERRASOL_TESTDATA, else shared/testdata beside the data root). A test that needs them is
 // skipped, with the reason, where they are absent.
 
+#include <gtest/gtest.h>
+
 #include <filesystem>
 #include <string>
-
-#include <gtest/gtest.h>
 
 #include "core/paths.h"
 
 namespace terrasol::testing {
 
 // The test data folder, or an empty path (then testDataMissing() says why).
-inline std::filesystem::path testData() { return testDataDir().value_or(std::filesystem::path()); }
+inline std::filesystem::path testData() {
+  return testDataDir().value_or(std::filesystem::path());
+}
 inline std::string testDataMissing() {
   std::string why;
   testDataDir(&why);
@@ -23,7 +25,7 @@ inline std::string testDataMissing() {
 }  // namespace terrasol::testing
 
 // In a test body or SetUp(): skips the test when the third-party test data is absent.
-#define TERRASOL_SKIP_WITHOUT_TEST_DATA()                                                          \
-  do {                                                                                             \
+#define TERRASOL_SKIP_WITHOUT_TEST_DATA()                                                                \
+  do {                                                                                                   \
     if (::terrasol::testing::testData().empty()) GTEST_SKIP() << ::terrasol::testing::testDataMissing(); \
   } while (0)

@@ -13,10 +13,13 @@ GeometryPass::GeometryPass(const VariantBuilder& build, PassShared& shared)
   const PropNeeds& needs = shared.options.props;
   if (!needs.any) return;
   propOpaque_ = build("prop.vert", "prop.frag", shared.contents.defines());
-  if (needs.mask) propCutout_ = build("prop.vert", "prop.frag", with({{"CUTOUT", "1"}}, shared.contents.defines()));
+  if (needs.mask)
+    propCutout_ = build("prop.vert", "prop.frag", with({{"CUTOUT", "1"}}, shared.contents.defines()));
 }
 
-void GeometryPass::setup(FrameGraph::Builder& builder, Frame& frame) { builder.write(frame.resources.gbuffer); }
+void GeometryPass::setup(FrameGraph::Builder& builder, Frame& frame) {
+  builder.write(frame.resources.gbuffer);
+}
 
 void GeometryPass::execute(Frame& frame) {
   const GBuffer& gbuffer = *frame.gbuffer;
@@ -35,11 +38,12 @@ void GeometryPass::execute(Frame& frame) {
   const FrameView& view = frame.view;
   for (const GLuint program : {opaque_.id(), cutout_.id()}) {
     gl::setMat4(program, "u_viewProjection", view.viewProjection);
-    glProgramUniform2f(program, glGetUniformLocation(program, "u_viewportPixels"), static_cast<float>(gbuffer.size().x),
-                       static_cast<float>(gbuffer.size().y));
+    glProgramUniform2f(program, glGetUniformLocation(program, "u_viewportPixels"),
+                       static_cast<float>(gbuffer.size().x), static_cast<float>(gbuffer.size().y));
     glProgramUniform1i(program, glGetUniformLocation(program, "u_sealMergedEdges"), 1);
   }
-  const SectionDraw how{DrawOrder::NearestFirst, glm::vec3(0.0f), shared_.options.cullFacesAway, &frame.stats};
+  const SectionDraw how{DrawOrder::NearestFirst, glm::vec3(0.0f), shared_.options.cullFacesAway,
+                        &frame.stats};
   drawSections(opaque_.id(), shared_.textures, frame.visible, frame.meshes, MeshLayer::Opaque, how);
   drawSections(cutout_.id(), shared_.textures, frame.visible, frame.meshes, MeshLayer::Cutout, how);
   if (!frame.props) return;

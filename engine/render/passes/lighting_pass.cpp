@@ -7,7 +7,8 @@ namespace terrasol {
 
 LightingPass::LightingPass(const VariantBuilder& build, PassShared& shared)
     : shared_(shared),
-      lighting_(build("fullscreen.vert", "lighting.frag", with(lightingDefines(shared.options), shared.contents.defines()))),
+      lighting_(build("fullscreen.vert", "lighting.frag",
+                      with(lightingDefines(shared.options), shared.contents.defines()))),
       sky_(build("fullscreen.vert", "sky.frag")) {}
 
 void LightingPass::setup(FrameGraph::Builder& builder, Frame& frame) {

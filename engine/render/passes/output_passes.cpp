@@ -60,13 +60,16 @@ void DebugViewPass::setup(FrameGraph::Builder& builder, Frame& frame) {
 
 void DebugViewPass::execute(Frame& frame) {
   const GLuint program = debug_.id();
-  glProgramUniform1i(program, glGetUniformLocation(program, "u_view"), static_cast<int>(frame.inputs.debugView));
+  glProgramUniform1i(program, glGetUniformLocation(program, "u_view"),
+                     static_cast<int>(frame.inputs.debugView));
   bindTarget(frame);
   frame.gbuffer->bindForReading();
   glBindTextureUnit(slots::kUnitReflection, frame.reflections.added);
   glBindTextureUnit(slots::kUnitReflectionHits, frame.reflections.hits);
-  glProgramUniform1i(program, glGetUniformLocation(program, "u_reflected"), frame.reflections.hits != 0 ? 1 : 0);
-  glProgramUniform2fv(program, glGetUniformLocation(program, "u_nearFar"), 1, glm::value_ptr(frame.view.nearFar));
+  glProgramUniform1i(program, glGetUniformLocation(program, "u_reflected"),
+                     frame.reflections.hits != 0 ? 1 : 0);
+  glProgramUniform2fv(program, glGetUniformLocation(program, "u_nearFar"), 1,
+                      glm::value_ptr(frame.view.nearFar));
   drawFullScreen(program, shared_, GL_TRIANGLES, 3);
 }
 

@@ -21,8 +21,10 @@ void ReflectionPass::setup(FrameGraph::Builder& builder, Frame& frame) {
   const ReflectionSettings& settings = shared_.options.reflections;
   if (!settings.enabled) return builder.skip("reflections are off");
   if (!frame.props) {  // props' materials may be smooth: they are not looked into
-    if (shared_.maxSmoothness < settings.minSmoothness) return builder.skip("no loaded texture is smooth enough");
-    if (shared_.options.cullPasses && !smoothInView(frame)) return builder.skip("nothing in view is smooth enough");
+    if (shared_.maxSmoothness < settings.minSmoothness)
+      return builder.skip("no loaded texture is smooth enough");
+    if (shared_.options.cullPasses && !smoothInView(frame))
+      return builder.skip("nothing in view is smooth enough");
   }
   builder.read(frame.resources.gbuffer);
   builder.read(frame.resources.scene);
@@ -102,7 +104,8 @@ void ReflectionPass::execute(Frame& frame) {
   glBindVertexArray(shared_.empty.id());
   glDepthFunc(GL_ALWAYS);
   glDepthMask(GL_TRUE);
-  glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);  // the mask writes depth only: colour would be undefined
+  // The mask writes depth only: a shader without a colour output leaves undefined colour behind.
+  glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
   glUseProgram(mask_.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);

@@ -6,9 +6,8 @@
 // where something was drawn. Has nothing to do when reflections are off, or no loaded texture, or
 // no texture of the sections in view, is smooth enough.
 
-#include <vector>
-
 #include <glm/vec4.hpp>
+#include <vector>
 
 #include "render/pass_shared.h"
 #include "render/render_pass.h"

@@ -67,8 +67,9 @@ void ShadowPass::rebase(const Frame& frame) {
   const ShadowSettings& settings = shared_.options.shadow;
   const ShadowKey& shown = schedule_.shown();
   for (int layer = 0; layer < shadowLayers(settings); ++layer) {
-    views_[static_cast<std::size_t>(layer)] = shadowViewFor(settings.resolution, cascadeDistance(settings, layer),
-                                                            shown.toLight, frame.view.camera, shown.centre);
+    views_[static_cast<std::size_t>(layer)] =
+        shadowViewFor(settings.resolution, cascadeDistance(settings, layer), shown.toLight, frame.view.camera,
+                      shown.centre);
   }
 }
 
@@ -91,7 +92,8 @@ std::vector<VisibleSection> ShadowPass::castersFor(const ShadowView& light, cons
   const glm::dvec3 camera = frame.view.camera;
   FrameStats& stats = frame.stats;
   const auto inSlice = [&](SectionPos p) {
-    const auto h = static_cast<std::uint32_t>(p.x * 73856093) ^ static_cast<std::uint32_t>(p.section * 19349663) ^
+    const auto h = static_cast<std::uint32_t>(p.x * 73856093) ^
+                   static_cast<std::uint32_t>(p.section * 19349663) ^
                    static_cast<std::uint32_t>(p.z * 83492791);
     const int slice = static_cast<int>(h % static_cast<std::uint32_t>(slices.of));
     return slice >= slices.first && slice < slices.first + slices.count;
@@ -117,8 +119,8 @@ std::vector<VisibleSection> ShadowPass::castersFor(const ShadowView& light, cons
 
 // Slices `slices.first` .. `first + count - 1` of `slices.of` of the casters (by a hash of their
 // position, so each is in exactly one) into `map`, cleared first by slice 0.
-void ShadowPass::drawCasters(ShadowMap& map, const ShadowKey& key, const std::optional<SectionSet>& lit, Frame& frame,
-                             ShadowSlices slices) {
+void ShadowPass::drawCasters(ShadowMap& map, const ShadowKey& key, const std::optional<SectionSet>& lit,
+                             Frame& frame, ShadowSlices slices) {
   const ShadowSettings& settings = shared_.options.shadow;
   FrameStats& stats = frame.stats;
   const glm::dvec3 camera = frame.view.camera;
@@ -162,7 +164,8 @@ void ShadowPass::drawCasters(ShadowMap& map, const ShadowKey& key, const std::op
         setWarpUniforms(program, settings);
       }
       drawProps(propOpaque_.id(), *frame.props, propCasters, camera, AlphaMode::Opaque, false);
-      if (propCutout_.id()) drawProps(propCutout_.id(), *frame.props, propCasters, camera, AlphaMode::Mask, false);
+      if (propCutout_.id())
+        drawProps(propCutout_.id(), *frame.props, propCasters, camera, AlphaMode::Mask, false);
     }
     // Translucent casters into their own depth and colour: the nearest one filters the light.
     glBindFramebuffer(GL_FRAMEBUFFER, translucent);

@@ -32,7 +32,8 @@ class ShadowPass final : public RenderPass {
   void rebase(const Frame& frame);  // the shown map's matrices for this frame's (camera-relative) view
   std::optional<SectionSet> litSections(const ShadowKey& key, const SectionMeshes& meshes) const;
   std::vector<VisibleSection> castersFor(const ShadowView& light, const ShadowKey& key,
-                                         const std::optional<SectionSet>& lit, Frame& frame, ShadowSlices slices) const;
+                                         const std::optional<SectionSet>& lit, Frame& frame,
+                                         ShadowSlices slices) const;
   void drawCasters(ShadowMap& map, const ShadowKey& key, const std::optional<SectionSet>& lit, Frame& frame,
                    ShadowSlices slices);
 

@@ -35,9 +35,11 @@ void setWaveUniforms(GLuint program, const FrameInputs& inputs) {
 TranslucentPass::TranslucentPass(const VariantBuilder& build, PassShared& shared)
     : shared_(shared),
       blocks_(build("gbuffer.vert", "translucent.frag",
-                    with(with(lightingDefines(shared.options), shared.contents.defines()), surfaceDefines(shared.options)))) {
+                    with(with(lightingDefines(shared.options), shared.contents.defines()),
+                         surfaceDefines(shared.options)))) {
   if (!shared.options.props.blend) return;
-  props_ = build("prop.vert", "prop_translucent.frag", with(lightingDefines(shared.options), shared.contents.defines()));
+  props_ = build("prop.vert", "prop_translucent.frag",
+                 with(lightingDefines(shared.options), shared.contents.defines()));
 }
 
 void TranslucentPass::setup(FrameGraph::Builder& builder, Frame& frame) {
