@@ -145,6 +145,29 @@ TEST_F(ReflectionTest, ASealedCaveFloorReflectsNoSky) {
   context_->checkErrors("sealed mirror");
 }
 
+// The same for water in a sealed, flooded stone box: the translucent pass's reflections are gated too.
+TEST_F(ReflectionTest, AFloodedCavesWaterReflectsNoSky) {
+  SceneFile scene = parseScene(R"({
+      "world": { "generator": "flat", "edits": [
+        { "fill": [-5, 60, -5, 5, 70, 5], "block": "stone" },
+        { "fill": [-4, 61, -4, 4, 69, 4], "block": "air" },
+        { "fill": [-4, 61, -4, 4, 64, 4], "block": "water" },
+        { "set": [0, 69, 0], "block": "glowstone" } ] },
+      "time": 6000,
+      "render": { "width": 160, "height": 90, "view_distance": 1, "shadow": { "resolution": 256, "distance": 32 },
+                  "water": { "waves": true } },
+      "camera": { "position": [0.5, 67.5, 3.5], "look_at": [0.5, 64, -3], "fov": 80 } })",
+                               kScenes / "flooded_cave.json");
+  scene.reflections.maxDistance = 1.0f;  // rays find nothing: every water pixel takes the fallback
+  const RenderedFrame on = renderWith(scene, true), off = renderWith(scene, false);
+  EXPECT_EQ(on.nanPixels, 0u);
+  for (const glm::dvec3 water : {glm::dvec3(0.5, 64.875, 1.5), glm::dvec3(-2.5, 64.875, -1.5)}) {
+    EXPECT_LE(brightness(colourAt(on, water)), brightness(colourAt(off, water)) + 0.1f)
+        << "no sky in the water at " << water.x << ", " << water.z;
+  }
+  context_->checkErrors("flooded cave");
+}
+
 std::string skipReason(const RenderedFrame& frame) {
   for (const FrameStats::Skipped& s : frame.stats.passesSkipped) {
     if (s.pass == "reflection") return s.why;
