@@ -121,11 +121,22 @@ TEST_F(ReflectionTest, TheMarchAgreesWithTheRayTracedTruth) {
   context_->checkErrors("reflection truth");
 }
 
-// A sealed box of polished iron: sky light 0 inside, so a ray that finds nothing reflects darkness,
-// not the noon sky outside (the reflection twin of the shadows' cave leaks). Rays a block long find
-// little: the floor shows at most the dark walls beside it (the noon sky would add over 1.5).
+// Sky light is 0 inside a sealed box, so a ray that finds nothing must reflect darkness, not the noon
+// sky outside (the reflection twin of the shadows' cave leaks). Rays a block long find little, so the
+// surfaces at `points` show at most the dark walls beside them (the noon sky would add over 0.4).
+void expectNoSkyReflected(SceneFile scene, std::initializer_list<glm::dvec3> points) {
+  scene.reflections.maxDistance = 1.0f;
+  const RenderedFrame on = renderWith(scene, true), off = renderWith(scene, false);
+  EXPECT_EQ(on.nanPixels, 0u);
+  for (const glm::dvec3 p : points) {
+    EXPECT_LE(brightness(colourAt(on, p)), brightness(colourAt(off, p)) + 0.1f)
+        << "no sky reflected at " << p.x << ", " << p.y << ", " << p.z;
+  }
+}
+
+// A sealed box of polished iron: its floor (the opaque surfaces' reflection pass).
 TEST_F(ReflectionTest, ASealedCaveFloorReflectsNoSky) {
-  SceneFile scene = parseScene(R"({
+  expectNoSkyReflected(parseScene(R"({
       "world": { "generator": "flat", "edits": [
         { "fill": [-5, 64, -5, 5, 70, 5], "block": "iron_block" },
         { "fill": [-4, 65, -4, 4, 69, 4], "block": "air" } ] },
@@ -133,21 +144,14 @@ TEST_F(ReflectionTest, ASealedCaveFloorReflectsNoSky) {
       "time": 6000,
       "render": { "width": 160, "height": 90, "view_distance": 1, "shadow": { "resolution": 256, "distance": 32 } },
       "camera": { "position": [0.5, 68.5, 3.5], "look_at": [0.5, 65, -3], "fov": 80 } })",
-                               kScenes / "sealed_mirror.json");
-  scene.reflections.maxDistance = 1.0f;
-  const RenderedFrame on = renderWith(scene, true), off = renderWith(scene, false);
-  EXPECT_EQ(on.nanPixels, 0u);
-  for (const glm::dvec3 floor :
-       {glm::dvec3(0.5, 65.0, 1.5), glm::dvec3(-2.5, 65.0, -1.5), glm::dvec3(2.5, 65.0, 0.0)}) {
-    EXPECT_LE(brightness(colourAt(on, floor)), brightness(colourAt(off, floor)) + 0.1f)
-        << "no sky reflected at " << floor.x << ", " << floor.z;
-  }
+                                  kScenes / "sealed_mirror.json"),
+                       {{0.5, 65.0, 1.5}, {-2.5, 65.0, -1.5}, {2.5, 65.0, 0.0}});
   context_->checkErrors("sealed mirror");
 }
 
-// The same for water in a sealed, flooded stone box: the translucent pass's reflections are gated too.
+// A sealed, flooded stone box lit by glowstone: its water (the translucent pass's reflections).
 TEST_F(ReflectionTest, AFloodedCavesWaterReflectsNoSky) {
-  SceneFile scene = parseScene(R"({
+  expectNoSkyReflected(parseScene(R"({
       "world": { "generator": "flat", "edits": [
         { "fill": [-5, 60, -5, 5, 70, 5], "block": "stone" },
         { "fill": [-4, 61, -4, 4, 69, 4], "block": "air" },
@@ -157,14 +161,8 @@ TEST_F(ReflectionTest, AFloodedCavesWaterReflectsNoSky) {
       "render": { "width": 160, "height": 90, "view_distance": 1, "shadow": { "resolution": 256, "distance": 32 },
                   "water": { "waves": true } },
       "camera": { "position": [0.5, 67.5, 3.5], "look_at": [0.5, 64, -3], "fov": 80 } })",
-                               kScenes / "flooded_cave.json");
-  scene.reflections.maxDistance = 1.0f;  // rays find nothing: every water pixel takes the fallback
-  const RenderedFrame on = renderWith(scene, true), off = renderWith(scene, false);
-  EXPECT_EQ(on.nanPixels, 0u);
-  for (const glm::dvec3 water : {glm::dvec3(0.5, 64.875, 1.5), glm::dvec3(-2.5, 64.875, -1.5)}) {
-    EXPECT_LE(brightness(colourAt(on, water)), brightness(colourAt(off, water)) + 0.1f)
-        << "no sky in the water at " << water.x << ", " << water.z;
-  }
+                                  kScenes / "flooded_cave.json"),
+                       {{0.5, 64.875, 1.5}, {-2.5, 64.875, -1.5}});
   context_->checkErrors("flooded cave");
 }
 
