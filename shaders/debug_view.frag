@@ -5,6 +5,7 @@
 #include "lib/gbuffer_albedo.glsl"
 #include "lib/octahedral.glsl"
 #include "lib/labpbr.glsl"
+#include "lib/view_depth.glsl"
 
 layout(binding = GB_ALBEDO) uniform sampler2D g_albedo;
 layout(binding = GB_NORMALS) uniform sampler2D g_normals;
@@ -16,7 +17,6 @@ layout(binding = UNIT_REFLECTION_HITS) uniform sampler2D u_hits;
 uniform bool u_reflected;   // the reflection pass ran this frame (else its views are black)
 
 uniform int u_view;         // index in kDebugViews (core/render_settings.h), 1..
-uniform vec2 u_nearFar;
 
 layout(location = OUT_COLOR) out vec4 o_color;
 
@@ -44,8 +44,7 @@ void main() {
   else if (u_view == 5) c = vec3(light.x, light.y, 0.0);
   else if (u_view == 6) {
     // Linear depth, log-scaled so near and far both show.
-    float z = depth * 2.0 - 1.0;
-    float linear = 2.0 * u_nearFar.x * u_nearFar.y / max(u_nearFar.y + u_nearFar.x - z * (u_nearFar.y - u_nearFar.x), 1e-6);
+    float linear = viewDepth(depth);
     c = vec3(log2(max(linear, u_nearFar.x) / u_nearFar.x) / log2(u_nearFar.y / u_nearFar.x));
   } else if (u_view == 7) c = vec3(light.z, albedo.a, 0.0);
   else if (u_view == 8) c = vec3(labpbrMaterial(spec, albedo.rgb).emission);

@@ -22,14 +22,15 @@ layout(binding = GB_DEPTH_UNIT) uniform sampler2D g_depth;
 uniform float u_minSmoothness;
 
 layout(location = OUT_COLOR) out vec4 o_reflection;  // rgb: added to the lit scene; a: 1 hit, 0 sky
-layout(location = OUT_REFLECTION_HIT) out vec4 o_hit;  // xy: hit screen uv; z: 1 hit, 0 none; w: distance
+layout(location = OUT_REFLECTION_HIT) out vec4 o_hit;  // xy: hit screen uv; z: 1 hit, 0 none; w: depth
 
 void main() {
   ivec2 size = textureSize(g_depth, 0);
   vec2 uv = v_ndc * 0.5 + 0.5;
   ivec2 pixel = clamp(ivec2(uv * vec2(size)), ivec2(0), size - 1);
   vec2 ndc = (vec2(pixel) + 0.5) / vec2(size) * 2.0 - 1.0;  // the G-buffer pixel's own centre
-  vec3 position = unproject(ndc, texelFetch(g_depth, pixel, 0).r);
+  float depth = texelFetch(g_depth, pixel, 0).r;
+  vec3 position = unproject(ndc, depth);
   vec4 albedo = texelFetch(g_albedo, pixel, 0);
   vec4 normals = texelFetch(g_normals, pixel, 0);
 #ifdef NO_NORMAL_MAPS
@@ -56,5 +57,5 @@ void main() {
   float weight = smoothstep(u_minSmoothness, 1.0, m.smoothness);
   vec3 added = ao * weight * fresnelAmbient(m.f0, NdotV, m.roughness) * (reflected - ambient);
   o_reflection = vec4(fogged(added, position, vec3(0.0)), hit ? 1.0 : 0.0);  // fogged as the scene was
-  o_hit = vec4(hit ? hitUv : vec2(0.0), hit ? 1.0 : 0.0, length(position));
+  o_hit = vec4(hit ? hitUv : vec2(0.0), hit ? 1.0 : 0.0, viewDepth(depth));
 }

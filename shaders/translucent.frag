@@ -37,7 +37,7 @@ vec3 refracted(vec3 normal) {
   vec2 straight = gl_FragCoord.xy / size;
   vec2 uv = clamp(straight + normal.xz * (0.6 / max(length(v_position), 1.0)), vec2(0.0), vec2(1.0));
   float depth = texelFetch(u_ssrDepth, ivec2(uv * size), 0).r;
-  if (dot(unproject(uv * 2.0 - 1.0, depth) - v_position, u_forward) < 0.0) uv = straight;
+  if (viewDepth(depth) < 1.0 / gl_FragCoord.w) uv = straight;  // what lies there is in front
   return texture(u_ssrScene, uv).rgb;
 }
 #endif

@@ -49,7 +49,7 @@ void setSkyUniforms(GLuint program, const FrameView& view) {
 void setSsrUniforms(GLuint program, const FrameView& view, const ReflectionSettings& settings) {
   gl::setMat4(program, "u_inverseViewProjection", view.inverseViewProjection);
   gl::setMat4(program, "u_viewProjection", view.viewProjection);
-  setVec3(program, "u_forward", glm::vec3(view.forward));
+  glProgramUniform2fv(program, glGetUniformLocation(program, "u_nearFar"), 1, glm::value_ptr(view.nearFar));
   glProgramUniform1i(program, glGetUniformLocation(program, "u_maxSteps"),
                      std::clamp(settings.maxSteps, 1, 256));
   glProgramUniform1f(program, glGetUniformLocation(program, "u_thickness"), settings.thickness);

@@ -5,12 +5,12 @@
 // lib/lighting.glsl (levelBrightness) and lib/sky.glsl (skyColor) before it.
 
 #include "lib/unproject.glsl"
+#include "lib/view_depth.glsl"
 
 layout(binding = UNIT_SSR_DEPTH) uniform sampler2D u_ssrDepth;        // the opaque scene's depth
 layout(binding = UNIT_REFLECTION_SCENE) uniform sampler2D u_ssrScene;  // the lit opaque scene
 
 uniform mat4 u_viewProjection;  // camera-relative
-uniform vec3 u_forward;         // unit view direction: depth along it decides in front or behind
 uniform int u_maxSteps;
 uniform float u_thickness;      // blocks a hit may lie behind the depth buffer's surface
 uniform float u_maxDistance;    // blocks
@@ -24,31 +24,42 @@ bool screenOf(vec3 p, out vec2 uv) {
   return clip.w > 1e-4;
 }
 
-// How far `p` lies behind the depth buffer's surface at its pixel (negative: in front). 0: off
-// screen or behind the camera; 1: over sky (nothing to hit there); 2: measured.
-int behindBy(vec3 p, out float behind, out vec2 uv) {
+// A ray in clip space: the projection is linear in homogeneous coordinates, so each step is one
+// multiply-add, and the ray's depth along the view (clip w) comes with it.
+struct ClipRay {
+  vec4 origin, dir;
+};
+
+// How far the ray's point at `t` lies behind the depth buffer's surface at its pixel (negative: in
+// front). 0: off screen or behind the camera; 1: over sky (nothing to hit there); 2: measured.
+int behindAt(ClipRay ray, float t, vec2 size, out float behind, out vec2 uv) {
   behind = 0.0;
-  if (!screenOf(p, uv) || offScreen(uv)) return 0;
-  float depth = texelFetch(u_ssrDepth, ivec2(uv * vec2(textureSize(u_ssrDepth, 0))), 0).r;
+  vec4 clip = ray.origin + ray.dir * t;
+  if (clip.w <= 1e-4) return 0;
+  uv = clip.xy / clip.w * 0.5 + 0.5;
+  if (offScreen(uv)) return 0;
+  float depth = texelFetch(u_ssrDepth, ivec2(uv * size), 0).r;
   if (depth >= 1.0) return 1;
-  behind = dot(p - unproject(uv * 2.0 - 1.0, depth), u_forward);
+  behind = clip.w - viewDepth(depth);
   return 2;
 }
 
 bool march(vec3 origin, vec3 dir, out vec2 hitUv) {
+  ClipRay ray = ClipRay(u_viewProjection * vec4(origin, 1.0), u_viewProjection * vec4(dir, 0.0));
+  vec2 size = vec2(textureSize(u_ssrDepth, 0));
   float near = 0.0;
   for (int i = 1; i <= u_maxSteps; ++i) {
     float f = float(i) / float(u_maxSteps);
     float t = u_maxDistance * f * f;  // fine steps near the surface, where most hits are
     float behind;
     vec2 uv;
-    int seen = behindBy(origin + dir * t, behind, uv);
+    int seen = behindAt(ray, t, size, behind, uv);
     if (seen == 0) return false;  // the ray left the screen: what it would hit is not in the image
     if (seen == 2 && behind > 0.0 && behind < u_thickness + t * 0.02) {
       float far = t;
       for (int k = 0; k < 6; ++k) {  // the crossing between the last point in front and this one
         float mid = 0.5 * (near + far);
-        if (behindBy(origin + dir * mid, behind, uv) == 2 && behind > 0.0) far = mid; else near = mid;
+        if (behindAt(ray, mid, size, behind, uv) == 2 && behind > 0.0) far = mid; else near = mid;
       }
       return screenOf(origin + dir * far, hitUv) && !offScreen(hitUv);
     }

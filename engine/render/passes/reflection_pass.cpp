@@ -77,7 +77,8 @@ void ReflectionPass::setMarchUniforms(const Frame& frame) const {
   for (const GLuint p : {mask_.id(), composite_.id()}) {
     glProgramUniform1f(p, glGetUniformLocation(p, "u_minSmoothness"), settings.minSmoothness);
   }
-  gl::setMat4(composite_.id(), "u_inverseViewProjection", view.inverseViewProjection);
+  glProgramUniform2fv(composite_.id(), glGetUniformLocation(composite_.id(), "u_nearFar"), 1,
+                      glm::value_ptr(view.nearFar));
 }
 
 void ReflectionPass::execute(Frame& frame) {
@@ -91,7 +92,7 @@ void ReflectionPass::execute(Frame& frame) {
   // The mask, then the march only where it left depth 0 (the triangle lies at depth 1).
   glBindFramebuffer(GL_FRAMEBUFFER, target_.id());
   glViewport(0, 0, size.x, size.y);
-  const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f}, notMarched[4] = {0.0f, 0.0f, -1.0f, 0.0f}, farDepth = 1.0f;
+  const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f}, notMarched[4] = {0.0f, 0.0f, -1.0f, -1.0f}, farDepth = 1.0f;
   glClearNamedFramebufferfv(target_.id(), GL_COLOR, slots::kOutColor, zero);
   glClearNamedFramebufferfv(target_.id(), GL_COLOR, slots::kOutReflectionHit, notMarched);
   glClearNamedFramebufferfv(target_.id(), GL_DEPTH, 0, &farDepth);
