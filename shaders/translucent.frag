@@ -9,21 +9,32 @@
 #include "lib/shadow.glsl"
 #endif
 #ifdef REFLECTIONS
-#include "lib/ssr.glsl"
+#include "lib/view_depth.glsl"
+#include "lib/reflection_upsample.glsl"
 
+layout(binding = UNIT_SSR_DEPTH) uniform sampler2D u_sceneDepth;        // the opaque scene's depth
+layout(binding = UNIT_REFLECTION_SCENE) uniform sampler2D u_scene;     // the lit opaque scene
+layout(binding = UNIT_REFLECTION) uniform sampler2D u_reflected;       // the reflection pass's march
+layout(binding = UNIT_REFLECTION_HITS) uniform sampler2D u_reflectedHits;  // from these surfaces
+uniform bool u_marched;  // the reflection pass marched from translucent surfaces this frame
 uniform float u_minSmoothness;
 
 // What the surface reflects beyond what `shade` gave it (its sky ambient, weighed by the coverage
-// `alpha` it is blended with): the reflected scene or sky, by Fresnel, faded in with smoothness.
-// Added unweighted by alpha, as a reflection lies on top of what the surface lets through.
+// `alpha` it is blended with): what the reflection pass's ray saw from here, else (another surface
+// lies nearer, or none was marched) the sky in the reflected direction, dimmed by the sky light; by
+// Fresnel, faded in with smoothness. Added unweighted by alpha, as a reflection lies on top of what
+// the surface lets through.
 vec3 reflection(Surface s, vec3 toViewer, float alpha) {
   Material m = labpbrMaterial(s.spec, s.albedo);
   float weight = smoothstep(u_minSmoothness, 1.0, m.smoothness);
   vec3 dir = reflect(-toViewer, s.normal);
   dir = normalize(dir - s.vertexNormal * min(dot(dir, s.vertexNormal) - 0.01, 0.0));
-  vec2 hitUv;
-  bool hit = weight > 0.0 && march(v_position + s.vertexNormal * 0.02, dir, hitUv);
-  vec3 reflected = reflectedLight(dir, s.skyLight, hit, hitUv);
+  vec3 reflected = skyColor(dir) * levelBrightness(s.skyLight);
+  if (u_marched) {
+    vec2 uv = gl_FragCoord.xy / vec2(textureSize(u_scene, 0));
+    vec4 marched = upsampledReflection(u_reflected, u_reflectedHits, uv, 1.0 / gl_FragCoord.w);
+    reflected = mix(reflected, marched.rgb, smoothstep(0.2, 0.5, marched.w));
+  }
   vec3 ambient = kSkyAmbient * lightmapAt(0.0, s.skyLight) * u_ambientTint;
   float NdotV = max(dot(s.normal, toViewer), 1e-4);
   return weight * fresnelAmbient(m.f0, NdotV, m.roughness) * (reflected - alpha * ambient);
@@ -33,12 +44,12 @@ vec3 reflection(Surface s, vec3 toViewer, float alpha) {
 // normal (less with distance), unless what lies there is in front of the water (nothing in front is
 // smeared in).
 vec3 refracted(vec3 normal) {
-  vec2 size = vec2(textureSize(u_ssrScene, 0));
+  vec2 size = vec2(textureSize(u_scene, 0));
   vec2 straight = gl_FragCoord.xy / size;
   vec2 uv = clamp(straight + normal.xz * (0.6 / max(length(v_position), 1.0)), vec2(0.0), vec2(1.0));
-  float depth = texelFetch(u_ssrDepth, ivec2(uv * size), 0).r;
+  float depth = texelFetch(u_sceneDepth, ivec2(uv * size), 0).r;
   if (viewDepth(depth) < 1.0 / gl_FragCoord.w) uv = straight;  // what lies there is in front
-  return texture(u_ssrScene, uv).rgb;
+  return texture(u_scene, uv).rgb;
 }
 #endif
 
@@ -46,23 +57,7 @@ vec3 refracted(vec3 normal) {
 flat in float v_water;
 #endif
 #ifdef WAVES
-uniform float u_waveTime;    // seconds of world time (wrapped at an hour)
-uniform vec3 u_waveOrigin;   // the camera's world position wrapped at 256 blocks
-
-// The normal of water's moving surface: four summed waves (direction, wavelength, height, speed),
-// their slopes only (the geometry stays flat), so the surface ripples in light and reflections.
-vec3 waveNormal(vec3 position) {
-  vec2 p = position.xz + u_waveOrigin.xz;
-  const vec4 waves[4] = vec4[4](vec4(0.96, 0.28, 6.0, 0.020), vec4(-0.55, 0.84, 3.7, 0.014),
-                                vec4(0.31, -0.95, 2.3, 0.009), vec4(-0.88, -0.47, 1.3, 0.005));
-  vec2 slope = vec2(0.0);
-  for (int i = 0; i < 4; ++i) {
-    float k = 6.2831853 / waves[i].z;
-    float phase = k * dot(waves[i].xy, p) - sqrt(9.81 * k) * u_waveTime;
-    slope += waves[i].xy * (waves[i].w * k * cos(phase));
-  }
-  return normalize(vec3(-slope.x, 1.0, -slope.y));
-}
+#include "lib/waves.glsl"
 #endif
 
 layout(location = OUT_COLOR) out vec4 o_color;

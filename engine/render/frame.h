@@ -50,9 +50,11 @@ struct FrameResources {
   FrameGraph::Resource reflections;  // the reflection pass's own targets (its debug views read them)
 };
 
-// The reflection pass's targets this frame, for the debug views.
+// The reflection pass's targets this frame: from opaque surfaces (for the debug views), and from
+// water and glass (for the translucent pass); 0 where that part did not run.
 struct ReflectionTargets {
   GLuint added = 0, hits = 0;
+  GLuint surfaceReflected = 0, surfaceHits = 0;
 };
 
 struct Frame {

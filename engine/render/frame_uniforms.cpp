@@ -93,4 +93,16 @@ void setShadowUniforms(GLuint program, const ShadowLookup& shadow, bool live) {
   glBindTextureUnit(slots::kUnitTransmittance, shadow.map->transmittance());
 }
 
+// The waves' phase: world time in seconds, wrapped at a whole number of every wave's periods so it
+// stays exact after any number of ticks; their origin: the camera's position wrapped at 256 blocks
+// (in double), so a far camera sees the same waves as one at the origin.
+constexpr std::int64_t kWaveCycleTicks = 20 * 60 * 60;  // an hour
+
+void setWaveUniforms(GLuint program, const FrameInputs& inputs) {
+  const auto ticks = ((inputs.ticks % kWaveCycleTicks) + kWaveCycleTicks) % kWaveCycleTicks;
+  glProgramUniform1f(program, glGetUniformLocation(program, "u_waveTime"), static_cast<float>(ticks) / 20.0f);
+  const glm::dvec3 wrapped = glm::mod(inputs.cameraPosition, glm::dvec3(256.0));
+  gl::setVec3(program, "u_waveOrigin", glm::vec3(wrapped));
+}
+
 }  // namespace terrasol

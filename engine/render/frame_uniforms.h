@@ -14,6 +14,8 @@ void setSkyUniforms(GLuint program, const FrameView& view);
 void setShadowUniforms(GLuint program, const ShadowLookup& shadow, bool live);
 // The reflected rays' march (lib/ssr.glsl) and the smoothness they fade in from.
 void setSsrUniforms(GLuint program, const FrameView& view, const ReflectionSettings& settings);
+// Water's waves (lib/waves.glsl): their phase in world time and their origin.
+void setWaveUniforms(GLuint program, const FrameInputs& inputs);
 // Cascades are never warped.
 void setWarpUniforms(GLuint program, const ShadowSettings& settings);
 

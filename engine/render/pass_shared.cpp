@@ -63,4 +63,11 @@ std::vector<ShaderDefine> lightingDefines(const RendererOptions& options) {
   return defines;
 }
 
+std::vector<ShaderDefine> surfaceDefines(const RendererOptions& options) {
+  std::vector<ShaderDefine> defines;
+  if (options.reflections.enabled) defines.push_back({"REFLECTIONS", "1"});
+  if (options.water.waves) defines.push_back({"WAVES", "1"});
+  return defines;
+}
+
 }  // namespace terrasol

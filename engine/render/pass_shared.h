@@ -42,5 +42,7 @@ class VariantBuilder {
 std::vector<ShaderDefine> with(std::vector<ShaderDefine> a, const std::vector<ShaderDefine>& b);
 // The lit passes' variant: the specular lobe and the shadow filter.
 std::vector<ShaderDefine> lightingDefines(const RendererOptions& options);
+// Water and glass reflecting (render.reflections) and water's waves (render.water.waves).
+std::vector<ShaderDefine> surfaceDefines(const RendererOptions& options);
 
 }  // namespace terrasol

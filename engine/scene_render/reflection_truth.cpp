@@ -103,6 +103,40 @@ void count(ReflectionCounts& c, const Truth& truth, const std::optional<glm::ive
   }
 }
 
+// One marched ray: `position` (camera-relative) and the normals it left from, what the pass wrote.
+struct MarchedRay {
+  glm::dvec3 position, normal, vertexNormal;
+  glm::vec4 hit, reflected;  // ReflectionPixels::hits and what was added or reflected
+  float skyLight = 0.0f;     // 0..1
+};
+
+void evaluate(ReflectionError& e, ReflectionCounts& part, const World& world, const GBufferPixels& f,
+              const FrameGeometry& g, const MarchedRay& ray, float maxDistance, bool surfaceNormals) {
+  const glm::dvec3 toViewer = -ray.position / std::max(glm::length(ray.position), 1e-6);
+  glm::dvec3 dir = glm::reflect(-toViewer, ray.normal);
+  dir = glm::normalize(dir - ray.vertexNormal * std::min(glm::dot(dir, ray.vertexNormal) - 0.01, 0.0));
+  const Truth truth = trace(world, g.camera + ray.position + ray.vertexNormal * 0.02, dir, maxDistance);
+  const std::optional<glm::ivec3> marched =
+      ray.hit.z > 0.5f ? blockAt(f, g, glm::dvec2(ray.hit.x, ray.hit.y), surfaceNormals) : std::nullopt;
+  const bool visible =
+      truth.kind == Truth::Kind::Block && !marched && visibleOnScreen(f, g, truth, surfaceNormals);
+  count(e.total, truth, marched, visible);
+  count(part, truth, marched, visible);
+  count(e.byDistance[static_cast<std::size_t>(bucketOf(glm::length(ray.position)))], truth, marched, visible);
+  const glm::vec4 light = ray.reflected;
+  if (ray.hit.z < 0.5f && ray.skyLight == 0.0f && std::max({light.r, light.g, light.b}) > 1e-4f)
+    ++e.skyLeakPixels;
+}
+
+// The face normal nearest a mapped normal: the axis it leans along most.
+glm::dvec3 faceNormalOf(glm::dvec3 n) {
+  const glm::dvec3 a = glm::abs(n);
+  const int axis = a.x >= a.y && a.x >= a.z ? 0 : a.y >= a.z ? 1 : 2;
+  glm::dvec3 face{0.0};
+  face[axis] = n[axis] < 0.0 ? -1.0 : 1.0;
+  return face;
+}
+
 }  // namespace
 
 ReflectionError measureReflectionError(const World& world, const GBufferPixels& f, const ReflectionPixels& r,
@@ -111,31 +145,30 @@ ReflectionError measureReflectionError(const World& world, const GBufferPixels& 
   for (int y = 0; y < r.size.y; ++y)
     for (int x = 0; x < r.size.x; ++x) {
       const std::size_t ri = indexOf({x, y}, r.size);
-      const glm::vec4 hit = r.hits[ri];
-      if (hit.z < 0.0f) continue;  // not marched: not smooth enough, or sky
-      // The G-buffer pixel the march read (reflection.frag: the target pixel's centre, scaled).
+      // The target pixel's centre: where the march from water and glass was rasterized, and (scaled)
+      // the G-buffer pixel the march from opaque surfaces read.
       const glm::dvec2 uv = (glm::dvec2(x, y) + 0.5) / glm::dvec2(r.size);
-      const glm::ivec2 gp = pixelAt(uv, f.size);
-      const std::size_t gi = indexOf(gp, f.size);
-      if (f.depth[gi] >= 1.0f) continue;
-      const glm::dvec2 ndc = (glm::dvec2(gp) + 0.5) / glm::dvec2(f.size) * 2.0 - 1.0;
-      const glm::dvec3 position = unproject(g, ndc, f.depth[gi]);
-      const glm::dvec3 normal = octDecode(glm::dvec2(f.normals[gi].x, f.normals[gi].y));
-      const glm::dvec3 vertexNormal = vertexNormalAt(f, gi, surfaceNormals);
-      const glm::dvec3 toViewer = -position / std::max(glm::length(position), 1e-6);
-      glm::dvec3 dir = glm::reflect(-toViewer, normal);
-      dir = glm::normalize(dir - vertexNormal * std::min(glm::dot(dir, vertexNormal) - 0.01, 0.0));
-
-      const Truth truth = trace(world, g.camera + position + vertexNormal * 0.02, dir, maxDistance);
-      const std::optional<glm::ivec3> marched =
-          hit.z > 0.5f ? blockAt(f, g, glm::dvec2(hit.x, hit.y), surfaceNormals) : std::nullopt;
-      const bool visible =
-          truth.kind == Truth::Kind::Block && !marched && visibleOnScreen(f, g, truth, surfaceNormals);
-      count(e.total, truth, marched, visible);
-      count(e.byDistance[static_cast<std::size_t>(bucketOf(glm::length(position)))], truth, marched, visible);
-      const glm::vec4 added = r.added[ri];
-      if (hit.z < 0.5f && f.light[gi].g == 0 && std::max({added.r, added.g, added.b}) > 1e-4f)
-        ++e.skyLeakPixels;
+      if (const glm::vec4 hit = r.hits[ri]; hit.z >= 0.0f) {
+        const glm::ivec2 gp = pixelAt(uv, f.size);
+        const std::size_t gi = indexOf(gp, f.size);
+        if (f.depth[gi] < 1.0f) {
+          const glm::dvec2 ndc = (glm::dvec2(gp) + 0.5) / glm::dvec2(f.size) * 2.0 - 1.0;
+          MarchedRay ray{unproject(g, ndc, f.depth[gi]), octDecode(glm::dvec2(f.normals[gi].x, f.normals[gi].y)),
+                         vertexNormalAt(f, gi, surfaceNormals), hit, r.added[ri], f.light[gi].g / 255.0f};
+          evaluate(e, e.opaque, world, f, g, ray, maxDistance, surfaceNormals);
+        }
+      }
+      if (r.surfaceHits.empty()) continue;
+      if (const glm::vec4 hit = r.surfaceHits[ri]; hit.z >= 0.0f) {
+        // The surface lies along the pixel's view ray at the depth the march wrote.
+        const glm::dvec3 far = unproject(g, uv * 2.0 - 1.0, 1.0);
+        const double farDepth = (g.viewProjection * glm::vec4(glm::vec3(far), 1.0f)).w;
+        const glm::vec4 n = r.surfaceNormals[ri];
+        const glm::dvec3 normal = glm::normalize(glm::dvec3(n));
+        MarchedRay ray{far * (static_cast<double>(hit.w) / farDepth), normal, faceNormalOf(normal), hit,
+                       r.surfaceReflected[ri], n.w};
+        evaluate(e, e.translucent, world, f, g, ray, maxDistance, surfaceNormals);
+      }
     }
   return e;
 }
@@ -155,6 +188,8 @@ nlohmann::json reflectionErrorJson(const ReflectionError& error) {
                           {"ambiguous_pct", pct(c.ambiguous, c.evaluated + c.ambiguous)}};
   };
   nlohmann::json out = split(error.total);
+  out["opaque"] = split(error.opaque);
+  out["translucent"] = split(error.translucent);
   out["sky_leak_pixels"] = error.skyLeakPixels;
   const char* names[4] = {"0-8", "8-32", "32-64", "64+"};
   for (std::size_t b = 0; b < 4; ++b) out["by_distance"][names[b]] = split(error.byDistance[b]);

@@ -1,7 +1,7 @@
 #pragma once
 // Reflection error against ground truth, as for shadows (shadow_truth.h): from each pixel the
-// reflection pass marched, the mirror ray it marched (the same normals, read back from the G-buffer)
-// is walked through the voxel grid (Amanatides-Woo) to the first opaque cube within the pass's
+// reflection pass marched, the mirror ray it marched (the same normals, read back from the G-buffer,
+// or for water and glass from the pass's own target) is walked through the voxel grid (Amanatides-Woo) to the first opaque cube within the pass's
 // max_distance. The screen-space march either found that block, another one, or nothing; where it
 // found nothing, the truth's block is either visible on screen (a miss of the march) or not (beyond
 // any screen-space method: reported apart).
@@ -28,6 +28,7 @@ struct ReflectionCounts {
 
 struct ReflectionError {
   ReflectionCounts total;
+  ReflectionCounts opaque, translucent;        // the pass's march from each kind of surface
   std::array<ReflectionCounts, 4> byDistance;  // 0-8, 8-32, 32-64, 64+ blocks from the camera
   std::size_t skyLeakPixels = 0;               // sky light 0, nothing hit, yet light added (a reflected sky)
 };

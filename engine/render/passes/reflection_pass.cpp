@@ -2,37 +2,80 @@
 
 #include <algorithm>
 #include <cmath>
+#include <glm/gtc/type_ptr.hpp>
+#include <initializer_list>
 
 #include "core/error.h"
 #include "render/frame_uniforms.h"
 #include "render/gl/uniforms.h"
 #include "render/gl_slots.h"
+#include "render/section_draw.h"
 
 namespace terrasol {
+
+namespace {
+
+gl::Texture targetTexture(GLenum format, glm::ivec2 size) {
+  gl::Texture t = gl::Texture::create(GL_TEXTURE_2D);
+  glTextureStorage2D(t.id(), 1, format, size.x, size.y);
+  glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTextureParameteri(t.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTextureParameteri(t.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  return t;
+}
+
+gl::Framebuffer targetFramebuffer(std::initializer_list<GLuint> colours, GLuint depth) {
+  gl::Framebuffer fbo = gl::Framebuffer::create();
+  std::vector<GLenum> buffers;
+  for (const GLuint colour : colours) {
+    const auto slot = static_cast<GLenum>(GL_COLOR_ATTACHMENT0 + buffers.size());
+    glNamedFramebufferTexture(fbo.id(), slot, colour, 0);
+    buffers.push_back(slot);
+  }
+  glNamedFramebufferDrawBuffers(fbo.id(), static_cast<GLsizei>(buffers.size()), buffers.data());
+  glNamedFramebufferRenderbuffer(fbo.id(), GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth);
+  if (glCheckNamedFramebufferStatus(fbo.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+    throw Error("a reflection target is incomplete");
+  }
+  return fbo;
+}
+
+constexpr float kZero[4] = {0.0f, 0.0f, 0.0f, 0.0f}, kNotMarched[4] = {0.0f, 0.0f, -1.0f, -1.0f};
+constexpr float kFarDepth = 1.0f;
+
+}  // namespace
 
 ReflectionPass::ReflectionPass(const VariantBuilder& build, PassShared& shared) : shared_(shared) {
   if (!shared.options.reflections.enabled) return;
   mask_ = build("fullscreen.vert", "reflection_mask.frag");
   march_ = build("fullscreen.vert", "reflection.frag", shared.contents.defines());
   composite_ = build("fullscreen.vert", "reflection_composite.frag");
+  depthCopy_ = build("fullscreen.vert", "reflection_depth.frag");
+  const std::vector<ShaderDefine> surface = with(shared.contents.defines(), surfaceDefines(shared.options));
+  surfaceDepth_ = build("gbuffer.vert", "depth_only.frag", surface);
+  surfaceMarch_ = build("gbuffer.vert", "surface_reflection.frag", surface);
 }
 
 void ReflectionPass::setup(FrameGraph::Builder& builder, Frame& frame) {
   const ReflectionSettings& settings = shared_.options.reflections;
+  opaque_ = surfaces_ = false;
   if (!settings.enabled) return builder.skip("reflections are off");
-  if (!frame.props) {  // props' materials may be smooth: they are not looked into
-    if (shared_.maxSmoothness < settings.minSmoothness)
-      return builder.skip("no loaded texture is smooth enough");
-    if (shared_.options.cullPasses && !smoothInView(frame))
-      return builder.skip("nothing in view is smooth enough");
+  const bool cull = shared_.options.cullPasses;
+  surfaces_ = !cull || quadsIn(frame.visible, MeshLayer::Translucent) > 0;
+  // Props' materials may be smooth: they are not looked into.
+  opaque_ = frame.props || (shared_.maxSmoothness >= settings.minSmoothness && (!cull || smoothInView(frame)));
+  if (!opaque_ && !surfaces_) {
+    return builder.skip(shared_.maxSmoothness < settings.minSmoothness ? "no loaded texture is smooth enough"
+                                                                       : "nothing in view is smooth enough");
   }
   builder.read(frame.resources.gbuffer);
   builder.read(frame.resources.scene);
-  builder.write(frame.resources.scene);
+  if (opaque_) builder.write(frame.resources.scene);
   builder.write(frame.resources.reflections);
 }
 
-// Whether a section in view has a face whose texture reaches min_smoothness somewhere.
+// Whether a section in view has an opaque or cutout face whose texture reaches min_smoothness somewhere.
 bool ReflectionPass::smoothInView(const Frame& frame) const {
   const std::vector<float>& smoothness = shared_.smoothness;
   for (const VisibleSection& v : frame.visible) {
@@ -43,65 +86,74 @@ bool ReflectionPass::smoothInView(const Frame& frame) const {
   return false;
 }
 
-void ReflectionPass::ensureTarget(glm::ivec2 size) {
+void ReflectionPass::ensureTargets(glm::ivec2 size) {
   if (size == size_) return;
   size_ = size;
-  colour_ = gl::Texture::create(GL_TEXTURE_2D);
-  glTextureStorage2D(colour_.id(), 1, GL_RGBA16F, size.x, size.y);
-  glTextureParameteri(colour_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-  glTextureParameteri(colour_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glTextureParameteri(colour_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  glTextureParameteri(colour_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-  hits_ = gl::Texture::create(GL_TEXTURE_2D);
-  glTextureStorage2D(hits_.id(), 1, GL_RGBA32F, size.x, size.y);
+  colour_ = targetTexture(GL_RGBA16F, size);
+  hits_ = targetTexture(GL_RGBA32F, size);
+  surfaceReflected_ = targetTexture(GL_RGBA16F, size);
+  surfaceHits_ = targetTexture(GL_RGBA32F, size);
+  surfaceNormals_ = targetTexture(GL_RGBA16F, size);
   depth_ = gl::Renderbuffer::create();
   glNamedRenderbufferStorage(depth_.id(), GL_DEPTH_COMPONENT32F, size.x, size.y);
-  target_ = gl::Framebuffer::create();
-  glNamedFramebufferTexture(target_.id(), GL_COLOR_ATTACHMENT0 + slots::kOutColor, colour_.id(), 0);
-  glNamedFramebufferTexture(target_.id(), GL_COLOR_ATTACHMENT0 + slots::kOutReflectionHit, hits_.id(), 0);
-  const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
-  glNamedFramebufferDrawBuffers(target_.id(), 2, buffers);
-  glNamedFramebufferRenderbuffer(target_.id(), GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_.id());
-  if (glCheckNamedFramebufferStatus(target_.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
-    throw Error("the reflection target is incomplete");
-  }
+  static_assert(slots::kOutColor == 0 && slots::kOutReflectionHit == 1 && slots::kOutReflectionSurface == 2);
+  target_ = targetFramebuffer({colour_.id(), hits_.id()}, depth_.id());
+  surfaceTarget_ =
+      targetFramebuffer({surfaceReflected_.id(), surfaceHits_.id(), surfaceNormals_.id()}, depth_.id());
 }
 
-void ReflectionPass::setMarchUniforms(const Frame& frame) const {
+void ReflectionPass::setUniforms(const Frame& frame) const {
   const ReflectionSettings& settings = shared_.options.reflections;
   const FrameView& view = frame.view;
-  const GLuint program = march_.id();
-  setLightingUniforms(program, view, frame.shadow);
-  setSkyUniforms(program, view);
-  setSsrUniforms(program, view, settings);
-  for (const GLuint p : {mask_.id(), composite_.id()}) {
-    glProgramUniform1f(p, glGetUniformLocation(p, "u_minSmoothness"), settings.minSmoothness);
+  for (const GLuint program : {march_.id(), surfaceMarch_.id()}) {
+    setLightingUniforms(program, view, frame.shadow);
+    setSkyUniforms(program, view);
+    setSsrUniforms(program, view, settings);
+  }
+  for (const GLuint program : {mask_.id(), composite_.id()}) {
+    glProgramUniform1f(program, glGetUniformLocation(program, "u_minSmoothness"), settings.minSmoothness);
   }
   glProgramUniform2fv(composite_.id(), glGetUniformLocation(composite_.id(), "u_nearFar"), 1,
                       glm::value_ptr(view.nearFar));
+  gl::setMat4(surfaceDepth_.id(), "u_viewProjection", view.viewProjection);
+  if (shared_.options.water.waves) setWaveUniforms(surfaceMarch_.id(), frame.inputs);
 }
 
 void ReflectionPass::execute(Frame& frame) {
   const GBuffer& gbuffer = *frame.gbuffer;
   const float scale = std::clamp(shared_.options.reflections.resolutionScale, 0.25f, 1.0f);
   const glm::ivec2 size = glm::max(glm::ivec2(glm::round(glm::vec2(gbuffer.size()) * scale)), glm::ivec2(1));
-  ensureTarget(size);
-  frame.reflections = {colour_.id(), hits_.id()};
-  setMarchUniforms(frame);
-
-  // The mask, then the march only where it left depth 0 (the triangle lies at depth 1).
-  glBindFramebuffer(GL_FRAMEBUFFER, target_.id());
+  ensureTargets(size);
+  setUniforms(frame);
+  frame.reflections = {};
   glViewport(0, 0, size.x, size.y);
-  const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f}, notMarched[4] = {0.0f, 0.0f, -1.0f, -1.0f}, farDepth = 1.0f;
-  glClearNamedFramebufferfv(target_.id(), GL_COLOR, slots::kOutColor, zero);
-  glClearNamedFramebufferfv(target_.id(), GL_COLOR, slots::kOutReflectionHit, notMarched);
-  glClearNamedFramebufferfv(target_.id(), GL_DEPTH, 0, &farDepth);
   glEnable(GL_DEPTH_TEST);
-  glDisable(GL_CULL_FACE);
   glDisable(GL_BLEND);
-  gbuffer.bindForReading();
   glBindTextureUnit(slots::kUnitReflectionScene, gbuffer.scene());
   glBindTextureUnit(slots::kUnitSsrDepth, gbuffer.depth());
+  // Water and glass first: the opaque part then draws into the scene they reflect. The G-buffer's
+  // units are bound after the atlas's, which share some of them.
+  if (surfaces_) marchFromSurfaces(frame);
+  gbuffer.bindForReading();
+  if (opaque_) marchFromOpaque(frame);
+  glBindVertexArray(0);
+  glUseProgram(0);
+  glDisable(GL_BLEND);
+  glDepthFunc(GL_LESS);
+  glDepthMask(GL_TRUE);
+  glDisable(GL_DEPTH_TEST);
+}
+
+void ReflectionPass::marchFromOpaque(Frame& frame) {
+  const GBuffer& gbuffer = *frame.gbuffer;
+  frame.reflections.added = colour_.id();
+  frame.reflections.hits = hits_.id();
+  // The mask, then the march only where it left depth 0 (the triangle lies at depth 1).
+  glBindFramebuffer(GL_FRAMEBUFFER, target_.id());
+  glClearNamedFramebufferfv(target_.id(), GL_COLOR, slots::kOutColor, kZero);
+  glClearNamedFramebufferfv(target_.id(), GL_COLOR, slots::kOutReflectionHit, kNotMarched);
+  glClearNamedFramebufferfv(target_.id(), GL_DEPTH, 0, &kFarDepth);
+  glDisable(GL_CULL_FACE);
   glBindVertexArray(shared_.empty.id());
   glDepthFunc(GL_ALWAYS);
   glDepthMask(GL_TRUE);
@@ -126,12 +178,37 @@ void ReflectionPass::execute(Frame& frame) {
   glBindTextureUnit(slots::kUnitReflectionHits, hits_.id());
   glUseProgram(composite_.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);
-  glBindVertexArray(0);
-  glUseProgram(0);
-  glDisable(GL_BLEND);
-  glDepthFunc(GL_LESS);
+}
+
+void ReflectionPass::marchFromSurfaces(Frame& frame) {
+  frame.reflections.surfaceReflected = surfaceReflected_.id();
+  frame.reflections.surfaceHits = surfaceHits_.id();
+  glBindFramebuffer(GL_FRAMEBUFFER, surfaceTarget_.id());
+  glClearNamedFramebufferfv(surfaceTarget_.id(), GL_COLOR, slots::kOutColor, kZero);
+  glClearNamedFramebufferfv(surfaceTarget_.id(), GL_COLOR, slots::kOutReflectionHit, kNotMarched);
+  glClearNamedFramebufferfv(surfaceTarget_.id(), GL_COLOR, slots::kOutReflectionSurface, kZero);
+  glBindTextureUnit(gbuffer::kDepthUnit, frame.gbuffer->depth());
+  // The opaque depth, then the translucent quads' depth over it, with no colour.
+  glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  glDisable(GL_CULL_FACE);
+  glDepthFunc(GL_ALWAYS);
   glDepthMask(GL_TRUE);
-  glDisable(GL_DEPTH_TEST);
+  glBindVertexArray(shared_.empty.id());
+  glUseProgram(depthCopy_.id());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glEnable(GL_CULL_FACE);
+  glDepthFunc(GL_LESS);
+  const SectionDraw nearestFirst{DrawOrder::NearestFirst, glm::vec3(0.0f), true, nullptr};
+  drawSections(surfaceDepth_.id(), shared_.textures, frame.visible, frame.meshes, MeshLayer::Translucent,
+               nearestFirst);
+  // The march, once per pixel: on the nearest quad only.
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glDepthFunc(GL_LEQUAL);
+  glDepthMask(GL_FALSE);
+  gl::setMat4(surfaceMarch_.id(), "u_viewProjection", frame.view.viewProjection);
+  drawSections(surfaceMarch_.id(), shared_.textures, frame.visible, frame.meshes, MeshLayer::Translucent,
+               nearestFirst);
+  glDisable(GL_CULL_FACE);
 }
 
 ReflectionPixels ReflectionPass::read() const {
@@ -142,8 +219,18 @@ ReflectionPixels ReflectionPass::read() const {
   out.added.resize(pixels);
   out.hits.resize(pixels);
   const auto bytes = static_cast<GLsizei>(pixels * sizeof(glm::vec4));
-  glGetTextureImage(colour_.id(), 0, GL_RGBA, GL_FLOAT, bytes, out.added.data());
-  glGetTextureImage(hits_.id(), 0, GL_RGBA, GL_FLOAT, bytes, out.hits.data());
+  if (opaque_) {
+    glGetTextureImage(colour_.id(), 0, GL_RGBA, GL_FLOAT, bytes, out.added.data());
+    glGetTextureImage(hits_.id(), 0, GL_RGBA, GL_FLOAT, bytes, out.hits.data());
+  } else {
+    std::fill(out.hits.begin(), out.hits.end(), glm::vec4(0.0f, 0.0f, -1.0f, -1.0f));
+  }
+  if (surfaces_) {
+    for (auto* v : {&out.surfaceReflected, &out.surfaceHits, &out.surfaceNormals}) v->resize(pixels);
+    glGetTextureImage(surfaceReflected_.id(), 0, GL_RGBA, GL_FLOAT, bytes, out.surfaceReflected.data());
+    glGetTextureImage(surfaceHits_.id(), 0, GL_RGBA, GL_FLOAT, bytes, out.surfaceHits.data());
+    glGetTextureImage(surfaceNormals_.id(), 0, GL_RGBA, GL_FLOAT, bytes, out.surfaceNormals.data());
+  }
   return out;
 }
 

@@ -1,10 +1,12 @@
 #pragma once
-// Screen-space reflections of smooth opaque and cutout surfaces (shaders/reflection.frag), added to
-// the lit scene before the translucent pass. Three draws into a target of its own, at
-// render.reflections.resolution_scale of the frame: a mask (depth 0 where a surface is smooth enough),
-// the march (only there, by the depth test), then the result filtered up and added to the scene
-// where something was drawn. Has nothing to do when reflections are off, or no loaded texture, or
-// no texture of the sections in view, is smooth enough.
+// Screen-space reflections, marched at render.reflections.resolution_scale of the frame into targets
+// of its own. Smooth opaque and cutout surfaces (shaders/reflection.frag): a mask (depth 0 where a
+// surface is smooth enough), the march (only there, by the depth test), then the result filtered up
+// and added to the lit scene where something was drawn. Water and glass
+// (shaders/surface_reflection.frag): the opaque depth scaled down, a depth-only draw of the
+// translucent quads, then the march over the nearest of them; the translucent pass weighs what it
+// saw by Fresnel. Each part is left out where nothing in view needs it: no smooth texture on the
+// opaque sections in view, no translucent quad in view.
 
 #include <glm/vec4.hpp>
 #include <vector>
@@ -19,7 +21,11 @@ namespace terrasol {
 struct ReflectionPixels {
   glm::ivec2 size{0};
   std::vector<glm::vec4> added;  // rgb added to the lit scene; a: 1 where the ray hit
-  std::vector<glm::vec4> hits;   // xy: hit screen uv; z: 1 hit, 0 marched without a hit, -1 not marched
+  std::vector<glm::vec4> hits;   // xy: hit screen uv; z: 1 hit, 0 marched without a hit, -1 not
+                                 // marched; w: the surface's depth along the view
+  // The march from water and glass, where it ran: what the ray saw (rgb; a: 1 hit), where (as `hits`),
+  // and from which surface (xyz: the normal; w: its sky light).
+  std::vector<glm::vec4> surfaceReflected, surfaceHits, surfaceNormals;
 };
 
 class ReflectionPass final : public RenderPass {
@@ -34,16 +40,22 @@ class ReflectionPass final : public RenderPass {
 
  private:
   bool smoothInView(const Frame& frame) const;
-  void ensureTarget(glm::ivec2 size);
-  void setMarchUniforms(const Frame& frame) const;
+  void ensureTargets(glm::ivec2 size);
+  void setUniforms(const Frame& frame) const;
+  void marchFromOpaque(Frame& frame);
+  void marchFromSurfaces(Frame& frame);
 
   PassShared& shared_;
-  gl::Program mask_, march_, composite_;  // only when reflections are on
+  // Only when reflections are on.
+  gl::Program mask_, march_, composite_;               // opaque surfaces
+  gl::Program depthCopy_, surfaceDepth_, surfaceMarch_;  // water and glass
+  bool opaque_ = false, surfaces_ = false;             // this frame's parts
   glm::ivec2 size_{0};
   gl::Texture colour_;  // RGBA16F: rgb added to the scene, a: 1 where the ray hit something on screen
   gl::Texture hits_;    // RGBA32F: where each ray hit (ReflectionPixels::hits)
+  gl::Texture surfaceReflected_, surfaceHits_, surfaceNormals_;  // ReflectionPixels' surface*
   gl::Renderbuffer depth_;
-  gl::Framebuffer target_;
+  gl::Framebuffer target_, surfaceTarget_;
 };
 
 }  // namespace terrasol

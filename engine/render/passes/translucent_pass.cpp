@@ -8,30 +8,6 @@
 
 namespace terrasol {
 
-namespace {
-
-// Water and glass reflecting (render.reflections) and water's waves (render.water.waves).
-std::vector<ShaderDefine> surfaceDefines(const RendererOptions& options) {
-  std::vector<ShaderDefine> defines;
-  if (options.reflections.enabled) defines.push_back({"REFLECTIONS", "1"});
-  if (options.water.waves) defines.push_back({"WAVES", "1"});
-  return defines;
-}
-
-// The waves' phase: world time in seconds, wrapped at a whole number of every wave's periods so it
-// stays exact after any number of ticks; their origin: the camera's position wrapped at 256 blocks
-// (in double), so a far camera sees the same waves as one at the origin.
-constexpr std::int64_t kWaveCycleTicks = 20 * 60 * 60;  // an hour
-
-void setWaveUniforms(GLuint program, const FrameInputs& inputs) {
-  const auto ticks = ((inputs.ticks % kWaveCycleTicks) + kWaveCycleTicks) % kWaveCycleTicks;
-  glProgramUniform1f(program, glGetUniformLocation(program, "u_waveTime"), static_cast<float>(ticks) / 20.0f);
-  const glm::dvec3 wrapped = glm::mod(inputs.cameraPosition, glm::dvec3(256.0));
-  gl::setVec3(program, "u_waveOrigin", glm::vec3(wrapped));
-}
-
-}  // namespace
-
 TranslucentPass::TranslucentPass(const VariantBuilder& build, PassShared& shared)
     : shared_(shared),
       blocks_(build("gbuffer.vert", "translucent.frag",
@@ -50,6 +26,7 @@ void TranslucentPass::setup(FrameGraph::Builder& builder, Frame& frame) {
   builder.read(frame.resources.gbuffer);  // its depth
   if (shared_.options.shadow.enabled) builder.read(frame.resources.shadowMap);
   builder.read(frame.resources.scene);
+  if (builder.written(frame.resources.reflections)) builder.read(frame.resources.reflections);
   builder.write(frame.resources.scene);
 }
 
@@ -82,7 +59,8 @@ void TranslucentPass::execute(Frame& frame) {
   glDisable(GL_DEPTH_TEST);
 }
 
-// The lit opaque scene as it is now, for water and glass to reflect; and the depth their rays march against.
+// The lit opaque scene as it is now and its depth, for water to refract; and the reflection pass's
+// march from water and glass.
 void TranslucentPass::copyScene(const Frame& frame) {
   const GBuffer& gbuffer = *frame.gbuffer;
   if (copySize_ != gbuffer.size()) {
@@ -99,6 +77,12 @@ void TranslucentPass::copyScene(const Frame& frame) {
   glBindTextureUnit(slots::kUnitReflectionScene, sceneCopy_.id());
   glBindTextureUnit(slots::kUnitSsrDepth, gbuffer.lightingDepth());
   setSsrUniforms(blocks_.id(), frame.view, shared_.options.reflections);
+  // What the reflection pass's march from these surfaces saw, where it ran.
+  const ReflectionTargets& marched = frame.reflections;
+  glProgramUniform1i(blocks_.id(), glGetUniformLocation(blocks_.id(), "u_marched"),
+                     marched.surfaceReflected != 0 ? 1 : 0);
+  glBindTextureUnit(slots::kUnitReflection, marched.surfaceReflected);
+  glBindTextureUnit(slots::kUnitReflectionHits, marched.surfaceHits);
 }
 
 }  // namespace terrasol
