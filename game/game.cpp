@@ -23,6 +23,7 @@
 #include "platform/glfw/glfw_window.h"
 #include "player.h"
 #include "render/gl/render_target.h"
+#include "scene_render/under_water.h"
 #include "targeting.h"
 
 namespace terrasol::session {
@@ -286,6 +287,7 @@ void Game::draw(bool timed) {
   frame.debugView = static_cast<DebugView>(debugView_);
   frame.reuseShadowMap = true;
   frame.props = &props_->placed().gpu();
+  frame.underWater = underWaterAt(world_.world(), world_.light(), frame.cameraPosition);
   if (targetProp_ && !menuOpen_ && showHud_) {
     const WorldBounds b = props_->placed().bounds(*targetProp_);
     frame.outline = WorldBox{b.min, b.max};

@@ -8,6 +8,8 @@
 #include <glm/vec2.hpp>
 #include <glm/trigonometric.hpp>
 
+#include "world/liquid.h"
+
 namespace terrasol {
 namespace {
 
@@ -25,10 +27,6 @@ constexpr double kEdgeProbe = 0.6, kEdgeStep = 0.05;  // sneaking: how far down 
 constexpr double kMaxMove = 32.0;
 constexpr double kEpsilon = 1e-7;
 constexpr int kMaxTicksPerFrame = 10;
-
-bool isLiquid(const World& world, const BlockPos& pos) {
-  return world.blocks()[world.getBlock(pos)].shape == BlockShape::Liquid;
-}
 
 // Calls f(pos) for every cell the box overlaps.
 template <class F>

@@ -49,13 +49,13 @@ void main() {
 
   vec2 hitUv;
   bool hit = march(position + vertexNormal * 0.02, dir, hitUv);
-  vec3 reflected = reflectedLight(dir, skyLight, hit, hitUv);
+  vec3 reflected = reflectedLight(reflectedSky(dir, skyLight), hit, hitUv);
 
   // What the lighting pass reflected instead: sky light as a uniform environment.
   vec3 ambient = kSkyAmbient * lightmapAt(0.0, skyLight) * u_ambientTint;
   float ao = u_materialAo ? albedo.a : 1.0;
   float weight = smoothstep(u_minSmoothness, 1.0, m.smoothness);
   vec3 added = ao * weight * fresnelAmbient(m.f0, NdotV, m.roughness) * (reflected - ambient);
-  o_reflection = vec4(fogged(added, position, vec3(0.0)), hit ? 1.0 : 0.0);  // fogged as the scene was
+  o_reflection = vec4(foggedLight(added, position), hit ? 1.0 : 0.0);  // fogged as the scene was
   o_hit = vec4(hit ? hitUv : vec2(0.0), hit ? 1.0 : 0.0, viewDepth(depth));
 }

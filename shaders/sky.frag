@@ -6,4 +6,8 @@
 
 layout(location = OUT_COLOR) out vec4 o_color;
 
-void main() { o_color = vec4(skyWithStars(viewDirection()), 1.0); }
+// Under water, the sky beyond the surface is seen through the water above the camera.
+void main() {
+  vec3 dir = viewDirection();
+  o_color = vec4(mix(skyWithStars(dir), u_waterFog, waterFog(dir * 1e4)), 1.0);
+}

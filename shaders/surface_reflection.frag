@@ -33,6 +33,13 @@ void main() {
 #ifdef WAVES
   if (v_water > 0.5 && vertexNormal.y > 0.5) normal = waveNormal(v_position);
 #endif
+  // Seen from behind (under water the pass draws back faces): the face turns to the camera, and a
+  // ray that hits nothing sees the water.
+  bool behind = !gl_FrontFacing;
+  if (behind) {
+    normal = -normal;
+    vertexNormal = -vertexNormal;
+  }
   o_surface = vec4(normal, v_light.y);
   if (m.smoothness < u_minSmoothness) {
     o_reflected = vec4(0.0);
@@ -44,6 +51,7 @@ void main() {
   dir = normalize(dir - vertexNormal * min(dot(dir, vertexNormal) - 0.01, 0.0));
   vec2 hitUv;
   bool hit = march(v_position + vertexNormal * 0.02, dir, hitUv);
-  o_reflected = vec4(reflectedLight(dir, v_light.y, hit, hitUv), hit ? 1.0 : 0.0);
+  vec3 missed = behind ? u_waterFog : reflectedSky(dir, v_light.y);
+  o_reflected = vec4(reflectedLight(missed, hit, hitUv), hit ? 1.0 : 0.0);
   o_hit = vec4(hit ? hitUv : vec2(0.0), hit ? 1.0 : 0.0, 1.0 / gl_FragCoord.w);
 }

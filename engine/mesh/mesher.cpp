@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "mesh/face_merge.h"
+#include "world/liquid.h"
 
 namespace terrasol {
 namespace {
@@ -176,7 +177,7 @@ class Mesher {
   void cube(int x, int y, int z, BlockId id, const BlockMeshTable::Entry& e) {
     const bool liquid = e.shape == BlockShape::Liquid;
     // A liquid's surface sits 2/16 lower unless more of the same liquid is above it.
-    const int top32 = liquid && block(x, y + 1, z) != id ? 28 : 32;
+    const int top32 = liquid && block(x, y + 1, z) != id ? 32 - kLiquidSurfaceDrop32 : 32;
     const int here = SectionSnapshot::index(x, y, z);
     forEachDirection([&](auto d) {
       const bool loweredTop = d == static_cast<int>(Direction::Up) && top32 < 32;

@@ -25,6 +25,7 @@ class BlockTextures {
   // Binds the atlases and the tile buffer, and sets the atlas and tint uniforms of `program`.
   void bind(GLuint program) const;
   const AtlasTextures& atlas() const { return textures_; }
+  glm::vec3 waterTint() const { return tints_[3]; }  // linear
 
  private:
   AtlasTextures textures_;

@@ -85,6 +85,16 @@ FrameView DeferredRenderer::viewFor(const FrameInputs& inputs, glm::ivec2 size) 
   const double forwardLength = glm::length(forward);
   if (forwardLength > 1e-9) view.forward = forward / forwardLength;
   view.lightmap = lightmapColours(view.day, inputs.ticks);
+  if (inputs.underWater) {
+    // The depths take the water's colour lit by the sky: its tint times the zenith's brightness
+    // (radiance 3, lib/sky.glsl) scattered back at a quarter, dimmed by the sky light at the camera
+    // squared.
+    const float skyLight = std::clamp(inputs.underWater->skyLight, 0.0f, 1.0f);
+    const float zenith = glm::dot(view.day.skyZenith, glm::vec3(0.2126f, 0.7152f, 0.0722f));
+    view.underWater = true;
+    view.waterTop = static_cast<float>(std::max(inputs.underWater->surfaceY - inputs.cameraPosition.y, 0.0));
+    view.waterFog = shared_.textures.waterTint() * (0.75f * zenith * skyLight * skyLight);
+  }
   // Below 0.1 % of its strength the light can show nothing (it is 0 at and under the horizon).
   view.lightUp = shared_.options.shadow.enabled && view.day.directStrength > 1e-3f;
   // Receivers down to the world's bottom: the lowest visible section jumps by a hundred blocks as a

@@ -20,6 +20,13 @@ struct WorldBox {
   glm::dvec3 min{0.0}, max{0.0};
 };
 
+// The camera under a liquid's surface (world/liquid.h): the surface's height and the sky light at
+// the camera (0..1), which dims the colour the depths fade to.
+struct UnderWater {
+  double surfaceY = 0.0;
+  float skyLight = 1.0f;
+};
+
 struct FrameInputs {
   glm::dvec3 cameraPosition{0.0};
   glm::dvec3 cameraLookAt{0.0, 0.0, -1.0};
@@ -40,6 +47,8 @@ struct FrameInputs {
   std::optional<WorldBox> outline;
   // glTF props drawn beside the blocks (null: none); the renderer was built for their PropNeeds.
   const Props* props = nullptr;
+  // Under water, the surface is seen from below and what lies beyond fades into the water's colour.
+  std::optional<UnderWater> underWater;
 };
 
 // Choices that pick shader variants, fixed for the renderer's life.

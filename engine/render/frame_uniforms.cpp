@@ -44,6 +44,9 @@ void setSkyUniforms(GLuint program, const FrameView& view) {
   setVec3(program, "u_moonColor", day.moonColor);
   glProgramUniform1f(program, glGetUniformLocation(program, "u_starVisibility"), day.starVisibility);
   glProgramUniform2fv(program, glGetUniformLocation(program, "u_fogRange"), 1, glm::value_ptr(view.fogRange));
+  glProgramUniform1i(program, glGetUniformLocation(program, "u_underWater"), view.underWater ? 1 : 0);
+  glProgramUniform1f(program, glGetUniformLocation(program, "u_waterTop"), view.waterTop);
+  setVec3(program, "u_waterFog", view.waterFog);
 }
 
 void setSsrUniforms(GLuint program, const FrameView& view, const ReflectionSettings& settings) {

@@ -10,6 +10,7 @@
 #include "scene/block_atlas.h"
 #include "scene/camera_path.h"
 #include "scene_render/placed_props.h"
+#include "scene_render/under_water.h"
 #include "scene/scene_world.h"
 
 namespace terrasol {
@@ -129,6 +130,7 @@ FrameInputs SceneRenderer::inputsFor(int frame) const {
   inputs.debugView = debugView_;
   inputs.materialAo = scene_.materialAo;
   inputs.props = &gpu_->props.gpu();
+  inputs.underWater = underWaterAt(world_->world.world(), world_->world.light(), camera.position);
   return inputs;
 }
 

@@ -48,10 +48,28 @@ vec3 skyWithStars(vec3 dir) {
 }
 
 uniform vec2 u_fogRange;  // start, end (horizontal blocks from the camera)
+uniform bool u_underWater;  // the camera is under a liquid's surface
+uniform float u_waterTop;   // its height above the camera (blocks)
+uniform vec3 u_waterFog;    // the colour the depths fade to (linear)
+
+// Under water, how much of the way to `position` (camera-relative) fades into the water's colour:
+// the part of it below the surface, one e-fold every 10 blocks (0 above water).
+float waterFog(vec3 position) {
+  if (!u_underWater) return 0.0;
+  float path = length(position);
+  if (position.y > u_waterTop) path *= u_waterTop / position.y;  // the rest lies above the surface
+  return 1.0 - exp(-path / 10.0);
+}
 
 // Distant surfaces fade into the sky behind them (`sky`: skyColor(viewDir)), so the world's edge
-// never shows.
+// never shows; under water, into the water's colour.
 vec3 fogged(vec3 color, vec3 position, vec3 sky) {
   float fog = smoothstep(u_fogRange.x, u_fogRange.y, length(position.xz));
-  return mix(color, sky, fog);
+  return mix(mix(color, sky, fog), u_waterFog, waterFog(position));
+}
+
+// Light added on top of a surface's (a reflection), faded as the surface is.
+vec3 foggedLight(vec3 light, vec3 position) {
+  float fog = smoothstep(u_fogRange.x, u_fogRange.y, length(position.xz));
+  return light * ((1.0 - fog) * (1.0 - waterFog(position)));
 }

@@ -74,8 +74,11 @@ float edgeFade(vec2 uv) {
   return smoothstep(0.0, 0.05, min(d.x, d.y));
 }
 
-// What a ray in `dir` reflects: the hit's lit colour, else the sky times the sky light's brightness.
-vec3 reflectedLight(vec3 dir, float skyLight, bool hit, vec2 hitUv) {
-  vec3 sky = skyColor(dir) * levelBrightness(skyLight);
-  return hit ? mix(sky, texture(u_ssrScene, hitUv).rgb, edgeFade(hitUv)) : sky;
+// The sky a ray in `dir` reflects where it hits nothing, dimmed by the surface's sky light.
+vec3 reflectedSky(vec3 dir, float skyLight) { return skyColor(dir) * levelBrightness(skyLight); }
+
+// What a ray reflects: the hit's lit colour, else `missed` (the reflected sky, or under water the
+// water's colour).
+vec3 reflectedLight(vec3 missed, bool hit, vec2 hitUv) {
+  return hit ? mix(missed, texture(u_ssrScene, hitUv).rgb, edgeFade(hitUv)) : missed;
 }

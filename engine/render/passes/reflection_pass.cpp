@@ -197,8 +197,9 @@ void ReflectionPass::marchFromSurfaces(Frame& frame) {
   glUseProgram(depthCopy_.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glEnable(GL_CULL_FACE);
+  glCullFace(frame.view.underWater ? GL_FRONT : GL_BACK);  // as the translucent pass draws them
   glDepthFunc(GL_LESS);
-  const SectionDraw nearestFirst{DrawOrder::NearestFirst, glm::vec3(0.0f), true, nullptr};
+  const SectionDraw nearestFirst{DrawOrder::NearestFirst, glm::vec3(0.0f), !frame.view.underWater, nullptr};
   drawSections(surfaceDepth_.id(), shared_.textures, frame.visible, frame.meshes, MeshLayer::Translucent,
                nearestFirst);
   // The march, once per pixel: on the nearest quad only.
@@ -208,6 +209,7 @@ void ReflectionPass::marchFromSurfaces(Frame& frame) {
   gl::setMat4(surfaceMarch_.id(), "u_viewProjection", frame.view.viewProjection);
   drawSections(surfaceMarch_.id(), shared_.textures, frame.visible, frame.meshes, MeshLayer::Translucent,
                nearestFirst);
+  glCullFace(GL_BACK);
   glDisable(GL_CULL_FACE);
 }
 

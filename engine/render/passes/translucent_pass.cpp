@@ -41,6 +41,7 @@ void TranslucentPass::execute(Frame& frame) {
   glEnable(GL_DEPTH_TEST);
   glDepthMask(GL_FALSE);  // tested against the opaque scene, never hiding each other
   glEnable(GL_CULL_FACE);
+  glCullFace(view.underWater ? GL_FRONT : GL_BACK);  // under water the surface is seen from below
   glEnable(GL_BLEND);
   // Premultiplied colour; alpha keeps the lighting pass's shadow term of the surface behind.
   glBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
@@ -48,6 +49,7 @@ void TranslucentPass::execute(Frame& frame) {
   drawSections(blocks_.id(), shared_.textures, frame.visible, frame.meshes, MeshLayer::Translucent,
                {DrawOrder::FarthestFirst, glm::vec3(0.0f), false, &frame.stats});
   if (frame.props && props_.id()) {
+    glCullFace(GL_BACK);
     const GLuint program = props_.id();
     setLightingUniforms(program, view, frame.shadow);
     setSkyUniforms(program, view);
@@ -55,6 +57,7 @@ void TranslucentPass::execute(Frame& frame) {
     drawProps(program, *frame.props, frame.visibleProps, view.camera, AlphaMode::Blend, true);
   }
   glDisable(GL_BLEND);
+  glCullFace(GL_BACK);
   glDepthMask(GL_TRUE);
   glDisable(GL_DEPTH_TEST);
 }
