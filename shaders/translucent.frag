@@ -52,7 +52,7 @@ vec3 refracted(vec3 normal) {
   vec2 uv = clamp(straight + normal.xz * (0.6 / max(length(v_position), 1.0)), vec2(0.0), vec2(1.0));
   float depth = texelFetch(u_sceneDepth, ivec2(uv * size), 0).r;
   if (viewDepth(depth) < 1.0 / gl_FragCoord.w) uv = straight;  // what lies there is in front
-  return texture(u_scene, uv).rgb;
+  return texelFetch(u_scene, ivec2(uv * size), 0).rgb;  // the texel the depth check read
 }
 
 // Water's surface from below: what lies above, bent, inside Snell's window, and the water below

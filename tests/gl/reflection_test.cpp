@@ -1,5 +1,6 @@
 // Screen-space reflections (render/passes/reflection_pass.h): a polished iron floor mirrors the
-// blocks standing on it and the sky above, a sealed cave's floor reflects no sky, and the pass is
+// blocks standing on it and the sky above, water mirrors the shore and refracts what lies below, a
+// sealed cave's floor reflects no sky, the surface is seen from below under water, and the pass is
 // left out, changing no pixel, where it has nothing to do.
 
 #include <filesystem>
@@ -69,8 +70,8 @@ TEST_F(ReflectionTest, TheHitMaskViewShowsWhereRaysHit) {
   context_->checkErrors("reflection debug views");
 }
 
-// Water (F0 0.02) seen low over the pool mirrors the pillar on the far shore: the translucent pass
-// marches the same rays against the opaque scene.
+// Water (F0 0.02) seen low over the pool mirrors the pillar on the far shore: the reflection pass
+// marches from the water's surface, the translucent pass weighs what it saw.
 TEST_F(ReflectionTest, WaterMirrorsThePillarOnTheShore) {
   const SceneFile scene = loadScene(kScenes / "lake_pillar.json");
   const RenderedFrame on = renderWith(scene, true), off = renderWith(scene, false);
@@ -164,6 +165,70 @@ TEST_F(ReflectionTest, AFloodedCavesWaterReflectsNoSky) {
                                   kScenes / "flooded_cave.json"),
                        {{0.5, 64.875, 1.5}, {-2.5, 64.875, -1.5}});
   context_->checkErrors("flooded cave");
+}
+
+// Pixels that turned warmer from `before` to `after` (red over blue grew by more than 0.12): where
+// glowstone's colour came in; grey stone and the blue sky bent do not count.
+int warmedPixels(const Image& before, const Image& after) {
+  int n = 0;
+  for (int y = 0; y < before.height; ++y)
+    for (int x = 0; x < before.width; ++x) {
+      const std::uint8_t *p = before.pixel(x, y), *q = after.pixel(x, y);
+      n += (q[0] - q[2]) - (p[0] - p[2]) > 30 ? 1 : 0;
+    }
+  return n;
+}
+
+// Water refracts what lies behind it, but never what stands in front of it: a glowstone pillar on the
+// near shore, in front of a rippling pool over stone, smears none of its colour into the water around
+// it (the bent lookup's depth check). Reflections are kept out (min_smoothness 1) so only the
+// refraction differs from a render without it.
+TEST_F(ReflectionTest, RefractionBendsWhatLiesBehindTheWaterAndNothingInFrontOfIt) {
+  SceneFile scene = parseScene(R"({
+      "world": { "generator": "flat", "edits": [
+        { "fill": [-6, 60, -8, 6, 63, 3], "block": "stone" },
+        { "fill": [-5, 61, -7, 5, 63, 1], "block": "water" },
+        { "fill": [-1, 64, 3, 0, 67, 3], "block": "glowstone" } ] },
+      "time": 6000,
+      "render": { "width": 320, "height": 180, "view_distance": 1, "shadow": { "enabled": false },
+                  "reflections": { "min_smoothness": 1.0 }, "water": { "waves": true } },
+      "camera": { "position": [0.0, 68.5, 6.5], "look_at": [0.0, 62, -3], "fov": 70 } })",
+                               kScenes / "refraction.json");
+  const RenderedFrame bent = renderWith(scene, true), straight = renderWith(scene, false);
+  EXPECT_EQ(bent.nanPixels, 0u);
+  EXPECT_FALSE(identical(bent.image, straight.image)) << "the pool's floor is seen bent";
+  // 0; 21 with the depth check taken out of refracted() (translucent.frag).
+  EXPECT_LE(warmedPixels(straight.image, bent.image), 3) << "water pixels took the pillar's colour";
+  context_->checkErrors("refraction");
+}
+
+// Under water looking up, just below the surface: the sky through it within Snell's window, and
+// beyond the critical angle (48.6 degrees) the water reflected (total internal reflection), much
+// darker; without reflections the surface is still drawn from below, tinting the sky.
+TEST_F(ReflectionTest, UnderWaterTheSurfaceIsSeenFromBelow) {
+  SceneFile scene = parseScene(R"({
+      "world": { "generator": "flat", "edits": [
+        { "fill": [-20, 50, -20, 20, 63, 20], "block": "water" } ] },
+      "time": 6000,
+      "render": { "width": 160, "height": 90, "view_distance": 2, "shadow": { "resolution": 256, "distance": 32 } },
+      "camera": { "position": [0.5, 63.5, 0.5], "look_at": [0.5, 64.5, -2.0], "fov": 90 } })",
+                               kScenes / "under_water.json");
+  // The surface (y = 63.875) 28 and 84 degrees off its normal.
+  const glm::dvec3 window(0.5, 63.875, 0.3), beyond(0.5, 63.875, -3.0);
+  const RenderedFrame on = renderWith(scene, true);
+  EXPECT_EQ(on.nanPixels, 0u);
+  const glm::vec3 sky = colourAt(on, window), reflected = colourAt(on, beyond);
+  EXPECT_GT(sky.b, 0.5f) << "the sky overhead";
+  EXPECT_GT(brightness(sky), brightness(reflected) + 0.5f) << "beyond the window, the darker water";
+  EXPECT_GT(reflected.b, reflected.r) << "water's colour";
+  const RenderedFrame off = renderWith(scene, false);
+  EXPECT_EQ(off.nanPixels, 0u);
+  scene.cameraPosition.y += 10.0;  // the same view of the sky from above the water
+  scene.cameraLookAt.y += 10.0;
+  const RenderedFrame above = renderWith(scene, false);
+  EXPECT_LT(colourAt(off, window).r, colourAt(above, window + glm::dvec3(0.0, 10.0, 0.0)).r - 0.1f)
+      << "seen from below, the surface tints the sky overhead";
+  context_->checkErrors("under water");
 }
 
 std::string skipReason(const RenderedFrame& frame) {
