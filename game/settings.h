@@ -24,7 +24,7 @@ struct GameSettings {
   float mouseSensitivity = 0.15f;   // degrees per pixel, 0.01..2
   float sunPathRotation = -25.0f;   // degrees, -90..90
   ShadowSettings shadow = defaultShadow();
-  ReflectionSettings reflections;   // off by default, as in scenes
+  ReflectionSettings reflections;   // as in scenes
   std::vector<PackChoice> packs;    // stacked bottom to top over the default pack
   KeyBindings keys;
   bool vsync = true;

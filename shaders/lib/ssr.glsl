@@ -47,7 +47,8 @@ int behindAt(ClipRay ray, float t, vec2 size, out float behind, out vec2 uv) {
 bool march(vec3 origin, vec3 dir, out vec2 hitUv) {
   ClipRay ray = ClipRay(u_viewProjection * vec4(origin, 1.0), u_viewProjection * vec4(dir, 0.0));
   vec2 size = vec2(textureSize(u_ssrDepth, 0));
-  float near = 0.0;
+  float near = 0.0;  // the last point seen in front of the depth buffer
+  bool inFront = true;
   for (int i = 1; i <= u_maxSteps; ++i) {
     float f = float(i) / float(u_maxSteps);
     float t = u_maxDistance * f * f;  // fine steps near the surface, where most hits are
@@ -55,15 +56,22 @@ bool march(vec3 origin, vec3 dir, out vec2 hitUv) {
     vec2 uv;
     int seen = behindAt(ray, t, size, behind, uv);
     if (seen == 0) return false;  // the ray left the screen: what it would hit is not in the image
-    if (seen == 2 && behind > 0.0 && behind < u_thickness + t * 0.02) {
+    bool nowBehind = seen == 2 && behind > 0.0;
+    if (nowBehind && inFront) {
+      // It went behind a surface since the last step: find where (a binary refinement between the
+      // two), and take it if it lies within the thickness there. A coarse step that overshoots a
+      // thin block still finds it; a ray passing behind one goes on.
       float far = t;
-      for (int k = 0; k < 6; ++k) {  // the crossing between the last point in front and this one
+      for (int k = 0; k < 6; ++k) {
         float mid = 0.5 * (near + far);
         if (behindAt(ray, mid, size, behind, uv) == 2 && behind > 0.0) far = mid; else near = mid;
       }
-      return screenOf(origin + dir * far, hitUv) && !offScreen(hitUv);
+      if (behindAt(ray, far, size, behind, uv) == 2 && behind < u_thickness + far * 0.02) {
+        return screenOf(origin + dir * far, hitUv) && !offScreen(hitUv);
+      }
     }
-    if (seen == 1 || behind <= 0.0) near = t;
+    inFront = !nowBehind;
+    if (inFront) near = t;
   }
   return false;
 }

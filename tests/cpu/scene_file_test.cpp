@@ -221,10 +221,10 @@ TEST(SceneFile, SpecularModelAndMaterialAo) {
 }
 
 TEST(SceneFile, ReflectionSettings) {
-  const SceneFile scene = parseScene(R"({"render": {"reflections": {"enabled": true, "max_steps": 64,
+  const SceneFile scene = parseScene(R"({"render": {"reflections": {"enabled": false, "max_steps": 64,
       "thickness": 0.5, "resolution_scale": 0.5, "min_smoothness": 0.8, "max_distance": 32}}})", "scenes/a.json");
   const ReflectionSettings& r = scene.reflections;
-  EXPECT_TRUE(r.enabled);
+  EXPECT_FALSE(r.enabled);
   EXPECT_EQ(r.maxSteps, 64);
   EXPECT_FLOAT_EQ(r.thickness, 0.5f);
   EXPECT_FLOAT_EQ(r.resolutionScale, 0.5f);
@@ -238,7 +238,8 @@ TEST(SceneFile, ReflectionSettings) {
                         "render.reflections.min_smoothness: expected"));
   EXPECT_TRUE(failsWith(R"({"render": {"reflections": {"mirror": true}}})", "render.reflections.mirror: unknown key"));
   EXPECT_TRUE(parseScene(R"({"render": {"water": {"waves": true}}})", "a.json").water.waves);
-  EXPECT_FALSE(parseScene("{}", "a.json").water.waves);
+  EXPECT_FALSE(parseScene(R"({"render": {"water": {"waves": false}}})", "a.json").water.waves);
+  EXPECT_TRUE(parseScene("{}", "a.json").water.waves) << "waves by default";
   EXPECT_TRUE(failsWith(R"({"render": {"water": {"waves": 1}}})", "render.water.waves: expected true or false"));
 }
 

@@ -102,7 +102,8 @@ TEST_F(ReflectionTest, WavesMoveWithWorldTimeAndOnlyWithIt) {
 }
 
 // The march against ray-traced truth: from every marched pixel the same mirror ray walked through the
-// voxel grid. On the mirror floor most of them agree (a broken march agrees on 0.5 %) and no sky leaks.
+// voxel grid. On the mirror floor most of them agree (a march on the wrong side of the depth test agrees
+// on 3 %) and no sky leaks.
 TEST_F(ReflectionTest, TheMarchAgreesWithTheRayTracedTruth) {
   const SceneFile scene = loadScene(kScenes / "mirror_floor.json");
   SceneRenderer renderer(scene);
@@ -114,8 +115,8 @@ TEST_F(ReflectionTest, TheMarchAgreesWithTheRayTracedTruth) {
                                                        frame.geometry, scene.reflections.maxDistance,
                                                        renderer.renderer().gbufferContents().surfaceNormals);
   const ReflectionCounts& c = error.total;
-  EXPECT_GT(c.evaluated, 10000u);
-  EXPECT_GT(100.0 * static_cast<double>(c.agree) / static_cast<double>(c.evaluated), 90.0)  // 93 % at 320x180
+  EXPECT_GT(c.evaluated, 5000u);
+  EXPECT_GT(100.0 * static_cast<double>(c.agree) / static_cast<double>(c.evaluated), 90.0)  // 97.5 % at 160x90
       << "wrong " << c.wrongHit << ", missed " << c.missedOnScreen << " on screen and " << c.missedOffScreen
       << " off it, false " << c.falseHit;
   EXPECT_EQ(error.skyLeakPixels, 0u);
@@ -152,18 +153,7 @@ TEST_F(ReflectionTest, ASealedCaveFloorReflectsNoSky) {
 
 // A sealed, flooded stone box lit by glowstone: its water (the translucent pass's reflections).
 TEST_F(ReflectionTest, AFloodedCavesWaterReflectsNoSky) {
-  expectNoSkyReflected(parseScene(R"({
-      "world": { "generator": "flat", "edits": [
-        { "fill": [-5, 60, -5, 5, 70, 5], "block": "stone" },
-        { "fill": [-4, 61, -4, 4, 69, 4], "block": "air" },
-        { "fill": [-4, 61, -4, 4, 64, 4], "block": "water" },
-        { "set": [0, 69, 0], "block": "glowstone" } ] },
-      "time": 6000,
-      "render": { "width": 160, "height": 90, "view_distance": 1, "shadow": { "resolution": 256, "distance": 32 },
-                  "water": { "waves": true } },
-      "camera": { "position": [0.5, 67.5, 3.5], "look_at": [0.5, 64, -3], "fov": 80 } })",
-                                  kScenes / "flooded_cave.json"),
-                       {{0.5, 64.875, 1.5}, {-2.5, 64.875, -1.5}});
+  expectNoSkyReflected(loadScene(kScenes / "flooded_cave.json"), {{0.5, 64.875, 1.5}, {-2.5, 64.875, -1.5}});
   context_->checkErrors("flooded cave");
 }
 

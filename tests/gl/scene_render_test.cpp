@@ -41,7 +41,8 @@ INSTANTIATE_TEST_SUITE_P(Scenes, SceneGoldenTest,
                          ::testing::Values("noon_terrain", "sunset_terrain", "night_cave_torches", "metal_emissive",
                                            "stone_closeup", "water_glass", "pack_pixel_perfection", "shadow_noon",
                                            "shadow_low_sun", "shadow_moon", "shadow_forest", "shadow_cave_mouth",
-                                           "props_beside_blocks", "props_night_torch"));
+                                           "props_beside_blocks", "props_night_torch", "mirror_floor", "lake_pillar",
+                                           "lake_sunset", "flooded_cave"));
 
 TEST_F(SceneRenderTest, EveryDebugViewMatchesItsGolden) {
   SceneRenderer renderer(loadScene(kScenes / "metal_emissive.json"));
