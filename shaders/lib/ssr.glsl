@@ -44,14 +44,30 @@ int behindAt(ClipRay ray, float t, vec2 size, out float behind, out vec2 uv) {
   return 2;
 }
 
+// How far the ray goes before it leaves the screen (the frustum's side planes, -w <= x, y <= w, and
+// the near side), or u_maxDistance: beyond, nothing it meets is in the image.
+float onScreenLength(ClipRay ray) {
+  float end = u_maxDistance;
+  vec4 start = vec4(ray.origin.w - ray.origin.xy, ray.origin.w + ray.origin.xy);  // >= 0 on screen
+  vec4 slope = vec4(ray.dir.w - ray.dir.xy, ray.dir.w + ray.dir.xy);
+  for (int k = 0; k < 4; ++k) {
+    if (slope[k] < 0.0) end = min(end, max(start[k], 0.0) / -slope[k]);
+  }
+  if (ray.dir.w < 0.0) end = min(end, max(ray.origin.w - 1e-3, 0.0) / -ray.dir.w);
+  return end;
+}
+
 bool march(vec3 origin, vec3 dir, out vec2 hitUv) {
   ClipRay ray = ClipRay(u_viewProjection * vec4(origin, 1.0), u_viewProjection * vec4(dir, 0.0));
   vec2 size = vec2(textureSize(u_ssrDepth, 0));
+  // A step that would leave the screen stops a hair inside its edge instead, and is the last: a
+  // crossing just before the ray leaves is still found.
+  float end = onScreenLength(ray) * 0.999;
   float near = 0.0;  // the last point seen in front of the depth buffer
   bool inFront = true;
   for (int i = 1; i <= u_maxSteps; ++i) {
     float f = float(i) / float(u_maxSteps);
-    float t = u_maxDistance * f * f;  // fine steps near the surface, where most hits are
+    float t = min(u_maxDistance * f * f, end);  // fine steps near the surface, where most hits are
     float behind;
     vec2 uv;
     int seen = behindAt(ray, t, size, behind, uv);
@@ -72,6 +88,7 @@ bool march(vec3 origin, vec3 dir, out vec2 hitUv) {
     }
     inFront = !nowBehind;
     if (inFront) near = t;
+    if (t >= end) return false;
   }
   return false;
 }
