@@ -62,12 +62,13 @@ void ReflectionPass::setup(FrameGraph::Builder& builder, Frame& frame) {
   opaque_ = surfaces_ = false;
   if (!settings.enabled) return builder.skip("reflections are off");
   const bool cull = shared_.options.cullPasses;
-  surfaces_ = !cull || quadsIn(frame.visible, MeshLayer::Translucent) > 0;
+  const bool anySmooth = shared_.maxSmoothness >= settings.minSmoothness;
+  surfaces_ = anySmooth && (!cull || quadsIn(frame.visible, MeshLayer::Translucent) > 0);
   // Props' materials may be smooth: they are not looked into.
-  opaque_ = frame.props || (shared_.maxSmoothness >= settings.minSmoothness && (!cull || smoothInView(frame)));
+  opaque_ = frame.props || (anySmooth && (!cull || smoothInView(frame)));
   if (!opaque_ && !surfaces_) {
-    return builder.skip(shared_.maxSmoothness < settings.minSmoothness ? "no loaded texture is smooth enough"
-                                                                       : "nothing in view is smooth enough");
+    return builder.skip(anySmooth ? "nothing in view is smooth enough or translucent"
+                                  : "no loaded texture is smooth enough");
   }
   builder.read(frame.resources.gbuffer);
   builder.read(frame.resources.scene);
