@@ -14,7 +14,10 @@ layout(binding = GB_LIGHT) uniform sampler2D g_light;
 layout(binding = GB_DEPTH_UNIT) uniform sampler2D g_depth;
 layout(binding = UNIT_REFLECTION) uniform sampler2D u_reflection;
 layout(binding = UNIT_REFLECTION_HITS) uniform sampler2D u_hits;
-uniform bool u_reflected;   // the reflection pass ran this frame (else its views are black)
+layout(binding = UNIT_SURFACE_REFLECTION) uniform sampler2D u_surfaceReflection;
+layout(binding = UNIT_SURFACE_REFLECTION_HITS) uniform sampler2D u_surfaceHits;
+uniform bool u_reflected;       // the reflection pass marched from opaque surfaces this frame
+uniform bool u_surfaceMarched;  // ... and from water and glass (else those views are black)
 
 uniform int u_view;         // index in kDebugViews (core/render_settings.h), 1..
 
@@ -48,12 +51,20 @@ void main() {
     c = vec3(log2(max(linear, u_nearFar.x) / u_nearFar.x) / log2(u_nearFar.y / u_nearFar.x));
   } else if (u_view == 7) c = vec3(light.z, albedo.a, 0.0);
   else if (u_view == 8) c = vec3(labpbrMaterial(spec, albedo.rgb).emission);
-  else if (u_view >= 9 && u_reflected) {
+  else if (u_view >= 9) {
+    // Hits white, rays that found nothing blue, pixels not marched black; or what the pass added to
+    // opaque surfaces and, over them, the light water and glass reflect (before Fresnel).
     vec2 uv = gl_FragCoord.xy / vec2(textureSize(g_depth, 0));
-    vec4 hit = texture(u_hits, uv);
-    // Hits white, rays that found nothing blue, pixels not marched black; or what the pass added.
+    vec4 hit = u_reflected ? texture(u_hits, uv) : vec4(0.0, 0.0, -1.0, -1.0);
+    vec3 reflected = u_reflected ? abs(texture(u_reflection, uv).rgb) : vec3(0.0);
+    vec4 surfaceHit = u_surfaceMarched ? texture(u_surfaceHits, uv) : vec4(0.0, 0.0, -1.0, -1.0);
+    if (surfaceHit.z > -0.5) {
+      hit = surfaceHit;
+      reflected = texture(u_surfaceReflection, uv).rgb;
+      depth = 0.0;  // shown over the sky too
+    }
     if (u_view == 9) c = hit.z > 0.5 ? vec3(1.0) : hit.z > -0.5 ? vec3(0.1, 0.2, 0.8) : vec3(0.0);
-    else c = linearToSrgb(clamp(abs(texture(u_reflection, uv).rgb) * 0.5, 0.0, 1.0));
+    else c = linearToSrgb(clamp(reflected * 0.5, 0.0, 1.0));
   }
   if (depth >= 1.0 && u_view != 6) c = vec3(0.0);
   o_color = vec4(c, 1.0);

@@ -31,6 +31,8 @@ std::vector<ShaderDefine> slotDefines() {
       define("UNIT_REFLECTION", slots::kUnitReflection),
       define("UNIT_REFLECTION_HITS", slots::kUnitReflectionHits),
       define("UNIT_SSR_DEPTH", slots::kUnitSsrDepth),
+      define("UNIT_SURFACE_REFLECTION", slots::kUnitSurfaceReflection),
+      define("UNIT_SURFACE_REFLECTION_HITS", slots::kUnitSurfaceReflectionHits),
       define("STORAGE_TILES", slots::kStorageTiles),
   };
 }

@@ -45,6 +45,9 @@ inline constexpr int kUnitReflectionScene = 14;
 inline constexpr int kUnitReflection = 15;
 inline constexpr int kUnitReflectionHits = 16;
 inline constexpr int kUnitSsrDepth = 17;  // the depth a reflected ray is marched against
+// The march from water and glass, for the debug views.
+inline constexpr int kUnitSurfaceReflection = 18;
+inline constexpr int kUnitSurfaceReflectionHits = 19;
 
 // Shader storage buffers.
 inline constexpr int kStorageTiles = 0;  // atlas tile of each texture id for the current frame

@@ -50,8 +50,9 @@ TEST_F(ReflectionTest, APolishedFloorMirrorsTheBlocksOnItAndTheSky) {
   context_->checkErrors("mirror floor");
 }
 
-// F4's reflection views: the hit mask (white hit, blue found nothing, black not marched) keeps the
-// reflection pass and the lighting it reads, though the final image is replaced.
+// F4's reflection views: the hit mask (white hit, blue found nothing, black not marched), from opaque
+// surfaces and from water, keeps the reflection pass and the lighting it reads, though the final
+// image is replaced.
 TEST_F(ReflectionTest, TheHitMaskViewShowsWhereRaysHit) {
   SceneFile scene = loadScene(kScenes / "mirror_floor.json");
   scene.debugView = DebugView::ReflectionHits;
@@ -67,6 +68,13 @@ TEST_F(ReflectionTest, TheHitMaskViewShowsWhereRaysHit) {
   scene.reflections.enabled = false;
   const RenderedFrame off = SceneRenderer(scene).renderFrame(0);
   EXPECT_LT(brightness(colourAt(off, {2.64, 64.0, 0.36})), 0.05f) << "no pass, nothing shown";
+  // Water's rays too: the pillar mirrored in the pool is a hit, the sky in it is not.
+  SceneFile lake = loadScene(kScenes / "lake_pillar.json");
+  lake.debugView = DebugView::ReflectionHits;
+  const RenderedFrame water = SceneRenderer(lake).renderFrame(0);
+  EXPECT_GT(colourAt(water, {0.5, 63.875, 2.9}).r, 0.9f) << "the pillar in the water: a hit";
+  const glm::vec3 skyInWater = colourAt(water, {-4.0, 63.875, 2.9});
+  EXPECT_GT(skyInWater.b, skyInWater.r + 0.3f) << "the sky in the water: marched, nothing hit";
   context_->checkErrors("reflection debug views");
 }
 

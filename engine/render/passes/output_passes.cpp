@@ -68,6 +68,10 @@ void DebugViewPass::execute(Frame& frame) {
   glBindTextureUnit(slots::kUnitReflectionHits, frame.reflections.hits);
   glProgramUniform1i(program, glGetUniformLocation(program, "u_reflected"),
                      frame.reflections.hits != 0 ? 1 : 0);
+  glBindTextureUnit(slots::kUnitSurfaceReflection, frame.reflections.surfaceReflected);
+  glBindTextureUnit(slots::kUnitSurfaceReflectionHits, frame.reflections.surfaceHits);
+  glProgramUniform1i(program, glGetUniformLocation(program, "u_surfaceMarched"),
+                     frame.reflections.surfaceHits != 0 ? 1 : 0);
   glProgramUniform2fv(program, glGetUniformLocation(program, "u_nearFar"), 1,
                       glm::value_ptr(frame.view.nearFar));
   drawFullScreen(program, shared_, GL_TRIANGLES, 3);
