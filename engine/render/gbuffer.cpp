@@ -3,19 +3,12 @@
 #include <string>
 
 #include "core/error.h"
+#include "render/gl/render_target.h"
 
 namespace terrasol {
 namespace {
 
-gl::Texture makeTarget(GLenum format, glm::ivec2 size) {
-  gl::Texture texture = gl::Texture::create(GL_TEXTURE_2D);
-  glTextureStorage2D(texture.id(), 1, format, size.x, size.y);
-  glTextureParameteri(texture.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  glTextureParameteri(texture.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  glTextureParameteri(texture.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  glTextureParameteri(texture.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-  return texture;
-}
+gl::Texture makeTarget(GLenum format, glm::ivec2 size) { return targetTexture(format, size, GL_NEAREST); }
 
 void checkComplete(GLuint framebuffer, const char* name) {
   const GLenum status = glCheckNamedFramebufferStatus(framebuffer, GL_FRAMEBUFFER);

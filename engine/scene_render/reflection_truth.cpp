@@ -153,8 +153,12 @@ ReflectionError measureReflectionError(const World& world, const GBufferPixels& 
         const std::size_t gi = indexOf(gp, f.size);
         if (f.depth[gi] < 1.0f) {
           const glm::dvec2 ndc = (glm::dvec2(gp) + 0.5) / glm::dvec2(f.size) * 2.0 - 1.0;
-          MarchedRay ray{unproject(g, ndc, f.depth[gi]), octDecode(glm::dvec2(f.normals[gi].x, f.normals[gi].y)),
-                         vertexNormalAt(f, gi, surfaceNormals), hit, r.added[ri], f.light[gi].g / 255.0f};
+          MarchedRay ray{unproject(g, ndc, f.depth[gi]),
+                         octDecode(glm::dvec2(f.normals[gi].x, f.normals[gi].y)),
+                         vertexNormalAt(f, gi, surfaceNormals),
+                         hit,
+                         r.added[ri],
+                         f.light[gi].g / 255.0f};
           evaluate(e, e.opaque, world, f, g, ray, maxDistance, surfaceNormals);
         }
       }
@@ -165,8 +169,12 @@ ReflectionError measureReflectionError(const World& world, const GBufferPixels& 
         const double farDepth = (g.viewProjection * glm::vec4(glm::vec3(far), 1.0f)).w;
         const glm::vec4 n = r.surfaceNormals[ri];
         const glm::dvec3 normal = glm::normalize(glm::dvec3(n));
-        MarchedRay ray{far * (static_cast<double>(hit.w) / farDepth), normal, faceNormalOf(normal), hit,
-                       r.surfaceReflected[ri], n.w};
+        MarchedRay ray{far * (static_cast<double>(hit.w) / farDepth),
+                       normal,
+                       faceNormalOf(normal),
+                       hit,
+                       r.surfaceReflected[ri],
+                       n.w};
         evaluate(e, e.translucent, world, f, g, ray, maxDistance, surfaceNormals);
       }
     }

@@ -1,10 +1,10 @@
 #pragma once
 // Reflection error against ground truth, as for shadows (shadow_truth.h): from each pixel the
 // reflection pass marched, the mirror ray it marched (the same normals, read back from the G-buffer,
-// or for water and glass from the pass's own target) is walked through the voxel grid (Amanatides-Woo) to the first opaque cube within the pass's
-// max_distance. The screen-space march either found that block, another one, or nothing; where it
-// found nothing, the truth's block is either visible on screen (a miss of the march) or not (beyond
-// any screen-space method: reported apart).
+// or for water and glass from the pass's own target) is walked through the voxel grid (Amanatides-Woo) to the
+// first opaque cube within the pass's max_distance. The screen-space march either found that block, another
+// one, or nothing; where it found nothing, the truth's block is either visible on screen (a miss of the
+// march) or not (beyond any screen-space method: reported apart).
 
 #include <array>
 #include <cstddef>

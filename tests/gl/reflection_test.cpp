@@ -124,7 +124,8 @@ TEST_F(ReflectionTest, TheMarchAgreesWithTheRayTracedTruth) {
                                                        renderer.renderer().gbufferContents().surfaceNormals);
   const ReflectionCounts& c = error.total;
   EXPECT_GT(c.evaluated, 5000u);
-  EXPECT_GT(100.0 * static_cast<double>(c.agree) / static_cast<double>(c.evaluated), 90.0)  // 97.5 % at 160x90
+  EXPECT_GT(100.0 * static_cast<double>(c.agree) / static_cast<double>(c.evaluated),
+            90.0)  // 97.5 % at 160x90
       << "wrong " << c.wrongHit << ", missed " << c.missedOnScreen << " on screen and " << c.missedOffScreen
       << " off it, false " << c.falseHit;
   EXPECT_EQ(error.skyLeakPixels, 0u);

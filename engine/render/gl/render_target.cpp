@@ -8,13 +8,24 @@
 
 namespace terrasol {
 
+gl::Texture targetTexture(GLenum format, glm::ivec2 size, GLenum filter) {
+  gl::Texture texture = gl::Texture::create(GL_TEXTURE_2D);
+  glTextureStorage2D(texture.id(), 1, format, size.x, size.y);
+  glTextureParameteri(texture.id(), GL_TEXTURE_MIN_FILTER, static_cast<GLint>(filter));
+  glTextureParameteri(texture.id(), GL_TEXTURE_MAG_FILTER, static_cast<GLint>(filter));
+  glTextureParameteri(texture.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTextureParameteri(texture.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  return texture;
+}
+
 RenderTarget::RenderTarget(glm::ivec2 size)
     : size_(size),
       color_(gl::Texture::create(GL_TEXTURE_2D)),
       depth_(gl::Renderbuffer::create()),
       framebuffer_(gl::Framebuffer::create()) {
   if (size.x <= 0 || size.y <= 0) {
-    throw Error("render target size must be positive, got " + std::to_string(size.x) + "x" + std::to_string(size.y));
+    throw Error("render target size must be positive, got " + std::to_string(size.x) + "x" +
+                std::to_string(size.y));
   }
   glTextureStorage2D(color_.id(), 1, GL_RGBA8, size.x, size.y);
   glNamedRenderbufferStorage(depth_.id(), GL_DEPTH_COMPONENT24, size.x, size.y);
@@ -42,6 +53,8 @@ Image readFramebuffer(GLuint framebuffer, glm::ivec2 size) {
   return image;
 }
 
-Image RenderTarget::readPixels() const { return readFramebuffer(framebuffer_.id(), size_); }
+Image RenderTarget::readPixels() const {
+  return readFramebuffer(framebuffer_.id(), size_);
+}
 
 }  // namespace terrasol

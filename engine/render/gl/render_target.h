@@ -9,6 +9,10 @@
 
 namespace terrasol {
 
+// A one-level 2D texture to render into, clamped at its edges and filtered by `filter` (GL_NEAREST or
+// GL_LINEAR).
+gl::Texture targetTexture(GLenum format, glm::ivec2 size, GLenum filter);
+
 // Reads colour attachment 0 of `framebuffer` (the back buffer for 0), top row first.
 Image readFramebuffer(GLuint framebuffer, glm::ivec2 size);
 

@@ -7,6 +7,7 @@
 
 #include "core/error.h"
 #include "render/frame_uniforms.h"
+#include "render/gl/render_target.h"
 #include "render/gl/uniforms.h"
 #include "render/gl_slots.h"
 #include "render/section_draw.h"
@@ -14,16 +15,6 @@
 namespace terrasol {
 
 namespace {
-
-gl::Texture targetTexture(GLenum format, glm::ivec2 size) {
-  gl::Texture t = gl::Texture::create(GL_TEXTURE_2D);
-  glTextureStorage2D(t.id(), 1, format, size.x, size.y);
-  glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-  glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glTextureParameteri(t.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  glTextureParameteri(t.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-  return t;
-}
 
 gl::Framebuffer targetFramebuffer(std::initializer_list<GLuint> colours, GLuint depth) {
   gl::Framebuffer fbo = gl::Framebuffer::create();
@@ -90,11 +81,11 @@ bool ReflectionPass::smoothInView(const Frame& frame) const {
 void ReflectionPass::ensureTargets(glm::ivec2 size) {
   if (size == size_) return;
   size_ = size;
-  colour_ = targetTexture(GL_RGBA16F, size);
-  hits_ = targetTexture(GL_RGBA32F, size);
-  surfaceReflected_ = targetTexture(GL_RGBA16F, size);
-  surfaceHits_ = targetTexture(GL_RGBA32F, size);
-  surfaceNormals_ = targetTexture(GL_RGBA16F, size);
+  colour_ = targetTexture(GL_RGBA16F, size, GL_LINEAR);
+  hits_ = targetTexture(GL_RGBA32F, size, GL_LINEAR);
+  surfaceReflected_ = targetTexture(GL_RGBA16F, size, GL_LINEAR);
+  surfaceHits_ = targetTexture(GL_RGBA32F, size, GL_LINEAR);
+  surfaceNormals_ = targetTexture(GL_RGBA16F, size, GL_LINEAR);
   depth_ = gl::Renderbuffer::create();
   glNamedRenderbufferStorage(depth_.id(), GL_DEPTH_COMPONENT32F, size.x, size.y);
   static_assert(slots::kOutColor == 0 && slots::kOutReflectionHit == 1 && slots::kOutReflectionSurface == 2);

@@ -47,9 +47,9 @@ class ReflectionPass final : public RenderPass {
 
   PassShared& shared_;
   // Only when reflections are on.
-  gl::Program mask_, march_, composite_;               // opaque surfaces
+  gl::Program mask_, march_, composite_;                 // opaque surfaces
   gl::Program depthCopy_, surfaceDepth_, surfaceMarch_;  // water and glass
-  bool opaque_ = false, surfaces_ = false;             // this frame's parts
+  bool opaque_ = false, surfaces_ = false;               // this frame's parts
   glm::ivec2 size_{0};
   gl::Texture colour_;  // RGBA16F: rgb added to the scene, a: 1 where the ray hit something on screen
   gl::Texture hits_;    // RGBA32F: where each ray hit (ReflectionPixels::hits)

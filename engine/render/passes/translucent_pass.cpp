@@ -1,6 +1,7 @@
 #include "render/passes/translucent_pass.h"
 
 #include "render/frame_uniforms.h"
+#include "render/gl/render_target.h"
 #include "render/gl/uniforms.h"
 #include "render/gl_slots.h"
 #include "render/prop_draw.h"
@@ -34,7 +35,7 @@ void TranslucentPass::execute(Frame& frame) {
   const FrameView& view = frame.view;
   setLightingUniforms(blocks_.id(), view, frame.shadow);
   setSkyUniforms(blocks_.id(), view);
-  if (shared_.options.reflections.enabled) copyScene(frame);
+  if (shared_.options.reflections.enabled) prepareReflections(frame);
   if (shared_.options.water.waves) setWaveUniforms(blocks_.id(), frame.inputs);
   glBindFramebuffer(GL_FRAMEBUFFER, frame.gbuffer->translucentFramebuffer());
   glViewport(0, 0, frame.gbuffer->size().x, frame.gbuffer->size().y);
@@ -64,16 +65,11 @@ void TranslucentPass::execute(Frame& frame) {
 
 // The lit opaque scene as it is now and its depth, for water to refract; and the reflection pass's
 // march from water and glass.
-void TranslucentPass::copyScene(const Frame& frame) {
+void TranslucentPass::prepareReflections(const Frame& frame) {
   const GBuffer& gbuffer = *frame.gbuffer;
   if (copySize_ != gbuffer.size()) {
     copySize_ = gbuffer.size();
-    sceneCopy_ = gl::Texture::create(GL_TEXTURE_2D);
-    glTextureStorage2D(sceneCopy_.id(), 1, GL_RGBA16F, copySize_.x, copySize_.y);
-    glTextureParameteri(sceneCopy_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTextureParameteri(sceneCopy_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTextureParameteri(sceneCopy_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTextureParameteri(sceneCopy_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    sceneCopy_ = targetTexture(GL_RGBA16F, copySize_, GL_NEAREST);  // read by texel
   }
   glCopyImageSubData(gbuffer.scene(), GL_TEXTURE_2D, 0, 0, 0, 0, sceneCopy_.id(), GL_TEXTURE_2D, 0, 0, 0, 0,
                      copySize_.x, copySize_.y, 1);

@@ -17,7 +17,7 @@ class TranslucentPass final : public RenderPass {
   void execute(Frame& frame) override;
 
  private:
-  void copyScene(const Frame& frame);
+  void prepareReflections(const Frame& frame);
   PassShared& shared_;
   gl::Program blocks_;
   gl::Program props_;  // only when a placed prop has a blended material
