@@ -45,9 +45,8 @@ int behindAt(ClipRay ray, float t, vec2 size, out float behind, out vec2 uv) {
 }
 
 // How far the ray goes before it leaves the screen (the frustum's side planes, -w <= x, y <= w, and
-// the near side), or u_maxDistance: beyond, nothing it meets is in the image.
-float onScreenLength(ClipRay ray) {
-  float end = u_maxDistance;
+// the near side), or `end`: beyond, nothing it meets is in the image.
+float onScreenLength(ClipRay ray, float end) {
   vec4 start = vec4(ray.origin.w - ray.origin.xy, ray.origin.w + ray.origin.xy);  // >= 0 on screen
   vec4 slope = vec4(ray.dir.w - ray.dir.xy, ray.dir.w + ray.dir.xy);
   for (int k = 0; k < 4; ++k) {
@@ -60,14 +59,19 @@ float onScreenLength(ClipRay ray) {
 bool march(vec3 origin, vec3 dir, out vec2 hitUv) {
   ClipRay ray = ClipRay(u_viewProjection * vec4(origin, 1.0), u_viewProjection * vec4(dir, 0.0));
   vec2 size = vec2(textureSize(u_ssrDepth, 0));
+  // Whatever lies past the fog's end shows the sky's colour (lib/sky.glsl): the ray goes no further
+  // than where its horizontal distance from the camera must have passed it, in as many steps as keep
+  // their spacing.
+  float reach = min(u_maxDistance, (u_fogRange.y + length(origin.xz)) / max(length(dir.xz), 1e-3));
+  int steps = max(int(ceil(float(u_maxSteps) * sqrt(reach / u_maxDistance))), 1);
   // A step that would leave the screen stops a hair inside its edge instead, and is the last: a
   // crossing just before the ray leaves is still found.
-  float end = onScreenLength(ray) * 0.999;
+  float end = onScreenLength(ray, reach) * 0.999;
   float near = 0.0;  // the last point seen in front of the depth buffer
   bool inFront = true;
-  for (int i = 1; i <= u_maxSteps; ++i) {
-    float f = float(i) / float(u_maxSteps);
-    float t = min(u_maxDistance * f * f, end);  // fine steps near the surface, where most hits are
+  for (int i = 1; i <= steps; ++i) {
+    float f = float(i) / float(steps);
+    float t = min(reach * f * f, end);  // fine steps near the surface, where most hits are
     float behind;
     vec2 uv;
     int seen = behindAt(ray, t, size, behind, uv);
