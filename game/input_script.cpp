@@ -4,7 +4,7 @@
 
 #include "core/error.h"
 #include "core/paths.h"
-#include "scene/json_check.h"
+#include "core/json_check.h"
 
 namespace terrasol {
 namespace {

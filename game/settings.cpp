@@ -3,7 +3,7 @@
 #include <cstdlib>
 
 #include "core/error.h"
-#include "scene/json_check.h"
+#include "core/json_check.h"
 
 namespace terrasol {
 namespace {

@@ -12,7 +12,7 @@
 
 #include "core/error.h"
 #include "core/paths.h"
-#include "scene/json_check.h"
+#include "core/json_check.h"
 
 namespace terrasol {
 namespace {

@@ -1,4 +1,4 @@
-#include "scene/json_check.h"
+#include "core/json_check.h"
 
 #include <algorithm>
 #include <cmath>
