@@ -22,6 +22,13 @@ PackBuilder& PackBuilder::text(const std::string& file, const std::string& conte
   return *this;
 }
 
+PackBuilder& PackBuilder::asset(const std::string& path, const std::string& contents) {
+  const std::filesystem::path file = dir_ / "assets" / "minecraft" / path;
+  std::filesystem::create_directories(file.parent_path());
+  std::ofstream(file, std::ios::binary) << contents;
+  return *this;
+}
+
 Image solidImage(int w, int h, std::uint8_t r, std::uint8_t g, std::uint8_t b, std::uint8_t a) {
   Image image(w, h);
   for (std::size_t i = 0; i < image.rgba.size(); i += 4) {

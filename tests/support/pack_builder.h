@@ -17,6 +17,8 @@ class PackBuilder {
   // Writes assets/minecraft/textures/<blocksDir>/<file> (an image or raw text).
   PackBuilder& image(const std::string& file, const Image& image);
   PackBuilder& text(const std::string& file, const std::string& contents);
+  // Writes assets/minecraft/<path> ("models/block/slab.json", "blockstates/oak_slab.json").
+  PackBuilder& asset(const std::string& path, const std::string& contents);
   const std::filesystem::path& dir() const { return dir_; }
   std::filesystem::path file(const std::string& name) const { return blockDir_ / name; }
 

@@ -1,0 +1,70 @@
+#pragma once
+// Minecraft's blockstates format (assets/<namespace>/blockstates/<block>.json, Java 1.20 semantics):
+// which models a block's state is drawn with. `variants` are keyed by property lists
+// ("facing=east,half=bottom", "" for none), each a model or a weighted list of them; `multipart`
+// lists parts applied where their `when` holds (values joined by '|', "OR" and "AND" lists). A
+// weighted pick is seeded by the block's position, so a world looks the same every time. Plain C++.
+
+#include <cstdint>
+#include <glm/vec3.hpp>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+namespace terrasol {
+
+class PackStack;
+
+// A state's property values by name: {"facing": "east", "half": "bottom"}.
+using StateValues = std::map<std::string, std::string>;
+
+// One model as a blockstate places it: turned about x, then y, in 90-degree steps.
+struct ModelPlacement {
+  std::string model;  // resource name: "block/oak_stairs"
+  int x = 0, y = 0;   // 0, 90, 180 or 270
+  bool uvlock = false;
+  int weight = 1;
+  bool operator==(const ModelPlacement&) const = default;
+};
+
+// A multipart part's `when`: every listed property takes one of its values, or (OR / AND) the
+// children do. No condition at all holds always.
+struct StateCondition {
+  enum class Kind : std::uint8_t { Always, Values, Or, And } kind = Kind::Always;
+  std::map<std::string, std::vector<std::string>> values;
+  std::vector<StateCondition> children;
+  bool holds(const StateValues& state) const;
+};
+
+class BlockStates {
+ public:
+  // Throws Error naming `file` and the key for a malformed document.
+  static BlockStates parse(const nlohmann::json& root, const std::string& file);
+  // assets/minecraft/blockstates/<block>.json from the topmost pack that has it.
+  static BlockStates load(const PackStack& packs, const std::string& block);
+
+  // The models `state` is drawn with at block position `pos`: the first variant (in the file's key
+  // order) whose every property matches, or every multipart part that holds; each a weighted pick.
+  std::vector<ModelPlacement> select(const StateValues& state, glm::ivec3 pos) const;
+
+  // Every model any state may use.
+  std::vector<std::string> models() const;
+
+ private:
+  struct Variant {
+    StateValues when;
+    std::vector<ModelPlacement> choices;
+  };
+  struct Part {
+    StateCondition when;
+    std::vector<ModelPlacement> choices;
+  };
+  std::vector<Variant> variants_;
+  std::vector<Part> parts_;
+};
+
+// Minecraft's position seed for random model picks (Mth.getSeed).
+std::int64_t positionSeed(glm::ivec3 pos);
+
+}  // namespace terrasol
