@@ -12,12 +12,11 @@
 #include <string>
 #include <vector>
 
+#include "core/state_values.h"
+
 namespace terrasol {
 
 class PackStack;
-
-// A state's property values by name: {"facing": "east", "half": "bottom"}.
-using StateValues = std::map<std::string, std::string>;
 
 // One model as a blockstate places it: turned about x, then y, in 90-degree steps.
 struct ModelPlacement {

@@ -36,8 +36,9 @@ SceneWorld::SceneWorld(const SceneFile& scene, const BlockRegistry& blocks)
     }
   for (const SceneEdit& edit : scene.edits) {
     bool found = false;
-    const BlockId block = blocks.find(edit.block, &found);
-    if (!found) throw Error(sceneError(scene, edit.key + ".block", "unknown block \"" + edit.block + "\""));
+    std::string problem;
+    const BlockId block = blocks.find(edit.block, &found, &problem);
+    if (!found) throw Error(sceneError(scene, edit.key + ".block", problem));
     const bool now = edit.atFrame < 0;
     if (now) forEachCell(edit, [&](const BlockPos& p) { world_.setBlock(p, block); });
     edits_.push_back({edit, block, now});

@@ -8,7 +8,9 @@
 
 namespace terrasol {
 
-using BlockId = std::uint16_t;  // index into the BlockRegistry; 0 is always air
+// A block state: what the world stores in a cell. Each block has one state per combination of its
+// properties' values (one for a block without properties), numbered consecutively; 0 is always air.
+using BlockId = std::uint16_t;
 inline constexpr BlockId kAir = 0;
 
 enum class BlockShape : std::uint8_t { None, Cube, Cross, Liquid, Torch };
@@ -19,8 +21,19 @@ enum class Tint : std::uint8_t { None, Grass, Foliage, Water };
 // candidates, first found in the packs wins (e.g. "short_grass" then its pre-1.20.3 name "grass").
 using FaceTextures = std::array<std::vector<std::string>, 6>;
 
+// A property and the values it takes ("axis": "y", "x", "z"); the first is the default unless the
+// block names another.
+struct BlockProperty {
+  std::string name;
+  std::vector<std::string> values;
+};
+
 struct BlockType {
   std::string name;
+  std::vector<BlockProperty> properties;  // by name, as Minecraft lists them
+  BlockId firstState = 0;                 // its states are firstState .. firstState + stateCount - 1
+  std::uint16_t stateCount = 1;
+  BlockId defaultState = 0;
   BlockShape shape = BlockShape::None;
   RenderLayer layer = RenderLayer::None;
   std::uint8_t opacity = 0;   // light lost passing through, 0..15; 15 stops light

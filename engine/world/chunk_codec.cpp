@@ -72,9 +72,10 @@ std::vector<std::uint8_t> encodeChunk(const Chunk& chunk, const BlockRegistry& b
   std::vector<std::uint8_t> raw{kVersion};
   put16(raw, static_cast<std::uint16_t>(palette.size()));
   for (BlockId id : palette) {
-    const std::string& name = blocks[id].name;
-    raw.push_back(static_cast<std::uint8_t>(std::min<std::size_t>(name.size(), 255)));
-    raw.insert(raw.end(), name.begin(), name.begin() + std::min<std::ptrdiff_t>(name.size(), 255));
+    const std::string name = blocks.stateName(id);
+    if (name.size() > 255) throw Error("block state name longer than 255 bytes: " + name);
+    raw.push_back(static_cast<std::uint8_t>(name.size()));
+    raw.insert(raw.end(), name.begin(), name.end());
   }
   raw.insert(raw.end(), body.begin(), body.end());
 

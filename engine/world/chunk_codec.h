@@ -1,6 +1,7 @@
 #pragma once
-// A chunk's blocks as bytes, for saves. Block ids are stored through a palette of block names, so a
-// save survives block ids being renumbered between versions.
+// A chunk's blocks as bytes, for saves. Block states are stored through a palette of their names
+// ("stone", "oak_log[axis=x]"), so a save survives states being renumbered between versions, and a
+// name saved before its block had properties opens as the block's default state.
 //
 // Uncompressed layout (little-endian), then compressed with zstd as one frame:
 //   u8 version (1)
@@ -20,8 +21,9 @@ namespace terrasol {
 
 std::vector<std::uint8_t> encodeChunk(const Chunk& chunk, const BlockRegistry& blocks);
 
-// Throws Error saying what is wrong (bad frame, wrong size, palette index out of range). Names not in
-// the registry become air and are listed in `unknownBlocks` when it is given.
+// Throws Error saying what is wrong (bad frame, wrong size, palette index out of range). Names of
+// blocks not in the registry become air, unknown properties or values the block's default state; both
+// are listed in `unknownBlocks` when it is given.
 std::unique_ptr<Chunk> decodeChunk(ChunkPos pos, const std::uint8_t* data, std::size_t size,
                                    const BlockRegistry& blocks, std::vector<std::string>* unknownBlocks = nullptr);
 

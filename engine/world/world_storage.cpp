@@ -44,7 +44,13 @@ std::unique_ptr<Chunk> WorldStorage::load(ChunkPos pos) {
   try {
     std::vector<std::string> unknown;
     auto chunk = decodeChunk(pos, payload->data(), payload->size(), *blocks_, &unknown);
-    for (const auto& name : unknown) problems_.push_back(where + ": unknown block '" + name + "' loaded as air");
+    for (const auto& name : unknown) {
+      // A known block with an unknown property or value opens in its default state.
+      const BlockId state = blocks_->find(name);
+      problems_.push_back(state == kAir ? where + ": unknown block '" + name + "' loaded as air"
+                                        : where + ": unknown block state '" + name + "' loaded as " +
+                                              blocks_->stateName(state));
+    }
     chunk->setModified(false);
     return chunk;
   } catch (const Error& e) {

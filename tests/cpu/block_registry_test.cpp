@@ -3,6 +3,7 @@
 #include "core/error.h"
 #include "support/error_of.h"
 #include "support/world_support.h"
+#include "world/chunk_codec.h"
 
 namespace terrasol {
 namespace {
@@ -12,9 +13,10 @@ using testing::defaultBlocks;
 TEST(BlockRegistry, ShipsEveryRequiredBlockWithVanillaLightValues) {
   const BlockRegistry& blocks = defaultBlocks();
   for (const char* name :
-       {"air", "stone", "cobblestone", "dirt", "grass_block", "sand", "gravel", "bedrock", "water", "lava", "ice",
-        "snow", "oak_log", "oak_leaves", "oak_planks", "glass", "short_grass", "dandelion", "poppy", "coal_ore",
-        "iron_ore", "gold_ore", "iron_block", "gold_block", "copper_block", "glowstone", "torch"}) {
+       {"air",        "stone",      "cobblestone", "dirt",         "grass_block", "sand",     "gravel",
+        "bedrock",    "water",      "lava",        "ice",          "snow",        "oak_log",  "oak_leaves",
+        "oak_planks", "glass",      "short_grass", "dandelion",    "poppy",       "coal_ore", "iron_ore",
+        "gold_ore",   "iron_block", "gold_block",  "copper_block", "glowstone",   "torch"}) {
     EXPECT_NO_THROW(blocks.id(name)) << name;
   }
   EXPECT_EQ(blocks.id("air"), kAir);
@@ -42,28 +44,153 @@ TEST(BlockRegistry, ShipsEveryRequiredBlockWithVanillaLightValues) {
   EXPECT_EQ(blocks.opacities().size(), blocks.size());
 }
 
-std::string errorOf(const std::string& json) { return testing::errorOf([&] { BlockRegistry::fromJson(json, "test/blocks.json"); }); }
+std::string errorOf(const std::string& json) {
+  return testing::errorOf([&] { BlockRegistry::fromJson(json, "test/blocks.json"); });
+}
 
 TEST(BlockRegistry, BadDataNamesTheFileBlockAndKey) {
   const std::string air = R"({"name":"air","shape":"none"})";
   auto with = [&](const std::string& block) { return R"({"blocks":[)" + air + "," + block + "]}"; };
-  EXPECT_NE(errorOf("{\"blocks\": [\n  {\"name\": \"air\"\n").find("test/blocks.json: invalid JSON"), std::string::npos);
+  EXPECT_NE(errorOf("{\"blocks\": [\n  {\"name\": \"air\"\n").find("test/blocks.json: invalid JSON"),
+            std::string::npos);
   EXPECT_NE(errorOf("{\"blocks\": [\n  {\"name\": \"air\"\n").find("line 3"), std::string::npos)
       << errorOf("{\"blocks\": [\n  {\"name\": \"air\"\n");
-  EXPECT_NE(errorOf(with(R"({"name":"x","opacity":16,"textures":{"all":"x"}})")).find("blocks[1] (x).opacity must be"),
+  EXPECT_NE(errorOf(with(R"({"name":"x","opacity":16,"textures":{"all":"x"}})"))
+                .find("blocks[1] (x).opacity must be"),
             std::string::npos);
-  EXPECT_NE(errorOf(with(R"({"name":"x","shape":"sphere","textures":{"all":"x"}})")).find("blocks[1] (x).shape is 'sphere'"),
+  EXPECT_NE(errorOf(with(R"({"name":"x","shape":"sphere","textures":{"all":"x"}})"))
+                .find("blocks[1] (x).shape is 'sphere'"),
             std::string::npos);
   EXPECT_NE(errorOf(with(R"({"name":"x","textures":{"top":"x"}})")).find("leaves a face without a texture"),
             std::string::npos);
-  EXPECT_NE(errorOf(with(R"({"name":"x","textures":{"al":"x"}})")).find("unknown face 'al'"), std::string::npos);
+  EXPECT_NE(errorOf(with(R"({"name":"x","textures":{"al":"x"}})")).find("unknown face 'al'"),
+            std::string::npos);
   EXPECT_NE(errorOf(with(R"({"name":"x"})")).find("blocks[1] (x) needs \"textures\""), std::string::npos);
-  EXPECT_NE(errorOf(with(R"({"name":"air","shape":"none"})")).find("duplicate block name 'air'"), std::string::npos);
-  EXPECT_NE(errorOf(R"({"blocks":[{"name":"stone","textures":{"all":"stone"}}]})").find("blocks[0] must be \"air\""),
+  EXPECT_NE(errorOf(with(R"({"name":"air","shape":"none"})")).find("duplicate block name 'air'"),
+            std::string::npos);
+  EXPECT_NE(errorOf(R"({"blocks":[{"name":"stone","textures":{"all":"stone"}}]})")
+                .find("blocks[0] must be \"air\""),
             std::string::npos);
   EXPECT_NE(errorOf(R"([1,2])").find("\"blocks\" array"), std::string::npos);
-  EXPECT_NE(errorOf(with(R"({"name":"x","emission":"bright","textures":{"all":"x"}})")).find("emission must be"),
+  EXPECT_NE(
+      errorOf(with(R"({"name":"x","emission":"bright","textures":{"all":"x"}})")).find("emission must be"),
+      std::string::npos);
+}
+
+// Blocks with properties: one state per combination, numbered after the states before them, the last
+// property counting fastest, named as Minecraft's commands name them.
+const char* kStairsJson = R"({"blocks": [
+    {"name": "air", "shape": "none"},
+    {"name": "stone", "textures": {"all": "stone"}},
+    {"name": "oak_stairs", "textures": {"all": "oak_planks"}, "opacity": 0,
+     "properties": {"facing": ["north", "south", "west", "east"], "half": ["top", "bottom"],
+                    "waterlogged": ["false", "true"]},
+     "default": {"half": "bottom"}},
+    {"name": "glass", "layer": "cutout", "opacity": 0, "textures": {"all": "glass"}}]})";
+
+TEST(BlockRegistry, BlocksWithPropertiesHaveAStateForEachCombination) {
+  const BlockRegistry blocks = BlockRegistry::fromJson(kStairsJson, "test/blocks.json");
+  EXPECT_EQ(blocks.blockCount(), 4u);
+  EXPECT_EQ(blocks.size(), 1u + 1u + 16u + 1u);
+  const BlockType& stairs = blocks[blocks.id("oak_stairs")];
+  EXPECT_EQ(stairs.firstState, 2);
+  EXPECT_EQ(stairs.stateCount, 16);
+  EXPECT_EQ(blocks.id("glass"), 18) << "the next block's state follows the stairs' sixteen";
+  // The default: half=bottom as named, the others their first value.
+  EXPECT_EQ(blocks.stateName(blocks.id("oak_stairs")),
+            "oak_stairs[facing=north,half=bottom,waterlogged=false]");
+  const BlockId eastTop = blocks.id("oak_stairs[half=top,facing=east]");
+  EXPECT_EQ(blocks.stateName(eastTop), "oak_stairs[facing=east,half=top,waterlogged=false]");
+  EXPECT_EQ(blocks.stateValues(eastTop),
+            (StateValues{{"facing", "east"}, {"half", "top"}, {"waterlogged", "false"}}));
+  EXPECT_EQ(blocks[eastTop].name, "oak_stairs");
+  EXPECT_EQ(blocks.with(eastTop, "half", "bottom"), blocks.id("oak_stairs[facing=east]"));
+  EXPECT_FALSE(blocks.with(eastTop, "shape", "straight"));
+  EXPECT_FALSE(blocks.with(eastTop, "half", "middle"));
+  EXPECT_FALSE(blocks.with(blocks.id("stone"), "half", "top"));
+  // Every state's name gives the state back, and its tables are the block's.
+  for (BlockId s = 0; s < blocks.size(); ++s) {
+    EXPECT_EQ(blocks.id(blocks.stateName(s)), s) << blocks.stateName(s);
+    EXPECT_EQ(blocks.opacities()[s], blocks[s].opacity);
+  }
+  EXPECT_EQ(blocks.stateName(blocks.id("stone")), "stone") << "no properties, no brackets";
+}
+
+TEST(BlockRegistry, BadStateNamesSayWhatIsWrong) {
+  const BlockRegistry blocks = BlockRegistry::fromJson(kStairsJson, "test/blocks.json");
+  const auto error = [&](const std::string& name) { return testing::errorOf([&] { blocks.id(name); }); };
+  EXPECT_EQ(error("oak_stair"), "unknown block 'oak_stair'");
+  EXPECT_EQ(error("oak_stairs[facing=up]"),
+            "'oak_stairs[facing=up]': facing is one of north, south, west, east");
+  EXPECT_EQ(error("oak_stairs[shape=straight]"),
+            "'oak_stairs[shape=straight]': oak_stairs has no property 'shape'");
+  EXPECT_EQ(error("oak_stairs[facing]"), "'oak_stairs[facing]': expected property=value, not 'facing'");
+  EXPECT_EQ(error("oak_stairs[facing=east"), "'oak_stairs[facing=east': expected ']' at the end");
+  bool found = true;
+  EXPECT_EQ(blocks.find("oak_stairs[facing=up]", &found), blocks.id("oak_stairs")) << "the default stands in";
+  EXPECT_FALSE(found);
+  EXPECT_EQ(blocks.find("nothing", &found), kAir);
+  EXPECT_FALSE(found);
+}
+
+TEST(BlockRegistry, BadPropertiesNameTheBlockAndKey) {
+  const std::string air = R"({"name":"air","shape":"none"})";
+  auto with = [&](const std::string& block) { return R"({"blocks":[)" + air + "," + block + "]}"; };
+  const auto error = [&](const std::string& block) { return errorOf(with(block)); };
+  EXPECT_NE(error(R"({"name":"x","textures":{"all":"x"},"properties":{"axis":[]}})")
+                .find("blocks[1] (x).properties.axis must be a non-empty array"),
             std::string::npos);
+  EXPECT_NE(
+      error(R"({"name":"x","textures":{"all":"x"},"properties":{"axis":["y","y"]}})").find("lists 'y' twice"),
+      std::string::npos);
+  EXPECT_NE(
+      error(R"({"name":"x","textures":{"all":"x"},"properties":{"axis":["a=b"]}})").find("may not contain"),
+      std::string::npos);
+  EXPECT_NE(error(R"({"name":"x","textures":{"all":"x"},"properties":{"axis":["y"]},"default":{"axis":"x"}})")
+                .find("blocks[1] (x).default.axis must be one of the property's values"),
+            std::string::npos);
+  EXPECT_NE(
+      error(R"({"name":"x","textures":{"all":"x"},"properties":{"axis":["y"]},"default":{"facing":"x"}})")
+          .find("default.facing is not one of its properties"),
+      std::string::npos);
+  EXPECT_NE(
+      error(R"({"name":"x","textures":{"all":"x"},"default":{"axis":"x"}})").find("needs \"properties\""),
+      std::string::npos);
+  EXPECT_NE(error(R"({"name":"x","textures":{"all":"x"},"properties":{"a":["0","1","2","3","4","5","6","7"],
+      "b":["0","1","2","3","4","5","6","7"],"c":["0","1","2","3","4","5","6","7"],"d":["0","1","2","3","4","5","6","7"],
+      "e":["0","1"]}})")
+                .find("more than 4096 states"),
+            std::string::npos);
+}
+
+// A save keeps states by name: a chunk saved before a block had properties opens with that block in
+// its default state, and states round-trip by name even when ids are renumbered.
+TEST(BlockRegistry, SavesKeepStatesByNameAcrossRenumbering) {
+  const BlockRegistry before = BlockRegistry::fromJson(R"({"blocks": [{"name": "air", "shape": "none"},
+      {"name": "oak_stairs", "textures": {"all": "oak_planks"}}, {"name": "glass", "layer": "cutout", "textures": {"all": "glass"}}]})",
+                                                       "before.json");
+  Chunk old({0, 0});
+  old.set(1, 64, 2, before.id("oak_stairs"));
+  old.set(2, 64, 2, before.id("glass"));
+  const std::vector<std::uint8_t> saved = encodeChunk(old, before);
+
+  const BlockRegistry now = BlockRegistry::fromJson(kStairsJson, "test/blocks.json");
+  std::vector<std::string> unknown;
+  const auto opened = decodeChunk({0, 0}, saved.data(), saved.size(), now, &unknown);
+  EXPECT_EQ(opened->get(1, 64, 2), now.id("oak_stairs"));
+  EXPECT_EQ(now.stateName(opened->get(1, 64, 2)), "oak_stairs[facing=north,half=bottom,waterlogged=false]");
+  EXPECT_EQ(opened->get(2, 64, 2), now.id("glass")) << "glass moved from id 2 to 18";
+  EXPECT_TRUE(unknown.empty());
+
+  Chunk placed({0, 0});
+  placed.set(3, 70, 3, now.id("oak_stairs[facing=west,half=top,waterlogged=true]"));
+  const std::vector<std::uint8_t> bytes = encodeChunk(placed, now);
+  const auto back = decodeChunk({0, 0}, bytes.data(), bytes.size(), now);
+  EXPECT_EQ(now.stateName(back->get(3, 70, 3)), "oak_stairs[facing=west,half=top,waterlogged=true]");
+  // Opened by a registry where the stairs lost a value: the default stands in, and is reported.
+  const auto older = decodeChunk({0, 0}, bytes.data(), bytes.size(), before, &unknown);
+  EXPECT_EQ(older->get(3, 70, 3), before.id("oak_stairs"));
+  EXPECT_EQ(unknown, std::vector<std::string>{"oak_stairs[facing=west,half=top,waterlogged=true]"});
 }
 
 }  // namespace

@@ -56,7 +56,7 @@ TEST(SceneWorld, AnUnknownBlockNamesTheEditKey) {
     SceneWorld world(scene, defaultBlocks());
     FAIL() << "no error";
   } catch (const Error& e) {
-    EXPECT_NE(std::string(e.what()).find("test.json: world.edits[3].block: unknown block \"unobtainium\""),
+    EXPECT_NE(std::string(e.what()).find("test.json: world.edits[3].block: unknown block 'unobtainium'"),
               std::string::npos)
         << e.what();
   }
