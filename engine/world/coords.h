@@ -47,6 +47,8 @@ constexpr int sectionOf(int y) { return (y - kMinY) >> 4; }  // valid for y in w
 // The six face directions, in the order neighbours and faces are numbered everywhere.
 enum class Direction : std::uint8_t { West, East, Down, Up, North, South };  // -x +x -y +y -z +z
 inline constexpr BlockPos kDirectionOffsets[6] = {{-1, 0, 0}, {1, 0, 0}, {0, -1, 0}, {0, 1, 0}, {0, 0, -1}, {0, 0, 1}};
+// The neighbour's side that touches side `d`: west and east, down and up, north and south.
+constexpr Direction opposite(Direction d) { return static_cast<Direction>(static_cast<int>(d) ^ 1); }
 
 }  // namespace terrasol
 

@@ -1,0 +1,70 @@
+#include "world/face_coverage.h"
+
+#include <algorithm>
+
+namespace terrasol {
+namespace {
+
+// The side's two axes (x, y, z order) and the axis across it.
+struct SideAxes {
+  int a, b, across;
+  bool atMax;  // the side lies at 16 on `across` (east, up, south), else at 0
+};
+
+constexpr SideAxes axesOf(Direction side) {
+  switch (side) {
+    case Direction::West:
+      return {1, 2, 0, false};
+    case Direction::East:
+      return {1, 2, 0, true};
+    case Direction::Down:
+      return {0, 2, 1, false};
+    case Direction::Up:
+      return {0, 2, 1, true};
+    case Direction::North:
+      return {0, 1, 2, false};
+    case Direction::South:
+      return {0, 1, 2, true};
+  }
+  return {0, 1, 2, false};
+}
+
+}  // namespace
+
+FaceCoverage FaceCoverage::fullCube() {
+  FaceCoverage c;
+  for (auto& side : c.sides_) side.set();
+  return c;
+}
+
+FaceCoverage FaceCoverage::of(std::span<const ShapeBox> boxes) {
+  FaceCoverage c;
+  for (const ShapeBox& box : boxes) {
+    for (int d = 0; d < 6; ++d) {
+      const SideAxes s = axesOf(static_cast<Direction>(d));
+      const bool touches = s.atMax ? box.to[static_cast<std::size_t>(s.across)] >= 16
+                                   : box.from[static_cast<std::size_t>(s.across)] <= 0;
+      if (!touches) continue;
+      const int a0 = std::clamp(box.from[static_cast<std::size_t>(s.a)], 0, 16);
+      const int a1 = std::clamp(box.to[static_cast<std::size_t>(s.a)], 0, 16);
+      const int b0 = std::clamp(box.from[static_cast<std::size_t>(s.b)], 0, 16);
+      const int b1 = std::clamp(box.to[static_cast<std::size_t>(s.b)], 0, 16);
+      for (int a = a0; a < a1; ++a)
+        for (int b = b0; b < b1; ++b)
+          c.sides_[static_cast<std::size_t>(d)].set(static_cast<std::size_t>(a * 16 + b));
+    }
+  }
+  return c;
+}
+
+bool FaceCoverage::covers(Direction side, const SideRect& rect) const {
+  const auto& bits = sides_[static_cast<std::size_t>(side)];
+  if (bits.all()) return true;
+  for (int a = std::max(rect.a0, 0); a < std::min(rect.a1, 16); ++a)
+    for (int b = std::max(rect.b0, 0); b < std::min(rect.b1, 16); ++b) {
+      if (!bits.test(static_cast<std::size_t>(a * 16 + b))) return false;
+    }
+  return true;
+}
+
+}  // namespace terrasol
