@@ -13,6 +13,7 @@
 #include "assets/resource_pack.h"
 #include "core/error.h"
 #include "core/json_check.h"
+#include "core/paths.h"
 #include "support/pack_builder.h"
 
 namespace terrasol {
@@ -363,6 +364,73 @@ TEST(ModelBake, FaceRotationAndTurnedElements) {
   // Turned a quarter clockwise: the corner that showed the texture's top left shows its bottom left.
   EXPECT_EQ(spun[0].uvs[0], glm::vec2(0, 1));
   EXPECT_EQ(spun[0].uvs[3], glm::vec2(0, 0));
+}
+
+// The default pack's parent models (written for Terrasol in Minecraft's format): each loads and bakes
+// with the textures a child gives it, into the faces its shape has, each inside its cell but for the
+// wall torch leaning out of it.
+TEST(BlockModel, TheDefaultPackShipsTheParentsShapedBlocksNeed) {
+  PackBuilder children("default_children");
+  const std::map<std::string, std::pair<std::string, std::size_t>> kChildren = {
+      // child: {parent, faces}
+      {"t_cube", {"cube_all", 6}},
+      {"t_column", {"cube_column", 6}},
+      {"t_bottom_top", {"cube_bottom_top", 6}},
+      {"t_orientable", {"orientable", 6}},
+      {"t_cross", {"cross", 4}},
+      {"t_slab", {"slab", 6}},
+      {"t_slab_top", {"slab_top", 6}},
+      {"t_stairs", {"stairs", 11}},
+      {"t_inner_stairs", {"inner_stairs", 15}},
+      {"t_outer_stairs", {"outer_stairs", 11}},
+      {"t_fence_post", {"fence_post", 6}},
+      {"t_fence_side", {"fence_side", 10}},
+      {"t_pane_post", {"template_glass_pane_post", 2}},
+      {"t_pane_side", {"template_glass_pane_side", 5}},
+      {"t_pane_noside", {"template_glass_pane_noside", 1}},
+      {"t_wall_post", {"template_wall_post", 6}},
+      {"t_wall_side", {"template_wall_side", 5}},
+      {"t_wall_tall", {"template_wall_side_tall", 5}},
+      {"t_door_bl", {"door_bottom_left", 6}},
+      {"t_door_br", {"door_bottom_right", 6}},
+      {"t_door_tl", {"door_top_left", 6}},
+      {"t_door_tr", {"door_top_right", 6}},
+      {"t_trap_bottom", {"template_trapdoor_bottom", 6}},
+      {"t_trap_top", {"template_trapdoor_top", 6}},
+      {"t_trap_open", {"template_trapdoor_open", 6}},
+      {"t_ladder", {"ladder", 2}},
+      {"t_carpet", {"carpet", 6}},
+      {"t_snow2", {"snow_height2", 6}},
+      {"t_snow14", {"snow_height14", 6}},
+      {"t_farmland", {"template_farmland", 6}},
+      {"t_torch", {"template_torch", 6}},
+      {"t_wall_torch", {"template_torch_wall", 6}}};
+  const std::string everyReference =
+      R"("textures": {"all": "block/stone", "end": "block/stone", "side": "block/stone",
+      "bottom": "block/stone", "top": "block/stone", "front": "block/stone", "cross": "block/poppy",
+      "texture": "block/stone", "pane": "block/glass", "edge": "block/glass", "wall": "block/stone",
+      "wool": "block/stone", "dirt": "block/dirt", "torch": "block/torch"})";
+  for (const auto& [child, parent] : kChildren) {
+    children.asset("models/block/" + child + ".json",
+                   R"({"parent": "block/)" + parent.first + R"(", )" + everyReference + "}");
+  }
+  const PackStack packs = stackOf({resourcePackDir() / "default", children.dir()});
+  ModelLibrary library(packs);
+  for (const auto& [child, parent] : kChildren) {
+    const std::vector<BakedQuad> quads = bakeModel(library.model("block/" + child), {});
+    EXPECT_EQ(quads.size(), parent.second) << parent.first;
+    expectFrontFacing(quads);
+    for (const BakedQuad& q : quads) {
+      EXPECT_NE(q.texture, kMissingTexture) << parent.first;
+      if (parent.first == "template_torch_wall") continue;
+      for (const glm::vec3 c : q.corners) {
+        EXPECT_TRUE(glm::all(glm::greaterThanEqual(c, glm::vec3(-1e-5f))) &&
+                    glm::all(glm::lessThanEqual(c, glm::vec3(1.0f + 1e-5f))))
+            << parent.first << " " << c.x << " " << c.y << " " << c.z;
+      }
+    }
+  }
+  EXPECT_TRUE(library.missingTextures().empty());
 }
 
 TEST(BlockStates, PositionSeedIsMinecrafts) {
