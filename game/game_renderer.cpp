@@ -39,7 +39,7 @@ std::unique_ptr<BlockAssets> BlockAssets::load(const BlockRegistry& blocks, cons
 BlockAssets::BlockAssets(const BlockRegistry& blocks, const PackStack& stack, std::vector<std::string> names)
     : atlas(buildBlockAtlas(blocks, stack)),
       tints(loadTints(stack, atlas.problems)),
-      table(blocks, [this](BlockId id, int face) { return atlas.textureOf(id, face); }),
+      table(meshTableOf(blocks, atlas)),
       packNames(std::move(names)) {}
 
 GameRenderer::GameRenderer(const BlockRegistry& blocks, const GameSettings& settings)

@@ -121,6 +121,7 @@ class Mesher {
             case BlockShape::Liquid: cube(x, y, z, id, e); break;
             case BlockShape::Cross: cross(x, y, z, e); break;
             case BlockShape::Torch: torch(x, y, z, e); break;
+            case BlockShape::Model: model(x, y, z, e); break;
             case BlockShape::None: break;
           }
         }
@@ -295,6 +296,30 @@ class Mesher {
     flatQuad(out, {{{x0, y1, z1}, {x1, y1, z1}, {x1, y1, z0}, {x0, y1, z0}}}, e, 3, top, light);   // Up
   }
 
+  // A model block's quads, each lit flat by the cell it faces: the neighbour across its cullface,
+  // else its own cell. Left out against an opaque cube across the cullface.
+  void model(int x, int y, int z, const BlockMeshTable::Entry& e) {
+    const int here = SectionSnapshot::index(x, y, z);
+    auto& out = layer(e);
+    for (const ModelQuad& m : e.quads) {
+      int lit = here;
+      if (m.cullface >= 0) {
+        const int neighbour = here + kNeighbour[static_cast<std::size_t>(m.cullface)];
+        if (opaqueAt(neighbour)) continue;
+        lit = neighbour;
+      }
+      const std::uint32_t light = s_.light[static_cast<std::size_t>(lit)] * 4 - SectionSnapshot::kOpen;
+      const std::uint32_t mat = static_cast<std::uint32_t>(m.texture) | static_cast<std::uint32_t>(m.face) << 16 |
+                                (m.tinted ? static_cast<std::uint32_t>(e.tint) : 0u) << 20;
+      PackedVertex* q = out.quad();
+      for (std::size_t c = 0; c < 4; ++c) {
+        q[c] = {PackedVertex::packPosition(x * 32 + m.corners32[c][0], y * 32 + m.corners32[c][1],
+                                           z * 32 + m.corners32[c][2]),
+                mat, light, PackedVertex::packUv(m.uvs16[c][0], m.uvs16[c][1])};
+      }
+    }
+  }
+
   const SectionSnapshot& s_;
   const BlockMeshTable& table_;
   SectionMesh mesh_;
@@ -316,7 +341,8 @@ MeshLayer layerOf(RenderLayer layer) {
 
 }  // namespace
 
-BlockMeshTable::BlockMeshTable(const BlockRegistry& blocks, const std::function<std::uint16_t(BlockId, int)>& textureOf) {
+BlockMeshTable::BlockMeshTable(const BlockRegistry& blocks, const std::function<std::uint16_t(BlockId, int)>& textureOf,
+                               const std::function<std::vector<ModelQuad>(BlockId)>& modelQuadsOf) {
   entries_.resize(blocks.size());
   for (BlockId id = 0; id < blocks.size(); ++id) {
     const BlockType& type = blocks[id];
@@ -329,6 +355,10 @@ BlockMeshTable::BlockMeshTable(const BlockRegistry& blocks, const std::function<
                  (type.shape == BlockShape::Cube && type.opacity == 0);
     e.foliage = type.shape == BlockShape::Cube && type.layer == RenderLayer::Cutout && !e.cullSame;
     e.tint = type.tint;
+    if (type.shape == BlockShape::Model) {
+      if (modelQuadsOf) e.quads = modelQuadsOf(id);
+      continue;
+    }
     for (int f = 0; f < 6; ++f) {
       e.texture[static_cast<std::size_t>(f)] = id == kAir ? 0 : textureOf(id, f);
       e.material[static_cast<std::size_t>(f)] = material(e, e.texture[static_cast<std::size_t>(f)], f);

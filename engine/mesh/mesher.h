@@ -24,12 +24,24 @@
 
 namespace terrasol {
 
+// One quad of a model block's state, baked (assets/model_bake.h) and given its atlas texture.
+struct ModelQuad {
+  std::array<std::array<int, 3>, 4> corners32;  // within the cell, 1/32 block, 0..32, counter-clockwise
+  std::array<std::array<int, 2>, 4> uvs16;      // 1/16 of the texture
+  std::uint16_t texture = 0;
+  std::uint8_t face = 3;     // kFaceBases' index nearest its normal: 0..5 a Direction, 6..9 a diagonal
+  std::int8_t cullface = -1;  // Direction: left out against an opaque cube on that side; -1 never
+  bool tinted = false;        // takes the block's tint (its model's tintindex)
+};
+
 // Per-block facts the mesher needs, looked up once per block id.
 class BlockMeshTable {
  public:
   // `textureOf(block, face)` is the texture id for a face (Direction order; cross plants and torches
-  // use face 0), e.g. the index of its texture in the atlas.
-  BlockMeshTable(const BlockRegistry& blocks, const std::function<std::uint16_t(BlockId, int)>& textureOf);
+  // use face 0), e.g. the index of its texture in the atlas; `modelQuadsOf(state)` a model block's
+  // quads.
+  BlockMeshTable(const BlockRegistry& blocks, const std::function<std::uint16_t(BlockId, int)>& textureOf,
+                 const std::function<std::vector<ModelQuad>(BlockId)>& modelQuadsOf = {});
 
   struct Entry {
     BlockShape shape;
@@ -40,6 +52,7 @@ class BlockMeshTable {
     Tint tint;
     std::array<std::uint16_t, 6> texture;
     std::array<std::uint32_t, 6> material;  // PackedVertex::material of each cube face
+    std::vector<ModelQuad> quads;           // shape Model
   };
   const Entry& operator[](BlockId id) const { return entries_[id]; }
 

@@ -1,18 +1,118 @@
 #include "scene/block_atlas.h"
 
+#include <cmath>
+#include <glm/geometric.hpp>
 #include <map>
 
+#include "assets/block_model.h"
+#include "assets/block_states.h"
+#include "assets/model_bake.h"
+#include "core/error.h"
+
 namespace terrasol {
+namespace {
+
+// A model's texture name ("block/oak_planks") as the block texture loader looks it up ("oak_planks").
+std::vector<std::string> candidatesOf(const std::string& texture) {
+  const std::string prefix = "block/";
+  return {texture.compare(0, prefix.size(), prefix) == 0 ? texture.substr(prefix.size()) : texture};
+}
+
+// What Minecraft draws for a block whose blockstates or models cannot be read: a cube of the
+// missing texture.
+BlockModel missingModel() {
+  BlockModel m;
+  m.name = "missing";
+  ModelElement& e = m.elements.emplace_back();
+  for (int f = 0; f < 6; ++f) {
+    ElementFace face;
+    face.uv = {0.0f, 0.0f, 16.0f, 16.0f};
+    face.texture = kMissingTexture;
+    face.cullface = static_cast<ModelFace>(f);
+    e.faces[static_cast<std::size_t>(f)] = face;
+  }
+  return m;
+}
+
+// Model blocks: each state's models, as its blockstates file picks them (at the origin: the
+// position-seeded pick is the same for every cell), baked. A block whose blockstates or models
+// cannot be read is a cube of the missing texture, with the reason among `problems`.
+std::vector<std::vector<BakedQuad>> bakeModelStates(const BlockRegistry& blocks, const PackStack& packs,
+                                                    std::vector<PackProblem>& problems) {
+  std::vector<std::vector<BakedQuad>> baked(blocks.size());
+  ModelLibrary library(packs);
+  for (std::size_t b = 0; b < blocks.blockCount(); ++b) {
+    const BlockType& type = blocks.block(b);
+    if (type.shape != BlockShape::Model) continue;
+    try {
+      const BlockStates states = BlockStates::load(packs, type.name);
+      for (BlockId s = type.firstState; s < type.firstState + type.stateCount; ++s) {
+        for (const ModelPlacement& p : states.select(blocks.stateValues(s), {0, 0, 0})) {
+          const std::vector<BakedQuad> quads = bakeModel(library.model(p.model), p);
+          baked[s].insert(baked[s].end(), quads.begin(), quads.end());
+        }
+      }
+    } catch (const Error& e) {
+      problems.push_back({PackProblem::Severity::Error, e.what()});
+      const std::vector<BakedQuad> cube = bakeModel(missingModel(), {});
+      for (BlockId s = type.firstState; s < type.firstState + type.stateCount; ++s) baked[s] = cube;
+    }
+  }
+  return baked;
+}
+
+int directionOf(ModelFace face) {
+  static constexpr Direction kDirections[] = {Direction::Down,  Direction::Up,   Direction::North,
+                                              Direction::South, Direction::West, Direction::East};
+  return static_cast<int>(kDirections[static_cast<int>(face)]);
+}
+
+// The mesher's face basis nearest a quad's normal: an axis, or one of the diagonal planes.
+std::uint8_t basisOf(glm::vec3 normal) {
+  std::uint8_t best = 3;
+  float bestDot = -2.0f;
+  for (std::uint8_t i = 0; i < 10; ++i) {
+    const float* n = kFaceBases[i].normal;
+    const float d = glm::dot(normal, glm::vec3(n[0], n[1], n[2]));
+    if (d > bestDot + 1e-4f) {
+      bestDot = d;
+      best = i;
+    }
+  }
+  return best;
+}
+
+ModelQuad meshQuad(const BakedQuad& q, std::uint16_t texture) {
+  ModelQuad m;
+  for (std::size_t c = 0; c < 4; ++c) {
+    for (int a = 0; a < 3; ++a) {
+      // 1/32 block; a corner outside the cell (a torch leaning from a wall) is pulled back into it.
+      m.corners32[c][static_cast<std::size_t>(a)] =
+          std::clamp(static_cast<int>(std::lround(q.corners[c][a] * 32.0f)), 0, 32);
+    }
+    m.uvs16[c] = {static_cast<int>(std::lround(q.uvs[c].x * 16.0f)),
+                  static_cast<int>(std::lround(q.uvs[c].y * 16.0f))};
+  }
+  m.texture = texture;
+  m.face = basisOf(q.normal);
+  m.cullface = q.cullface ? static_cast<std::int8_t>(directionOf(*q.cullface)) : std::int8_t{-1};
+  m.tinted = q.tintIndex >= 0;
+  return m;
+}
+
+}  // namespace
 
 BlockAtlas buildBlockAtlas(const BlockRegistry& blocks, const PackStack& packs) {
+  BlockAtlas result;
+  const std::vector<std::vector<BakedQuad>> baked = bakeModelStates(blocks, packs, result.problems);
   // Each distinct candidate list is loaded once, in a stable order.
   std::map<std::vector<std::string>, std::uint16_t> index;
   for (BlockId id = 0; id < blocks.size(); ++id) {
     for (const auto& face : blocks[id].textures) {
       if (!face.empty()) index.emplace(face, 0);
     }
+    for (const BakedQuad& q : baked[id]) index.emplace(candidatesOf(q.texture), 0);
   }
-  BlockAtlas result;
   std::vector<LoadedTexture> textures;
   for (auto& [candidates, texture] : index) {
     texture = static_cast<std::uint16_t>(textures.size());
@@ -21,12 +121,22 @@ BlockAtlas buildBlockAtlas(const BlockRegistry& blocks, const PackStack& packs) 
   if (textures.empty()) textures.push_back(loadBlockTexture(packs, {"missing"}, result.problems));
   result.atlas = buildAtlas(textures);
   result.faceTextures.resize(blocks.size());
-  for (BlockId id = 0; id < blocks.size(); ++id)
+  result.modelQuads.resize(blocks.size());
+  for (BlockId id = 0; id < blocks.size(); ++id) {
     for (int f = 0; f < 6; ++f) {
       const auto& face = blocks[id].textures[static_cast<std::size_t>(f)];
       result.faceTextures[id][static_cast<std::size_t>(f)] = face.empty() ? 0 : index.at(face);
     }
+    for (const BakedQuad& q : baked[id])
+      result.modelQuads[id].push_back(meshQuad(q, index.at(candidatesOf(q.texture))));
+  }
   return result;
+}
+
+BlockMeshTable meshTableOf(const BlockRegistry& blocks, const BlockAtlas& atlas) {
+  return BlockMeshTable(
+      blocks, [&](BlockId id, int face) { return atlas.textureOf(id, face); },
+      [&](BlockId id) { return atlas.modelQuads[id]; });
 }
 
 }  // namespace terrasol

@@ -1,6 +1,7 @@
 #pragma once
-// The atlas for a block registry: every face texture the blocks name, loaded through a pack stack,
-// and the atlas texture id of each block face (what the mesher writes into vertices).
+// The atlas for a block registry: every face texture the blocks name and every texture their models
+// use (a model block's blockstates and models, read through the pack stack), and the atlas texture id
+// of each block face and model quad (what the mesher writes into vertices).
 
 #include <array>
 #include <cstdint>
@@ -8,6 +9,7 @@
 
 #include "assets/atlas.h"
 #include "assets/resource_pack.h"
+#include "mesh/mesher.h"
 #include "world/block_registry.h"
 
 namespace terrasol {
@@ -15,10 +17,18 @@ namespace terrasol {
 struct BlockAtlas {
   Atlas atlas;
   std::vector<std::array<std::uint16_t, 6>> faceTextures;  // per block id, Direction order
+  std::vector<std::vector<ModelQuad>> modelQuads;          // per state of a model block
   std::vector<PackProblem> problems;                       // never fatal: missing textures show as such
-  std::uint16_t textureOf(BlockId id, int face) const { return faceTextures[id][static_cast<std::size_t>(face)]; }
+  std::uint16_t textureOf(BlockId id, int face) const {
+    return faceTextures[id][static_cast<std::size_t>(face)];
+  }
 };
 
+// A model block whose blockstates or models are missing or malformed is drawn as a cube of the
+// missing texture, with the reason among the problems (as Minecraft does).
 BlockAtlas buildBlockAtlas(const BlockRegistry& blocks, const PackStack& packs);
+
+// The mesher's table for `blocks` drawn with `atlas`'s textures and model quads.
+BlockMeshTable meshTableOf(const BlockRegistry& blocks, const BlockAtlas& atlas);
 
 }  // namespace terrasol

@@ -39,7 +39,7 @@ struct SceneRenderer::World {
   World(const SceneFile& scene, const PackStack& packs)
       : blocks(BlockRegistry::fromFile(resourcePackDir() / "default" / "blocks.json")),
         atlas(buildBlockAtlas(blocks, packs)),
-        table(blocks, [this](BlockId id, int face) { return atlas.textureOf(id, face); }),
+        table(meshTableOf(blocks, atlas)),
         world(scene, blocks) {}
   BlockRegistry blocks;
   BlockAtlas atlas;

@@ -13,7 +13,8 @@ namespace terrasol {
 using BlockId = std::uint16_t;
 inline constexpr BlockId kAir = 0;
 
-enum class BlockShape : std::uint8_t { None, Cube, Cross, Liquid, Torch };
+// Model: drawn by the models its blockstates file names (assets/minecraft/blockstates/<name>.json).
+enum class BlockShape : std::uint8_t { None, Cube, Cross, Liquid, Torch, Model };
 enum class RenderLayer : std::uint8_t { None, Opaque, Cutout, Translucent };
 enum class Tint : std::uint8_t { None, Grass, Foliage, Water };
 

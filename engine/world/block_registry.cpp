@@ -158,12 +158,13 @@ BlockType parseBlock(const json& block, const std::string& where) {
   BlockType type;
   type.name = block["name"].get<std::string>();
   const std::string at = where + " (" + type.name + ")";
-  static constexpr std::array<std::pair<const char*, BlockShape>, 5> kShapes = {
+  static constexpr std::array<std::pair<const char*, BlockShape>, 6> kShapes = {
       {{"none", BlockShape::None},
        {"cube", BlockShape::Cube},
        {"cross", BlockShape::Cross},
        {"liquid", BlockShape::Liquid},
-       {"torch", BlockShape::Torch}}};
+       {"torch", BlockShape::Torch},
+       {"model", BlockShape::Model}}};
   static constexpr std::array<std::pair<const char*, RenderLayer>, 3> kLayers = {
       {{"opaque", RenderLayer::Opaque},
        {"cutout", RenderLayer::Cutout},
@@ -173,11 +174,17 @@ BlockType parseBlock(const json& block, const std::string& where) {
 
   type.shape = block.contains("shape") ? parseEnum(block["shape"], kShapes, at + ".shape") : BlockShape::Cube;
   if (type.shape != BlockShape::None) {
-    const RenderLayer defaultLayer =
-        type.shape == BlockShape::Cube ? RenderLayer::Opaque : RenderLayer::Cutout;
+    const RenderLayer defaultLayer = type.shape == BlockShape::Cube || type.shape == BlockShape::Model
+                                         ? RenderLayer::Opaque
+                                         : RenderLayer::Cutout;
     type.layer = block.contains("layer") ? parseEnum(block["layer"], kLayers, at + ".layer") : defaultLayer;
-    if (!block.contains("textures")) throw Error(at + " needs \"textures\"");
-    type.textures = parseTextures(block["textures"], at + ".textures");
+    // A model block's textures come from its models (assets/minecraft/blockstates/<name>.json).
+    if (type.shape != BlockShape::Model) {
+      if (!block.contains("textures")) throw Error(at + " needs \"textures\"");
+      type.textures = parseTextures(block["textures"], at + ".textures");
+    } else if (block.contains("textures")) {
+      throw Error(at + ": a model block takes its textures from its models, not \"textures\"");
+    }
   }
   type.tint = block.contains("tint") ? parseEnum(block["tint"], kTints, at + ".tint") : Tint::None;
   type.opacity = static_cast<std::uint8_t>(parseLevel(block, "opacity", type.isOpaqueCube() ? 15 : 0, at));

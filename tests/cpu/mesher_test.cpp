@@ -8,6 +8,7 @@
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 #include <thread>
+#include "support/mesh_world.h"
 #include "support/world_support.h"
 #include "world/generator.h"
 
@@ -17,36 +18,11 @@ namespace {
 using testing::defaultBlocks;
 
 // A lit world of 3 x 3 chunks to build shapes in; textures are numbered block * 6 + face.
-struct MeshWorld {
+struct MeshWorld : testing::MeshWorld {
   explicit MeshWorld(const std::string& generator = "void")
-      : world(defaultBlocks()),
-        light(world),
-        table(defaultBlocks(), [](BlockId id, int face) { return static_cast<std::uint16_t>(id * 6 + face); }) {
-    gen = makeGenerator({generator, 3, {}}, defaultBlocks());
-    for (int z = -1; z <= 1; ++z)
-      for (int x = -1; x <= 1; ++x) {
-        auto c = std::make_unique<Chunk>(ChunkPos{x, z});
-        gen->generate(*c);
-        world.insertChunk(std::move(c));
-        light.chunkLoaded({x, z});
-      }
-  }
-  void set(const BlockPos& p, const char* name) {
-    if (auto change = world.setBlock(p, defaultBlocks().id(name))) light.blockChanged(*change);
-  }
-  SectionMesh mesh(SectionPos s = {0, sectionOf(64), 0}) {
-    SectionSnapshot snapshot;
-    if (captureSection(world, s, snapshot) != CaptureResult::Captured) return SectionMesh{s, {}};
-    return meshSection(snapshot, table);
-  }
-  std::size_t quads(MeshLayer layer, SectionPos s = {0, sectionOf(64), 0}) {
-    return mesh(s).layers[static_cast<std::size_t>(layer)].faces();  // block faces, before merging
-  }
-
-  World world;
-  LightEngine light;
-  BlockMeshTable table;
-  std::unique_ptr<ChunkGenerator> gen;
+      : testing::MeshWorld(
+            BlockMeshTable(defaultBlocks(), [](BlockId id, int face) { return static_cast<std::uint16_t>(id * 6 + face); }),
+            generator) {}
 };
 
 // Vertices of the face of `mesh` with texture `texture` (the first such quad).

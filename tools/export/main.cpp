@@ -72,7 +72,7 @@ int run(int argc, char** argv) {
   for (const auto& p : packPaths) packs.push(ResourcePack::open(p));
   BlockAtlas atlas = buildBlockAtlas(blocks, packs);
   const BiomeTints tints = loadTints(packs, atlas.problems);
-  const BlockMeshTable table(blocks, [&](BlockId id, int face) { return atlas.textureOf(id, face); });
+  const BlockMeshTable table = meshTableOf(blocks, atlas);
 
   std::vector<SectionMesh> meshes;
   if (scene) {
