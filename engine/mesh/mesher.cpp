@@ -263,11 +263,12 @@ class Mesher {
     std::copy_n(v, 4, out.quad());
   }
 
-  // A plant or torch is lit by its own cell, as a face corner with four open cells of that light.
-  std::uint32_t ownLight(int x, int y, int z) const {
-    const std::uint32_t term = s_.light[static_cast<std::size_t>(SectionSnapshot::index(x, y, z))];
-    return term * 4 - SectionSnapshot::kOpen;
+  // A vertex lit flat by one cell, as a face corner with four open cells of that light.
+  std::uint32_t cellLight(int index) const {
+    return s_.light[static_cast<std::size_t>(index)] * 4 - SectionSnapshot::kOpen;
   }
+  // A plant or torch is lit by its own cell.
+  std::uint32_t ownLight(int x, int y, int z) const { return cellLight(SectionSnapshot::index(x, y, z)); }
 
   // Two diagonal planes, each seen from both sides (faces 6..9).
   void cross(int x, int y, int z, const BlockMeshTable::Entry& e) {
@@ -308,7 +309,7 @@ class Mesher {
         if (opaqueAt(neighbour)) continue;
         lit = neighbour;
       }
-      const std::uint32_t light = s_.light[static_cast<std::size_t>(lit)] * 4 - SectionSnapshot::kOpen;
+      const std::uint32_t light = cellLight(lit);
       const std::uint32_t mat = static_cast<std::uint32_t>(m.texture) | static_cast<std::uint32_t>(m.face) << 16 |
                                 (m.tinted ? static_cast<std::uint32_t>(e.tint) : 0u) << 20;
       PackedVertex* q = out.quad();
