@@ -107,6 +107,7 @@ class Mesher {
           for (std::uint32_t bits = visible[d]; bits != 0; bits &= bits - 1) {
             const int x = std::countr_zero(bits);
             const int here = SectionSnapshot::index(x, y, z);
+            if (coveredFrom<d>(here + kNeighbour[d])) continue;
             face<d>(x, y, z, table_[s_.blocks[static_cast<std::size_t>(here)]], 32, here + kNeighbour[d]);
           }
         });
@@ -175,6 +176,13 @@ class Mesher {
     return !(e.cullSame && s_.blocks[static_cast<std::size_t>(neighbourIndex)] == id);
   }
 
+  // Whether the block at `neighbour` (a model block) covers the whole side facing a face in direction D.
+  template <int D>
+  bool coveredFrom(int neighbour) const {
+    constexpr int kFacing = D ^ 1;  // the neighbour's side that touches the face
+    return (table_[s_.blocks[static_cast<std::size_t>(neighbour)]].fullSides >> kFacing) & 1u;
+  }
+
   void cube(int x, int y, int z, BlockId id, const BlockMeshTable::Entry& e) {
     const bool liquid = e.shape == BlockShape::Liquid;
     // A liquid's surface sits 2/16 lower unless more of the same liquid is above it.
@@ -182,8 +190,8 @@ class Mesher {
     const int here = SectionSnapshot::index(x, y, z);
     forEachDirection([&](auto d) {
       const bool loweredTop = d == static_cast<int>(Direction::Up) && top32 < 32;
-      const bool visible =
-          faceVisible(id, e, here + kNeighbour[d]) && !(e.foliage && deepInFoliage<d>(x, y, z));
+      const bool visible = faceVisible(id, e, here + kNeighbour[d]) && !coveredFrom<d>(here + kNeighbour[d]) &&
+                           !(e.foliage && deepInFoliage<d>(x, y, z));
       if (!visible && !loweredTop) return;
       // A lowered surface under an opaque block is lit from the liquid's own cell, not the dark block.
       face<d>(x, y, z, e, top32, visible ? here + kNeighbour[d] : here);
@@ -306,7 +314,11 @@ class Mesher {
       int lit = here;
       if (m.cullface >= 0) {
         const int neighbour = here + kNeighbour[static_cast<std::size_t>(m.cullface)];
-        if (opaqueAt(neighbour)) continue;
+        if (opaqueAt(neighbour) ||
+            hiddenBy(table_[s_.blocks[static_cast<std::size_t>(neighbour)]].coverage,
+                     static_cast<Direction>(m.cullface), m.rect)) {
+          continue;
+        }
         lit = neighbour;
       }
       const std::uint32_t light = cellLight(lit);
@@ -331,6 +343,26 @@ class Mesher {
 };
 
 thread_local std::array<std::size_t, kMeshLayers> Mesher::lastSize_{};
+
+// A model quad's extent on its cullface's side (its bounding rectangle there, 1/16), and, for an
+// opaque block, the part of a side it covers: a quad lying on the side, facing out of it.
+void describeModelQuad(ModelQuad& q, BlockMeshTable::Entry& e) {
+  if (q.cullface < 0 && q.face >= 6) return;
+  const int side = q.cullface >= 0 ? q.cullface : q.face;
+  const int across = side / 2;                        // West/East: x, Down/Up: y, North/South: z
+  const int a = across == 0 ? 1 : 0, b = across == 2 ? 1 : 2;  // the side's axes, in x, y, z order
+  int lo[3] = {32, 32, 32}, hi[3] = {0, 0, 0};
+  for (const auto& c : q.corners32)
+    for (int i = 0; i < 3; ++i) {
+      lo[i] = std::min(lo[i], c[static_cast<std::size_t>(i)]);
+      hi[i] = std::max(hi[i], c[static_cast<std::size_t>(i)]);
+    }
+  q.rect = {lo[a] / 2, lo[b] / 2, (hi[a] + 1) / 2, (hi[b] + 1) / 2};
+  const int plane = side % 2 == 1 ? 32 : 0;
+  if (e.layer != MeshLayer::Opaque || q.face != side || lo[across] != plane || hi[across] != plane) return;
+  // Only whole 1/16 cells count as covered.
+  e.coverage.add(static_cast<Direction>(side), {(lo[a] + 1) / 2, (lo[b] + 1) / 2, hi[a] / 2, hi[b] / 2});
+}
 
 MeshLayer layerOf(RenderLayer layer) {
   switch (layer) {
@@ -358,6 +390,8 @@ BlockMeshTable::BlockMeshTable(const BlockRegistry& blocks, const std::function<
     e.tint = type.tint;
     if (type.shape == BlockShape::Model) {
       if (modelQuadsOf) e.quads = modelQuadsOf(id);
+      for (ModelQuad& q : e.quads) describeModelQuad(q, e);
+      for (int d = 0; d < 6; ++d) e.fullSides |= e.coverage.full(static_cast<Direction>(d)) ? 1u << d : 0u;
       continue;
     }
     for (int f = 0; f < 6; ++f) {

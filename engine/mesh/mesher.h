@@ -21,6 +21,7 @@
 #include "mesh/mesh_data.h"
 #include "mesh/section_snapshot.h"
 #include "world/block_registry.h"
+#include "world/face_coverage.h"
 
 namespace terrasol {
 
@@ -30,8 +31,9 @@ struct ModelQuad {
   std::array<std::array<int, 2>, 4> uvs16;      // 1/16 of the texture
   std::uint16_t texture = 0;
   std::uint8_t face = 3;     // kFaceBases' index nearest its normal: 0..5 a Direction, 6..9 a diagonal
-  std::int8_t cullface = -1;  // Direction: left out against an opaque cube on that side; -1 never
+  std::int8_t cullface = -1;  // Direction: left out where the neighbour on that side covers `rect`; -1 never
   bool tinted = false;        // takes the block's tint (its model's tintindex)
+  SideRect rect;              // its extent on the cullface's side, 1/16 (filled in by BlockMeshTable)
 };
 
 // Per-block facts the mesher needs, looked up once per block id.
@@ -53,6 +55,10 @@ class BlockMeshTable {
     std::array<std::uint16_t, 6> texture;
     std::array<std::uint32_t, 6> material;  // PackedVertex::material of each cube face
     std::vector<ModelQuad> quads;           // shape Model
+    // What an opaque model block covers of its cell's sides (from its quads lying on them), and the
+    // sides it covers whole, as bits by Direction: neighbours' faces there are hidden.
+    FaceCoverage coverage;
+    std::uint8_t fullSides = 0;
   };
   const Entry& operator[](BlockId id) const { return entries_[id]; }
 

@@ -42,19 +42,21 @@ FaceCoverage FaceCoverage::of(std::span<const ShapeBox> boxes) {
   for (const ShapeBox& box : boxes) {
     for (int d = 0; d < 6; ++d) {
       const SideAxes s = axesOf(static_cast<Direction>(d));
-      const bool touches = s.atMax ? box.to[static_cast<std::size_t>(s.across)] >= 16
-                                   : box.from[static_cast<std::size_t>(s.across)] <= 0;
+      const auto at = [](const std::array<int, 3>& v, int axis) { return v[static_cast<std::size_t>(axis)]; };
+      const bool touches = s.atMax ? at(box.to, s.across) >= 16 : at(box.from, s.across) <= 0;
       if (!touches) continue;
-      const int a0 = std::clamp(box.from[static_cast<std::size_t>(s.a)], 0, 16);
-      const int a1 = std::clamp(box.to[static_cast<std::size_t>(s.a)], 0, 16);
-      const int b0 = std::clamp(box.from[static_cast<std::size_t>(s.b)], 0, 16);
-      const int b1 = std::clamp(box.to[static_cast<std::size_t>(s.b)], 0, 16);
-      for (int a = a0; a < a1; ++a)
-        for (int b = b0; b < b1; ++b)
-          c.sides_[static_cast<std::size_t>(d)].set(static_cast<std::size_t>(a * 16 + b));
+      c.add(static_cast<Direction>(d),
+            {at(box.from, s.a), at(box.from, s.b), at(box.to, s.a), at(box.to, s.b)});
     }
   }
   return c;
+}
+
+void FaceCoverage::add(Direction side, const SideRect& rect) {
+  auto& bits = sides_[static_cast<std::size_t>(side)];
+  for (int a = std::max(rect.a0, 0); a < std::min(rect.a1, 16); ++a)
+    for (int b = std::max(rect.b0, 0); b < std::min(rect.b1, 16); ++b)
+      bits.set(static_cast<std::size_t>(a * 16 + b));
 }
 
 bool FaceCoverage::covers(Direction side, const SideRect& rect) const {

@@ -32,6 +32,9 @@ class FaceCoverage {
   // The sides the boxes touch, where they touch them.
   static FaceCoverage of(std::span<const ShapeBox> boxes);
 
+  // Covers `rect` on `side` too.
+  void add(Direction side, const SideRect& rect);
+
   // Whether every 1/16 cell of `rect` on `side` is covered.
   bool covers(Direction side, const SideRect& rect) const;
   bool full(Direction side) const { return sides_[static_cast<std::size_t>(side)].all(); }

@@ -56,8 +56,7 @@ TEST_F(ModelMesh, EachStateHasItsModelsQuads) {
 
 TEST_F(ModelMesh, QuadsAgainstAnOpaqueCubeAcrossTheirCullfaceAreLeftOut) {
   ModelWorld w(*atlas_);
-  // Counted in the section of y 64..79: the stone below (y 63) lies in the one beneath. Nothing here
-  // is an opaque cube but stone, so the stone keeps its faces against the shaped blocks.
+  // Counted in the section of y 64..79: the stone below (y 63) lies in the one beneath.
   w.set({3, 64, 3}, "stone_slab");
   EXPECT_EQ(w.quads(MeshLayer::Opaque), 6u) << "a slab in the air";
   w.set({3, 63, 3}, "stone");
@@ -65,11 +64,40 @@ TEST_F(ModelMesh, QuadsAgainstAnOpaqueCubeAcrossTheirCullfaceAreLeftOut) {
   w.set({3, 65, 3}, "stone");
   EXPECT_EQ(w.quads(MeshLayer::Opaque), 5u + 6u) << "a bottom slab's top is not against the block above";
   w.set({3, 64, 3}, "stone_slab[type=top]");
-  EXPECT_EQ(w.quads(MeshLayer::Opaque), 5u + 6u) << "a top slab's top is; its bottom lies inside the cell";
+  EXPECT_EQ(w.quads(MeshLayer::Opaque), 5u + 5u)
+      << "a top slab's top is, and hides the stone's bottom; the slab's bottom lies inside the cell";
   w.set({3, 64, 3}, "oak_stairs[facing=east]");
   EXPECT_EQ(w.quads(MeshLayer::Opaque), 9u + 6u) << "stairs lose their bottom and their back half's top";
   w.set({4, 64, 3}, "stone");
-  EXPECT_EQ(w.quads(MeshLayer::Opaque), 7u + 6u + 6u) << "and both east faces against stone on the east";
+  EXPECT_EQ(w.quads(MeshLayer::Opaque), 7u + 6u + 5u)
+      << "and both east faces against stone on the east, whose west face the stairs' back hides";
+}
+
+// Shaped neighbours hide what they cover: a face against a shape's whole side goes, one against part
+// of a side stays unless it lies within that part.
+TEST_F(ModelMesh, ShapedNeighboursHideTheFacesTheyCover) {
+  const BlockRegistry& blocks = defaultBlocks();
+  const ModelWorld world(*atlas_);
+  const BlockMeshTable::Entry& doubleSlab = world.table[blocks.id("stone_slab[type=double]")];
+  EXPECT_EQ(doubleSlab.fullSides, 0b111111);
+  const BlockMeshTable::Entry& slab = world.table[blocks.id("stone_slab")];
+  EXPECT_EQ(slab.fullSides, 1u << static_cast<int>(Direction::Down));
+  EXPECT_TRUE(slab.coverage.covers(Direction::East, {0, 0, 8, 16}));
+  const auto count = [&](std::initializer_list<std::pair<BlockPos, const char*>> cells) {
+    ModelWorld w(*atlas_);
+    for (const auto& [p, name] : cells) w.set(p, name);
+    return w.quads(MeshLayer::Opaque);
+  };
+  EXPECT_EQ(count({{{3, 64, 3}, "stone_slab"}, {{4, 64, 3}, "stone_slab"}}), 5u + 5u)
+      << "two bottom slabs hide each other's touching halves";
+  EXPECT_EQ(count({{{3, 64, 3}, "stone_slab"}, {{4, 64, 3}, "stone_slab[type=top]"}}), 6u + 6u)
+      << "a bottom and a top slab do not meet";
+  EXPECT_EQ(count({{{3, 64, 3}, "stone"}, {{4, 64, 3}, "stone_slab[type=double]"}}), 5u + 5u)
+      << "stone against a double slab, both ways";
+  EXPECT_EQ(count({{{3, 64, 3}, "stone"}, {{4, 64, 3}, "stone_slab"}}), 6u + 5u)
+      << "stone keeps its face against a bottom slab's open half";
+  EXPECT_EQ(count({{{3, 64, 3}, "stone_slab"}, {{4, 64, 3}, "oak_stairs[facing=west]"}}), 5u + 10u)
+      << "a slab's side against the stairs' back; the stairs' back against the slab's lower half only";
 }
 
 // Without blockstates (a stack without the default pack) a model block is a cube of the missing
