@@ -23,6 +23,7 @@
 #include "platform/glfw/glfw_window.h"
 #include "player.h"
 #include "render/gl/render_target.h"
+#include "scene/block_atlas.h"
 #include "scene_render/under_water.h"
 #include "targeting.h"
 
@@ -75,12 +76,14 @@ Game::Game(GlfwWindow& window, const GameOptions& options)
       settingsFile_(options.settings.empty() ? defaultSettingsFile() : options.settings),
       settings_(settingsFor(options, settingsFile_)),
       blocks_(BlockRegistry::fromFile(resourcePackDir() / "default" / "blocks.json")),
+      shapes_(defaultPackShapes(blocks_)),
       renderer_(blocks_, settings_),
       benchmarkDir_(options.benchmark ? benchmarkWorldDir() : std::filesystem::path()),
       world_(options.benchmark ? benchmarkDir_ : options.world, seedOf(options), blocks_, renderer_.assets().table,
              settings_.viewDistance, workerThreads()),
       controls_(settings_.keys) {
   for (std::size_t i = 0; i < hotbar_.size(); ++i) hotbar_[i] = blocks_.id(kHotbar[i]);
+  world_.world().setShapes(&shapes_);
   const Level& level = world_.level();
   if (world_.isNew()) {
     spawnPending_ = true;
@@ -292,8 +295,7 @@ void Game::draw(bool timed) {
     const WorldBounds b = props_->placed().bounds(*targetProp_);
     frame.outline = WorldBox{b.min, b.max};
   } else if (target_ && !menuOpen_ && showHud_) {
-    const BlockPos b = target_->block;
-    frame.outline = WorldBox{glm::dvec3(b.x, b.y, b.z), glm::dvec3(b.x + 1, b.y + 1, b.z + 1)};
+    frame.outline = outlineOf(world_.world(), target_->block);
   }
   timings_.clear();
   renderer_.render(frame, drawableSize(), timed ? &timings_ : nullptr);

@@ -88,6 +88,7 @@ class Game {
   std::filesystem::path settingsFile_;
   GameSettings settings_;
   BlockRegistry blocks_;
+  BlockShapes shapes_;  // from the default pack's models: resource packs do not change collision
   GameRenderer renderer_;
   std::filesystem::path benchmarkDir_;  // a throwaway world for --benchmark
   StreamedWorld world_;

@@ -22,6 +22,7 @@ constexpr double kJumpVelocity = 0.42, kSprintJumpBoost = 0.2;
 constexpr double kWaterSink = 0.08 / 16.0, kSwimUp = 0.04;
 constexpr double kSneakFactor = 0.3, kInputScale = 0.98;
 constexpr double kEdgeProbe = 0.6, kEdgeStep = 0.05;  // sneaking: how far down ground must be; back-off step
+constexpr double kStepHeight = 0.6;  // walked up without jumping (a slab, a stair)
 // A tick's move is capped on each axis so the block boxes gathered for it stay few; far above any
 // speed the rules reach (falling tops out near 3.9 blocks a tick).
 constexpr double kMaxMove = 32.0;
@@ -46,13 +47,33 @@ Box swept(const Box& b, glm::dvec3 d) {
   return {glm::min(b.min, b.min + d) - kEpsilon, glm::max(b.max, b.max + d) + kEpsilon};
 }
 
+// The collision boxes near `region`: each cell's state's shape (World::shapes), else whole cells
+// of solid blocks. Cells half a block below count too: a fence's or wall's box reaches up into the
+// cell above.
 std::vector<Box> solidBoxes(const World& world, const Box& region) {
   std::vector<Box> boxes;
-  anyCell(region, [&](const BlockPos& p) {
-    if (isSolid(world, p)) boxes.push_back({glm::dvec3(p.x, p.y, p.z), glm::dvec3(p.x + 1, p.y + 1, p.z + 1)});
+  const BlockShapes* shapes = world.shapes();
+  const Box reach{region.min - glm::dvec3(0.0, 0.5, 0.0), region.max};
+  anyCell(reach, [&](const BlockPos& p) {
+    const glm::dvec3 corner(p.x, p.y, p.z);
+    if (!shapes || !world.isLoaded(ChunkPos::of(p)) || !inWorldHeight(p.y)) {
+      if (isSolid(world, p)) boxes.push_back({corner, corner + glm::dvec3(1.0)});
+      return false;
+    }
+    for (const ShapeBox& b : shapes->boxes(world.getBlock(p))) {
+      boxes.push_back({corner + glm::dvec3(b.from[0], b.from[1], b.from[2]) / 16.0,
+                       corner + glm::dvec3(b.to[0], b.to[1], b.to[2]) / 16.0});
+    }
     return false;
   });
   return boxes;
+}
+
+bool overlaps(const Box& a, const Box& b) {
+  for (int i = 0; i < 3; ++i) {
+    if (a.max[i] <= b.min[i] + kEpsilon || a.min[i] >= b.max[i] - kEpsilon) return false;
+  }
+  return true;
 }
 
 // How far `box` can go along `axis` (wanting `d`) before touching one of `boxes`. Boxes it already
@@ -77,7 +98,10 @@ bool isSolid(const World& world, const BlockPos& pos) {
 }
 
 bool collides(const World& world, const Box& box) {
-  return anyCell(box, [&](const BlockPos& p) { return isSolid(world, p); });
+  for (const Box& b : solidBoxes(world, box)) {
+    if (overlaps(b, box)) return true;
+  }
+  return false;
 }
 
 Player::Player(glm::dvec3 position) : position_(position), previous_(position) {}
@@ -167,18 +191,37 @@ void Player::tick(const World& world, const MoveInput& input) {
 
 glm::dvec3 Player::move(const World& world, glm::dvec3 delta) {
   delta = glm::clamp(delta, -kMaxMove, kMaxMove);
-  Box b = box();
-  const std::vector<Box> boxes = solidBoxes(world, swept(b, delta));
-  glm::dvec3 done(0.0);
+  const Box start = box();
+  const std::vector<Box> boxes = solidBoxes(world, swept(swept(start, delta), {0.0, kStepHeight, 0.0}));
   // Vertical first, then the larger horizontal axis last, as Minecraft does (sliding along walls).
-  const int order[3] = {1, std::abs(delta.x) < std::abs(delta.z) ? 2 : 0, std::abs(delta.x) < std::abs(delta.z) ? 0 : 2};
-  for (const int a : order) {
-    done[a] = clip(boxes, b, a, delta[a]);
-    glm::dvec3 step(0.0);
-    step[a] = done[a];
-    b = shifted(b, step);
+  const auto slide = [&](Box b, glm::dvec3 d, glm::dvec3& done) {
+    const int order[3] = {1, std::abs(d.x) < std::abs(d.z) ? 2 : 0, std::abs(d.x) < std::abs(d.z) ? 0 : 2};
+    for (const int a : order) {
+      done[a] = clip(boxes, b, a, d[a]);
+      glm::dvec3 step(0.0);
+      step[a] = done[a];
+      b = shifted(b, step);
+    }
+    return b;
+  };
+  glm::dvec3 done(0.0);
+  Box b = slide(start, delta, done);
+  bool landed = delta.y < 0.0 && done.y != delta.y;
+  // Minecraft's step: on the ground and stopped across, try again from up to 0.6 higher, then settle
+  // back down onto what is there; kept when it gets further (up a slab or a stair, not a block).
+  if ((onGround_ || landed) && !flying && (done.x != delta.x || done.z != delta.z)) {
+    const double up = clip(boxes, start, 1, kStepHeight);
+    glm::dvec3 across(0.0);
+    Box stepped = slide(shifted(start, {0.0, up, 0.0}), {delta.x, 0.0, delta.z}, across);
+    const double down = clip(boxes, stepped, 1, -up);
+    if (across.x * across.x + across.z * across.z > done.x * done.x + done.z * done.z + 1e-9) {
+      b = shifted(stepped, {0.0, down, 0.0});
+      done = {across.x, up + down, across.z};
+      delta.y = done.y;  // the climb is the move's vertical part, not a blocked one
+      landed = true;     // it settled onto the step
+    }
   }
-  onGround_ = delta.y < 0.0 && done.y != delta.y;
+  onGround_ = landed;
   for (int a = 0; a < 3; ++a)
     if (done[a] != delta[a]) velocity_[a] = 0.0;
   position_ = glm::dvec3((b.min.x + b.max.x) / 2.0, b.min.y, (b.min.z + b.max.z) / 2.0);

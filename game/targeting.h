@@ -1,11 +1,12 @@
 #pragma once
 // The block under the crosshair: the first block along the view ray within reach that a player can
-// hit (anything drawn but liquids), the face the ray enters, and the cell a placed block goes in.
-
-#include <optional>
+// hit (anything drawn but liquids; a shaped block only where the ray meets its boxes, World::shapes),
+// the face the ray enters, and the cell a placed block goes in.
 
 #include <glm/vec3.hpp>
+#include <optional>
 
+#include "render/frame_inputs.h"
 #include "world/world.h"
 
 namespace terrasol {
@@ -19,6 +20,10 @@ struct Target {
   double distance = 0.0;
 };
 
-std::optional<Target> targetBlock(const World& world, glm::dvec3 eye, glm::dvec3 direction, double reach = kReach);
+std::optional<Target> targetBlock(const World& world, glm::dvec3 eye, glm::dvec3 direction,
+                                  double reach = kReach);
+
+// The box the targeted block's outline is drawn around: its shape's bounds, or the whole cell.
+WorldBox outlineOf(const World& world, const BlockPos& block);
 
 }  // namespace terrasol

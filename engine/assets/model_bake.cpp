@@ -89,6 +89,17 @@ glm::vec3 place(glm::vec3 v, const ModelPlacement& p, bool isPoint) {
 
 }  // namespace
 
+std::vector<std::array<float, 6>> placedBoxes(const BlockModel& model, const ModelPlacement& placement) {
+  std::vector<std::array<float, 6>> boxes;
+  for (const ModelElement& e : model.elements) {
+    if (e.rotation && e.rotation->angle != 0.0f) continue;
+    const glm::vec3 a = place(e.from, placement, true), b = place(e.to, placement, true);
+    const glm::vec3 lo = glm::min(a, b), hi = glm::max(a, b);
+    boxes.push_back({lo.x, lo.y, lo.z, hi.x, hi.y, hi.z});
+  }
+  return boxes;
+}
+
 ModelFace nearestFace(glm::vec3 normal) {
   ModelFace best = ModelFace::Up;
   float bestDot = -2.0f;

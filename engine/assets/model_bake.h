@@ -30,6 +30,11 @@ struct BakedQuad {
 
 std::vector<BakedQuad> bakeModel(const BlockModel& model, const ModelPlacement& placement);
 
+// The model's elements as boxes (1/16 units: min x, y, z, max x, y, z), placed: what a block built
+// of it collides with and is targeted by. Elements turned by a non-right angle (plants, a torch on a
+// wall) are left out, as Minecraft's collision leaves them.
+std::vector<std::array<float, 6>> placedBoxes(const BlockModel& model, const ModelPlacement& placement);
+
 // The face whose normal is nearest `normal`.
 ModelFace nearestFace(glm::vec3 normal);
 

@@ -8,6 +8,7 @@
 #include "assets/block_states.h"
 #include "assets/model_bake.h"
 #include "core/error.h"
+#include "core/paths.h"
 
 namespace terrasol {
 namespace {
@@ -34,30 +35,47 @@ BlockModel missingModel() {
   return m;
 }
 
-// Model blocks: each state's models, as its blockstates file picks them (at the origin: the
-// position-seeded pick is the same for every cell), baked. A block whose blockstates or models
-// cannot be read is a cube of the missing texture, with the reason among `problems`.
-std::vector<std::vector<BakedQuad>> bakeModelStates(const BlockRegistry& blocks, const PackStack& packs,
-                                                    std::vector<PackProblem>& problems) {
-  std::vector<std::vector<BakedQuad>> baked(blocks.size());
+// Calls use(state, model, placement) for every model each state of a model block is drawn with, as
+// its blockstates file picks them (at the origin: the position-seeded pick is the same for every
+// cell). A block whose blockstates or models cannot be read gets the missing cube instead, and the
+// reason goes to `problems`.
+template <class Use>
+void forEachModelOfEachState(const BlockRegistry& blocks, const PackStack& packs,
+                             std::vector<PackProblem>& problems, Use&& use) {
   ModelLibrary library(packs);
+  static const BlockModel kMissing = missingModel();
   for (std::size_t b = 0; b < blocks.blockCount(); ++b) {
     const BlockType& type = blocks.block(b);
     if (type.shape != BlockShape::Model) continue;
+    std::vector<std::vector<std::pair<const BlockModel*, ModelPlacement>>> models(type.stateCount);
     try {
       const BlockStates states = BlockStates::load(packs, type.name);
-      for (BlockId s = type.firstState; s < type.firstState + type.stateCount; ++s) {
-        for (const ModelPlacement& p : states.select(blocks.stateValues(s), {0, 0, 0})) {
-          const std::vector<BakedQuad> quads = bakeModel(library.model(p.model), p);
-          baked[s].insert(baked[s].end(), quads.begin(), quads.end());
+      for (std::uint16_t i = 0; i < type.stateCount; ++i) {
+        for (const ModelPlacement& p :
+             states.select(blocks.stateValues(static_cast<BlockId>(type.firstState + i)), {})) {
+          models[i].emplace_back(&library.model(p.model), p);
         }
       }
     } catch (const Error& e) {
       problems.push_back({PackProblem::Severity::Error, e.what()});
-      const std::vector<BakedQuad> cube = bakeModel(missingModel(), {});
-      for (BlockId s = type.firstState; s < type.firstState + type.stateCount; ++s) baked[s] = cube;
+      for (auto& m : models) m = {{&kMissing, ModelPlacement{}}};
+    }
+    for (std::uint16_t i = 0; i < type.stateCount; ++i) {
+      for (const auto& [model, placement] : models[i])
+        use(static_cast<BlockId>(type.firstState + i), *model, placement);
     }
   }
+}
+
+// Model blocks: each state's models baked.
+std::vector<std::vector<BakedQuad>> bakeModelStates(const BlockRegistry& blocks, const PackStack& packs,
+                                                    std::vector<PackProblem>& problems) {
+  std::vector<std::vector<BakedQuad>> baked(blocks.size());
+  forEachModelOfEachState(blocks, packs, problems,
+                          [&](BlockId s, const BlockModel& m, const ModelPlacement& p) {
+                            const std::vector<BakedQuad> quads = bakeModel(m, p);
+                            baked[s].insert(baked[s].end(), quads.begin(), quads.end());
+                          });
   return baked;
 }
 
@@ -131,6 +149,31 @@ BlockAtlas buildBlockAtlas(const BlockRegistry& blocks, const PackStack& packs) 
       result.modelQuads[id].push_back(meshQuad(q, index.at(candidatesOf(q.texture))));
   }
   return result;
+}
+
+BlockShapes blockShapesOf(const BlockRegistry& blocks, const PackStack& packs) {
+  BlockShapes shapes(blocks);
+  std::vector<std::vector<ShapeBox>> boxes(blocks.size());
+  std::vector<PackProblem> problems;  // the atlas reports them
+  forEachModelOfEachState(blocks, packs, problems,
+                          [&](BlockId s, const BlockModel& m, const ModelPlacement& p) {
+                            for (const std::array<float, 6>& b : placedBoxes(m, p)) {
+                              const auto at = [&](int i) {
+                                return static_cast<int>(std::lround(b[static_cast<std::size_t>(i)]));
+                              };
+                              boxes[s].push_back({{at(0), at(1), at(2)}, {at(3), at(4), at(5)}});
+                            }
+                          });
+  for (BlockId s = 0; s < blocks.size(); ++s) {
+    if (blocks[s].shape == BlockShape::Model) shapes.setBoxes(s, std::move(boxes[s]));
+  }
+  return shapes;
+}
+
+BlockShapes defaultPackShapes(const BlockRegistry& blocks) {
+  PackStack packs;
+  packs.push(ResourcePack::open(resourcePackDir() / "default"));
+  return blockShapesOf(blocks, packs);
 }
 
 BlockMeshTable meshTableOf(const BlockRegistry& blocks, const BlockAtlas& atlas) {

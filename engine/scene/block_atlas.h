@@ -11,6 +11,7 @@
 #include "assets/resource_pack.h"
 #include "mesh/mesher.h"
 #include "world/block_registry.h"
+#include "world/block_shapes.h"
 
 namespace terrasol {
 
@@ -27,6 +28,12 @@ struct BlockAtlas {
 // A model block whose blockstates or models are missing or malformed is drawn as a cube of the
 // missing texture, with the reason among the problems (as Minecraft does).
 BlockAtlas buildBlockAtlas(const BlockRegistry& blocks, const PackStack& packs);
+
+// The states' collision and targeting boxes: cubes whole, model blocks their models' elements (read
+// from `packs`: give it the default pack alone, as a resource pack does not change how blocks collide).
+BlockShapes blockShapesOf(const BlockRegistry& blocks, const PackStack& packs);
+// The same from resourcepacks/default alone: what the game collides with.
+BlockShapes defaultPackShapes(const BlockRegistry& blocks);
 
 // The mesher's table for `blocks` drawn with `atlas`'s textures and model quads.
 BlockMeshTable meshTableOf(const BlockRegistry& blocks, const BlockAtlas& atlas);

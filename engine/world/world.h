@@ -7,6 +7,7 @@
 #include <unordered_map>
 
 #include "world/block_registry.h"
+#include "world/block_shapes.h"
 #include "world/chunk.h"
 
 namespace terrasol {
@@ -22,6 +23,10 @@ class World {
   explicit World(const BlockRegistry& blocks) : blocks_(&blocks) {}
 
   const BlockRegistry& blocks() const { return *blocks_; }
+  // The states' shapes (collision, targeting); without them, cubes are whole cells and nothing else
+  // has a shape. `shapes` must outlive the world.
+  void setShapes(const BlockShapes* shapes) { shapes_ = shapes; }
+  const BlockShapes* shapes() const { return shapes_; }
 
   // Air outside the world height, beyond the border or in a chunk that is not loaded.
   BlockId getBlock(const BlockPos& pos) const;
@@ -53,6 +58,7 @@ class World {
 
  private:
   const BlockRegistry* blocks_;
+  const BlockShapes* shapes_ = nullptr;
   std::unordered_map<ChunkPos, std::unique_ptr<Chunk>> chunks_;
 };
 

@@ -8,10 +8,11 @@
 #include <thread>
 
 #include "controls.h"
-#include "frame_rate.h"
 #include "core/error.h"
+#include "frame_rate.h"
 #include "input_script.h"
 #include "player.h"
+#include "scene/block_atlas.h"
 #include "settings.h"
 #include "support/error_of.h"
 #include "support/world_support.h"
@@ -147,6 +148,85 @@ TEST(PlayerTest, WallsOneBlockHighAreNotSteppedOnto) {
   EXPECT_NEAR(p.position().y, 65.0, 1e-6) << "jumping gets on top";
 }
 
+// The default pack's shapes: slabs and stairs collide as their models are built.
+const BlockShapes& defaultShapes() {
+  static const BlockShapes shapes = defaultPackShapes(defaultBlocks());
+  return shapes;
+}
+
+TEST(PlayerTest, StepsOntoSlabsAndUpStairsWithoutJumping) {
+  World world = flatWorld();
+  world.setShapes(&defaultShapes());
+  MoveInput walk;
+  walk.forward = 1.0f;  // towards +z
+  for (int z = 3; z < 12; ++z)
+    for (int x = -8; x < 8; ++x) world.setBlock({x, 64, z}, defaultBlocks().id("stone_slab"));
+  Player p({0.5, 64.0, 0.5});
+  runTicks(p, world, walk, 30);
+  EXPECT_NEAR(p.position().y, 64.5, 1e-6) << "on the slabs";
+  EXPECT_GT(p.position().z, 4.0);
+  // A staircase climbing south, four steps up, each stair on the one below's level.
+  World stairs = flatWorld();
+  stairs.setShapes(&defaultShapes());
+  for (int step = 0; step < 4; ++step) {
+    for (int x = -8; x < 8; ++x) {
+      for (int y = 64; y < 64 + step; ++y) stairs.setBlock({x, y, 3 + step}, defaultBlocks().id("stone"));
+      stairs.setBlock({x, 64 + step, 3 + step}, defaultBlocks().id("oak_stairs[facing=south]"));
+    }
+  }
+  for (int z = 7; z < 14; ++z)  // the landing
+    for (int x = -8; x < 8; ++x)
+      for (int y = 64; y < 68; ++y) stairs.setBlock({x, y, z}, defaultBlocks().id("stone"));
+  Player climber({0.5, 64.0, 0.5});
+  runTicks(climber, stairs, walk, 45);
+  EXPECT_NEAR(climber.position().y, 68.0, 1e-6) << "up four stairs to the landing";
+  EXPECT_GT(climber.position().z, 7.0);
+  EXPECT_LT(climber.position().z, 13.0);
+  // A full block is not a step (0.6 at most), with shapes or without.
+  World wall = flatWorld();
+  wall.setShapes(&defaultShapes());
+  for (int x = -8; x < 8; ++x) wall.setBlock({x, 64, 3}, defaultBlocks().id("stone_slab[type=double]"));
+  Player blocked({0.5, 64.0, 0.5});
+  runTicks(blocked, wall, walk, 30);
+  EXPECT_NEAR(blocked.position().y, 64.0, 1e-6);
+  EXPECT_NEAR(blocked.box().max.z, 3.0, 1e-6);
+}
+
+TEST(PlayerTest, ATopSlabIsAHeadHighBeamAndABottomSlabAFloor) {
+  World world = flatWorld();
+  world.setShapes(&defaultShapes());
+  // A top slab at head height (y 65.5..66): the player (1.8 high) cannot pass under it...
+  for (int x = -8; x < 8; ++x) world.setBlock({x, 65, 3}, defaultBlocks().id("stone_slab[type=top]"));
+  MoveInput walk;
+  walk.forward = 1.0f;
+  Player p({0.5, 64.0, 0.5});
+  runTicks(p, world, walk, 30);
+  EXPECT_NEAR(p.box().max.z, 3.0, 1e-6);
+  // ...but a bottom slab there leaves room above the stone floor for nothing either, while one a
+  // block higher (y 66..66.5) lets the player walk under it.
+  World high = flatWorld();
+  high.setShapes(&defaultShapes());
+  for (int x = -8; x < 8; ++x) high.setBlock({x, 66, 3}, defaultBlocks().id("stone_slab"));
+  Player under({0.5, 64.0, 0.5});
+  runTicks(under, high, walk, 30);
+  EXPECT_GT(under.position().z, 4.0) << "1.8 tall under a slab 2 blocks up";
+  // Sneaking stops at a slab's edge as at a block's.
+  World ledge = flatWorld();
+  ledge.setShapes(&defaultShapes());
+  for (int z = -8; z < 8; ++z)
+    for (int x = -8; x < 8; ++x) {
+      ledge.setBlock({x, 63, z}, z < 3 ? defaultBlocks().id("stone_slab[type=top]") : kAir);
+    }
+  for (int z = 3; z < 8; ++z)
+    for (int x = -8; x < 8; ++x) ledge.setBlock({x, 62, z}, kAir);
+  Player sneaker({0.5, 64.0, 0.5});
+  MoveInput sneak = walk;
+  sneak.sneak = true;
+  runTicks(sneaker, ledge, sneak, 60);
+  EXPECT_NEAR(sneaker.position().y, 64.0, 1e-6) << "still on the slab";
+  EXPECT_LT(sneaker.box().min.z, 3.0);
+}
+
 TEST(PlayerTest, SneakingStopsAtTheEdge) {
   World world = flatWorld();
   for (int y = 60; y < 64; ++y)
@@ -245,6 +325,32 @@ TEST(TargetingTest, PicksTheFirstBlockAndTheFaceWithinReach) {
   EXPECT_FALSE(targetBlock(world, {0.5, 65.62, 0.5}, {0.0, 0.0, 0.0})) << "no direction, no target";
 }
 
+// A shaped block is hit where the ray meets its boxes: a ray over a bottom slab's open half goes on
+// to what lies behind, one onto its top hits it there, and the outline is the slab's, not the cell's.
+TEST(TargetingTest, ShapedBlocksAreHitByTheirBoxesAndOutlinedByThem) {
+  World world = flatWorld();
+  world.setShapes(&defaultShapes());
+  world.setBlock({0, 64, 2}, defaultBlocks().id("stone_slab"));
+  world.setBlock({0, 64, 4}, defaultBlocks().id("stone"));
+  const auto over = targetBlock(world, {0.5, 64.75, 0.5}, {0.0, 0.0, 1.0});
+  ASSERT_TRUE(over);
+  EXPECT_EQ(over->block, (BlockPos{0, 64, 4})) << "over the slab's open upper half";
+  const auto onto = targetBlock(world, {0.5, 64.25, 0.5}, {0.0, 0.0, 1.0});
+  ASSERT_TRUE(onto);
+  EXPECT_EQ(onto->block, (BlockPos{0, 64, 2}));
+  EXPECT_EQ(onto->normal, glm::ivec3(0, 0, -1));
+  EXPECT_NEAR(onto->distance, 1.5, 1e-9);
+  const auto down = targetBlock(world, {0.5, 66.0, 2.5}, {0.0, -1.0, 0.0});
+  ASSERT_TRUE(down);
+  EXPECT_EQ(down->block, (BlockPos{0, 64, 2}));
+  EXPECT_EQ(down->normal, glm::ivec3(0, 1, 0));
+  EXPECT_NEAR(down->distance, 1.5, 1e-9) << "its top is at 64.5";
+  const WorldBox outline = outlineOf(world, {0, 64, 2});
+  EXPECT_EQ(outline.min, glm::dvec3(0.0, 64.0, 2.0));
+  EXPECT_EQ(outline.max, glm::dvec3(1.0, 64.5, 3.0));
+  EXPECT_EQ(outlineOf(world, {0, 64, 4}).max, glm::dvec3(1.0, 65.0, 5.0));
+}
+
 TEST(ControlsTest, PressesCountOnceAndHoldsCarryOver) {
   KeyBindings keys;
   Controls c(keys);
@@ -283,7 +389,8 @@ TEST(InputScriptTest, ParsesSortsAndPlaysInTimeOrder) {
       { "t": 0.0, "key": "W", "down": true },
       { "t": 0.5, "button": "left" },
       { "t": 0.5, "look": [90, 45] },
-      { "t": 2.0, "command": "quit" } ] })", "s.json");
+      { "t": 2.0, "command": "quit" } ] })",
+                                              "s.json");
   ASSERT_EQ(script.events.size(), 5u);
   EXPECT_NEAR(script.step, 0.05, 1e-6);
   ScriptPlayer player(script);
@@ -300,19 +407,30 @@ TEST(InputScriptTest, ParsesSortsAndPlaysInTimeOrder) {
 }
 
 TEST(InputScriptTest, BadScriptsNameTheFileAndTheEvent) {
-  const auto error = [](const std::string& text) { return errorOf([&] { parseInputScript(text, "script.json"); }); };
-  EXPECT_NE(error(R"({"events": [{"t": 0, "key": "HYPER"}]})").find("script.json: events[0].key: unknown key"), std::string::npos);
+  const auto error = [](const std::string& text) {
+    return errorOf([&] { parseInputScript(text, "script.json"); });
+  };
+  EXPECT_NE(
+      error(R"({"events": [{"t": 0, "key": "HYPER"}]})").find("script.json: events[0].key: unknown key"),
+      std::string::npos);
   EXPECT_NE(error(R"({"events": [{"key": "W"}]})").find("events[0]: missing \"t\""), std::string::npos);
-  EXPECT_NE(error(R"({"events": [{"t": 0, "key": "W", "button": "left"}]})").find("exactly one of"), std::string::npos);
+  EXPECT_NE(error(R"({"events": [{"t": 0, "key": "W", "button": "left"}]})").find("exactly one of"),
+            std::string::npos);
   EXPECT_NE(error(R"({"events": [{"t": 0, "look": [0, 91]}]})").find("events[0].look[1]"), std::string::npos);
-  EXPECT_NE(error(R"({"events": [{"t": 0, "command": "dance"}]})").find("events[0].command"), std::string::npos);
-  EXPECT_NE(error(R"({"events": [{"t": 0, "scroll": 1, "down": true}]})").find("events[0].down"), std::string::npos);
+  EXPECT_NE(error(R"({"events": [{"t": 0, "command": "dance"}]})").find("events[0].command"),
+            std::string::npos);
+  EXPECT_NE(error(R"({"events": [{"t": 0, "scroll": 1, "down": true}]})").find("events[0].down"),
+            std::string::npos);
   EXPECT_NE(error(R"({"events": [)").find("script.json:1:"), std::string::npos);
   EXPECT_NE(error(R"({"step": 0})").find("step"), std::string::npos);
-  EXPECT_NE(error(R"({"events": [{"t": 0, "command": "place_prop"}]})").find("events[0]: \"place_prop\" needs \"model\""),
+  EXPECT_NE(error(R"({"events": [{"t": 0, "command": "place_prop"}]})")
+                .find("events[0]: \"place_prop\" needs \"model\""),
             std::string::npos);
-  EXPECT_NE(error(R"({"events": [{"t": 0, "command": "save", "model": "a.glb"}]})").find("events[0].model"), std::string::npos);
-  EXPECT_EQ(parseInputScript(R"({"events": [{"t": 0, "command": "place_prop", "model": "a.glb"}]})", "s.json").events[0].model,
+  EXPECT_NE(error(R"({"events": [{"t": 0, "command": "save", "model": "a.glb"}]})").find("events[0].model"),
+            std::string::npos);
+  EXPECT_EQ(parseInputScript(R"({"events": [{"t": 0, "command": "place_prop", "model": "a.glb"}]})", "s.json")
+                .events[0]
+                .model,
             "a.glb");
 }
 
@@ -344,7 +462,9 @@ TEST(SettingsTest, SaveAndLoadRoundTripAndMissingMeansDefaults) {
 }
 
 TEST(SettingsTest, MalformedSettingsNameTheKey) {
-  const auto error = [](const std::string& text) { return errorOf([&] { parseSettings(text, "settings.json"); }); };
+  const auto error = [](const std::string& text) {
+    return errorOf([&] { parseSettings(text, "settings.json"); });
+  };
   EXPECT_NE(error(R"({"view_distance": 99})").find("settings.json: view_distance"), std::string::npos);
   EXPECT_NE(error(R"({"shadow": {"mode": "fancy"}})").find("shadow.mode"), std::string::npos);
   EXPECT_NE(error(R"({"keys": {"jump": "HYPER"}})").find("keys.jump: unknown key"), std::string::npos);

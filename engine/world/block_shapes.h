@@ -1,0 +1,27 @@
+#pragma once
+// Each block state's shape as boxes in 1/16 of a block: what a player collides with and what the
+// targeting ray hits and the outline draws. A full cube's is the whole cell; plants, torches, liquids
+// and air have none. Model blocks' boxes come from their models (scene/block_atlas.h, the default
+// pack's: as in Minecraft, a resource pack does not change how a block collides). Immutable once
+// built; the world points at it (World::setShapes).
+
+#include <vector>
+
+#include "world/block_registry.h"
+#include "world/face_coverage.h"
+
+namespace terrasol {
+
+class BlockShapes {
+ public:
+  // Opaque and see-through cubes a full box, every other state none.
+  explicit BlockShapes(const BlockRegistry& blocks);
+
+  const std::vector<ShapeBox>& boxes(BlockId state) const { return boxes_[state]; }
+  void setBoxes(BlockId state, std::vector<ShapeBox> boxes) { boxes_[state] = std::move(boxes); }
+
+ private:
+  std::vector<std::vector<ShapeBox>> boxes_;
+};
+
+}  // namespace terrasol
