@@ -1,12 +1,12 @@
-#include "game_session.h"
-
 #include <algorithm>
 
 #include "core/error.h"
 #include "core/log.h"
 #include "game_props.h"
 #include "game_renderer.h"
+#include "game_session.h"
 #include "pipeline/streamed_world.h"
+#include "placement.h"
 #include "targeting.h"
 
 // Changing the world: breaking, placing and picking blocks, and placing props.
@@ -17,7 +17,8 @@ namespace {
 constexpr double kBreakRepeat = 0.25, kPlaceRepeat = 0.2;  // Minecraft's creative delays (5 and 4 ticks)
 
 bool replaceable(const BlockType& type) {
-  return type.shape == BlockShape::None || type.shape == BlockShape::Liquid || type.shape == BlockShape::Cross;
+  return type.shape == BlockShape::None || type.shape == BlockShape::Liquid ||
+         type.shape == BlockShape::Cross;
 }
 
 }  // namespace
@@ -46,25 +47,37 @@ void Game::useBlocks(const FrameInput& in, double dt) {
   if (in.wasPressed(MouseButton::Middle)) {
     const BlockId picked = world_.world().getBlock(target_->block);
     const auto slot = std::find(hotbar_.begin(), hotbar_.end(), picked);
-    if (slot != hotbar_.end()) selected_ = static_cast<int>(slot - hotbar_.begin());
-    else hotbar_[static_cast<std::size_t>(selected_)] = picked;
+    if (slot != hotbar_.end())
+      selected_ = static_cast<int>(slot - hotbar_.begin());
+    else
+      hotbar_[static_cast<std::size_t>(selected_)] = picked;
   }
-  const bool breakNow = in.wasPressed(MouseButton::Left) || (in.isHeld(MouseButton::Left) && breakCooldown_ <= 0.0);
+  const bool breakNow =
+      in.wasPressed(MouseButton::Left) || (in.isHeld(MouseButton::Left) && breakCooldown_ <= 0.0);
   if (breakNow) {
     if (world_.setBlock(target_->block, kAir)) edits_.push_back({target_->block, "air"});
     breakCooldown_ = kBreakRepeat;
     target_ = targetBlock(world_.world(), player_.eye(), player_.forward());
     return;
   }
-  const bool placeNow = in.wasPressed(MouseButton::Right) || (in.isHeld(MouseButton::Right) && placeCooldown_ <= 0.0);
+  const bool placeNow =
+      in.wasPressed(MouseButton::Right) || (in.isHeld(MouseButton::Right) && placeCooldown_ <= 0.0);
   if (!placeNow) return;
   placeCooldown_ = kPlaceRepeat;
   // A plant under the crosshair is replaced, as in Minecraft; anything else gets the block beside it.
-  const BlockPos at = replaceable(blocks_[world_.world().getBlock(target_->block)]) ? target_->block : target_->place;
-  const BlockId block = hotbar_[static_cast<std::size_t>(selected_)];
+  const BlockPos at =
+      replaceable(blocks_[world_.world().getBlock(target_->block)]) ? target_->block : target_->place;
+  const glm::dvec3 hit = player_.eye() + player_.forward() * target_->distance;
+  const Placement placed = placementOf(world_.world(), hotbar_[static_cast<std::size_t>(selected_)], *target_,
+                                       at, hit, player_.forward());
+  const BlockId block = placed.state;
   const BlockType& type = blocks_[block];
+  if (placed.at != at) {  // a slab made double where it is
+    if (world_.setBlock(placed.at, block)) edits_.push_back({placed.at, blocks_.stateName(block)});
+    return;
+  }
   if (!inWorldHeight(at.y) || !replaceable(blocks_[world_.world().getBlock(at)])) return;
-  if (type.shape == BlockShape::Cube) {
+  if (type.shape == BlockShape::Cube || type.shape == BlockShape::Model) {
     const Box cell{glm::dvec3(at.x, at.y, at.z), glm::dvec3(at.x + 1, at.y + 1, at.z + 1)};
     const Box body = player_.box();
     const bool overlaps = body.min.x < cell.max.x && body.max.x > cell.min.x && body.min.y < cell.max.y &&
@@ -73,7 +86,7 @@ void Game::useBlocks(const FrameInput& in, double dt) {
   } else if (!blocks_[world_.world().getBlock(at.offset(0, -1, 0))].isOpaqueCube()) {
     return;  // torches and plants stand on a full block
   }
-  if (world_.setBlock(at, block)) edits_.push_back({at, type.name});
+  if (world_.setBlock(at, block)) edits_.push_back({at, blocks_.stateName(block)});
 }
 
 void Game::placeProp(const std::string& model) {
@@ -87,7 +100,8 @@ void Game::placeProp(const std::string& model) {
     return;
   }
   // As for blocks: a plant under the crosshair gives its own cell, anything else the cell beside it.
-  const BlockPos at = replaceable(blocks_[world_.world().getBlock(target_->block)]) ? target_->block : target_->place;
+  const BlockPos at =
+      replaceable(blocks_[world_.world().getBlock(target_->block)]) ? target_->block : target_->place;
   if (!inWorldHeight(at.y) || !replaceable(blocks_[world_.world().getBlock(at)])) {
     logWarning("no prop placed: look at a block with room beside it");
     return;
@@ -96,8 +110,8 @@ void Game::placeProp(const std::string& model) {
     const LevelProp prop = props_->standingIn(model, at);
     const WorldBounds box = props_->boundsOf(prop);
     const Box body = player_.box();
-    if (body.min.x < box.max.x && body.max.x > box.min.x && body.min.y < box.max.y && body.max.y > box.min.y &&
-        body.min.z < box.max.z && body.max.z > box.min.z) {
+    if (body.min.x < box.max.x && body.max.x > box.min.x && body.min.y < box.max.y &&
+        body.max.y > box.min.y && body.min.z < box.max.z && body.max.z > box.min.z) {
       logWarning("no prop placed: it would stand in the player");
       return;
     }

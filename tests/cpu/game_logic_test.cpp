@@ -11,6 +11,7 @@
 #include "core/error.h"
 #include "frame_rate.h"
 #include "input_script.h"
+#include "placement.h"
 #include "player.h"
 #include "scene/block_atlas.h"
 #include "settings.h"
@@ -323,6 +324,42 @@ TEST(TargetingTest, PicksTheFirstBlockAndTheFaceWithinReach) {
   ASSERT_TRUE(throughWater);
   EXPECT_EQ(throughWater->block, (BlockPos{0, 63, 0})) << "water is not targeted";
   EXPECT_FALSE(targetBlock(world, {0.5, 65.62, 0.5}, {0.0, 0.0, 0.0})) << "no direction, no target";
+}
+
+// Minecraft's placement rules: slabs by the clicked face and height, two slabs joined into one double
+// slab, stairs facing the way the player looks and upside down against a ceiling or a side's upper half.
+TEST(PlacementTest, SlabsAndStairsTakeTheirStateFromWhereAndHowTheyArePlaced) {
+  World world = flatWorld();
+  const BlockRegistry& b = defaultBlocks();
+  const BlockId slab = b.id("stone_slab"), stairs = b.id("oak_stairs");
+  const Target floor{{0, 63, 0}, {0, 1, 0}, {0, 64, 0}, 1.0};
+  const glm::dvec3 south(0.0, -0.5, 1.0), west(-1.0, -0.2, 0.1);
+  const auto name = [&](const Placement& p) { return b.stateName(p.state); };
+  EXPECT_EQ(name(placementOf(world, slab, floor, floor.place, {0.5, 64.0, 0.5}, south)), "stone_slab[type=bottom]");
+  // On a wall's side, above or below its middle.
+  const Target side{{0, 64, 3}, {0, 0, -1}, {0, 64, 2}, 2.0};
+  EXPECT_EQ(name(placementOf(world, slab, side, side.place, {0.5, 64.7, 3.0}, south)), "stone_slab[type=top]");
+  EXPECT_EQ(name(placementOf(world, slab, side, side.place, {0.5, 64.3, 3.0}, south)), "stone_slab[type=bottom]");
+  // Against a ceiling.
+  const Target ceiling{{0, 70, 0}, {0, -1, 0}, {0, 69, 0}, 2.0};
+  EXPECT_EQ(name(placementOf(world, slab, ceiling, ceiling.place, {0.5, 70.0, 0.5}, south)), "stone_slab[type=top]");
+  EXPECT_EQ(name(placementOf(world, stairs, ceiling, ceiling.place, {0.5, 70.0, 0.5}, south)),
+            "oak_stairs[facing=south,half=top,shape=straight]");
+  // Clicking a bottom slab's top joins them where it is; its side does not.
+  world.setBlock({0, 64, 0}, slab);
+  const Target onSlab{{0, 64, 0}, {0, 1, 0}, {0, 65, 0}, 1.0};
+  const Placement joined = placementOf(world, slab, onSlab, onSlab.place, {0.5, 64.5, 0.5}, south);
+  EXPECT_EQ(joined.at, (BlockPos{0, 64, 0}));
+  EXPECT_EQ(name(joined), "stone_slab[type=double]");
+  const Target slabSide{{0, 64, 0}, {0, 0, 1}, {0, 64, 1}, 1.0};
+  EXPECT_EQ(placementOf(world, slab, slabSide, slabSide.place, {0.5, 64.2, 1.0}, south).at, (BlockPos{0, 64, 1}));
+  // Stairs face the way the player looks.
+  EXPECT_EQ(name(placementOf(world, stairs, floor, floor.place, {0.5, 64.0, 0.5}, south)),
+            "oak_stairs[facing=south,half=bottom,shape=straight]");
+  EXPECT_EQ(name(placementOf(world, stairs, floor, floor.place, {0.5, 64.0, 0.5}, west)),
+            "oak_stairs[facing=west,half=bottom,shape=straight]");
+  // A block without these properties keeps its state.
+  EXPECT_EQ(placementOf(world, b.id("stone"), side, side.place, {0.5, 64.7, 3.0}, south).state, b.id("stone"));
 }
 
 // A shaped block is hit where the ray meets its boxes: a ray over a bottom slab's open half goes on
