@@ -8,6 +8,7 @@
 #include "pipeline/streamed_world.h"
 #include "placement.h"
 #include "targeting.h"
+#include "world/connected_states.h"
 
 // Changing the world: breaking, placing and picking blocks, and placing props.
 
@@ -55,7 +56,7 @@ void Game::useBlocks(const FrameInput& in, double dt) {
   const bool breakNow =
       in.wasPressed(MouseButton::Left) || (in.isHeld(MouseButton::Left) && breakCooldown_ <= 0.0);
   if (breakNow) {
-    if (world_.setBlock(target_->block, kAir)) edits_.push_back({target_->block, "air"});
+    editBlock(target_->block, kAir);
     breakCooldown_ = kBreakRepeat;
     target_ = targetBlock(world_.world(), player_.eye(), player_.forward());
     return;
@@ -73,7 +74,7 @@ void Game::useBlocks(const FrameInput& in, double dt) {
   const BlockId block = placed.state;
   const BlockType& type = blocks_[block];
   if (placed.at != at) {  // a slab made double where it is
-    if (world_.setBlock(placed.at, block)) edits_.push_back({placed.at, blocks_.stateName(block)});
+    editBlock(placed.at, block);
     return;
   }
   if (!inWorldHeight(at.y) || !replaceable(blocks_[world_.world().getBlock(at)])) return;
@@ -86,7 +87,7 @@ void Game::useBlocks(const FrameInput& in, double dt) {
   } else if (!blocks_[world_.world().getBlock(at.offset(0, -1, 0))].isOpaqueCube()) {
     return;  // torches and plants stand on a full block
   }
-  if (world_.setBlock(at, block)) edits_.push_back({at, blocks_.stateName(block)});
+  editBlock(at, block);
 }
 
 void Game::placeProp(const std::string& model) {
@@ -116,7 +117,7 @@ void Game::placeProp(const std::string& model) {
       return;
     }
     // The prop takes a plant's place, as a block would.
-    if (world_.world().getBlock(at) != kAir && world_.setBlock(at, kAir)) edits_.push_back({at, "air"});
+    if (world_.world().getBlock(at) != kAir) editBlock(at, kAir);
     props_->place(prop, world_.world(), world_.light());
     renderer_.setPropNeeds(props_->placed().gpu().needs());
     logInfo("placed " + model);
@@ -136,6 +137,15 @@ std::vector<std::string> Game::propFiles() const {
   }
   std::sort(files.begin(), files.end());
   return files;
+}
+
+bool Game::editBlock(const BlockPos& pos, BlockId state) {
+  if (!world_.setBlock(pos, state)) return false;
+  edits_.push_back({pos, blocks_.stateName(state)});
+  for (const auto& [at, connected] : connectionUpdates(world_.world(), pos)) {
+    if (world_.setBlock(at, connected)) edits_.push_back({at, blocks_.stateName(connected)});
+  }
+  return true;
 }
 
 }  // namespace terrasol::session

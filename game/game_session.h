@@ -64,6 +64,9 @@ class Game {
   void playScript(double now);
   void handleInput(const FrameInput& in, double dt);
   void useBlocks(const FrameInput& in, double dt);
+  // Sets a block as the player does: recorded among the edits, and stairs beside it turned into
+  // corners (world/connected_states.h). False when nothing changed.
+  bool editBlock(const BlockPos& pos, BlockId state);
   void tickWorld(const FrameInput& in, int ticks);
   void stream(Clock::time_point frameStart);
   void draw(bool timed);

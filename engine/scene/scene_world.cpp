@@ -7,6 +7,7 @@
 #include "core/error.h"
 #include "mesh/mesh_scheduler.h"
 #include "mesh/section_mesh.h"
+#include "world/connected_states.h"
 
 namespace terrasol {
 namespace {
@@ -43,6 +44,13 @@ SceneWorld::SceneWorld(const SceneFile& scene, const BlockRegistry& blocks)
     if (now) forEachCell(edit, [&](const BlockPos& p) { world_.setBlock(p, block); });
     edits_.push_back({edit, block, now});
   }
+  // Stairs beside each other turn into corners, as placed ones do.
+  for (const Edit& e : edits_) {
+    if (!e.applied) continue;
+    forEachCell(e.edit, [&](const BlockPos& p) {
+      for (const auto& [at, state] : connectionUpdates(world_, p)) world_.setBlock(at, state);
+    });
+  }
   // Light after the edits: one propagation instead of one per edited block.
   for (int dz = -load; dz <= load; ++dz)
     for (int dx = -load; dx <= load; ++dx) light_.chunkLoaded({centre_.x + dx, centre_.z + dz});
@@ -73,12 +81,16 @@ std::vector<SectionMesh> SceneWorld::advanceTo(int frame, const BlockMeshTable& 
   for (Edit& e : edits_) {
     if (e.applied || e.edit.atFrame > frame) continue;
     e.applied = true;
-    forEachCell(e.edit, [&](const BlockPos& p) {
-      if (const auto change = world_.setBlock(p, e.block)) {
+    const auto set = [&](const BlockPos& p, BlockId block) {
+      if (const auto change = world_.setBlock(p, block)) {
         light_.blockChanged(*change);
         scheduler.markBlockChanged(p);
         changed = true;
       }
+    };
+    forEachCell(e.edit, [&](const BlockPos& p) { set(p, e.block); });
+    forEachCell(e.edit, [&](const BlockPos& p) {
+      for (const auto& [at, state] : connectionUpdates(world_, p)) set(at, state);
     });
   }
   std::vector<SectionMesh> meshes;
