@@ -71,15 +71,6 @@ constexpr auto kCorners = [] {
   return table;
 }();
 
-std::uint32_t tintOf(const BlockMeshTable::Entry& e, int face) {
-  // Grass blocks tint only their top; plants, leaves and water tint everything.
-  if (e.tint == Tint::Grass && e.shape == BlockShape::Cube && face != static_cast<int>(Direction::Up)) return 0;
-  return static_cast<std::uint32_t>(e.tint);
-}
-std::uint32_t material(const BlockMeshTable::Entry& e, int texture, int face) {
-  return static_cast<std::uint32_t>(texture) | static_cast<std::uint32_t>(face) << 16 | tintOf(e, face) << 20;
-}
-
 class Mesher {
  public:
   Mesher(const SectionSnapshot& s, const BlockMeshTable& table) : s_(s), table_(table) {
@@ -266,7 +257,7 @@ class Mesher {
     PackedVertex v[4];
     for (int c = 0; c < 4; ++c) {
       v[c] = {PackedVertex::packPosition(corners32[c].x, corners32[c].y, corners32[c].z),
-              material(e, e.texture[0], face), light, PackedVertex::packUv(uvs[c][0], uvs[c][1])};
+              BlockMeshTable::material(e, e.texture[0], face), light, PackedVertex::packUv(uvs[c][0], uvs[c][1])};
     }
     std::copy_n(v, 4, out.quad());
   }
@@ -344,62 +335,7 @@ class Mesher {
 
 thread_local std::array<std::size_t, kMeshLayers> Mesher::lastSize_{};
 
-// A model quad's extent on its cullface's side (its bounding rectangle there, 1/16), and, for an
-// opaque block, the part of a side it covers: a quad lying on the side, facing out of it.
-void describeModelQuad(ModelQuad& q, BlockMeshTable::Entry& e) {
-  if (q.cullface < 0 && q.face >= 6) return;
-  const int side = q.cullface >= 0 ? q.cullface : q.face;
-  const int across = side / 2;                        // West/East: x, Down/Up: y, North/South: z
-  const int a = across == 0 ? 1 : 0, b = across == 2 ? 1 : 2;  // the side's axes, in x, y, z order
-  int lo[3] = {32, 32, 32}, hi[3] = {0, 0, 0};
-  for (const auto& c : q.corners32)
-    for (int i = 0; i < 3; ++i) {
-      lo[i] = std::min(lo[i], c[static_cast<std::size_t>(i)]);
-      hi[i] = std::max(hi[i], c[static_cast<std::size_t>(i)]);
-    }
-  q.rect = {lo[a] / 2, lo[b] / 2, (hi[a] + 1) / 2, (hi[b] + 1) / 2};
-  const int plane = side % 2 == 1 ? 32 : 0;
-  if (e.layer != MeshLayer::Opaque || q.face != side || lo[across] != plane || hi[across] != plane) return;
-  // Only whole 1/16 cells count as covered.
-  e.coverage.add(static_cast<Direction>(side), {(lo[a] + 1) / 2, (lo[b] + 1) / 2, hi[a] / 2, hi[b] / 2});
-}
-
-MeshLayer layerOf(RenderLayer layer) {
-  switch (layer) {
-    case RenderLayer::Cutout: return MeshLayer::Cutout;
-    case RenderLayer::Translucent: return MeshLayer::Translucent;
-    default: return MeshLayer::Opaque;
-  }
-}
-
 }  // namespace
-
-BlockMeshTable::BlockMeshTable(const BlockRegistry& blocks, const std::function<std::uint16_t(BlockId, int)>& textureOf,
-                               const std::function<std::vector<ModelQuad>(BlockId)>& modelQuadsOf) {
-  entries_.resize(blocks.size());
-  for (BlockId id = 0; id < blocks.size(); ++id) {
-    const BlockType& type = blocks[id];
-    Entry& e = entries_[id];
-    e.shape = type.shape;
-    e.layer = layerOf(type.layer);
-    e.opaque = type.isOpaqueCube();
-    // Translucent blocks and clear cubes (glass: opacity 0) hide faces against themselves; leaves do not.
-    e.cullSame = type.layer == RenderLayer::Translucent || type.shape == BlockShape::Liquid ||
-                 (type.shape == BlockShape::Cube && type.opacity == 0);
-    e.foliage = type.shape == BlockShape::Cube && type.layer == RenderLayer::Cutout && !e.cullSame;
-    e.tint = type.tint;
-    if (type.shape == BlockShape::Model) {
-      if (modelQuadsOf) e.quads = modelQuadsOf(id);
-      for (ModelQuad& q : e.quads) describeModelQuad(q, e);
-      for (int d = 0; d < 6; ++d) e.fullSides |= e.coverage.full(static_cast<Direction>(d)) ? 1u << d : 0u;
-      continue;
-    }
-    for (int f = 0; f < 6; ++f) {
-      e.texture[static_cast<std::size_t>(f)] = id == kAir ? 0 : textureOf(id, f);
-      e.material[static_cast<std::size_t>(f)] = material(e, e.texture[static_cast<std::size_t>(f)], f);
-    }
-  }
-}
 
 SectionMesh meshSection(const SectionSnapshot& snapshot, const BlockMeshTable& table) {
   SectionMesh mesh = Mesher(snapshot, table).run();

@@ -1,0 +1,67 @@
+#pragma once
+// What the mesher knows of each block state, looked up once per state: its shape, layer and culling
+// rules, its cube faces' textures, and a model block's quads and the parts of its cell's sides they
+// cover.
+
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "mesh/mesh_data.h"
+#include "world/block_registry.h"
+#include "world/face_coverage.h"
+
+namespace terrasol {
+
+// One quad of a model block's state, baked (assets/model_bake.h) and given its atlas texture.
+struct ModelQuad {
+  std::array<std::array<int, 3>, 4> corners32;  // within the cell, 1/32 block, 0..32, counter-clockwise
+  std::array<std::array<int, 2>, 4> uvs16;      // 1/16 of the texture
+  std::uint16_t texture = 0;
+  std::uint8_t face = 3;      // kFaceBases' index nearest its normal: 0..5 a Direction, 6..9 a diagonal
+  std::int8_t cullface = -1;  // Direction: left out where the neighbour on that side covers `rect`; -1 never
+  bool tinted = false;        // takes the block's tint (its model's tintindex)
+  SideRect rect;              // its extent on the cullface's side, 1/16 (filled in by BlockMeshTable)
+};
+
+// Per-block facts the mesher needs, looked up once per block id.
+class BlockMeshTable {
+ public:
+  // `textureOf(block, face)` is the texture id for a face (Direction order; cross plants and torches
+  // use face 0), e.g. the index of its texture in the atlas; `modelQuadsOf(state)` a model block's
+  // quads.
+  BlockMeshTable(const BlockRegistry& blocks, const std::function<std::uint16_t(BlockId, int)>& textureOf,
+                 const std::function<std::vector<ModelQuad>(BlockId)>& modelQuadsOf = {});
+
+  struct Entry {
+    BlockShape shape;
+    MeshLayer layer;
+    bool opaque;    // an opaque cube: hides neighbours' faces, darkens corners
+    bool cullSame;  // hides faces against the same block
+    bool foliage;   // a see-through cube that keeps its faces against others of its kind: leaves
+    Tint tint;
+    std::array<std::uint16_t, 6> texture;
+    std::array<std::uint32_t, 6> material;  // PackedVertex::material of each cube face
+    std::vector<ModelQuad> quads;           // shape Model
+    // What an opaque model block covers of its cell's sides (from its quads lying on them), and the
+    // sides it covers whole, as bits by Direction: neighbours' faces there are hidden.
+    FaceCoverage coverage;
+    std::uint8_t fullSides = 0;
+  };
+  const Entry& operator[](BlockId id) const { return entries_[id]; }
+
+  // PackedVertex::material for a texture on face `face` (kFaceBases' index) of a block drawn as `e`.
+  static std::uint32_t material(const Entry& e, int texture, int face) {
+    // Grass blocks tint only their top; plants, leaves and water tint everything.
+    const bool untinted =
+        e.tint == Tint::Grass && e.shape == BlockShape::Cube && face != static_cast<int>(Direction::Up);
+    return static_cast<std::uint32_t>(texture) | static_cast<std::uint32_t>(face) << 16 |
+           (untinted ? 0u : static_cast<std::uint32_t>(e.tint)) << 20;
+  }
+
+ private:
+  std::vector<Entry> entries_;
+};
+
+}  // namespace terrasol
