@@ -20,6 +20,7 @@ void describeModelQuad(ModelQuad& q, BlockMeshTable::Entry& e) {
     }
   q.rect = {lo[a] / 2, lo[b] / 2, (hi[a] + 1) / 2, (hi[b] + 1) / 2};
   const int plane = side % 2 == 1 ? 32 : 0;
+  q.onSide = q.face == side && lo[across] == plane && hi[across] == plane;
   if (e.layer != MeshLayer::Opaque || q.face != side || lo[across] != plane || hi[across] != plane) return;
   // Only whole 1/16 cells count as covered.
   e.coverage.add(static_cast<Direction>(side), {(lo[a] + 1) / 2, (lo[b] + 1) / 2, hi[a] / 2, hi[b] / 2});
@@ -37,6 +38,49 @@ MeshLayer layerOf(RenderLayer layer) {
 }
 
 }  // namespace
+
+void occludeByOwnShape(std::vector<ModelQuad>& quads, std::span<const ShapeBox> boxes) {
+  // A point just in front of the corner, stepped 1/32 towards each of the two cells beside it (away
+  // from the quad's middle, along each of its axes), is tested against the boxes' insides.
+  const auto inside = [&](const std::array<int, 3>& p32) {
+    return std::any_of(boxes.begin(), boxes.end(), [&](const ShapeBox& b) {
+      for (std::size_t i = 0; i < 3; ++i)
+        if (p32[i] <= b.from[i] * 2 || p32[i] >= b.to[i] * 2) return false;
+      return true;
+    });
+  };
+  for (ModelQuad& q : quads) {
+    q.ownOcclusion = {};
+    if (!q.smooth) continue;
+    const FaceBasis& basis = kFaceBases[q.face];
+    std::array<int, 3> middle{};  // x4
+    for (const auto& c : q.corners32)
+      for (std::size_t i = 0; i < 3; ++i) middle[i] += c[i];
+    for (std::size_t c = 0; c < 4; ++c) {
+      // Per axis of the face, +-1: away from the quad's middle.
+      int away[2];
+      for (int k = 0; k < 2; ++k) {
+        const float* axis = k == 0 ? basis.tangent : basis.up;
+        int along = 0;
+        for (std::size_t i = 0; i < 3; ++i)
+          along += static_cast<int>(axis[i]) * (q.corners32[c][i] * 4 - middle[i]);
+        away[k] = along > 0 ? 1 : -1;
+      }
+      int count = 0;
+      for (int k = 0; k < 2; ++k) {
+        // Out along one axis, in along the other: beside the corner, not on the quad's edge.
+        std::array<int, 3> p = q.corners32[c];
+        for (std::size_t i = 0; i < 3; ++i) {
+          p[i] += static_cast<int>(basis.normal[i]) +
+                  away[k] * static_cast<int>((k == 0 ? basis.tangent : basis.up)[i]) -
+                  away[1 - k] * static_cast<int>((k == 0 ? basis.up : basis.tangent)[i]);
+        }
+        count += inside(p) ? 1 : 0;
+      }
+      q.ownOcclusion[c] = static_cast<std::uint8_t>(count);
+    }
+  }
+}
 
 BlockMeshTable::BlockMeshTable(const BlockRegistry& blocks,
                                const std::function<std::uint16_t(BlockId, int)>& textureOf,

@@ -6,6 +6,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <span>
 #include <vector>
 
 #include "mesh/mesh_data.h"
@@ -22,8 +23,18 @@ struct ModelQuad {
   std::uint8_t face = 3;      // kFaceBases' index nearest its normal: 0..5 a Direction, 6..9 a diagonal
   std::int8_t cullface = -1;  // Direction: left out where the neighbour on that side covers `rect`; -1 never
   bool tinted = false;        // takes the block's tint (its model's tintindex)
-  SideRect rect;              // its extent on the cullface's side, 1/16 (filled in by BlockMeshTable)
+  bool smooth = false;        // smooth light and ambient occlusion (an axis-aligned face of a model with AO)
+  // Per corner, how many of the two cells beside it, seen along the face, the block's own shape
+  // fills (0..2): a stair's step darkens where it meets the riser (occludeByOwnShape).
+  std::array<std::uint8_t, 4> ownOcclusion{};
+  // Filled in by BlockMeshTable: its extent on the cullface's side (1/16), and whether it lies on its
+  // cell's side (lit from the cell beyond, as vanilla lights a face flush with the block's bounds).
+  SideRect rect;
+  bool onSide = false;
 };
+
+// Fills each quad's ownOcclusion from the boxes (1/16) of the models the state is drawn with.
+void occludeByOwnShape(std::vector<ModelQuad>& quads, std::span<const ShapeBox> boxes);
 
 // Per-block facts the mesher needs, looked up once per block id.
 class BlockMeshTable {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <cmath>
 #include <cstring>
 #include <utility>
 
@@ -40,7 +41,8 @@ constexpr int offset(int dx, int dy, int dz) {
 // Snapshot index step to the neighbour in each Direction.
 constexpr auto kNeighbour = [] {
   std::array<int, 6> steps{};
-  for (int d = 0; d < 6; ++d) steps[static_cast<std::size_t>(d)] = offset(kFaces[d].n.x, kFaces[d].n.y, kFaces[d].n.z);
+  for (int d = 0; d < 6; ++d)
+    steps[static_cast<std::size_t>(d)] = offset(kFaces[d].n.x, kFaces[d].n.y, kFaces[d].n.z);
   return steps;
 }();
 
@@ -90,7 +92,7 @@ class Mesher {
         // Opaque cubes by bit arithmetic on the row masks: a face shows where the neighbour is not opaque.
         const std::uint32_t self = row(y, z) >> 1 & 0xFFFF;
         const std::uint32_t visible[6] = {
-            self & ~(row(y, z) & 0xFFFF),       self & ~(row(y, z) >> 2 & 0xFFFF),
+            self & ~(row(y, z) & 0xFFFF),          self & ~(row(y, z) >> 2 & 0xFFFF),
             self & ~(row(y - 1, z) >> 1 & 0xFFFF), self & ~(row(y + 1, z) >> 1 & 0xFFFF),
             self & ~(row(y, z - 1) >> 1 & 0xFFFF), self & ~(row(y, z + 1) >> 1 & 0xFFFF),
         };
@@ -110,11 +112,20 @@ class Mesher {
           const auto& e = table_[id];
           switch (e.shape) {
             case BlockShape::Cube:
-            case BlockShape::Liquid: cube(x, y, z, id, e); break;
-            case BlockShape::Cross: cross(x, y, z, e); break;
-            case BlockShape::Torch: torch(x, y, z, e); break;
-            case BlockShape::Model: model(x, y, z, e); break;
-            case BlockShape::None: break;
+            case BlockShape::Liquid:
+              cube(x, y, z, id, e);
+              break;
+            case BlockShape::Cross:
+              cross(x, y, z, e);
+              break;
+            case BlockShape::Torch:
+              torch(x, y, z, e);
+              break;
+            case BlockShape::Model:
+              model(x, y, z, e);
+              break;
+            case BlockShape::None:
+              break;
           }
         }
       }
@@ -143,9 +154,13 @@ class Mesher {
             static_cast<std::uint32_t>(cells[17]) << 17;
       }
   }
-  std::uint32_t row(int y, int z) const { return rows_[static_cast<std::size_t>((y + 1) * SectionSnapshot::kSide + z + 1)]; }
+  std::uint32_t row(int y, int z) const {
+    return rows_[static_cast<std::size_t>((y + 1) * SectionSnapshot::kSide + z + 1)];
+  }
 
-  BlockId block(int x, int y, int z) const { return s_.blocks[static_cast<std::size_t>(SectionSnapshot::index(x, y, z))]; }
+  BlockId block(int x, int y, int z) const {
+    return s_.blocks[static_cast<std::size_t>(SectionSnapshot::index(x, y, z))];
+  }
   bool opaqueAt(int i) const { return s_.opaque[static_cast<std::size_t>(i)] != 0; }
 
   // Appends quads to a layer's vertices, which are grown ahead (uninitialised) and cut to size at
@@ -181,8 +196,8 @@ class Mesher {
     const int here = SectionSnapshot::index(x, y, z);
     forEachDirection([&](auto d) {
       const bool loweredTop = d == static_cast<int>(Direction::Up) && top32 < 32;
-      const bool visible = faceVisible(id, e, here + kNeighbour[d]) && !coveredFrom<d>(here + kNeighbour[d]) &&
-                           !(e.foliage && deepInFoliage<d>(x, y, z));
+      const bool visible = faceVisible(id, e, here + kNeighbour[d]) &&
+                           !coveredFrom<d>(here + kNeighbour[d]) && !(e.foliage && deepInFoliage<d>(x, y, z));
       if (!visible && !loweredTop) return;
       // A lowered surface under an opaque block is lit from the liquid's own cell, not the dark block.
       face<d>(x, y, z, e, top32, visible ? here + kNeighbour[d] : here);
@@ -210,26 +225,32 @@ class Mesher {
   static void forEachDirection(F&& f) {
     [&]<int... D>(std::integer_sequence<int, D...>) {
       (f(std::integral_constant<int, D>{}), ...);
-    }(std::make_integer_sequence<int, 6>{});
+    }
+    (std::make_integer_sequence<int, 6>{});
+  }
+
+  // The light fields of a full face's four corners in Direction d, lit from the cell `front`. Each
+  // corner sums the light terms of the four cells around it in front of the face: the front cell
+  // always counts (the face is visible, so it is not opaque), an opaque cell adds 0, and the diagonal
+  // is left out when both sides are opaque. The open cells then number exactly ao + 1 (3 - opaque
+  // ones, or 1 when both sides are walled), so the sum less one count is the vertex's light field:
+  // both sums, and the count less one as its ambient occlusion.
+  void cornerLight(int d, int front, std::uint32_t (&corner)[4]) const {
+    const std::uint32_t* light = s_.light.data() + front;
+    const std::uint32_t own = light[0] - SectionSnapshot::kOpen;
+    for (int c = 0; c < 4; ++c) {
+      const CornerCells& k = kCorners[static_cast<std::size_t>(d)][static_cast<std::size_t>(c)];
+      const std::uint32_t t1 = light[k.side1], t2 = light[k.side2], t3 = light[k.diagonal];
+      corner[c] = own + t1 + t2 + ((t1 | t2) != 0 ? t3 : 0);
+    }
   }
 
   // One full-block face in Direction D with smooth light and ambient occlusion at each corner.
   // `front`: the snapshot cell the face looks into, whose surroundings light its corners.
   template <int D>
   void face(int x, int y, int z, const BlockMeshTable::Entry& e, int top32, int front) {
-    const std::uint32_t* light = s_.light.data() + front;
-    // Each corner sums the light terms of the four cells around it in front of the face: the front
-    // cell always counts (the face is visible, so it is not opaque), an opaque cell adds 0, and the
-    // diagonal is left out when both sides are opaque. The open cells then number exactly ao + 1
-    // (3 - opaque ones, or 1 when both sides are walled), so the sum less one count is the vertex's
-    // light field: both sums, and the count less one as its ambient occlusion.
-    const std::uint32_t own = light[0] - SectionSnapshot::kOpen;
     std::uint32_t corner[4];
-    for (int c = 0; c < 4; ++c) {
-      const CornerCells& k = kCorners[D][c];
-      const std::uint32_t t1 = light[k.side1], t2 = light[k.side2], t3 = light[k.diagonal];
-      corner[c] = own + t1 + t2 + ((t1 | t2) != 0 ? t3 : 0);
-    }
+    cornerLight(D, front, corner);
     const std::uint32_t base = PackedVertex::packPosition(x * 32, y * 32, z * 32);
     const std::uint32_t lowered = static_cast<std::uint32_t>(32 - top32) << 10;
     PackedVertex* q = layer(e).quad();
@@ -252,12 +273,13 @@ class Mesher {
     }
   }
 
-  void flatQuad(LayerWriter& out, const std::array<Vec, 4>& corners32, const BlockMeshTable::Entry& e, int face,
-                const std::array<std::array<int, 2>, 4>& uvs, std::uint32_t light) {
+  void flatQuad(LayerWriter& out, const std::array<Vec, 4>& corners32, const BlockMeshTable::Entry& e,
+                int face, const std::array<std::array<int, 2>, 4>& uvs, std::uint32_t light) {
     PackedVertex v[4];
     for (int c = 0; c < 4; ++c) {
       v[c] = {PackedVertex::packPosition(corners32[c].x, corners32[c].y, corners32[c].z),
-              BlockMeshTable::material(e, e.texture[0], face), light, PackedVertex::packUv(uvs[c][0], uvs[c][1])};
+              BlockMeshTable::material(e, e.texture[0], face), light,
+              PackedVertex::packUv(uvs[c][0], uvs[c][1])};
     }
     std::copy_n(v, 4, out.quad());
   }
@@ -271,7 +293,8 @@ class Mesher {
 
   // Two diagonal planes, each seen from both sides (faces 6..9).
   void cross(int x, int y, int z, const BlockMeshTable::Entry& e) {
-    const int x0 = x * 32 + 5, x1 = x * 32 + 27, y0 = y * 32, y1 = y * 32 + 32, z0 = z * 32 + 5, z1 = z * 32 + 27;
+    const int x0 = x * 32 + 5, x1 = x * 32 + 27, y0 = y * 32, y1 = y * 32 + 32, z0 = z * 32 + 5,
+              z1 = z * 32 + 27;
     const std::uint32_t light = ownLight(x, y, z);
     const std::array<std::array<int, 2>, 4> uvs = {{{0, 16}, {16, 16}, {16, 0}, {0, 0}}};
     const std::array<std::array<int, 2>, 4> back = {{{16, 16}, {0, 16}, {0, 0}, {16, 0}}};
@@ -284,7 +307,8 @@ class Mesher {
 
   // Minecraft's torch: a 2/16 x 10/16 x 2/16 stick, sides textured from u 7..9, v 6..16, top 7..9, 6..8.
   void torch(int x, int y, int z, const BlockMeshTable::Entry& e) {
-    const int x0 = x * 32 + 14, x1 = x * 32 + 18, y0 = y * 32, y1 = y * 32 + 20, z0 = z * 32 + 14, z1 = z * 32 + 18;
+    const int x0 = x * 32 + 14, x1 = x * 32 + 18, y0 = y * 32, y1 = y * 32 + 20, z0 = z * 32 + 14,
+              z1 = z * 32 + 18;
     const std::uint32_t light = ownLight(x, y, z);
     const std::array<std::array<int, 2>, 4> side = {{{7, 16}, {9, 16}, {9, 6}, {7, 6}}};
     const std::array<std::array<int, 2>, 4> top = {{{7, 8}, {9, 8}, {9, 6}, {7, 6}}};
@@ -296,8 +320,10 @@ class Mesher {
     flatQuad(out, {{{x0, y1, z1}, {x1, y1, z1}, {x1, y1, z0}, {x0, y1, z0}}}, e, 3, top, light);   // Up
   }
 
-  // A model block's quads, each lit flat by the cell it faces: the neighbour across its cullface,
-  // else its own cell. Left out against an opaque cube across the cullface.
+  // A model block's quads. Left out against an opaque cube across the cullface, or a neighbour's
+  // shape covering the quad there. Axis-aligned faces get smooth light and ambient occlusion, the
+  // full face's corners interpolated at each vertex (vanilla's partial faces); the others are lit
+  // flat by the cell they face: the neighbour across their cullface, else their own cell.
   void model(int x, int y, int z, const BlockMeshTable::Entry& e) {
     const int here = SectionSnapshot::index(x, y, z);
     auto& out = layer(e);
@@ -305,22 +331,72 @@ class Mesher {
       int lit = here;
       if (m.cullface >= 0) {
         const int neighbour = here + kNeighbour[static_cast<std::size_t>(m.cullface)];
-        if (opaqueAt(neighbour) ||
-            hiddenBy(table_[s_.blocks[static_cast<std::size_t>(neighbour)]].coverage,
-                     static_cast<Direction>(m.cullface), m.rect)) {
+        if (opaqueAt(neighbour) || hiddenBy(table_[s_.blocks[static_cast<std::size_t>(neighbour)]].coverage,
+                                            static_cast<Direction>(m.cullface), m.rect)) {
           continue;
         }
         lit = neighbour;
       }
-      const std::uint32_t light = cellLight(lit);
-      const std::uint32_t mat = static_cast<std::uint32_t>(m.texture) | static_cast<std::uint32_t>(m.face) << 16 |
-                                (m.tinted ? static_cast<std::uint32_t>(e.tint) : 0u) << 20;
-      PackedVertex* q = out.quad();
-      for (std::size_t c = 0; c < 4; ++c) {
-        q[c] = {PackedVertex::packPosition(x * 32 + m.corners32[c][0], y * 32 + m.corners32[c][1],
-                                           z * 32 + m.corners32[c][2]),
-                mat, light, PackedVertex::packUv(m.uvs16[c][0], m.uvs16[c][1])};
+      std::uint32_t light[4];
+      if (m.smooth) {
+        smoothLight(m, here, light);
+      } else {
+        std::fill_n(light, 4, cellLight(lit));
       }
+      const std::uint32_t mat = static_cast<std::uint32_t>(m.texture) |
+                                static_cast<std::uint32_t>(m.face) << 16 |
+                                (m.tinted ? static_cast<std::uint32_t>(e.tint) : 0u) << 20;
+      // The brighter diagonal splits the quad, as for full faces.
+      const int first = (light[0] >> 12) + (light[2] >> 12) < (light[1] >> 12) + (light[3] >> 12) ? 1 : 0;
+      PackedVertex* q = out.quad();
+      for (int i = 0; i < 4; ++i) {
+        const auto c = static_cast<std::size_t>((i + first) & 3);
+        q[i] = {PackedVertex::packPosition(x * 32 + m.corners32[c][0], y * 32 + m.corners32[c][1],
+                                           z * 32 + m.corners32[c][2]),
+                mat, light[c], PackedVertex::packUv(m.uvs16[c][0], m.uvs16[c][1])};
+      }
+    }
+  }
+
+  // A model quad's vertex light: the corners of the full face in its direction (lit from the cell
+  // beyond when the quad lies on its cell's side, else from its own cell) weighted by where the vertex
+  // sits on that face. Averages and occlusion are interpolated, the block's own shape darkens its
+  // inner corners, and the result is stored back as sums over ao + 1 cells.
+  void smoothLight(const ModelQuad& m, int here, std::uint32_t (&light)[4]) const {
+    const int d = m.face;
+    int front = m.onSide ? here + kNeighbour[static_cast<std::size_t>(d)] : here;
+    if (opaqueAt(front)) front = here;
+    std::uint32_t corner[4];
+    cornerLight(d, front, corner);
+    float block[4], sky[4], ao[4];
+    for (int c = 0; c < 4; ++c) {
+      const float cells = static_cast<float>((corner[c] >> 12 & 3) + 1);
+      block[c] = static_cast<float>(corner[c] & 63) / cells;
+      sky[c] = static_cast<float>(corner[c] >> 6 & 63) / cells;
+      ao[c] = cells - 1.0f;
+    }
+    const FaceFrame& f = kFaces[static_cast<std::size_t>(d)];
+    for (std::size_t v = 0; v < 4; ++v) {
+      const auto& p = m.corners32[v];
+      // The vertex on the face, -1..1 along its tangent and up.
+      const float s =
+          static_cast<float>(f.t.x * (p[0] - 16) + f.t.y * (p[1] - 16) + f.t.z * (p[2] - 16)) / 16.0f;
+      const float r =
+          static_cast<float>(f.b.x * (p[0] - 16) + f.b.y * (p[1] - 16) + f.b.z * (p[2] - 16)) / 16.0f;
+      float b = 0.0f, k = 0.0f, o = 0.0f;
+      for (int c = 0; c < 4; ++c) {
+        const float w = (1.0f + static_cast<float>(kCornerSigns[c][0]) * s) *
+                        (1.0f + static_cast<float>(kCornerSigns[c][1]) * r) * 0.25f;
+        b += w * block[c];
+        k += w * sky[c];
+        o += w * ao[c];
+      }
+      const int own = m.ownOcclusion[v];
+      const int occlusion = std::min(static_cast<int>(std::lround(o)), own == 2 ? 0 : 3 - own);
+      const float cells = static_cast<float>(occlusion + 1);
+      light[v] = static_cast<std::uint32_t>(std::lround(b * cells)) |
+                 static_cast<std::uint32_t>(std::lround(k * cells)) << 6 |
+                 static_cast<std::uint32_t>(occlusion) << 12;
     }
   }
 

@@ -67,14 +67,31 @@ void forEachModelOfEachState(const BlockRegistry& blocks, const PackStack& packs
   }
 }
 
-// Model blocks: each state's models baked.
-std::vector<std::vector<BakedQuad>> bakeModelStates(const BlockRegistry& blocks, const PackStack& packs,
-                                                    std::vector<PackProblem>& problems) {
-  std::vector<std::vector<BakedQuad>> baked(blocks.size());
+// A model's placed boxes in whole 1/16 units.
+std::vector<ShapeBox> boxesOf(const BlockModel& model, const ModelPlacement& placement) {
+  std::vector<ShapeBox> boxes;
+  for (const std::array<float, 6>& b : placedBoxes(model, placement)) {
+    const auto at = [&](int i) { return static_cast<int>(std::lround(b[static_cast<std::size_t>(i)])); };
+    boxes.push_back({{at(0), at(1), at(2)}, {at(3), at(4), at(5)}});
+  }
+  return boxes;
+}
+
+// Model blocks: each state's models baked, and their boxes.
+struct BakedStates {
+  std::vector<std::vector<BakedQuad>> quads;
+  std::vector<std::vector<ShapeBox>> boxes;
+};
+BakedStates bakeModelStates(const BlockRegistry& blocks, const PackStack& packs,
+                            std::vector<PackProblem>& problems) {
+  BakedStates baked{std::vector<std::vector<BakedQuad>>(blocks.size()),
+                    std::vector<std::vector<ShapeBox>>(blocks.size())};
   forEachModelOfEachState(blocks, packs, problems,
                           [&](BlockId s, const BlockModel& m, const ModelPlacement& p) {
                             const std::vector<BakedQuad> quads = bakeModel(m, p);
-                            baked[s].insert(baked[s].end(), quads.begin(), quads.end());
+                            baked.quads[s].insert(baked.quads[s].end(), quads.begin(), quads.end());
+                            const std::vector<ShapeBox> boxes = boxesOf(m, p);
+                            baked.boxes[s].insert(baked.boxes[s].end(), boxes.begin(), boxes.end());
                           });
   return baked;
 }
@@ -115,6 +132,7 @@ ModelQuad meshQuad(const BakedQuad& q, std::uint16_t texture) {
   m.face = basisOf(q.normal);
   m.cullface = q.cullface ? static_cast<std::int8_t>(directionOf(*q.cullface)) : std::int8_t{-1};
   m.tinted = q.tintIndex >= 0;
+  m.smooth = q.ambientOcclusion && m.face < 6;
   return m;
 }
 
@@ -122,14 +140,14 @@ ModelQuad meshQuad(const BakedQuad& q, std::uint16_t texture) {
 
 BlockAtlas buildBlockAtlas(const BlockRegistry& blocks, const PackStack& packs) {
   BlockAtlas result;
-  const std::vector<std::vector<BakedQuad>> baked = bakeModelStates(blocks, packs, result.problems);
+  const BakedStates baked = bakeModelStates(blocks, packs, result.problems);
   // Each distinct candidate list is loaded once, in a stable order.
   std::map<std::vector<std::string>, std::uint16_t> index;
   for (BlockId id = 0; id < blocks.size(); ++id) {
     for (const auto& face : blocks[id].textures) {
       if (!face.empty()) index.emplace(face, 0);
     }
-    for (const BakedQuad& q : baked[id]) index.emplace(candidatesOf(q.texture), 0);
+    for (const BakedQuad& q : baked.quads[id]) index.emplace(candidatesOf(q.texture), 0);
   }
   std::vector<LoadedTexture> textures;
   for (auto& [candidates, texture] : index) {
@@ -145,8 +163,9 @@ BlockAtlas buildBlockAtlas(const BlockRegistry& blocks, const PackStack& packs) 
       const auto& face = blocks[id].textures[static_cast<std::size_t>(f)];
       result.faceTextures[id][static_cast<std::size_t>(f)] = face.empty() ? 0 : index.at(face);
     }
-    for (const BakedQuad& q : baked[id])
+    for (const BakedQuad& q : baked.quads[id])
       result.modelQuads[id].push_back(meshQuad(q, index.at(candidatesOf(q.texture))));
+    occludeByOwnShape(result.modelQuads[id], baked.boxes[id]);
   }
   return result;
 }
@@ -157,12 +176,8 @@ BlockShapes blockShapesOf(const BlockRegistry& blocks, const PackStack& packs) {
   std::vector<PackProblem> problems;  // the atlas reports them
   forEachModelOfEachState(blocks, packs, problems,
                           [&](BlockId s, const BlockModel& m, const ModelPlacement& p) {
-                            for (const std::array<float, 6>& b : placedBoxes(m, p)) {
-                              const auto at = [&](int i) {
-                                return static_cast<int>(std::lround(b[static_cast<std::size_t>(i)]));
-                              };
-                              boxes[s].push_back({{at(0), at(1), at(2)}, {at(3), at(4), at(5)}});
-                            }
+                            const std::vector<ShapeBox> placed = boxesOf(m, p);
+                            boxes[s].insert(boxes[s].end(), placed.begin(), placed.end());
                           });
   for (BlockId s = 0; s < blocks.size(); ++s) {
     if (blocks[s].shape == BlockShape::Model) shapes.setBoxes(s, std::move(boxes[s]));

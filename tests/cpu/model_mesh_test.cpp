@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "core/paths.h"
 #include "scene/block_atlas.h"
 #include "support/mesh_world.h"
@@ -98,6 +100,50 @@ TEST_F(ModelMesh, ShapedNeighboursHideTheFacesTheyCover) {
       << "stone keeps its face against a bottom slab's open half";
   EXPECT_EQ(count({{{3, 64, 3}, "stone_slab"}, {{4, 64, 3}, "oak_stairs[facing=west]"}}), 5u + 10u)
       << "a slab's side against the stairs' back; the stairs' back against the slab's lower half only";
+}
+
+// The vertices of the quads facing `face` whose corners all satisfy `where` (section positions, 1/32).
+template <class Where>
+std::vector<PackedVertex> verticesOf(const SectionMesh& mesh, Direction face, Where&& where) {
+  std::vector<PackedVertex> found;
+  const PackedVertices& v = mesh.layers[static_cast<std::size_t>(MeshLayer::Opaque)].vertices;
+  for (std::size_t q = 0; q + 3 < v.size(); q += 4) {
+    if (v[q].face() != static_cast<int>(face) || v[q].role() == QuadRole::Merged) continue;
+    if (std::all_of(v.begin() + static_cast<long>(q), v.begin() + static_cast<long>(q) + 4, where))
+      found.insert(found.end(), v.begin() + static_cast<long>(q), v.begin() + static_cast<long>(q) + 4);
+  }
+  return found;
+}
+
+// Vanilla's smooth light on partial faces: a stair's own shape darkens the corner where its step
+// meets its riser, and a slab's side takes the occlusion of the full face's corners interpolated at
+// its vertices.
+TEST_F(ModelMesh, ModelFacesGetSmoothLightAndAmbientOcclusion) {
+  ModelWorld stairs(*atlas_);
+  stairs.set({3, 64, 3}, "oak_stairs[facing=east]");  // the step on the west half, the riser at x = 8/16
+  const SectionMesh mesh = stairs.mesh();
+  const auto inCell = [](const PackedVertex& v) { return v.x32() / 32 == 3 || v.x32() == 128; };
+  const std::vector<PackedVertex> step =
+      verticesOf(mesh, Direction::Up, [&](const PackedVertex& v) { return inCell(v) && v.y32() == 16; });
+  ASSERT_EQ(step.size(), 4u);
+  for (const PackedVertex& v : step) EXPECT_EQ(v.ao(), v.x32() == 3 * 32 + 16 ? 2 : 3) << v.x32();
+  const std::vector<PackedVertex> riser =
+      verticesOf(mesh, Direction::West, [&](const PackedVertex& v) { return v.x32() == 3 * 32 + 16; });
+  ASSERT_EQ(riser.size(), 4u);
+  for (const PackedVertex& v : riser) EXPECT_EQ(v.ao(), v.y32() == 16 ? 2 : 3) << v.y32();
+  // Everything else of the stairs is open to the sky: full light.
+  for (const PackedVertex& v : step) EXPECT_EQ(v.skyLight4(), 60);
+
+  // A bottom slab's west side, under a wall of stone one block up and to the west: the full face's
+  // top corners there see two open cells of four (ao 1), its bottom corners all four (ao 3), so the
+  // slab's side, half as high, has ao 2 at its top and 3 at its bottom.
+  ModelWorld slab(*atlas_);
+  slab.set({3, 64, 3}, "stone_slab");
+  for (int z = 1; z <= 5; ++z) slab.set({2, 65, z}, "stone");
+  const std::vector<PackedVertex> side =
+      verticesOf(slab.mesh(), Direction::West, [](const PackedVertex& v) { return v.x32() == 3 * 32; });
+  ASSERT_EQ(side.size(), 4u);
+  for (const PackedVertex& v : side) EXPECT_EQ(v.ao(), v.y32() == 16 ? 2 : 3) << v.y32();
 }
 
 // Without blockstates (a stack without the default pack) a model block is a cube of the missing
