@@ -80,10 +80,9 @@ Game::Game(GlfwWindow& window, const GameOptions& options)
       renderer_(blocks_, settings_),
       benchmarkDir_(options.benchmark ? benchmarkWorldDir() : std::filesystem::path()),
       world_(options.benchmark ? benchmarkDir_ : options.world, seedOf(options), blocks_, renderer_.assets().table,
-             settings_.viewDistance, workerThreads()),
+             settings_.viewDistance, workerThreads(), &shapes_),
       controls_(settings_.keys) {
   for (std::size_t i = 0; i < hotbar_.size(); ++i) hotbar_[i] = blocks_.id(kHotbar[i]);
-  world_.world().setShapes(&shapes_);
   const Level& level = world_.level();
   if (world_.isNew()) {
     spawnPending_ = true;

@@ -10,11 +10,11 @@
 namespace terrasol {
 
 using light::Cell;
-using light::kAllDirections;
-using light::Propagator;
 using light::computeSkyTops;
 using light::fillOpenSky;
+using light::kAllDirections;
 using light::kHorizontal;
+using light::Propagator;
 using light::spreadTops;
 
 namespace {
@@ -31,21 +31,44 @@ BlockPos faceCell(ChunkPos pos, int d, int a, int y, int beyond) {
   return {pos.minBlockX() + x, y, pos.minBlockZ() + z};
 }
 
+// 1 where a block ends the open sky column: it has opacity, or light does not cross its top or bottom.
+std::vector<std::uint8_t> columnStops(const std::vector<std::uint8_t>& opacity,
+                                      const std::vector<std::uint8_t>& sides) {
+  constexpr unsigned kUpDown =
+      1u << static_cast<int>(Direction::Down) | 1u << static_cast<int>(Direction::Up);
+  std::vector<std::uint8_t> stops(opacity.size());
+  for (std::size_t b = 0; b < stops.size(); ++b) stops[b] = opacity[b] > 0 || (sides[b] & kUpDown) ? 1 : 0;
+  return stops;
+}
+
+// Per block id: 1 for an emitter, 2 for a block with light sides (ChunkLight's counts).
+std::vector<std::uint8_t> specialCells(const std::vector<std::uint8_t>& emission,
+                                       const std::vector<std::uint8_t>& sides) {
+  std::vector<std::uint8_t> kinds(emission.size());
+  for (std::size_t b = 0; b < kinds.size(); ++b)
+    kinds[b] = (emission[b] > 0 ? 1 : 0) | (sides[b] != 0 ? 2 : 0);
+  return kinds;
+}
+
 }  // namespace
 
 LightEngine::LightEngine(World& world)
     : world_(world),
-      opacity_(world.blocks().opacities().data()),
+      lightSides_(world.shapes() ? world.shapes()->lightSides()
+                                 : std::vector<std::uint8_t>(world.blocks().size())),
+      columnStop_(columnStops(world.blocks().opacities(), lightSides_)),
       attenuation_(light::attenuations(world.blocks().opacities())),
+      flood_(light::floodAttenuations(attenuation_, lightSides_.data())),
       emission_(world.blocks().emissions().data()),
+      special_(specialCells(world.blocks().emissions(), lightSides_)),
       frame_(std::make_unique<light::LightFrame>()),
       solver_(std::make_unique<light::SectionSolver>()) {}
 
 LightEngine::~LightEngine() = default;
 
 light::Propagator LightEngine::propagator(const light::ChunkWindow& window, LightChannel channel) {
-  return light::Propagator(*frame_, window, channel, attenuation_.data(), emission_, decrease_, increase_,
-                           stats_, changed_);
+  return light::Propagator(*frame_, window, channel, flood_.data(), lightSides_.data(), emission_, decrease_,
+                           increase_, stats_, changed_);
 }
 
 std::uint8_t LightEngine::lightAt(const BlockPos& pos, LightChannel channel) const {
@@ -53,7 +76,8 @@ std::uint8_t LightEngine::lightAt(const BlockPos& pos, LightChannel channel) con
   if (pos.y < kMinY) return 0;
   const Chunk* c = world_.chunk(ChunkPos::of(pos));
   if (!c || !c->light().lit) return 0;
-  return layerOf(c->light(), channel, sectionOf(pos.y)).get(Section::index(localOf(pos.x), localOf(pos.y), localOf(pos.z)));
+  return layerOf(c->light(), channel, sectionOf(pos.y))
+      .get(Section::index(localOf(pos.x), localOf(pos.y), localOf(pos.z)));
 }
 
 std::vector<SectionPos> LightEngine::takeChangedSections() {
@@ -64,7 +88,7 @@ void LightEngine::chunkLoaded(ChunkPos pos) {
   Chunk* chunk = world_.chunk(pos);
   if (!chunk) return;
   ChunkLight& light = chunk->light();
-  computeSkyTops(*chunk, opacity_, light);
+  computeSkyTops(*chunk, columnStop_.data(), light);
   for (auto& block : light.block) block.fill(0);
   fillOpenSky(light);
   light.lit = true;
@@ -84,25 +108,43 @@ void LightEngine::chunkLoaded(ChunkPos pos) {
   }
 }
 
-// Every emitter starts at its emission; the per-section emitter counts are rebuilt on the way.
+// Every emitter starts at its emission; the per-section counts of emitters and shaped cells are
+// rebuilt on the way.
 void LightEngine::seedEmitters(light::Propagator& p, Chunk& chunk) {
-  ChunkLight& light = chunk.light();
   const int x0 = chunk.pos().minBlockX(), z0 = chunk.pos().minBlockZ();
   Cell cell;
   for (int s = 0; s < kSectionCount; ++s) {
     const Section& section = chunk.section(s);
-    light.emitters[static_cast<std::size_t>(s)] = 0;
-    if (section.isUniform() && emission_[section.uniformBlock()] == 0) continue;
+    if (!countSpecialCells(chunk, s)) continue;
     for (int i = 0; i < Section::kVolume; ++i) {
       const std::uint8_t e = emission_[section.at(i)];
       if (e == 0) continue;
-      ++light.emitters[static_cast<std::size_t>(s)];
       const int x = x0 + (i & 15), y = kMinY + s * 16 + (i >> 8), z = z0 + ((i >> 4) & 15);
       p.locate(x, y, z, cell);
       p.setLight(cell, e);
       p.increase(x, y, z, e, kAllDirections);
     }
   }
+}
+
+bool LightEngine::countSpecialCells(Chunk& chunk, int s) const {
+  const Section& section = chunk.section(s);
+  ChunkLight& light = chunk.light();
+  std::uint16_t emitters = 0, shaped = 0;
+  if (!section.isUniform()) {
+    for (const BlockId b : *section.blocks()) {
+      const std::uint8_t kind = special_[b];
+      emitters += kind & 1;
+      shaped += kind >> 1;
+    }
+  } else if (special_[section.uniformBlock()] != 0) {
+    const std::uint8_t kind = special_[section.uniformBlock()];
+    emitters = static_cast<std::uint16_t>((kind & 1) * Section::kVolume);
+    shaped = static_cast<std::uint16_t>((kind >> 1) * Section::kVolume);
+  }
+  light.emitters[static_cast<std::size_t>(s)] = emitters;
+  light.shaped[static_cast<std::size_t>(s)] = shaped;
+  return emitters > 0;
 }
 
 // Open-sky cells next to a darker cell spread sky light from there; a block in the top layer of the
@@ -176,8 +218,10 @@ void LightEngine::chunkUnloading(ChunkPos pos) {
 
 void LightEngine::blockChanged(const BlockChange& change) {
   const BlockPos& at = change.pos;
-  const bool sameLight = opacity_[change.before] == opacity_[change.after] &&
-                         emission_[change.before] == emission_[change.after];
+  const auto opacity = world_.blocks().opacities().data();
+  const bool sameLight = opacity[change.before] == opacity[change.after] &&
+                         emission_[change.before] == emission_[change.after] &&
+                         lightSides_[change.before] == lightSides_[change.after];
   Chunk* chunk = world_.chunk(ChunkPos::of(at));
   if (sameLight || !chunk || !chunk->light().lit) return;
 
@@ -185,12 +229,18 @@ void LightEngine::blockChanged(const BlockChange& change) {
   const int oldTop = light.skyTop[static_cast<std::size_t>(localOf(at.z) * 16 + localOf(at.x))];
   const int newTop = updateSkyTop(*chunk, change);
   auto& emitters = light.emitters[static_cast<std::size_t>(sectionOf(at.y))];
-  emitters = static_cast<std::uint16_t>(emitters - (emission_[change.before] > 0) + (emission_[change.after] > 0));
+  emitters =
+      static_cast<std::uint16_t>(emitters - (emission_[change.before] > 0) + (emission_[change.after] > 0));
+  auto& shaped = light.shaped[static_cast<std::size_t>(sectionOf(at.y))];
+  shaped = static_cast<std::uint16_t>(shaped - (lightSides_[change.before] != 0) +
+                                      (lightSides_[change.after] != 0));
 
   const ChunkPos here = ChunkPos::of(at);
-  const light::ChunkWindow window(world_, {here.x - kReach, here.z - kReach}, {here.x + kReach, here.z + kReach});
-  // Sky light only sees opacity: a new or removed emitter leaves it alone.
-  const bool skyToo = opacity_[change.before] != opacity_[change.after];
+  const light::ChunkWindow window(world_, {here.x - kReach, here.z - kReach},
+                                  {here.x + kReach, here.z + kReach});
+  // Sky light only sees opacity and light sides: a new or removed emitter leaves it alone.
+  const bool skyToo = opacity[change.before] != opacity[change.after] ||
+                      lightSides_[change.before] != lightSides_[change.after];
   for (const LightChannel channel : {LightChannel::Block, LightChannel::Sky}) {
     if (channel == LightChannel::Sky && !skyToo) continue;
     Propagator p = propagator(window, channel);
@@ -200,16 +250,17 @@ void LightEngine::blockChanged(const BlockChange& change) {
   }
 }
 
-// The column's highest block with opacity after the change (ChunkLight::skyTop), stored and returned.
+// The column's highest block that ends the open sky after the change (ChunkLight::skyTop), stored and
+// returned.
 int LightEngine::updateSkyTop(Chunk& chunk, const BlockChange& change) {
   const BlockPos& at = change.pos;
   auto& top = chunk.light().skyTop[static_cast<std::size_t>(localOf(at.z) * 16 + localOf(at.x))];
   int newTop = top;
-  if (opacity_[change.after] > 0 && at.y > top) newTop = at.y;
-  if (opacity_[change.after] == 0 && at.y == top) {
+  if (columnStop_[change.after] && at.y > top) newTop = at.y;
+  if (!columnStop_[change.after] && at.y == top) {
     newTop = kMinY - 1;
     for (int y = at.y - 1; y >= kMinY; --y) {
-      if (opacity_[chunk.get(localOf(at.x), y, localOf(at.z))] > 0) {
+      if (columnStop_[chunk.get(localOf(at.x), y, localOf(at.z))]) {
         newTop = y;
         break;
       }

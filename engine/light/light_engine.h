@@ -2,9 +2,11 @@
 // Vanilla-style block and sky light (levels 0..15), kept up to date incrementally.
 //
 // Rules (Minecraft Java 1.20+): an emitter has its emission at its own cell; a neighbour receives
-// `level - max(1, opacity(neighbour))`. Sky light is 15 in the open sky column: every cell above the
-// highest block of opacity >= 1 in its column (ChunkLight::skyTop); from there it spreads in all six
-// directions like block light. A chunk that is not loaded acts as opaque.
+// `level - max(1, opacity(neighbour))`, unless the side between them is a light side of either
+// block (World::shapes: a slab's bottom, a stair's back). Sky light is 15 in the open sky column:
+// every cell above the highest block of opacity >= 1 or with a light side up or down in its column
+// (ChunkLight::skyTop); from there it spreads in all six directions like block light. A chunk that
+// is not loaded acts as opaque.
 //
 // Updates run breadth first over explicit queues, decreases before increases; every queue entry
 // carries its level and the directions still to visit (Starlight's method). Main thread only, like
@@ -76,22 +78,28 @@ class LightEngine {
   // The flood fill of one channel over `window`, on the engine's reused frame and queues.
   light::Propagator propagator(const light::ChunkWindow& window, LightChannel channel);
   void seedEmitters(light::Propagator& p, Chunk& chunk);
+  // Counts section `s`'s emitters and shaped cells into ChunkLight; true when it has an emitter.
+  bool countSpecialCells(Chunk& chunk, int s) const;
   void seedOpenSky(light::Propagator& p, const Chunk& chunk);
   void seedFromNeighbours(light::Propagator& p, ChunkPos pos, LightChannel channel);
   int updateSkyTop(Chunk& chunk, const BlockChange& change);
   void seedChangedCell(light::Propagator& p, const BlockPos& at);
   void seedSkyColumn(light::Propagator& p, const BlockPos& at, int oldTop, int newTop);
   void ownLevels(const Chunk& chunk, int section, LightChannel channel, std::uint8_t* levels) const;
-  void relightGeneral(light::Propagator& p, const Chunk& chunk, const SectionPos& s, const light::Cell& origin,
-                      const light::Cell* beyond, const std::array<int, 256>& tops, LightChannel channel);
+  void relightGeneral(light::Propagator& p, const Chunk& chunk, const SectionPos& s,
+                      const light::Cell& origin, const light::Cell* beyond, const std::array<int, 256>& tops,
+                      LightChannel channel);
 
   World& world_;
-  const std::uint8_t* opacity_;
+  std::vector<std::uint8_t> lightSides_;   // BlockShapes::lightSides, or none without shapes
+  std::vector<std::uint8_t> columnStop_;   // 1 where the open sky column ends (ChunkLight::skyTop)
   std::vector<std::uint8_t> attenuation_;  // max(1, opacity)
+  std::vector<std::uint8_t> flood_;        // the flood fill's (light::floodAttenuations)
   const std::uint8_t* emission_;
+  std::vector<std::uint8_t> special_;  // per block id: 1 emits, 2 has light sides
   LightStats stats_;
-  std::vector<Entry> decrease_, increase_;  // reused between updates
-  std::unique_ptr<light::LightFrame> frame_;  // likewise
+  std::vector<Entry> decrease_, increase_;        // reused between updates
+  std::unique_ptr<light::LightFrame> frame_;      // likewise
   std::unique_ptr<light::SectionSolver> solver_;  // likewise
   light::ChangedSections changed_;
 };

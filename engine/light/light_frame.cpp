@@ -15,7 +15,8 @@ ChunkWindow::ChunkWindow(World& world, ChunkPos lo, ChunkPos hi, const Chunk* ex
   for (int z = 0; z < depth; ++z)
     for (int x = 0; x < width; ++x) {
       Chunk* chunk = world.chunk({min.x + x, min.z + z});
-      chunks[static_cast<std::size_t>(z * width + x)] = chunk && chunk != excluded && chunk->light().lit ? chunk : nullptr;
+      chunks[static_cast<std::size_t>(z * width + x)] =
+          chunk && chunk != excluded && chunk->light().lit ? chunk : nullptr;
     }
 }
 
@@ -29,8 +30,8 @@ void LightFrame::reset(const ChunkWindow& window, LightChannel channel) {
   stride_ = width_ + 2;
   // Across a face the ref index moves by one section, chunk or row and the cell wraps to the far side.
   const std::int32_t section = 1 << 12, chunk = kRefSections << 12, row = stride_ * chunk;
-  const std::int32_t steps[6] = {-chunk + 15, chunk - 15, -section + 15 * 256, section - 15 * 256,
-                                 -row + 15 * 16, row - 15 * 16};
+  const std::int32_t steps[6] = {-chunk + 15,        chunk - 15,     -section + 15 * 256,
+                                 section - 15 * 256, -row + 15 * 16, row - 15 * 16};
   std::copy(std::begin(steps), std::end(steps), across_);
   const auto chunks = static_cast<std::size_t>(stride_ * (depth_ + 2));
   if (refs_.size() < chunks * kRefSections) refs_.resize(chunks * kRefSections);
@@ -62,6 +63,7 @@ void LightFrame::resolve(int index) {
     r.blocks = section.blocks() ? section.blocks()->data() : &r.uniform;
     r.blockMask = section.blocks() ? Section::kVolume - 1 : 0;
     r.emitters = &light.emitters[static_cast<std::size_t>(s)];
+    r.shaped = &light.shaped[static_cast<std::size_t>(s)];
     r.skyTop = light.skyTop.data();
     r.minY = kMinY + s * 16;
   }

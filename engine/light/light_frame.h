@@ -42,9 +42,10 @@ struct SectionRef {
   int blockMask = 0;
   BlockId uniform = kAir;
   const std::uint16_t* emitters = nullptr;  // the section's count in ChunkLight::emitters: at 0 no cell emits
-  const std::int16_t* skyTop = nullptr;  // the chunk's heightmap
-  int minY = 0;                          // world y of the section's bottom layer
-  std::uint32_t update = 0;              // the frame's update count when it was resolved
+  const std::uint16_t* shaped = nullptr;    // and in ChunkLight::shaped: at 0 no cell has light sides
+  const std::int16_t* skyTop = nullptr;     // the chunk's heightmap
+  int minY = 0;                             // world y of the section's bottom layer
+  std::uint32_t update = 0;                 // the frame's update count when it was resolved
 
   // The slab as bytes, for whole-section copies and comparisons.
   std::uint8_t* levelBytes() { return reinterpret_cast<std::uint8_t*>(levels); }
@@ -93,7 +94,9 @@ class LightFrame {
   static int refIndex(std::uint32_t pos) { return static_cast<int>(pos >> 12); }
   static int local(std::uint32_t pos) { return static_cast<int>(pos & 4095); }
   // The position one step across the section's face in Direction d.
-  std::uint32_t across(std::uint32_t pos, int d) const { return pos + static_cast<std::uint32_t>(across_[d]); }
+  std::uint32_t across(std::uint32_t pos, int d) const {
+    return pos + static_cast<std::uint32_t>(across_[d]);
+  }
 
   // The section's ref, its levels unpacked if it is loaded.
   SectionRef& ref(int index) {
@@ -142,7 +145,7 @@ class LightFrame {
   std::vector<std::unique_ptr<Slab>> slabs_;  // kept between updates
   std::size_t slabsUsed_ = 0;
   std::array<std::unique_ptr<Slab>, 16> levelSlabs_;  // read-only, one per level, filled on first use
-  static constexpr std::size_t kMaxSpareBytes = 64;              // 128 KiB
+  static constexpr std::size_t kMaxSpareBytes = 64;   // 128 KiB
   std::vector<std::unique_ptr<NibbleArray::Bytes>> spareBytes_;  // layers' bytes freed by pack(), for reuse
 };
 

@@ -9,12 +9,13 @@
 namespace terrasol::light {
 
 Propagator::Propagator(LightFrame& frame, const ChunkWindow& window, LightChannel channel,
-                       const std::uint8_t* attenuation, const std::uint8_t* emission,
-                       std::vector<LightEngine::Entry>& decrease, std::vector<LightEngine::Entry>& increase,
-                       LightStats& stats, ChangedSections& changed)
+                       const std::uint8_t* attenuation, const std::uint8_t* lightSides,
+                       const std::uint8_t* emission, std::vector<LightEngine::Entry>& decrease,
+                       std::vector<LightEngine::Entry>& increase, LightStats& stats, ChangedSections& changed)
     : frame_(frame),
       channel_(channel),
       attenuation_(attenuation),
+      lightSides_(lightSides),
       emission_(emission),
       decrease_(decrease),
       increase_(increase),
@@ -156,7 +157,7 @@ void Propagator::runIncrease() {
   // Counted where they are rarer: cells written are those queued and those lit to 1, and blocks read
   // are those written and those that let in too little light to brighten.
   const std::size_t queued = increase_.size();
-  std::uint64_t ones = 0, dimmer = 0;
+  std::uint64_t ones = 0, dimmer = 0, shapedReads = 0;
   Cursor own(frame_.queuedRef(LightFrame::refIndex(increase_[0].pos)));
   for (std::size_t head = 0; head < increase_.size(); ++head) {
     const LightEngine::Entry e = increase_[head];
@@ -168,14 +169,34 @@ void Propagator::runIncrease() {
     }
     const CellIndex index = LightFrame::local(e.pos);
     if (own.light(index) != e.level) continue;  // superseded since it was queued
+    unsigned directions = e.directions;
+    std::uint8_t inSection = kInSection[static_cast<std::size_t>(index)];
+    if (*own.shaped != 0) [[unlikely]] {
+      // A section with shaped blocks: light does not leave a cell through its light sides.
+      ++shapedReads;
+      if (const std::uint8_t sides = lightSides_[own.block(index)]; sides != 0) {
+        directions &= ~static_cast<unsigned>(sides);
+        inSection &= static_cast<std::uint8_t>(~kInterior);
+      }
+    }
     LightEngine::Entry* out = increase_.room(6);
     std::size_t count = 0;
     const int throughAir = e.level - 1;  // the most a neighbour can get
-    forNeighbours(r, own, index, e.pos, kInSection[static_cast<std::size_t>(index)], e.directions,
+    forNeighbours(r, own, index, e.pos, inSection, directions,
                   [&](Cursor& c, CellIndex i, std::uint32_t pos, int d) {
                     const std::uint8_t current = c.light(i);
                     if (current >= throughAir) return;  // no block read: not even air would let it brighten
-                    const int level = e.level - attenuation_[c.block(i)];
+                    const BlockId block = c.block(i);
+                    int attenuation = attenuation_[block];
+                    if (attenuation & kShaped) [[unlikely]] {
+                      // Nor does it enter one through them.
+                      if ((lightSides_[block] >> opposite(d)) & 1) {
+                        ++dimmer;
+                        return;
+                      }
+                      attenuation &= ~kShaped;
+                    }
+                    const int level = e.level - attenuation;
                     if (level <= current) {
                       ++dimmer;
                       return;
@@ -190,7 +211,7 @@ void Propagator::runIncrease() {
   }
   own.flush();
   const std::uint64_t writes = increase_.size() - queued + ones;
-  blockReads_ += writes + dimmer;
+  blockReads_ += writes + dimmer + shapedReads;
   lightWrites_ += writes;
 }
 

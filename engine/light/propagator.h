@@ -12,14 +12,28 @@
 namespace terrasol::light {
 
 inline constexpr std::uint8_t kAllDirections = 0x3F;
-constexpr std::uint8_t allBut(int direction) { return static_cast<std::uint8_t>(kAllDirections & ~(1 << direction)); }
-constexpr int opposite(int direction) { return direction ^ 1; }  // West<->East, Down<->Up, North<->South
+constexpr std::uint8_t allBut(int direction) {
+  return static_cast<std::uint8_t>(kAllDirections & ~(1 << direction));
+}
+constexpr int opposite(int direction) {
+  return direction ^ 1;
+}  // West<->East, Down<->Up, North<->South
 
 // What light loses entering a block: max(1, opacity), tabled per block id so the flood fill reads it
 // with one load.
 inline std::vector<std::uint8_t> attenuations(const std::vector<std::uint8_t>& opacities) {
   std::vector<std::uint8_t> a(opacities);
   for (std::uint8_t& v : a) v = std::max<std::uint8_t>(1, v);
+  return a;
+}
+
+// The flood fill's table: attenuations() with kShaped set where the block has light sides
+// (BlockShapes::lightSides): sides light does not cross, into the cell or out of it.
+inline constexpr std::uint8_t kShaped = 0x80;
+inline std::vector<std::uint8_t> floodAttenuations(const std::vector<std::uint8_t>& attenuation,
+                                                   const std::uint8_t* lightSides) {
+  std::vector<std::uint8_t> a(attenuation);
+  for (std::size_t b = 0; b < a.size(); ++b) a[b] |= lightSides[b] ? kShaped : 0;
   return a;
 }
 
@@ -58,7 +72,10 @@ class EntryQueue {
   }
   std::size_t size() const { return size_; }
   const Entry& operator[](std::size_t i) const { return data_[i]; }
-  void push(const Entry& e) { *room(1) = e; ++size_; }
+  void push(const Entry& e) {
+    *room(1) = e;
+    ++size_;
+  }
   // Room for `n` entries at the end; commit(k) keeps the first k written there.
   Entry* room(std::size_t n) {
     if (size_ + n > capacity_) grow(n);
@@ -95,6 +112,7 @@ struct Cursor {
         skyTop(r.skyTop),
         minY(r.minY),
         emitters(r.emitters),
+        shaped(r.shaped),
         shared(r.shared) {}
   void flush() { ref->marks |= marks; }
   std::uint8_t light(CellIndex i) const { return static_cast<std::uint8_t>(levels[i]); }
@@ -116,6 +134,7 @@ struct Cursor {
   const std::int16_t* skyTop;
   int minY;
   const std::uint16_t* emitters;
+  const std::uint16_t* shaped;
   bool shared;
   unsigned marks = 0;
 };
@@ -130,9 +149,9 @@ struct Cell {
 class Propagator {
  public:
   // Resets `frame` to the window and channel.
-  // `attenuation` by block id: see attenuations().
+  // `attenuation` by block id: see floodAttenuations(); `lightSides` the states' BlockShapes::lightSides.
   Propagator(LightFrame& frame, const ChunkWindow& window, LightChannel channel,
-             const std::uint8_t* attenuation, const std::uint8_t* emission,
+             const std::uint8_t* attenuation, const std::uint8_t* lightSides, const std::uint8_t* emission,
              std::vector<LightEngine::Entry>& decrease, std::vector<LightEngine::Entry>& increase,
              LightStats& stats, ChangedSections& changed);
   ~Propagator();  // adds the counters to the engine's stats
@@ -197,7 +216,7 @@ class Propagator {
     // The top layer of the world is lit from the sky above it, through its own opacity.
     if (y == kMaxY - 1) {
       ++reads;
-      return topLayerSky(attenuation_[c.block(index)]);
+      return topLayerSky(attenuation_[c.block(index)] & ~kShaped);
     }
     return 0;
   }
@@ -206,7 +225,9 @@ class Propagator {
   // left the section through it may have to go. Cells inside need none, they all have new levels.
   void replaceLevels(SectionRef& r, std::uint32_t origin, const std::uint8_t* levels);
   // Frame position of Section::index `index` in the section whose cell 0 is at `origin`.
-  static std::uint32_t posOf(std::uint32_t origin, int index) { return origin + static_cast<std::uint32_t>(index); }
+  static std::uint32_t posOf(std::uint32_t origin, int index) {
+    return origin + static_cast<std::uint32_t>(index);
+  }
 
   // Runs the decrease queue, then the increase queue (which the decreases add to), to the end, and
   // writes the new levels back into the sections' layers.
@@ -224,6 +245,7 @@ class Propagator {
   LightFrame& frame_;
   LightChannel channel_;
   const std::uint8_t* attenuation_;
+  const std::uint8_t* lightSides_;
   const std::uint8_t* emission_;
   EntryQueue decrease_;
   EntryQueue increase_;

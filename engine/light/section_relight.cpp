@@ -20,7 +20,8 @@ using light::spreadTops;
 
 // The levels a section's cells have by themselves, a byte each: their emission, or the open sky
 // column's 15 (and the top layer of the world, lit from the sky above through its own opacity).
-void LightEngine::ownLevels(const Chunk& chunk, int section, LightChannel channel, std::uint8_t* levels) const {
+void LightEngine::ownLevels(const Chunk& chunk, int section, LightChannel channel,
+                            std::uint8_t* levels) const {
   const Section& blocks = chunk.section(section);
   if (channel == LightChannel::Block) {
     if (chunk.light().emitters[static_cast<std::size_t>(section)] == 0) {
@@ -34,7 +35,8 @@ void LightEngine::ownLevels(const Chunk& chunk, int section, LightChannel channe
   const int y0 = kMinY + section * 16;
   for (int ly = 0; ly < 16; ++ly) {
     const int y = y0 + ly;
-    for (std::size_t column = 0; column < 256; ++column) levels[ly * 256 + column] = y > tops[column] ? 15 : 0;
+    for (std::size_t column = 0; column < 256; ++column)
+      levels[ly * 256 + column] = y > tops[column] ? 15 : 0;
   }
   if (y0 + 15 != kMaxY - 1) return;
   for (int column = 0; column < 256; ++column) {
@@ -60,8 +62,9 @@ bool faceLosesLight(const std::uint8_t* current, const light::SectionSolver::Lev
 // open-sky cells up to the highest neighbouring column top (spreadTops); the rest of the open sky only
 // has 15s around it.
 template <class Fn>
-void forSources(const std::uint8_t* levels, LightChannel channel, bool emitters, const std::array<int, 256>& tops,
-                const std::array<std::int16_t, 256>& skyTop, int y0, Fn&& fn) {
+void forSources(const std::uint8_t* levels, LightChannel channel, bool emitters,
+                const std::array<int, 256>& tops, const std::array<std::int16_t, 256>& skyTop, int y0,
+                Fn&& fn) {
   if (channel == LightChannel::Block) {
     if (!emitters) return;
     for (int i = 0; i < Section::kVolume; ++i) {
@@ -93,6 +96,7 @@ void LightEngine::relightSection(const SectionPos& s) {
   const auto tops = spreadTops(world_, *chunk);
   const light::ChunkWindow window(world_, {s.x - kReach, s.z - kReach}, {s.x + kReach, s.z + kReach});
   const Section& blocks = chunk->section(s.section);
+  countSpecialCells(*chunk, s.section);  // its blocks may have changed unheard of
   const BlockId uniform = blocks.uniformBlock();
   light::SectionSolver& solver = *solver_;
   solver.begin(blocks.blocks() ? blocks.blocks()->data() : &uniform,
@@ -102,9 +106,17 @@ void LightEngine::relightSection(const SectionPos& s) {
     Cell origin;
     p.locate(x0, y0, z0, origin);
     Cell beyond[6];  // each neighbouring section's cell 0, packed; ref null where not loaded
+    bool shaped = chunk->light().shaped[static_cast<std::size_t>(s.section)] > 0;
     for (int d = 0; d < 6; ++d) {
       const BlockPos& o = kDirectionOffsets[d];
       if (!p.locatePacked(x0 + o.x * 16, y0 + o.y * 16, z0 + o.z * 16, beyond[d])) beyond[d].ref = nullptr;
+      shaped = shaped || (beyond[d].ref && *beyond[d].ref->shaped > 0);
+    }
+    if (shaped) {
+      // The solver knows nothing of light sides: the flood fill, which does, relights the section.
+      relightGeneral(p, *chunk, s, origin, beyond, tops, channel);
+      p.run();
+      continue;
     }
 
     // Every source offers its light. Open-sky cells above the neighbouring columns only have 15s
@@ -112,12 +124,14 @@ void LightEngine::relightSection(const SectionPos& s) {
     auto& levels = solver.levels();
     ownLevels(*chunk, s.section, channel, levels.data());
     const bool emitters = chunk->light().emitters[static_cast<std::size_t>(s.section)] > 0;
-    forSources(levels.data(), channel, emitters, tops, chunk->light().skyTop, y0, [&](int i) { solver.seed(i); });
+    forSources(levels.data(), channel, emitters, tops, chunk->light().skyTop, y0,
+               [&](int i) { solver.seed(i); });
     for (int d = 0; d < 6; ++d) {
       if (!beyond[d].ref) continue;
       const NibbleArray& n = *beyond[d].ref->layer;
       if (n.isUniform() && n.uniformLevel() <= 1) continue;
-      for (const light::FaceCell& c : light::kFaceCells[static_cast<std::size_t>(d)]) solver.offer(c.ours, n.get(c.theirs));
+      for (const light::FaceCell& c : light::kFaceCells[static_cast<std::size_t>(d)])
+        solver.offer(c.ours, n.get(c.theirs));
     }
     solver.solve();
 
@@ -148,8 +162,9 @@ void LightEngine::relightSection(const SectionPos& s) {
 // Every cell gets its own level; light that left the section through a face cell that lost some is
 // removed outside. Then every source inside and the light just outside each face offer their light
 // again, through the general flood fill, which crosses the faces both ways.
-void LightEngine::relightGeneral(light::Propagator& p, const Chunk& chunk, const SectionPos& s, const Cell& origin,
-                                 const Cell* beyond, const std::array<int, 256>& tops, LightChannel channel) {
+void LightEngine::relightGeneral(light::Propagator& p, const Chunk& chunk, const SectionPos& s,
+                                 const Cell& origin, const Cell* beyond, const std::array<int, 256>& tops,
+                                 LightChannel channel) {
   const int y0 = kMinY + s.section * 16;
   auto& levels = solver_->levels();
   ownLevels(chunk, s.section, channel, levels.data());
@@ -164,7 +179,8 @@ void LightEngine::relightGeneral(light::Propagator& p, const Chunk& chunk, const
     const auto toward = static_cast<std::uint8_t>(1 << light::opposite(d));
     for (const light::FaceCell& c : light::kFaceCells[static_cast<std::size_t>(d)]) {
       const std::uint8_t level = n.get(c.theirs);
-      if (level > 1 && levels[c.ours] + 1 < level) p.increase(Propagator::posOf(beyond[d].pos, c.theirs), level, toward);
+      if (level > 1 && levels[c.ours] + 1 < level)
+        p.increase(Propagator::posOf(beyond[d].pos, c.theirs), level, toward);
     }
   }
 }

@@ -23,10 +23,15 @@ inline const std::array<std::array<FaceCell, 256>, 6> kFaceCells = [] {
     for (int a = 0; a < 16; ++a)
       for (int b = 0; b < 16; ++b) {
         const int axis = d >> 1, near = d & 1 ? 15 : 0, far = 15 - near;
-        const int x = axis == 0 ? near : a, y = axis == 1 ? near : axis == 0 ? a : b, z = axis == 2 ? near : b;
+        const int x = axis == 0 ? near : a,
+                  y = axis == 1   ? near
+                      : axis == 0 ? a
+                                  : b,
+                  z = axis == 2 ? near : b;
         const int fx = axis == 0 ? far : x, fy = axis == 1 ? far : y, fz = axis == 2 ? far : z;
         faces[static_cast<std::size_t>(d)][static_cast<std::size_t>(a * 16 + b)] = {
-            static_cast<std::uint16_t>(Section::index(x, y, z)), static_cast<std::uint16_t>(Section::index(fx, fy, fz))};
+            static_cast<std::uint16_t>(Section::index(x, y, z)),
+            static_cast<std::uint16_t>(Section::index(fx, fy, fz))};
       }
   return faces;
 }();

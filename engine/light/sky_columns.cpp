@@ -4,14 +4,14 @@
 
 namespace terrasol::light {
 
-void computeSkyTops(const Chunk& chunk, const std::uint8_t* opacity, ChunkLight& light) {
+void computeSkyTops(const Chunk& chunk, const std::uint8_t* stops, ChunkLight& light) {
   light.skyTop.fill(static_cast<std::int16_t>(kMinY - 1));
   std::array<bool, 256> done{};
   int remaining = 256;
   for (int s = kSectionCount - 1; s >= 0 && remaining > 0; --s) {
     const Section& section = chunk.section(s);
     if (section.isUniform()) {
-      if (opacity[section.uniformBlock()] == 0) continue;
+      if (stops[section.uniformBlock()] == 0) continue;
       for (std::size_t i = 0; i < 256; ++i) {
         if (!done[i]) light.skyTop[i] = static_cast<std::int16_t>(kMinY + s * 16 + 15);
       }
@@ -19,7 +19,7 @@ void computeSkyTops(const Chunk& chunk, const std::uint8_t* opacity, ChunkLight&
     }
     for (int ly = 15; ly >= 0; --ly)
       for (std::size_t i = 0; i < 256; ++i) {
-        if (done[i] || opacity[section.at(ly * 256 + static_cast<int>(i))] == 0) continue;
+        if (done[i] || stops[section.at(ly * 256 + static_cast<int>(i))] == 0) continue;
         done[i] = true;
         light.skyTop[i] = static_cast<std::int16_t>(kMinY + s * 16 + ly);
         --remaining;

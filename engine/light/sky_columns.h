@@ -13,8 +13,9 @@ namespace terrasol::light {
 
 inline constexpr int kHorizontal[4] = {0, 1, 4, 5};  // West, East, North, South
 
-// Highest block with opacity >= 1 in each column; uniform sections are skipped whole.
-void computeSkyTops(const Chunk& chunk, const std::uint8_t* opacity, ChunkLight& light);
+// Highest block in each column where `stops` (by block id) is not 0: where the open sky column ends.
+// Uniform sections are skipped whole.
+void computeSkyTops(const Chunk& chunk, const std::uint8_t* stops, ChunkLight& light);
 // Sky light 15 above each column's top, 0 elsewhere; whole sections stay uniform where they can.
 void fillOpenSky(ChunkLight& light);
 // For each column of a chunk: the highest sky top among its four horizontal neighbours (in this

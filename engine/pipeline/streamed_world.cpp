@@ -22,9 +22,9 @@ Level openLevel(const std::filesystem::path& dir, std::uint64_t seed, bool& isNe
 }  // namespace
 
 StreamedWorld::StreamedWorld(const std::filesystem::path& dir, std::uint64_t seed, const BlockRegistry& blocks,
-                     const BlockMeshTable& table, int viewDistance, int threads)
+                             const BlockMeshTable& table, int viewDistance, int threads, const BlockShapes* shapes)
     : level_(openLevel(dir, seed, isNew_)),
-      world_(blocks),
+      world_(blocks, shapes),
       storage_(dir, blocks),
       generator_(makeGenerator({level_.generator, level_.seed, {}}, blocks)),
       light_(world_),

@@ -26,8 +26,9 @@ class StreamedWorld {
  public:
   // Opens DIR (level.json and the saved chunks) or creates it with `seed` (a new world's seed; an
   // existing world keeps its own). Throws Error naming the file when level.json is malformed.
+  // `shapes` (World's): collision, targeting and light through shaped blocks; it must outlive this.
   StreamedWorld(const std::filesystem::path& dir, std::uint64_t seed, const BlockRegistry& blocks,
-            const BlockMeshTable& table, int viewDistance, int threads);
+                const BlockMeshTable& table, int viewDistance, int threads, const BlockShapes* shapes = nullptr);
   ~StreamedWorld();
 
   bool isNew() const { return isNew_; }

@@ -7,6 +7,7 @@
 #include "core/error.h"
 #include "mesh/mesh_scheduler.h"
 #include "mesh/section_mesh.h"
+#include "scene/block_atlas.h"
 #include "world/connected_states.h"
 
 namespace terrasol {
@@ -22,7 +23,7 @@ ChunkPos cameraChunk(const SceneFile& scene) {
 }  // namespace
 
 SceneWorld::SceneWorld(const SceneFile& scene, const BlockRegistry& blocks)
-    : world_(blocks), light_(world_), centre_(cameraChunk(scene)), viewDistance_(scene.viewDistance) {
+    : shapes_(defaultPackShapes(blocks)), world_(blocks, &shapes_), light_(world_), centre_(cameraChunk(scene)), viewDistance_(scene.viewDistance) {
   try {
     generator_ = makeGenerator({scene.generator, scene.seed, {}}, blocks);
   } catch (const Error& e) {

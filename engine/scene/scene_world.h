@@ -46,6 +46,7 @@ class SceneWorld {
   void forEachCell(const SceneEdit& edit, F&& f) const;
   bool withinView(SectionPos pos) const;
 
+  BlockShapes shapes_;  // the default pack's, as the game's
   World world_;
   LightEngine light_;
   std::unique_ptr<ChunkGenerator> generator_;

@@ -39,6 +39,9 @@ struct BlockType {
   RenderLayer layer = RenderLayer::None;
   std::uint8_t opacity = 0;   // light lost passing through, 0..15; 15 stops light
   std::uint8_t emission = 0;  // light level emitted, 0..15
+  // Light stops at the sides its shape covers whole (vanilla's useShapeForLightOcclusion): a bottom
+  // slab keeps sky light from the cell below it but lets it in through its open top half.
+  bool shapeOccludesLight = false;
   Tint tint = Tint::None;
   FaceTextures textures;
 

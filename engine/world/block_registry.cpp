@@ -189,6 +189,10 @@ BlockType parseBlock(const json& block, const std::string& where) {
   type.tint = block.contains("tint") ? parseEnum(block["tint"], kTints, at + ".tint") : Tint::None;
   type.opacity = static_cast<std::uint8_t>(parseLevel(block, "opacity", type.isOpaqueCube() ? 15 : 0, at));
   type.emission = static_cast<std::uint8_t>(parseLevel(block, "emission", 0, at));
+  if (block.contains("shape_occludes_light")) {
+    if (!block["shape_occludes_light"].is_boolean()) throw Error(at + ".shape_occludes_light must be true or false");
+    type.shapeOccludesLight = block["shape_occludes_light"].get<bool>();
+  }
   parseProperties(block, type, at);
   type.defaultState = static_cast<BlockId>(defaultOffset(block, type, at));  // made absolute by the registry
   return type;

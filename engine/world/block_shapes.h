@@ -18,10 +18,17 @@ class BlockShapes {
   explicit BlockShapes(const BlockRegistry& blocks);
 
   const std::vector<ShapeBox>& boxes(BlockId state) const { return boxes_[state]; }
-  void setBoxes(BlockId state, std::vector<ShapeBox> boxes) { boxes_[state] = std::move(boxes); }
+  void setBoxes(BlockId state, std::vector<ShapeBox> boxes);
+
+  // Per state, the sides light does not pass (bits by Direction): those its boxes cover whole, for a
+  // block whose shape occludes light (BlockType::shapeOccludesLight); 0 for every other. Light moves
+  // from a cell to its neighbour unless either one's side between them is among these.
+  const std::vector<std::uint8_t>& lightSides() const { return lightSides_; }
 
  private:
   std::vector<std::vector<ShapeBox>> boxes_;
+  std::vector<bool> shapeOccludesLight_;
+  std::vector<std::uint8_t> lightSides_;
 };
 
 }  // namespace terrasol

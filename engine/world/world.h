@@ -20,11 +20,12 @@ struct BlockChange {
 
 class World {
  public:
-  explicit World(const BlockRegistry& blocks) : blocks_(&blocks) {}
+  // `shapes`: the states' shapes (collision, targeting, light through shaped blocks), which must
+  // outlive the world; without them cubes are whole cells and nothing else has a shape.
+  explicit World(const BlockRegistry& blocks, const BlockShapes* shapes = nullptr)
+      : blocks_(&blocks), shapes_(shapes) {}
 
   const BlockRegistry& blocks() const { return *blocks_; }
-  // The states' shapes (collision, targeting); without them, cubes are whole cells and nothing else
-  // has a shape. `shapes` must outlive the world.
   void setShapes(const BlockShapes* shapes) { shapes_ = shapes; }
   const BlockShapes* shapes() const { return shapes_; }
 

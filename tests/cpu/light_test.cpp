@@ -21,11 +21,12 @@ namespace {
 
 using testing::compareWithReference;
 using testing::defaultBlocks;
+using testing::handShapes;
 
 // A world with light, loaded and edited the way the game does it.
 struct LitWorld {
   explicit LitWorld(const std::string& generator, const std::string& layers = "")
-      : world(defaultBlocks()), light(world) {
+      : world(defaultBlocks(), &handShapes()), light(world) {
     GeneratorSettings settings{generator, 1, {}};
     if (!layers.empty()) settings.flatLayers = parseFlatLayers(layers, defaultBlocks());
     gen = makeGenerator(settings, defaultBlocks());
@@ -161,6 +162,53 @@ TEST(Light, GlowstoneInAClosedRoomStaysInside) {
   EXPECT_EQ(w.sky({0, 72, 0}), 0) << "a closed room has no sky light";
   EXPECT_EQ(w.sky({0, 77, 0}), 15);
   EXPECT_EQ(compareWithReference(w.world), "");
+}
+
+// Vanilla's useShapeForLightOcclusion: light does not cross a side a slab's or stair's shape covers
+// whole, in or out, and crosses every other. A closed stone room in the void gets one block of its
+// roof or its north wall replaced; a torch stands two blocks north of the wall.
+TEST(Light, ShapedBlocksStopLightAtTheSidesTheyCoverWhole) {
+  struct Room : LitWorld {
+    Room(const char* roof, const char* window) : LitWorld("void") {
+      loadArea(-1, -1, 1, 1);
+      fill({0, 70, 0}, {6, 74, 6}, "stone");
+      fill({1, 71, 1}, {5, 73, 5}, "air");
+      set({3, 74, 3}, roof);
+      set({3, 72, 0}, window);
+      set({3, 72, -2}, "torch");
+      EXPECT_EQ(compareWithReference(world), "") << roof << ", " << window;
+    }
+  };
+  const BlockPos roof{3, 74, 3}, belowRoof{3, 73, 3}, window{3, 72, 0}, inside{3, 72, 1};
+  {
+    const Room glass("glass", "glass");
+    EXPECT_EQ(glass.sky(belowRoof), 15) << "glass: the open sky column goes through";
+    EXPECT_EQ(glass.block(inside), 14 - 3);
+  }
+  {
+    const Room roofSlab("stone_slab", "stone");
+    EXPECT_EQ(roofSlab.sky(roof), 14) << "a bottom slab lets sky light in through its open top";
+    EXPECT_EQ(roofSlab.sky(belowRoof), 0) << "but not out through its bottom";
+    const Room windowSlab("stone", "stone_slab");
+    EXPECT_EQ(windowSlab.block(window), 14 - 2) << "its sides are half open: torch light passes";
+    EXPECT_EQ(windowSlab.block(inside), 14 - 3);
+    EXPECT_EQ(windowSlab.sky(belowRoof), 15 - 1 - 1 - 3) << "and sky light, sideways into the room";
+  }
+  {
+    const Room top("stone_slab[type=top]", "stone_slab[type=double]");
+    EXPECT_EQ(top.sky(roof), 0) << "a top slab's covered top keeps sky light out of it";
+    EXPECT_EQ(top.sky(belowRoof), 0);
+    EXPECT_EQ(top.block(window), 0) << "a double slab is closed on every side";
+    EXPECT_EQ(top.block(inside), 0);
+  }
+  {
+    const Room back("stone", "oak_stairs[facing=north]");
+    EXPECT_EQ(back.block(window), 0) << "stairs facing the torch turn their closed back to it";
+    EXPECT_EQ(back.block(inside), 0);
+    const Room side("stone", "oak_stairs[facing=east]");
+    EXPECT_EQ(side.block(window), 14 - 2) << "stairs facing east: their north and south sides are L-shaped";
+    EXPECT_EQ(side.block(inside), 14 - 3);
+  }
 }
 
 TEST(Light, A100BlockShaftFillsWithSkyAndEmptiesWhenCapped) {
@@ -326,6 +374,23 @@ TEST(Light, RelightingASectionFromDarknessOrFromLightThatIsGoneMatchesAFullRecom
     w.light.relightSection({0, sectionOf(at.y), 0});
     ASSERT_EQ(compareWithReference(w.world), "") << "after removing the torch at " << at.x << " " << at.y << " " << at.z;
   }
+}
+
+// A glass window swapped for a double slab (closed on every side) without the light engine hearing of
+// it: relighting its section takes the light out of the room behind it.
+TEST(Light, RelightingASectionKnowsItsShapedBlocks) {
+  LitWorld w("void");
+  w.loadArea(-1, -1, 1, 1);
+  w.fill({0, 70, 0}, {6, 74, 6}, "stone");
+  w.fill({1, 71, 1}, {5, 73, 5}, "air");
+  w.set({3, 72, 0}, "glass");
+  w.set({3, 72, -2}, "torch");
+  ASSERT_EQ(w.block({3, 72, 1}), 11);
+  ASSERT_TRUE(w.world.setBlock({3, 72, 0}, defaultBlocks().id("stone_slab[type=double]")));
+  w.light.relightSection({0, sectionOf(72), 0});
+  EXPECT_EQ(w.block({3, 72, 1}), 0);
+  EXPECT_EQ(w.sky({3, 72, 1}), 0);
+  EXPECT_EQ(compareWithReference(w.world), "");
 }
 
 TEST(Light, ByteWordsCompareEveryPairOfLevels) {
@@ -509,7 +574,7 @@ TEST(Light, StaysCorrectWhileChunksStreamInAndOut) {
   }
 }
 
-// 100 000 random edits, many on section and chunk borders, with chunks loading and unloading in
+// 100 000 random edits (shaped blocks among them), many on section and chunk borders, with chunks loading and unloading in
 // random order; after every batch the incremental light equals a recompute from scratch.
 TEST(Light, IncrementalUpdatesMatchAFullRecompute) {
   LitWorld w("flat", "bedrock,40*stone,dirt,grass_block");
@@ -527,8 +592,9 @@ TEST(Light, IncrementalUpdatesMatchAFullRecompute) {
       w.gen->generate(*unloaded.back());
     }
   }
-  const char* palette[] = {"air", "air", "air", "stone", "stone", "glass", "oak_leaves", "water",
-                           "torch", "glowstone", "lava", "ice"};
+  const char* palette[] = {"air",        "air",   "air", "stone", "stone", "glass", "oak_leaves", "water",
+                           "torch",      "glowstone", "lava", "ice", "stone_slab", "stone_slab[type=top]",
+                           "stone_slab[type=double]", "oak_stairs[facing=north]", "oak_stairs[facing=east,half=top]"};
   auto coordinate = [&](int lo, int hi) {
     // Half the edits sit on a border: local 0 or 15.
     const int v = lo + static_cast<int>(rng() % static_cast<unsigned>(hi - lo));

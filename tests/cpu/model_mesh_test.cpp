@@ -131,8 +131,10 @@ TEST_F(ModelMesh, ModelFacesGetSmoothLightAndAmbientOcclusion) {
       verticesOf(mesh, Direction::West, [&](const PackedVertex& v) { return v.x32() == 3 * 32 + 16; });
   ASSERT_EQ(riser.size(), 4u);
   for (const PackedVertex& v : riser) EXPECT_EQ(v.ao(), v.y32() == 16 ? 2 : 3) << v.y32();
-  // Everything else of the stairs is open to the sky: full light.
-  for (const PackedVertex& v : step) EXPECT_EQ(v.skyLight4(), 60);
+  // The step, inside the stairs' cell, is lit from there: the stairs end the open sky column, so
+  // their cell has sky light 14 (from above, through their open top), the three others around each
+  // corner 15. Their average x4 is 59.
+  for (const PackedVertex& v : step) EXPECT_EQ(v.skyLight4(), 59);
 
   // A bottom slab's west side, under a wall of stone one block up and to the west: the full face's
   // top corners there see two open cells of four (ao 1), its bottom corners all four (ao 3), so the
@@ -144,6 +146,27 @@ TEST_F(ModelMesh, ModelFacesGetSmoothLightAndAmbientOcclusion) {
       verticesOf(slab.mesh(), Direction::West, [](const PackedVertex& v) { return v.x32() == 3 * 32; });
   ASSERT_EQ(side.size(), 4u);
   for (const PackedVertex& v : side) EXPECT_EQ(v.ao(), v.y32() == 16 ? 2 : 3) << v.y32();
+}
+
+// Light sides come from the models' boxes: a bottom slab's bottom, a stair's bottom and back. The
+// shapes the world tests write by hand (they read no models) agree with the models.
+TEST(ModelShapes, LightSidesFollowTheModelsAndTheTestsHandShapes) {
+  const BlockRegistry& blocks = defaultBlocks();
+  const BlockShapes shapes = defaultPackShapes(blocks);
+  const auto sides = [&](const char* state) { return shapes.lightSides()[blocks.id(state)]; };
+  const auto bit = [](Direction d) { return 1 << static_cast<int>(d); };
+  EXPECT_EQ(sides("stone_slab"), bit(Direction::Down));
+  EXPECT_EQ(sides("stone_slab[type=top]"), bit(Direction::Up));
+  EXPECT_EQ(sides("stone_slab[type=double]"), 0x3F);
+  EXPECT_EQ(sides("oak_stairs[facing=east]"), bit(Direction::Down) | bit(Direction::East));
+  EXPECT_EQ(sides("oak_stairs[facing=north,half=top]"), bit(Direction::Up) | bit(Direction::North));
+  EXPECT_EQ(sides("oak_stairs[facing=north,shape=outer_left]"), bit(Direction::Down));
+  EXPECT_EQ(sides("stone"), 0) << "cubes stop light by their opacity";
+  for (BlockId s = 0; s < blocks.size(); ++s) {
+    if (!testing::handShapes().boxes(s).empty()) {
+      EXPECT_EQ(testing::handShapes().lightSides()[s], shapes.lightSides()[s]) << blocks.stateName(s);
+    }
+  }
 }
 
 // Without blockstates (a stack without the default pack) a model block is a cube of the missing

@@ -15,7 +15,7 @@ namespace terrasol::testing {
 
 struct MeshWorld {
   explicit MeshWorld(BlockMeshTable meshTable, const std::string& generator = "void")
-      : world(defaultBlocks()), light(world), table(std::move(meshTable)) {
+      : world(defaultBlocks(), &handShapes()), light(world), table(std::move(meshTable)) {
     gen = makeGenerator({generator, 3, {}}, defaultBlocks());
     for (int z = -1; z <= 1; ++z)
       for (int x = -1; x <= 1; ++x) {

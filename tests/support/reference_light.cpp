@@ -14,9 +14,11 @@ ReferenceLight::ReferenceLight(const World& world) {
   });
   if (minX > maxX) return;
   x0_ = minX * 16, z0_ = minZ * 16;
-  width_ = static_cast<std::size_t>(maxX - minX + 1) * 16, depth_ = static_cast<std::size_t>(maxZ - minZ + 1) * 16;
+  width_ = static_cast<std::size_t>(maxX - minX + 1) * 16,
+  depth_ = static_cast<std::size_t>(maxZ - minZ + 1) * 16;
   const std::size_t cells = width_ * depth_ * static_cast<std::size_t>(kMaxY - kMinY);
   opacity_.assign(cells, 255);
+  sides_.assign(cells, 0);
   block_.assign(cells, 0);
   sky_.assign(cells, 0);
   const BlockRegistry& blocks = world.blocks();
@@ -27,15 +29,20 @@ ReferenceLight::ReferenceLight(const World& world) {
           const BlockPos p{c.pos().minBlockX() + x, y, c.pos().minBlockZ() + z};
           const BlockType& type = blocks[c.get(x, y, z)];
           opacity_[index(p)] = type.opacity;
+          sides_[index(p)] = world.shapes() ? world.shapes()->lightSides()[c.get(x, y, z)] : 0;
           block_[index(p)] = type.emission;
         }
-    // Sky: 15 straight down until the first block with opacity; that one is lit from above.
+    // Sky: 15 straight down until the first block with opacity or a light side up or down; that one
+    // is lit from above.
     for (int z = 0; z < 16; ++z)
       for (int x = 0; x < 16; ++x) {
         const int wx = c.pos().minBlockX() + x, wz = c.pos().minBlockZ() + z;
         int y = kMaxY - 1;
-        for (; y >= kMinY && opacity_[index({wx, y, wz})] == 0; --y) sky_[index({wx, y, wz})] = 15;
-        if (y == kMaxY - 1) sky_[index({wx, y, wz})] = static_cast<std::uint8_t>(15 - std::max<int>(1, opacity_[index({wx, y, wz})]));
+        const auto open = [&](std::size_t i) { return opacity_[i] == 0 && (sides_[i] & 0b1100) == 0; };
+        for (; y >= kMinY && open(index({wx, y, wz})); --y) sky_[index({wx, y, wz})] = 15;
+        if (y == kMaxY - 1)
+          sky_[index({wx, y, wz})] =
+              static_cast<std::uint8_t>(15 - std::max<int>(1, opacity_[index({wx, y, wz})]));
       }
   });
   spread(block_);
@@ -54,12 +61,18 @@ void ReferenceLight::spread(std::vector<std::uint8_t>& light) const {
       if (light[i] != level) continue;
       const std::size_t x = i % width_, z = (i / width_) % depth_, y = i / layer;
       const std::size_t neighbours[6] = {
-          x > 0 ? i - 1 : SIZE_MAX,          x + 1 < width_ ? i + 1 : SIZE_MAX,
-          y > 0 ? i - layer : SIZE_MAX,      y + 1 < static_cast<std::size_t>(kMaxY - kMinY) ? i + layer : SIZE_MAX,
-          z > 0 ? i - width_ : SIZE_MAX,     z + 1 < depth_ ? i + width_ : SIZE_MAX,
+          x > 0 ? i - 1 : SIZE_MAX,
+          x + 1 < width_ ? i + 1 : SIZE_MAX,
+          y > 0 ? i - layer : SIZE_MAX,
+          y + 1 < static_cast<std::size_t>(kMaxY - kMinY) ? i + layer : SIZE_MAX,
+          z > 0 ? i - width_ : SIZE_MAX,
+          z + 1 < depth_ ? i + width_ : SIZE_MAX,
       };
-      for (const std::size_t n : neighbours) {
+      for (int d = 0; d < 6; ++d) {
+        const std::size_t n = neighbours[d];
         if (n == SIZE_MAX || opacity_[n] == 255) continue;
+        // Not across a light side of either cell (Direction d from this one, its opposite d ^ 1 from n).
+        if ((sides_[i] >> d & 1) || (sides_[n] >> (d ^ 1) & 1)) continue;
         const int offer = level - std::max<int>(1, opacity_[n]);
         if (offer > light[n]) {
           light[n] = static_cast<std::uint8_t>(offer);
@@ -78,12 +91,15 @@ std::string compareWithReference(const World& world) {
     const ChunkLight& light = c.light();
     for (int s = 0; s < kSectionCount; ++s)
       for (int i = 0; i < Section::kVolume; ++i) {
-        const BlockPos p{c.pos().minBlockX() + (i & 15), kMinY + s * 16 + (i >> 8), c.pos().minBlockZ() + ((i >> 4) & 15)};
-        const int block = light.block[static_cast<std::size_t>(s)].get(i), sky = light.sky[static_cast<std::size_t>(s)].get(i);
+        const BlockPos p{c.pos().minBlockX() + (i & 15), kMinY + s * 16 + (i >> 8),
+                         c.pos().minBlockZ() + ((i >> 4) & 15)};
+        const int block = light.block[static_cast<std::size_t>(s)].get(i),
+                  sky = light.sky[static_cast<std::size_t>(s)].get(i);
         if (block == reference.block(p) && sky == reference.sky(p)) continue;
         if (++mismatches <= 5) {
           report << "(" << p.x << ", " << p.y << ", " << p.z << "): block " << block << " expected "
-                 << int{reference.block(p)} << ", sky " << sky << " expected " << int{reference.sky(p)} << "\n";
+                 << int{reference.block(p)} << ", sky " << sky << " expected " << int{reference.sky(p)}
+                 << "\n";
         }
       }
   });

@@ -29,6 +29,7 @@ class ReferenceLight {
   int x0_ = 0, z0_ = 0;
   std::size_t width_ = 0, depth_ = 0;
   std::vector<std::uint8_t> opacity_;  // 255: the cell's chunk is not loaded
+  std::vector<std::uint8_t> sides_;    // BlockShapes::lightSides, bits by Direction
   std::vector<std::uint8_t> block_, sky_;
 };
 

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "world/block_registry.h"
+#include "world/block_shapes.h"
 #include "world/chunk.h"
 
 namespace terrasol::testing {
@@ -13,6 +14,10 @@ namespace terrasol::testing {
 std::filesystem::path testOutputDir();
 // resourcepacks/default/blocks.json, loaded once per process.
 const BlockRegistry& defaultBlocks();
+// Shapes for defaultBlocks() written out by hand, for tests that cannot read models: cubes, the
+// slabs, and straight stairs, boxed as the default pack's models box them (a CPU test checks that);
+// other model blocks have none.
+const BlockShapes& handShapes();
 // build/test-output/<name>, emptied.
 std::filesystem::path scratchDir(const std::string& name);
 // True when both chunks hold the same blocks everywhere.

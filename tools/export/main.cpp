@@ -82,7 +82,8 @@ int run(int argc, char** argv) {
     meshes = meshRegion(world.world(), *region, table);
   } else {
     if (!std::filesystem::exists(input / "level.json")) throw Error(input.string() + ": not a world (no level.json)");
-    StreamedWorld world(input, 0, blocks, table, radius, 2);
+    const BlockShapes shapes = defaultPackShapes(blocks);
+    StreamedWorld world(input, 0, blocks, table, radius, 2, &shapes);
     const ChunkPos chunk = ChunkPos::of({centre.x, 0, centre.z});
     for (int i = 0; i < 100000; ++i) {
       world.update(chunk, std::chrono::steady_clock::now() + std::chrono::milliseconds(50));
