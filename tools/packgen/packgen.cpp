@@ -1,5 +1,7 @@
 #include "packgen.h"
 
+#include "recipes.h"
+
 #include <algorithm>
 #include <cmath>
 #include <fstream>
@@ -12,26 +14,11 @@
 #include "world/noise.h"
 
 namespace terrasol::packgen {
-namespace {
 
-constexpr int kSize = 16;
-
-// Everything a recipe paints, per texel: colour, height (0 deep .. 1 surface) and LabPBR specular.
-struct Texel {
-  glm::vec3 color{0.5f};  // sRGB 0..1
-  float alpha = 1.0f;
-  float height = 1.0f;
-  int smoothness = 40;    // _s R
-  int f0 = 10;            // _s G: 0..229 dielectric F0 (10 ~ 0.04), 230..237 metals
-  int porosity = 0;       // _s B
-  int emission = 255;     // _s A: 255 = none
-};
-using Canvas = std::vector<Texel>;  // kSize x (kSize * frames), row-major
-
-float hash01(std::uint64_t seed, int x, int y, int z = 0) { return static_cast<float>(unitFloat(hashCoords(seed, x, y, z))); }
+float hash01(std::uint64_t seed, int x, int y, int z) { return static_cast<float>(unitFloat(hashCoords(seed, x, y, z))); }
 
 // Tileable value noise over a 16-texel period, `cells` cells per period.
-float tileNoise(std::uint64_t seed, float x, float y, int cells, int frame = 0) {
+float tileNoise(std::uint64_t seed, float x, float y, int cells, int frame) {
   const float cx = x * cells / kSize, cy = y * cells / kSize;
   const int x0 = static_cast<int>(std::floor(cx)), y0 = static_cast<int>(std::floor(cy));
   const float fx = cx - x0, fy = cy - y0;
@@ -42,16 +29,11 @@ float tileNoise(std::uint64_t seed, float x, float y, int cells, int frame = 0) 
   return a + (b - a) * smooth(fy);
 }
 
-float fbm(std::uint64_t seed, float x, float y, int frame = 0) {
+float fbm(std::uint64_t seed, float x, float y, int frame) {
   return 0.5f * tileNoise(seed, x, y, 2, frame) + 0.3f * tileNoise(seed + 1, x, y, 4, frame) +
          0.2f * tileNoise(seed + 2, x, y, 8, frame);
 }
 
-// Distance to the nearest and second-nearest of `count` wrapping feature points, and the nearest's id.
-struct Cells {
-  float d1, d2;
-  int id;
-};
 Cells voronoi(std::uint64_t seed, int x, int y, int count) {
   Cells c{1e9f, 1e9f, 0};
   for (int i = 0; i < count; ++i) {
@@ -251,6 +233,8 @@ Texel torch(int x, int y) {
   return t;
 }
 
+namespace {
+
 // --- encoding ------------------------------------------------------------------------------------
 
 std::uint8_t byte(float v) { return static_cast<std::uint8_t>(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f)); }
@@ -286,11 +270,11 @@ GeneratedTexture encode(const std::string& name, const Canvas& c, int frames, in
   return g;
 }
 
-GeneratedTexture still(const std::string& name, Texel (*f)(int, int)) {
-  return encode(name, paint(1, [f](int x, int y, int) { return f(x, y); }), 1, 1);
-}
-
 }  // namespace
+
+GeneratedTexture still(const std::string& name, const std::function<Texel(int, int)>& f) {
+  return encode(name, paint(1, [&f](int x, int y, int) { return f(x, y); }), 1, 1);
+}
 
 std::vector<GeneratedTexture> generateDefaultTextures() {
   std::vector<GeneratedTexture> out;
@@ -358,6 +342,7 @@ std::vector<GeneratedTexture> generateDefaultTextures() {
   out.push_back(encode("water_flow", paint(8, [](int x, int y, int f) { return liquid(x, y, f, false, true); }), 8, 2));
   out.push_back(encode("lava_still", paint(8, [](int x, int y, int f) { return liquid(x, y, f, true, false); }), 8, 4));
   out.push_back(encode("lava_flow", paint(8, [](int x, int y, int f) { return liquid(x, y, f, true, true); }), 8, 3));
+  addCraftedTextures(out);
   return out;
 }
 

@@ -1,0 +1,57 @@
+#pragma once
+// The texel recipes behind the default pack: what each texel of a generated texture holds, the noise
+// they are painted with, and the shared recipes (stone, planks, glass...). Internal to packgen.
+
+#include <cstdint>
+#include <functional>
+#include <glm/vec3.hpp>
+#include <string>
+#include <vector>
+
+#include "packgen.h"
+
+namespace terrasol::packgen {
+
+inline constexpr int kSize = 16;
+
+// Everything a recipe paints, per texel: colour, height (0 deep .. 1 surface) and LabPBR specular.
+struct Texel {
+  glm::vec3 color{0.5f};  // sRGB 0..1
+  float alpha = 1.0f;
+  float height = 1.0f;
+  int smoothness = 40;  // _s R
+  int f0 = 10;          // _s G: 0..229 dielectric F0 (10 ~ 0.04), 230..237 metals
+  int porosity = 0;     // _s B
+  int emission = 255;   // _s A: 255 = none
+};
+using Canvas = std::vector<Texel>;  // kSize x (kSize * frames), row-major
+
+float hash01(std::uint64_t seed, int x, int y, int z = 0);
+// Tileable value noise over a 16-texel period, `cells` cells per period.
+float tileNoise(std::uint64_t seed, float x, float y, int cells, int frame = 0);
+float fbm(std::uint64_t seed, float x, float y, int frame = 0);
+// Distance to the nearest and second-nearest of `count` wrapping feature points, and the nearest's id.
+struct Cells {
+  float d1, d2;
+  int id;
+};
+Cells voronoi(std::uint64_t seed, int x, int y, int count);
+glm::vec3 rgb(int r, int g, int b);
+Canvas paint(int frames, const std::function<Texel(int x, int y, int frame)>& f);
+
+Texel rock(std::uint64_t seed, int x, int y, glm::vec3 base, float contrast);
+Texel stone(int x, int y);
+Texel cobblestone(int x, int y);
+Texel dirt(int x, int y);
+Texel planks(int x, int y);
+Texel logSide(int x, int y);
+Texel glass(int x, int y);
+
+// One still texture from a recipe.
+GeneratedTexture still(const std::string& name, const std::function<Texel(int, int)>& f);
+
+// The textures of crafted and shaped blocks: doors, trapdoors, ladders, panes, wool, furnaces,
+// farmland and paths (crafted.cpp).
+void addCraftedTextures(std::vector<GeneratedTexture>& out);
+
+}  // namespace terrasol::packgen
