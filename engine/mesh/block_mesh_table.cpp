@@ -1,6 +1,7 @@
 #include "mesh/block_mesh_table.h"
 
 #include <algorithm>
+#include <cstdlib>
 
 namespace terrasol {
 namespace {
@@ -35,6 +36,30 @@ MeshLayer layerOf(RenderLayer layer) {
     default:
       return MeshLayer::Opaque;
   }
+}
+
+// Whether a model state's quads are exactly a cube's six faces as the mesher draws cubes (each on its
+// side, culled there, untinted, textured the cube's way up), and if so its faces' textures: it is
+// then drawn as a cube, merged with its like (a log standing up, a double slab).
+bool plainCube(const std::vector<ModelQuad>& quads, std::array<std::uint16_t, 6>& textures) {
+  if (quads.size() != 6) return false;
+  unsigned seen = 0;
+  for (const ModelQuad& q : quads) {
+    if (q.face >= 6 || q.cullface != q.face || !q.onSide || q.tinted || (seen >> q.face & 1)) return false;
+    seen |= 1u << q.face;
+    const FaceBasis& f = kFaceBases[q.face];
+    for (std::size_t c = 0; c < 4; ++c) {
+      int s = 0, r = 0;
+      for (std::size_t i = 0; i < 3; ++i) {
+        s += static_cast<int>(f.tangent[i]) * (q.corners32[c][i] - 16);
+        r += static_cast<int>(f.up[i]) * (q.corners32[c][i] - 16);
+      }
+      if (std::abs(s) != 16 || std::abs(r) != 16) return false;  // not a whole side
+      if (q.uvs16[c][0] != (s > 0 ? 16 : 0) || q.uvs16[c][1] != (r > 0 ? 0 : 16)) return false;
+    }
+    textures[q.face] = q.texture;
+  }
+  return true;
 }
 
 }  // namespace
@@ -101,6 +126,11 @@ BlockMeshTable::BlockMeshTable(const BlockRegistry& blocks,
       if (modelQuadsOf) e.quads = modelQuadsOf(id);
       for (ModelQuad& q : e.quads) describeModelQuad(q, e);
       for (int d = 0; d < 6; ++d) e.fullSides |= e.coverage.full(static_cast<Direction>(d)) ? 1u << d : 0u;
+      if (!plainCube(e.quads, e.texture)) continue;
+      e.shape = BlockShape::Cube;
+      for (int f = 0; f < 6; ++f) {
+        e.material[static_cast<std::size_t>(f)] = material(e, e.texture[static_cast<std::size_t>(f)], f);
+      }
       continue;
     }
     for (int f = 0; f < 6; ++f) {

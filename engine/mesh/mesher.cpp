@@ -96,14 +96,24 @@ class Mesher {
             self & ~(row(y - 1, z) >> 1 & 0xFFFF), self & ~(row(y + 1, z) >> 1 & 0xFFFF),
             self & ~(row(y, z - 1) >> 1 & 0xFFFF), self & ~(row(y, z + 1) >> 1 & 0xFFFF),
         };
+        std::uint32_t models = 0;  // opaque model blocks not drawn as cubes (a log on its side)
         forEachDirection([&](auto d) {
           for (std::uint32_t bits = visible[d]; bits != 0; bits &= bits - 1) {
             const int x = std::countr_zero(bits);
             const int here = SectionSnapshot::index(x, y, z);
             if (coveredFrom<d>(here + kNeighbour[d])) continue;
-            face<d>(x, y, z, table_[s_.blocks[static_cast<std::size_t>(here)]], 32, here + kNeighbour[d]);
+            const BlockMeshTable::Entry& e = table_[s_.blocks[static_cast<std::size_t>(here)]];
+            if (e.shape == BlockShape::Model) [[unlikely]] {
+              models |= 1u << x;
+              continue;
+            }
+            face<d>(x, y, z, e, 32, here + kNeighbour[d]);
           }
         });
+        for (; models != 0; models &= models - 1) {
+          const int x = std::countr_zero(models);
+          model(x, y, z, table_[block(x, y, z)]);
+        }
         // Everything else that is not air, cell by cell.
         for (std::uint32_t bits = ~self & 0xFFFF; bits != 0; bits &= bits - 1) {
           const int x = std::countr_zero(bits);

@@ -11,28 +11,28 @@ namespace {
 
 // True when every cell of `section`'s layer facing direction `d` (the face it shows towards the
 // section we are meshing) is an opaque cube. Uniform sections answer without looking at cells.
-bool faceIsOpaque(const Section& section, const BlockRegistry& blocks, int d) {
-  if (section.isUniform()) return blocks[section.uniformBlock()].isOpaqueCube();
+bool faceIsOpaque(const Section& section, const std::vector<std::uint8_t>& opaque, int d) {
+  if (section.isUniform()) return opaque[section.uniformBlock()] != 0;
   for (int a = 0; a < 16; ++a)
     for (int b = 0; b < 16; ++b) {
       // The layer of `section` that touches ours: its opposite side in direction d.
       const int x = d == 0 ? 15 : d == 1 ? 0 : a;
       const int y = d == 2 ? 15 : d == 3 ? 0 : (d < 2 ? a : b);
       const int z = d == 4 ? 15 : d == 5 ? 0 : b;
-      if (!blocks[section.get(x, y, z)].isOpaqueCube()) return false;
+      if (!opaque[section.get(x, y, z)]) return false;
     }
   return true;
 }
 
 bool buried(const World& world, const Chunk& chunk, SectionPos pos) {
-  const BlockRegistry& blocks = world.blocks();
+  const std::vector<std::uint8_t>& opaque = world.opaqueCubes();
   for (int d = 0; d < 6; ++d) {
     const BlockPos& o = kDirectionOffsets[d];
     const int s = pos.section + o.y;
     if (s < 0) continue;                       // below the world: never seen
     if (s >= kSectionCount) return false;      // open to the sky above the world
     const Chunk* neighbour = o.x == 0 && o.z == 0 ? &chunk : world.chunk({pos.x + o.x, pos.z + o.z});
-    if (!neighbour || !faceIsOpaque(neighbour->section(s), blocks, d)) return false;
+    if (!neighbour || !faceIsOpaque(neighbour->section(s), opaque, d)) return false;
   }
   return true;
 }
@@ -111,7 +111,7 @@ CaptureResult captureSection(const World& world, SectionPos pos, SectionSnapshot
   if (!chunk) return CaptureResult::Empty;
   const Section& section = chunk->section(pos.section);
   if (section.isAllAir()) return CaptureResult::Empty;
-  if (section.isUniform() && world.blocks()[section.uniformBlock()].isOpaqueCube() && buried(world, *chunk, pos)) {
+  if (section.isUniform() && world.opaqueCubes()[section.uniformBlock()] && buried(world, *chunk, pos)) {
     return CaptureResult::Buried;
   }
 
@@ -119,7 +119,7 @@ CaptureResult captureSection(const World& world, SectionPos pos, SectionSnapshot
   const Chunk* columns[3][3];
   for (int dz = -1; dz <= 1; ++dz)
     for (int dx = -1; dx <= 1; ++dx) columns[dz + 1][dx + 1] = world.chunk({pos.x + dx, pos.z + dz});
-  const std::uint8_t* opaqueCube = world.blocks().opaqueCubes().data();
+  const std::uint8_t* opaqueCube = world.opaqueCubes().data();
   const int y0 = kMinY + pos.section * 16;
   for (int ly = -1; ly <= 16; ++ly) {
     const int y = y0 + ly;

@@ -34,7 +34,7 @@ class SectionSnapshot {
   SectionPos pos;
   std::array<BlockId, kCells> blocks;
   std::array<std::uint32_t, kCells> light;  // lightTerm per cell
-  std::array<std::uint8_t, kCells> opaque;  // 1: an opaque cube (BlockRegistry::opaqueCubes)
+  std::array<std::uint8_t, kCells> opaque;  // 1: an opaque cube (World::opaqueCubes)
 };
 
 enum class CaptureResult { Captured, Empty, Buried };

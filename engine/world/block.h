@@ -42,6 +42,16 @@ struct BlockType {
   // Light stops at the sides its shape covers whole (vanilla's useShapeForLightOcclusion): a bottom
   // slab keeps sky light from the cell below it but lets it in through its open top half.
   bool shapeOccludesLight = false;
+  // Gameplay. `placement`: the rule a placed state follows (game/placement.h; "" keeps the held
+  // state); `wallVariant`: the block placed instead against a wall (a torch's wall torch);
+  // `connects`: "fence", "pane" or "wall", joining its neighbours (world/connected_states.h);
+  // `opens`: using it toggles its "open" property.
+  std::string placement, wallVariant, connects;
+  bool opens = false;
+  // Collision (world/block_shapes.h): boxes reach up to `collisionHeight` (1/16, 0 keeps the shape's;
+  // fences and walls 24), and none in states with `passableWhen` ("open=true": an open gate).
+  std::uint8_t collisionHeight = 0;
+  std::string passableWhen;
   Tint tint = Tint::None;
   FaceTextures textures;
 

@@ -150,6 +150,44 @@ std::size_t defaultOffset(const json& block, const BlockType& type, const std::s
   return stateOffset(type, indices);
 }
 
+std::string optionalString(const json& block, const char* key, const std::string& where) {
+  if (!block.contains(key)) return {};
+  if (!block[key].is_string()) throw Error(where + "." + key + " must be a string");
+  return block[key].get<std::string>();
+}
+
+void parseGameplay(const json& block, BlockType& type, const std::string& at) {
+  static constexpr std::array<const char*, 10> kPlacements = {
+      "stairs", "slab", "axis", "facing", "facing_back", "door", "trapdoor", "wall", "torch", "layers"};
+  type.placement = optionalString(block, "placement", at);
+  if (!type.placement.empty() &&
+      std::find(kPlacements.begin(), kPlacements.end(), type.placement) == kPlacements.end()) {
+    throw Error(at + ".placement: unknown rule '" + type.placement +
+                "' (stairs, slab, axis, facing, facing_back, door, trapdoor, wall, torch or layers)");
+  }
+  type.wallVariant = optionalString(block, "wall_variant", at);
+  type.connects = optionalString(block, "connects", at);
+  if (!type.connects.empty() && type.connects != "fence" && type.connects != "pane" &&
+      type.connects != "wall") {
+    throw Error(at + ".connects: unknown kind '" + type.connects + "' (fence, pane or wall)");
+  }
+  if (block.contains("opens")) {
+    if (!block["opens"].is_boolean()) throw Error(at + ".opens must be true or false");
+    type.opens = block["opens"].get<bool>();
+  }
+  if (block.contains("collision")) {
+    const json& c = block["collision"];
+    if (!c.is_object()) throw Error(at + ".collision must be an object");
+    if (c.contains("height")) {
+      if (!c["height"].is_number_integer() || c["height"].get<int>() < 1 || c["height"].get<int>() > 32) {
+        throw Error(at + ".collision.height must be a whole number of 1/16 blocks, 1..32");
+      }
+      type.collisionHeight = static_cast<std::uint8_t>(c["height"].get<int>());
+    }
+    type.passableWhen = optionalString(c, "none_when", at + ".collision");
+  }
+}
+
 BlockType parseBlock(const json& block, const std::string& where) {
   if (!block.is_object()) throw Error(where + " must be an object");
   if (!block.contains("name") || !block["name"].is_string() || block["name"].get<std::string>().empty()) {
@@ -189,11 +227,26 @@ BlockType parseBlock(const json& block, const std::string& where) {
   type.tint = block.contains("tint") ? parseEnum(block["tint"], kTints, at + ".tint") : Tint::None;
   type.opacity = static_cast<std::uint8_t>(parseLevel(block, "opacity", type.isOpaqueCube() ? 15 : 0, at));
   type.emission = static_cast<std::uint8_t>(parseLevel(block, "emission", 0, at));
+  parseGameplay(block, type, at);
   if (block.contains("shape_occludes_light")) {
-    if (!block["shape_occludes_light"].is_boolean()) throw Error(at + ".shape_occludes_light must be true or false");
+    if (!block["shape_occludes_light"].is_boolean())
+      throw Error(at + ".shape_occludes_light must be true or false");
     type.shapeOccludesLight = block["shape_occludes_light"].get<bool>();
   }
   parseProperties(block, type, at);
+  if (!type.passableWhen.empty()) {
+    const auto eq = type.passableWhen.find('=');
+    const auto property =
+        std::find_if(type.properties.begin(), type.properties.end(), [&](const BlockProperty& p) {
+          return eq != std::string::npos && p.name == type.passableWhen.substr(0, eq);
+        });
+    if (property == type.properties.end() ||
+        std::find(property->values.begin(), property->values.end(), type.passableWhen.substr(eq + 1)) ==
+            property->values.end()) {
+      throw Error(at + ".collision.none_when: '" + type.passableWhen +
+                  "' is not one of its property=value pairs");
+    }
+  }
   type.defaultState = static_cast<BlockId>(defaultOffset(block, type, at));  // made absolute by the registry
   return type;
 }
@@ -237,6 +290,11 @@ BlockRegistry BlockRegistry::fromJson(std::string_view text, const std::string& 
       registry.types_.push_back(std::move(type));
     }
     if (registry.types_.empty()) throw Error("\"blocks\" is empty (air must come first)");
+    for (const BlockType& type : registry.types_) {
+      if (!type.wallVariant.empty() && !registry.byName_.contains(type.wallVariant)) {
+        throw Error(type.name + ".wall_variant: no block is named '" + type.wallVariant + "'");
+      }
+    }
     return registry;
   } catch (const Error& e) {
     throw Error(fileName + ": " + e.what());

@@ -24,11 +24,15 @@ class BlockShapes {
   // block whose shape occludes light (BlockType::shapeOccludesLight); 0 for every other. Light moves
   // from a cell to its neighbour unless either one's side between them is among these.
   const std::vector<std::uint8_t>& lightSides() const { return lightSides_; }
+  // Per state, 1 for an opaque cube: BlockRegistry::opaqueCubes, and the states of opaque model
+  // blocks whose shape is the whole cell (a double slab, a log lying on its side): they hide their
+  // neighbours' faces and darken corners as cubes do.
+  const std::vector<std::uint8_t>& opaqueCubes() const { return opaqueCubes_; }
 
  private:
   std::vector<std::vector<ShapeBox>> boxes_;
-  std::vector<bool> shapeOccludesLight_;
-  std::vector<std::uint8_t> lightSides_;
+  std::vector<bool> shapeOccludesLight_, opaqueModel_;
+  std::vector<std::uint8_t> lightSides_, opaqueCubes_;
 };
 
 }  // namespace terrasol

@@ -28,6 +28,10 @@ class World {
   const BlockRegistry& blocks() const { return *blocks_; }
   void setShapes(const BlockShapes* shapes) { shapes_ = shapes; }
   const BlockShapes* shapes() const { return shapes_; }
+  // Per state, 1 for an opaque cube (BlockShapes::opaqueCubes, or the registry's without shapes).
+  const std::vector<std::uint8_t>& opaqueCubes() const {
+    return shapes_ ? shapes_->opaqueCubes() : blocks_->opaqueCubes();
+  }
 
   // Air outside the world height, beyond the border or in a chunk that is not loaded.
   BlockId getBlock(const BlockPos& pos) const;

@@ -42,7 +42,9 @@ TEST_F(ModelMesh, EachStateHasItsModelsQuads) {
   EXPECT_EQ(quads("oak_stairs[shape=inner_left]"), 15u);
   EXPECT_EQ(quads("oak_stairs[shape=outer_right,half=top]"), 11u);
   for (BlockId s = 0; s < blocks.size(); ++s) {
-    if (blocks[s].shape == BlockShape::Model) {
+    // A wall with no post and no sides is nothing, as in Minecraft (its neighbours never leave it so).
+    if (blocks[s].shape == BlockShape::Model &&
+        blocks.stateName(s) != "cobblestone_wall[east=none,north=none,south=none,up=false,west=none]") {
       EXPECT_FALSE(atlas_->modelQuads[s].empty()) << blocks.stateName(s);
     }
   }
