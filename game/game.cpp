@@ -30,8 +30,8 @@
 namespace terrasol::session {
 namespace {
 
-constexpr const char* kHotbar[9] = {"stone",   "stone_slab", "grass_block", "oak_stairs", "oak_planks",
-                                    "oak_log", "glass",      "torch",       "glowstone"};
+constexpr const char* kHotbar[9] = {"stone",     "stone_slab", "oak_stairs", "oak_planks", "oak_log",
+                                    "oak_fence", "glass_pane", "oak_door",   "torch"};
 constexpr double kAutosaveSeconds = 300.0;
 constexpr double kDoubleTapSeconds = 0.3;                  // two jump presses this close toggle flight
 constexpr std::int64_t kTimePresets[] = {1000, 6000, 12000, 18000};  // morning, noon, sunset, midnight

@@ -46,7 +46,7 @@ void Game::useBlocks(const FrameInput& in, double dt) {
   }
   if (!target_) return;
   if (in.wasPressed(MouseButton::Middle)) {
-    const BlockId picked = world_.world().getBlock(target_->block);
+    const BlockId picked = pickedBy(world_.world(), target_->block);
     const auto slot = std::find(hotbar_.begin(), hotbar_.end(), picked);
     if (slot != hotbar_.end())
       selected_ = static_cast<int>(slot - hotbar_.begin());
@@ -56,7 +56,7 @@ void Game::useBlocks(const FrameInput& in, double dt) {
   const bool breakNow =
       in.wasPressed(MouseButton::Left) || (in.isHeld(MouseButton::Left) && breakCooldown_ <= 0.0);
   if (breakNow) {
-    editBlock(target_->block, kAir);
+    for (const BlockPos& cell : brokenBy(world_.world(), target_->block)) editBlock(cell, kAir);
     breakCooldown_ = kBreakRepeat;
     target_ = targetBlock(world_.world(), player_.eye(), player_.forward());
     return;
@@ -66,28 +66,45 @@ void Game::useBlocks(const FrameInput& in, double dt) {
   if (!placeNow) return;
   placeCooldown_ = kPlaceRepeat;
   // A plant under the crosshair is replaced, as in Minecraft; anything else gets the block beside it.
+  // A block that opens is opened or closed instead.
+  if (const auto used = useOf(world_.world(), target_->block, player_.forward()); !used.empty()) {
+    for (const Placement& cell : used) editBlock(cell.at, cell.state);
+    return;
+  }
+  // A plant under the crosshair is replaced, as in Minecraft; anything else gets the block beside it.
   const BlockPos at =
       replaceable(blocks_[world_.world().getBlock(target_->block)]) ? target_->block : target_->place;
   const glm::dvec3 hit = player_.eye() + player_.forward() * target_->distance;
-  const Placement placed = placementOf(world_.world(), hotbar_[static_cast<std::size_t>(selected_)], *target_,
-                                       at, hit, player_.forward());
-  const BlockId block = placed.state;
-  const BlockType& type = blocks_[block];
-  if (placed.at != at) {  // a slab made double where it is
-    editBlock(placed.at, block);
-    return;
+  const std::vector<Placement> cells = placementOf(
+      world_.world(), hotbar_[static_cast<std::size_t>(selected_)], *target_, at, hit, player_.forward());
+  for (const Placement& cell : cells) {
+    if (cell.at == target_->block && !replaceable(blocks_[world_.world().getBlock(cell.at)]))
+      continue;  // joins it
+    if (!inWorldHeight(cell.at.y) || !replaceable(blocks_[world_.world().getBlock(cell.at)])) return;
+    if (blocksPlayer(cell.at, cell.state)) return;  // never inside the player
+    const BlockType& type = blocks_[cell.state];
+    if ((type.shape == BlockShape::Cross || type.shape == BlockShape::Torch) &&
+        !world_.world().opaqueCubes()[world_.world().getBlock(cell.at.offset(0, -1, 0))]) {
+      return;  // torches and plants stand on a full block
+    }
   }
-  if (!inWorldHeight(at.y) || !replaceable(blocks_[world_.world().getBlock(at)])) return;
-  if (type.shape == BlockShape::Cube || type.shape == BlockShape::Model) {
-    const Box cell{glm::dvec3(at.x, at.y, at.z), glm::dvec3(at.x + 1, at.y + 1, at.z + 1)};
-    const Box body = player_.box();
-    const bool overlaps = body.min.x < cell.max.x && body.max.x > cell.min.x && body.min.y < cell.max.y &&
-                          body.max.y > cell.min.y && body.min.z < cell.max.z && body.max.z > cell.min.z;
-    if (overlaps) return;  // never inside the player
-  } else if (!blocks_[world_.world().getBlock(at.offset(0, -1, 0))].isOpaqueCube()) {
-    return;  // torches and plants stand on a full block
+  for (const Placement& cell : cells) editBlock(cell.at, cell.state);
+}
+
+bool Game::blocksPlayer(const BlockPos& at, BlockId state) const {
+  const Box body = player_.box();
+  const auto overlaps = [&](glm::dvec3 lo, glm::dvec3 hi) {
+    return body.min.x < hi.x && body.max.x > lo.x && body.min.y < hi.y && body.max.y > lo.y &&
+           body.min.z < hi.z && body.max.z > lo.z;
+  };
+  const glm::dvec3 corner(at.x, at.y, at.z);
+  for (const ShapeBox& b : shapes_.collision(state)) {
+    if (overlaps(corner + glm::dvec3(b.from[0], b.from[1], b.from[2]) / 16.0,
+                 corner + glm::dvec3(b.to[0], b.to[1], b.to[2]) / 16.0)) {
+      return true;
+    }
   }
-  editBlock(at, block);
+  return false;
 }
 
 void Game::placeProp(const std::string& model) {

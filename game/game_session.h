@@ -67,6 +67,8 @@ class Game {
   // Sets a block as the player does: recorded among the edits, and stairs beside it turned into
   // corners (world/connected_states.h). False when nothing changed.
   bool editBlock(const BlockPos& pos, BlockId state);
+  // Whether `state` placed at `at` would stand in the player (its collision boxes).
+  bool blocksPlayer(const BlockPos& at, BlockId state) const;
   void tickWorld(const FrameInput& in, int ticks);
   void stream(Clock::time_point frameStart);
   void draw(bool timed);

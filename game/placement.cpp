@@ -1,39 +1,187 @@
 #include "placement.h"
 
 #include <cmath>
+#include <string>
 
 namespace terrasol {
 namespace {
 
 // The horizontal direction the player looks most along, as Minecraft names facings.
-const char* facingOf(glm::dvec3 look) {
+std::string facingOf(glm::dvec3 look) {
   if (std::abs(look.x) > std::abs(look.z)) return look.x > 0.0 ? "east" : "west";
   return look.z > 0.0 ? "south" : "north";
 }
 
+std::string opposite(const std::string& f) {
+  return f == "north" ? "south" : f == "south" ? "north" : f == "west" ? "east" : "west";
+}
+
+// Seen from above, a quarter turn anticlockwise (Minecraft's getCounterClockWise) and clockwise.
+std::string counterClockwise(const std::string& f) {
+  return f == "north" ? "west" : f == "west" ? "south" : f == "south" ? "east" : "north";
+}
+std::string clockwise(const std::string& f) {
+  return opposite(counterClockwise(f));
+}
+
+BlockPos step(const BlockPos& p, const std::string& f) {
+  return f == "north"   ? p.offset(0, 0, -1)
+         : f == "south" ? p.offset(0, 0, 1)
+         : f == "west"  ? p.offset(-1, 0, 0)
+                        : p.offset(1, 0, 0);
+}
+
+// The facing a clicked side's normal points along; "" for the top or bottom.
+std::string sideOf(glm::ivec3 normal) {
+  if (normal.x != 0) return normal.x > 0 ? "east" : "west";
+  if (normal.z != 0) return normal.z > 0 ? "south" : "north";
+  return "";
+}
+
+// `state` with each of the property values set, where its block has them.
+BlockId with(const BlockRegistry& blocks, BlockId state,
+             std::initializer_list<std::pair<const char*, std::string>> values) {
+  for (const auto& [property, value] : values) state = blocks.with(state, property, value).value_or(state);
+  return state;
+}
+
+std::string valueOf(const BlockRegistry& blocks, BlockId state, const char* property) {
+  const StateValues v = blocks.stateValues(state);
+  const auto it = v.find(property);
+  return it == v.end() ? "" : it->second;
+}
+
+// Whether the block at `pos` fills its cell (a cube, a double slab): what walls and door hinges lean on.
+bool wholeBlock(const World& world, const BlockPos& pos) {
+  const BlockId s = world.getBlock(pos);
+  if (world.opaqueCubes()[s]) return true;
+  if (!world.shapes()) return false;
+  const auto& boxes = world.shapes()->boxes(s);
+  return boxes.size() == 1 && boxes[0].from == ShapeBox{}.from && boxes[0].to == ShapeBox{}.to;
+}
+
+// Minecraft's DoorBlock.getHinge: the side with more whole blocks beside it, the side away from a
+// door it would pair with, else the side of the cell the click was on.
+std::string hingeOf(const World& world, BlockId door, const BlockPos& at, const std::string& facing,
+                    glm::dvec3 hit) {
+  const BlockRegistry& blocks = world.blocks();
+  const BlockPos left = step(at, counterClockwise(facing)), right = step(at, clockwise(facing));
+  const int i = -wholeBlock(world, left) - wholeBlock(world, left.offset(0, 1, 0)) +
+                wholeBlock(world, right) + wholeBlock(world, right.offset(0, 1, 0));
+  const auto lowerDoor = [&](const BlockPos& p) {
+    const BlockId s = world.getBlock(p);
+    return &blocks[s] == &blocks[door] && valueOf(blocks, s, "half") == "lower";
+  };
+  const bool doorLeft = lowerDoor(left), doorRight = lowerDoor(right);
+  if ((doorLeft && !doorRight) || i > 0) return "right";
+  if ((doorRight && !doorLeft) || i < 0) return "left";
+  const double x = hit.x - at.x, z = hit.z - at.z;
+  const BlockPos& o = step(BlockPos{0, 0, 0}, facing);
+  const bool leftHalf =
+      (o.x >= 0 || z >= 0.5) && (o.x <= 0 || z <= 0.5) && (o.z >= 0 || x <= 0.5) && (o.z <= 0 || x >= 0.5);
+  return leftHalf ? "left" : "right";
+}
+
 }  // namespace
 
-Placement placementOf(const World& world, BlockId held, const Target& target, BlockPos at, glm::dvec3 hit,
-                      glm::dvec3 look) {
+std::vector<Placement> placementOf(const World& world, BlockId held, const Target& target, BlockPos at,
+                                   glm::dvec3 hit, glm::dvec3 look) {
   const BlockRegistry& blocks = world.blocks();
-  // A slab clicked on its open side becomes a double slab where it is.
+  const BlockType& type = blocks[held];
   const BlockId there = world.getBlock(target.block);
-  if (&blocks[there] == &blocks[held]) {
-    const StateValues values = blocks.stateValues(there);
-    const auto type = values.find("type");
-    if (type != values.end() && ((type->second == "bottom" && target.normal.y == 1) ||
-                                 (type->second == "top" && target.normal.y == -1))) {
-      if (const auto full = blocks.with(there, "type", "double")) return {target.block, *full};
-    }
-  }
+  const bool same = &blocks[there] == &type;
   // The upper half: against a ceiling, or clicked above a side's middle.
   const bool upper = target.normal.y == -1 || (target.normal.y == 0 && hit.y - std::floor(hit.y) > 0.5);
-  BlockId state = held;
-  for (const char* property : {"half", "type"}) {  // stairs' half, slabs' type
-    if (const auto s = blocks.with(state, property, upper ? "top" : "bottom")) state = *s;
+  const std::string& rule = type.placement;
+  const std::string side = sideOf(target.normal);
+  if (rule == "slab") {
+    // A slab clicked on its open side becomes a double slab where it is.
+    const std::string half = valueOf(blocks, there, "type");
+    if (same && ((half == "bottom" && target.normal.y == 1) || (half == "top" && target.normal.y == -1))) {
+      return {{target.block, with(blocks, there, {{"type", "double"}})}};
+    }
+    return {{at, with(blocks, held, {{"type", upper ? "top" : "bottom"}})}};
   }
-  if (const auto s = blocks.with(state, "facing", facingOf(look))) state = *s;
-  return {at, state};
+  if (rule == "layers") {
+    if (const std::string n = valueOf(blocks, there, "layers"); same && target.normal.y == 1 && n != "8") {
+      return {{target.block, with(blocks, there, {{"layers", std::to_string(std::stoi(n) + 1)}})}};
+    }
+    return {{at, held}};
+  }
+  if (rule == "stairs")
+    return {{at, with(blocks, held, {{"half", upper ? "top" : "bottom"}, {"facing", facingOf(look)}})}};
+  if (rule == "axis") {
+    const char* axis = target.normal.x != 0 ? "x" : target.normal.z != 0 ? "z" : "y";
+    return {{at, with(blocks, held, {{"axis", axis}})}};
+  }
+  if (rule == "facing") return {{at, with(blocks, held, {{"facing", facingOf(look)}})}};
+  if (rule == "facing_back") return {{at, with(blocks, held, {{"facing", opposite(facingOf(look))}})}};
+  if (rule == "trapdoor") {
+    // On a side it hangs from that side, at the half clicked; on a top or bottom it faces the player.
+    if (!side.empty())
+      return {{at, with(blocks, held, {{"facing", side}, {"half", upper ? "top" : "bottom"}})}};
+    return {
+        {at, with(blocks, held, {{"facing", opposite(facingOf(look))}, {"half", upper ? "top" : "bottom"}})}};
+  }
+  if (rule == "wall" || rule == "torch") {
+    // Against a wall's whole side; a torch stands on a floor too.
+    if (!side.empty() && wholeBlock(world, target.block)) {
+      const BlockId wall = rule == "torch" ? blocks.id(type.wallVariant) : held;
+      return {{at, with(blocks, wall, {{"facing", side}})}};
+    }
+    if (rule == "torch" && target.normal.y == 1) return {{at, held}};
+    return {};
+  }
+  if (rule == "door") {
+    const std::string facing = facingOf(look);
+    const BlockId lower = with(blocks, held,
+                               {{"facing", facing},
+                                {"half", "lower"},
+                                {"hinge", hingeOf(world, held, at, facing, hit)},
+                                {"open", "false"}});
+    return {{at, lower}, {at.offset(0, 1, 0), with(blocks, lower, {{"half", "upper"}})}};
+  }
+  return {{at, held}};
+}
+
+std::vector<Placement> useOf(const World& world, const BlockPos& pos, glm::dvec3 look) {
+  const BlockRegistry& blocks = world.blocks();
+  const BlockId state = world.getBlock(pos);
+  const BlockType& type = blocks[state];
+  if (!type.opens) return {};
+  const bool open = valueOf(blocks, state, "open") != "true";
+  BlockId toggled = with(blocks, state, {{"open", open ? "true" : "false"}});
+  // A gate opened from its far side turns to swing away from the player, as Minecraft's does.
+  if (open && type.placement == "facing" && valueOf(blocks, state, "facing") == opposite(facingOf(look))) {
+    toggled = with(blocks, toggled, {{"facing", facingOf(look)}});
+  }
+  std::vector<Placement> cells = {{pos, toggled}};
+  if (type.placement == "door") {
+    const BlockPos other = pos.offset(0, valueOf(blocks, state, "half") == "lower" ? 1 : -1, 0);
+    const BlockId o = world.getBlock(other);
+    if (&blocks[o] == &type) cells.push_back({other, with(blocks, o, {{"open", open ? "true" : "false"}})});
+  }
+  return cells;
+}
+
+BlockId pickedBy(const World& world, const BlockPos& pos) {
+  const BlockRegistry& blocks = world.blocks();
+  const BlockType& type = blocks[world.getBlock(pos)];
+  for (std::size_t i = 0; i < blocks.blockCount(); ++i) {
+    if (blocks.block(i).wallVariant == type.name) return blocks.block(i).defaultState;
+  }
+  return type.defaultState;
+}
+
+std::vector<BlockPos> brokenBy(const World& world, const BlockPos& pos) {
+  const BlockRegistry& blocks = world.blocks();
+  const BlockId state = world.getBlock(pos);
+  std::vector<BlockPos> cells = {pos};
+  if (blocks[state].placement == "door") {
+    const BlockPos other = pos.offset(0, valueOf(blocks, state, "half") == "lower" ? 1 : -1, 0);
+    if (&blocks[world.getBlock(other)] == &blocks[state]) cells.push_back(other);
+  }
+  return cells;
 }
 
 }  // namespace terrasol

@@ -60,7 +60,7 @@ std::vector<Box> solidBoxes(const World& world, const Box& region) {
       if (isSolid(world, p)) boxes.push_back({corner, corner + glm::dvec3(1.0)});
       return false;
     }
-    for (const ShapeBox& b : shapes->boxes(world.getBlock(p))) {
+    for (const ShapeBox& b : shapes->collision(world.getBlock(p))) {
       boxes.push_back({corner + glm::dvec3(b.from[0], b.from[1], b.from[2]) / 16.0,
                        corner + glm::dvec3(b.to[0], b.to[1], b.to[2]) / 16.0});
     }

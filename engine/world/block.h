@@ -44,7 +44,8 @@ struct BlockType {
   bool shapeOccludesLight = false;
   // Gameplay. `placement`: the rule a placed state follows (game/placement.h; "" keeps the held
   // state); `wallVariant`: the block placed instead against a wall (a torch's wall torch);
-  // `connects`: "fence", "pane" or "wall", joining its neighbours (world/connected_states.h);
+  // `connects`: "fence", "pane" or "wall", joining its neighbours, or "gate", which fences and walls
+  // join (world/connected_states.h);
   // `opens`: using it toggles its "open" property.
   std::string placement, wallVariant, connects;
   bool opens = false;

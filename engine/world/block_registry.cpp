@@ -168,8 +168,8 @@ void parseGameplay(const json& block, BlockType& type, const std::string& at) {
   type.wallVariant = optionalString(block, "wall_variant", at);
   type.connects = optionalString(block, "connects", at);
   if (!type.connects.empty() && type.connects != "fence" && type.connects != "pane" &&
-      type.connects != "wall") {
-    throw Error(at + ".connects: unknown kind '" + type.connects + "' (fence, pane or wall)");
+      type.connects != "wall" && type.connects != "gate") {
+    throw Error(at + ".connects: unknown kind '" + type.connects + "' (fence, pane, wall or gate)");
   }
   if (block.contains("opens")) {
     if (!block["opens"].is_boolean()) throw Error(at + ".opens must be true or false");

@@ -4,6 +4,8 @@ namespace terrasol {
 
 BlockShapes::BlockShapes(const BlockRegistry& blocks)
     : boxes_(blocks.size()),
+      collision_(blocks.size()),
+      collisionHeight_(blocks.size()),
       shapeOccludesLight_(blocks.size()),
       opaqueModel_(blocks.size()),
       lightSides_(blocks.size()),
@@ -11,12 +13,26 @@ BlockShapes::BlockShapes(const BlockRegistry& blocks)
   for (BlockId s = 0; s < blocks.size(); ++s) {
     shapeOccludesLight_[s] = blocks[s].shapeOccludesLight;
     opaqueModel_[s] = blocks[s].shape == BlockShape::Model && blocks[s].layer == RenderLayer::Opaque;
+    const BlockType& type = blocks[s];
+    collisionHeight_[s] = type.collisionHeight > 0 ? type.collisionHeight : 255;  // 255: as the shape
+    if (const auto eq = type.passableWhen.find('='); eq != std::string::npos) {
+      const StateValues values = blocks.stateValues(s);
+      const auto v = values.find(type.passableWhen.substr(0, eq));
+      if (v != values.end() && v->second == type.passableWhen.substr(eq + 1)) collisionHeight_[s] = 0;
+    }
     if (blocks[s].shape == BlockShape::Cube) setBoxes(s, {ShapeBox{}});
   }
 }
 
 void BlockShapes::setBoxes(BlockId state, std::vector<ShapeBox> boxes) {
   boxes_[state] = std::move(boxes);
+  collision_[state].clear();
+  for (ShapeBox b : boxes_[state]) {
+    const bool flat = b.from[0] == b.to[0] || b.from[1] == b.to[1] || b.from[2] == b.to[2];
+    if (flat || collisionHeight_[state] == 0) continue;
+    if (collisionHeight_[state] != 255) b.to[1] = collisionHeight_[state];
+    collision_[state].push_back(b);
+  }
   std::uint8_t sides = 0;
   if (shapeOccludesLight_[state]) {
     const FaceCoverage coverage = FaceCoverage::of(boxes_[state]);

@@ -19,6 +19,9 @@ class BlockShapes {
 
   const std::vector<ShapeBox>& boxes(BlockId state) const { return boxes_[state]; }
   void setBoxes(BlockId state, std::vector<ShapeBox> boxes);
+  // What a player collides with: the boxes, raised to the block's collision height (a fence's 1.5
+  // blocks), none for a passable state (an open gate) and without flat ones (a ladder's plane).
+  const std::vector<ShapeBox>& collision(BlockId state) const { return collision_[state]; }
 
   // Per state, the sides light does not pass (bits by Direction): those its boxes cover whole, for a
   // block whose shape occludes light (BlockType::shapeOccludesLight); 0 for every other. Light moves
@@ -30,7 +33,8 @@ class BlockShapes {
   const std::vector<std::uint8_t>& opaqueCubes() const { return opaqueCubes_; }
 
  private:
-  std::vector<std::vector<ShapeBox>> boxes_;
+  std::vector<std::vector<ShapeBox>> boxes_, collision_;
+  std::vector<std::uint8_t> collisionHeight_;  // per state: BlockType::collisionHeight, 0 when passable
   std::vector<bool> shapeOccludesLight_, opaqueModel_;
   std::vector<std::uint8_t> lightSides_, opaqueCubes_;
 };

@@ -61,10 +61,66 @@ const char* stairShape(const World& world, const BlockPos& pos, const Stair& sel
   return "straight";
 }
 
+// Whether `state`'s side `side` is whole: an opaque cube's, or one its shape's boxes cover. Leaves
+// are left out, as Minecraft leaves them out of connections.
+bool wholeSide(const World& world, BlockId state, Direction side) {
+  if (world.opaqueCubes()[state]) return true;
+  if (world.blocks()[state].tint == Tint::Foliage) return false;
+  return world.shapes() && FaceCoverage::of(world.shapes()->boxes(state)).full(side);
+}
+
+// Whether a fence, pane or wall of kind `kind` joins the neighbour `n` on its side `side`.
+bool joins(const World& world, const std::string& kind, BlockId n, Direction side) {
+  const BlockType& type = world.blocks()[n];
+  if (type.connects == kind || (kind != "fence" && (type.connects == "pane" || type.connects == "wall")))
+    return true;
+  if (type.connects == "gate" && kind != "pane") {
+    // A gate joins along its bars: facing north or south, it runs east-west.
+    const StateValues v = world.blocks().stateValues(n);
+    const auto facing = v.find("facing");
+    const bool northSouth = facing != v.end() && (facing->second == "north" || facing->second == "south");
+    return northSouth == (side == Direction::East || side == Direction::West);
+  }
+  return wholeSide(world, n, opposite(side));
+}
+
+BlockId connectedSides(const World& world, const BlockPos& pos, BlockId state, const std::string& kind) {
+  const BlockRegistry& blocks = world.blocks();
+  static constexpr std::array<std::pair<Direction, const char*>, 4> kSides = {{{Direction::North, "north"},
+                                                                               {Direction::East, "east"},
+                                                                               {Direction::South, "south"},
+                                                                               {Direction::West, "west"}}};
+  const BlockId above = world.getBlock(pos.offset(0, 1, 0));
+  const bool tall = wholeSide(world, above, Direction::Down);
+  bool joined[4];
+  for (std::size_t k = 0; k < kSides.size(); ++k) {
+    const auto [side, name] = kSides[k];
+    joined[k] = joins(world, kind, world.neighbour(pos, side), side);
+    const char* value = kind != "wall" ? (joined[k] ? "true" : "false")
+                        : !joined[k]   ? "none"
+                        : tall         ? "tall"
+                                       : "low";
+    state = blocks.with(state, name, value).value_or(state);
+  }
+  if (kind == "wall") {
+    // The post shows unless the wall runs straight through (two opposite sides and nothing else), or
+    // where a wall's post stands on it.
+    const bool straight = (joined[0] && joined[2] && !joined[1] && !joined[3]) ||
+                          (joined[1] && joined[3] && !joined[0] && !joined[2]);
+    const bool postAbove = blocks[above].connects == "wall" && blocks.stateValues(above).at("up") == "true";
+    state = blocks.with(state, "up", straight && !postAbove ? "false" : "true").value_or(state);
+  }
+  return state;
+}
+
 }  // namespace
 
 BlockId connectedState(const World& world, const BlockPos& pos, BlockId state) {
-  if (world.blocks()[state].properties.empty()) return state;  // most cells: nothing to look up
+  const BlockType& type = world.blocks()[state];
+  if (type.properties.empty()) return state;  // most cells: nothing to look up
+  if (type.connects == "fence" || type.connects == "pane" || type.connects == "wall") {
+    return connectedSides(world, pos, state, type.connects);
+  }
   const auto self = stairOf(world.blocks(), state);
   if (!self) return state;
   return world.blocks().with(state, "shape", stairShape(world, pos, *self)).value_or(state);
@@ -72,8 +128,12 @@ BlockId connectedState(const World& world, const BlockPos& pos, BlockId state) {
 
 std::vector<std::pair<BlockPos, BlockId>> connectionUpdates(const World& world, const BlockPos& changed) {
   std::vector<std::pair<BlockPos, BlockId>> updates;
-  const std::array<BlockPos, 5> cells = {changed, changed.offset(-1, 0, 0), changed.offset(1, 0, 0),
-                                         changed.offset(0, 0, -1), changed.offset(0, 0, 1)};
+  const std::array<BlockPos, 6> cells = {changed,
+                                         changed.offset(-1, 0, 0),
+                                         changed.offset(1, 0, 0),
+                                         changed.offset(0, 0, -1),
+                                         changed.offset(0, 0, 1),
+                                         changed.offset(0, -1, 0)};
   for (const BlockPos& p : cells) {
     const BlockId now = world.getBlock(p);
     const BlockId connected = connectedState(world, p, now);

@@ -72,5 +72,56 @@ TEST(ConnectedStates, AChangeUpdatesItselfAndItsNeighbours) {
   EXPECT_EQ(b.stateName(back[0].second), "oak_stairs[facing=north,half=bottom,shape=straight]");
 }
 
+// Fences join fences, gates across their line and whole faces; panes join panes, walls and whole
+// faces (glass too, leaves not); walls join walls and panes, rise tall under a whole bottom and drop
+// their post where they run straight.
+TEST(ConnectedStates, FencesPanesAndWallsJoinTheirKindAndWholeFaces) {
+  const BlockRegistry& b = defaultBlocks();
+  World world(b, &testing::handShapes());
+  world.insertChunk(std::make_unique<Chunk>(ChunkPos{0, 0}));
+  const auto stateAt = [&](const BlockPos& p) { return b.stateName(connectedState(world, p, world.getBlock(p))); };
+  const BlockPos fence{4, 64, 4};
+  world.setBlock(fence, b.id("oak_fence"));
+  EXPECT_EQ(stateAt(fence), "oak_fence[east=false,north=false,south=false,west=false]") << "alone: a post";
+  world.setBlock({5, 64, 4}, b.id("oak_fence"));
+  world.setBlock({4, 64, 3}, b.id("stone"));
+  world.setBlock({3, 64, 4}, b.id("stone_slab"));
+  world.setBlock({4, 64, 5}, b.id("glass_pane"));
+  EXPECT_EQ(stateAt(fence), "oak_fence[east=true,north=true,south=false,west=false]")
+      << "a fence and stone; not half a side, nor a pane";
+  world.setBlock({3, 64, 4}, b.id("stone_slab[type=double]"));
+  world.setBlock({4, 64, 5}, b.id("oak_fence_gate[facing=east]"));
+  EXPECT_EQ(stateAt(fence), "oak_fence[east=true,north=true,south=true,west=true]")
+      << "a double slab, and a gate whose bars run north-south";
+  world.setBlock({4, 64, 5}, b.id("oak_fence_gate[facing=south]"));
+  EXPECT_EQ(stateAt(fence), "oak_fence[east=true,north=true,south=false,west=true]") << "not one across";
+
+  const BlockPos pane{10, 64, 10};
+  world.setBlock(pane, b.id("glass_pane"));
+  world.setBlock({11, 64, 10}, b.id("glass"));
+  world.setBlock({9, 64, 10}, b.id("oak_leaves"));
+  world.setBlock({10, 64, 9}, b.id("cobblestone_wall"));
+  world.setBlock({10, 64, 11}, b.id("oak_fence"));
+  EXPECT_EQ(stateAt(pane), "glass_pane[east=true,north=true,south=false,west=false]")
+      << "glass and a wall; not leaves, nor a fence";
+
+  const BlockPos wall{4, 64, 12};
+  world.setBlock(wall, b.id("cobblestone_wall"));
+  world.setBlock({4, 64, 11}, b.id("cobblestone_wall"));
+  world.setBlock({4, 64, 13}, b.id("glass_pane"));
+  EXPECT_EQ(stateAt(wall), "cobblestone_wall[east=none,north=low,south=low,up=false,west=none]")
+      << "straight through: no post";
+  world.setBlock({4, 65, 12}, b.id("stone"));
+  EXPECT_EQ(stateAt(wall), "cobblestone_wall[east=none,north=tall,south=tall,up=false,west=none]") << "under stone";
+  world.setBlock({5, 64, 12}, b.id("stone"));
+  EXPECT_EQ(stateAt(wall), "cobblestone_wall[east=tall,north=tall,south=tall,up=true,west=none]") << "a T: a post";
+
+  // Changes reach the neighbours and the wall below.
+  world.setBlock({4, 65, 12}, kAir);
+  const auto updates = connectionUpdates(world, {4, 65, 12});
+  ASSERT_EQ(updates.size(), 1u);
+  EXPECT_EQ(updates[0].first, wall);
+}
+
 }  // namespace
 }  // namespace terrasol

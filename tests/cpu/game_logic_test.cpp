@@ -193,6 +193,29 @@ TEST(PlayerTest, StepsOntoSlabsAndUpStairsWithoutJumping) {
   EXPECT_NEAR(blocked.box().max.z, 3.0, 1e-6);
 }
 
+// Fences and walls are 1.5 blocks high to a player: jumping (1.25) does not clear them, as it clears
+// a block. A closed gate is a fence; an open one lets the player through.
+TEST(PlayerTest, FencesStopAJumpAndOpenGatesLetThrough) {
+  const auto reach = [](const char* block, bool jump) {
+    World world = flatWorld();
+    world.setShapes(&defaultShapes());
+    for (int x = -8; x < 8; ++x) world.setBlock({x, 64, 3}, defaultBlocks().id(block));
+    for (int z = 4; z < 8; ++z)
+      for (int x = -8; x < 8; ++x) world.setBlock({x, 64, z}, defaultBlocks().id("stone"));
+    MoveInput walk;
+    walk.forward = 1.0f;
+    walk.jump = jump;
+    Player p({0.5, 64.0, 0.5});
+    runTicks(p, world, walk, 60);
+    return p.position().z;
+  };
+  EXPECT_GT(reach("stone", true), 4.0) << "a block is jumped onto";
+  EXPECT_LT(reach("oak_fence", true), 3.5) << "a fence is not (its post, 6..10 / 16 into the cell, stops the player)";
+  EXPECT_LT(reach("cobblestone_wall", true), 3.5);
+  EXPECT_LT(reach("oak_fence_gate[facing=south]", true), 3.5);
+  EXPECT_GT(reach("oak_fence_gate[facing=south,open=true]", false), 3.5) << "walked through an open gate";
+}
+
 TEST(PlayerTest, ATopSlabIsAHeadHighBeamAndABottomSlabAFloor) {
   World world = flatWorld();
   world.setShapes(&defaultShapes());
@@ -334,7 +357,11 @@ TEST(PlacementTest, SlabsAndStairsTakeTheirStateFromWhereAndHowTheyArePlaced) {
   const BlockId slab = b.id("stone_slab"), stairs = b.id("oak_stairs");
   const Target floor{{0, 63, 0}, {0, 1, 0}, {0, 64, 0}, 1.0};
   const glm::dvec3 south(0.0, -0.5, 1.0), west(-1.0, -0.2, 0.1);
-  const auto name = [&](const Placement& p) { return b.stateName(p.state); };
+  const auto one = [&](const std::vector<Placement>& cells) {
+    EXPECT_EQ(cells.size(), 1u);
+    return cells.empty() ? Placement{} : cells[0];
+  };
+  const auto name = [&](const std::vector<Placement>& cells) { return b.stateName(one(cells).state); };
   EXPECT_EQ(name(placementOf(world, slab, floor, floor.place, {0.5, 64.0, 0.5}, south)), "stone_slab[type=bottom]");
   // On a wall's side, above or below its middle.
   const Target side{{0, 64, 3}, {0, 0, -1}, {0, 64, 2}, 2.0};
@@ -348,18 +375,101 @@ TEST(PlacementTest, SlabsAndStairsTakeTheirStateFromWhereAndHowTheyArePlaced) {
   // Clicking a bottom slab's top joins them where it is; its side does not.
   world.setBlock({0, 64, 0}, slab);
   const Target onSlab{{0, 64, 0}, {0, 1, 0}, {0, 65, 0}, 1.0};
-  const Placement joined = placementOf(world, slab, onSlab, onSlab.place, {0.5, 64.5, 0.5}, south);
+  const Placement joined = one(placementOf(world, slab, onSlab, onSlab.place, {0.5, 64.5, 0.5}, south));
   EXPECT_EQ(joined.at, (BlockPos{0, 64, 0}));
-  EXPECT_EQ(name(joined), "stone_slab[type=double]");
+  EXPECT_EQ(b.stateName(joined.state), "stone_slab[type=double]");
   const Target slabSide{{0, 64, 0}, {0, 0, 1}, {0, 64, 1}, 1.0};
-  EXPECT_EQ(placementOf(world, slab, slabSide, slabSide.place, {0.5, 64.2, 1.0}, south).at, (BlockPos{0, 64, 1}));
+  EXPECT_EQ(one(placementOf(world, slab, slabSide, slabSide.place, {0.5, 64.2, 1.0}, south)).at, (BlockPos{0, 64, 1}));
   // Stairs face the way the player looks.
   EXPECT_EQ(name(placementOf(world, stairs, floor, floor.place, {0.5, 64.0, 0.5}, south)),
             "oak_stairs[facing=south,half=bottom,shape=straight]");
   EXPECT_EQ(name(placementOf(world, stairs, floor, floor.place, {0.5, 64.0, 0.5}, west)),
             "oak_stairs[facing=west,half=bottom,shape=straight]");
-  // A block without these properties keeps its state.
-  EXPECT_EQ(placementOf(world, b.id("stone"), side, side.place, {0.5, 64.7, 3.0}, south).state, b.id("stone"));
+  // A block without a placement rule keeps its state.
+  EXPECT_EQ(one(placementOf(world, b.id("stone"), side, side.place, {0.5, 64.7, 3.0}, south)).state, b.id("stone"));
+}
+
+// The other rules: logs along the clicked face's axis, furnaces facing the player, snow piling up,
+// ladders and wall torches only on a wall's side, trapdoors on a side's half, doors in two cells
+// with the hinge away from a wall beside them.
+TEST(PlacementTest, EveryRuleOfThePack) {
+  World world = flatWorld();
+  world.setShapes(&defaultShapes());
+  const BlockRegistry& b = defaultBlocks();
+  const glm::dvec3 south(0.0, -0.5, 1.0);
+  const auto names = [&](const std::vector<Placement>& cells) {
+    std::string out;
+    for (const Placement& p : cells) {
+      if (!out.empty()) out += ' ';
+      out += b.stateName(p.state);
+    }
+    return out;
+  };
+  const Target floor{{0, 63, 0}, {0, 1, 0}, {0, 64, 0}, 1.0};
+  const Target wallSide{{0, 64, 3}, {0, 0, -1}, {0, 64, 2}, 2.0};  // the north side of stone at z 3
+  world.setBlock({0, 64, 3}, b.id("stone"));
+  const auto place = [&](const char* block, const Target& t, glm::dvec3 hit) {
+    return names(placementOf(world, b.id(block), t, t.place, hit, south));
+  };
+  EXPECT_EQ(place("oak_log", floor, {0.5, 64.0, 0.5}), "oak_log[axis=y]");
+  EXPECT_EQ(place("oak_log", wallSide, {0.5, 64.5, 3.0}), "oak_log[axis=z]");
+  EXPECT_EQ(place("furnace", floor, {0.5, 64.0, 0.5}), "furnace[facing=north]") << "its front to the player";
+  EXPECT_EQ(place("oak_fence_gate", floor, {0.5, 64.0, 0.5}), "oak_fence_gate[facing=south,open=false]");
+  EXPECT_EQ(place("ladder", wallSide, {0.5, 64.5, 3.0}), "ladder[facing=north]");
+  EXPECT_EQ(place("ladder", floor, {0.5, 64.0, 0.5}), "") << "not on a floor";
+  EXPECT_EQ(place("torch", wallSide, {0.5, 64.5, 3.0}), "wall_torch[facing=north]");
+  EXPECT_EQ(place("torch", floor, {0.5, 64.0, 0.5}), "torch");
+  EXPECT_EQ(place("oak_trapdoor", wallSide, {0.5, 64.8, 3.0}), "oak_trapdoor[facing=north,half=top,open=false]");
+  EXPECT_EQ(place("oak_trapdoor", floor, {0.5, 64.0, 0.5}), "oak_trapdoor[facing=north,half=bottom,open=false]");
+  world.setBlock({0, 64, 0}, b.id("snow_layer"));
+  const Target onSnow{{0, 64, 0}, {0, 1, 0}, {0, 65, 0}, 1.0};
+  EXPECT_EQ(place("snow_layer", onSnow, {0.5, 64.125, 0.5}), "snow_layer[layers=2]");
+  // A door facing south: its left is east, as Minecraft turns south anticlockwise. Its hinge goes
+  // against a wall beside it, and away from a door it pairs with.
+  const Target ground{{5, 63, 5}, {0, 1, 0}, {5, 64, 5}, 1.0};
+  const auto hinge = [&] {
+    const std::string both = place("oak_door", ground, {5.5, 64.0, 5.5});
+    const auto at = both.find("hinge=");
+    return both.substr(at + 6, both.find(',', at) - at - 6);
+  };
+  world.setBlock({6, 64, 5}, b.id("stone"));
+  EXPECT_EQ(place("oak_door", ground, {5.5, 64.0, 5.5}),
+            "oak_door[facing=south,half=lower,hinge=left,open=false] oak_door[facing=south,half=upper,hinge=left,open=false]");
+  world.setBlock({6, 64, 5}, kAir);
+  world.setBlock({4, 64, 5}, b.id("stone"));
+  EXPECT_EQ(hinge(), "right") << "stone on its right (west)";
+  world.setBlock({4, 64, 5}, b.id("oak_door[facing=south,half=lower,hinge=left]"));
+  EXPECT_EQ(hinge(), "left") << "a door on its right: the pair's hinges on the outer sides";
+  world.setBlock({4, 64, 5}, kAir);
+  EXPECT_EQ(hinge(), "left") << "alone, clicked on the cell's west half (x 0.5 counts as the left)";
+}
+
+// Right-clicking a door opens both its halves, a gate opened from its far side turns to swing away,
+// breaking either half of a door takes both, and other blocks are not used.
+TEST(PlacementTest, DoorsGatesAndTrapdoorsOpenAndClose) {
+  World world = flatWorld();
+  const BlockRegistry& b = defaultBlocks();
+  world.setBlock({0, 64, 0}, b.id("oak_door[facing=south,half=lower]"));
+  world.setBlock({0, 65, 0}, b.id("oak_door[facing=south,half=upper]"));
+  const auto used = useOf(world, {0, 65, 0}, {0.0, 0.0, 1.0});
+  ASSERT_EQ(used.size(), 2u);
+  EXPECT_EQ(b.stateName(used[0].state), "oak_door[facing=south,half=upper,hinge=left,open=true]");
+  EXPECT_EQ(used[1].at, (BlockPos{0, 64, 0}));
+  EXPECT_EQ(b.stateName(used[1].state), "oak_door[facing=south,half=lower,hinge=left,open=true]");
+  EXPECT_EQ(brokenBy(world, {0, 64, 0}).size(), 2u);
+  world.setBlock({3, 64, 0}, b.id("oak_fence_gate[facing=south]"));
+  const auto gate = useOf(world, {3, 64, 0}, {0.0, 0.0, -1.0});
+  ASSERT_EQ(gate.size(), 1u);
+  EXPECT_EQ(b.stateName(gate[0].state), "oak_fence_gate[facing=north,open=true]") << "opened from the south";
+  world.setBlock({5, 64, 0}, b.id("oak_trapdoor"));
+  EXPECT_EQ(b.stateName(useOf(world, {5, 64, 0}, {0.0, 0.0, 1.0}).at(0).state),
+            "oak_trapdoor[facing=north,half=bottom,open=true]");
+  EXPECT_TRUE(useOf(world, {0, 63, 0}, {0.0, 0.0, 1.0}).empty()) << "stone does not open";
+  // Picking gives the block's default state, a torch for a wall torch.
+  EXPECT_EQ(pickedBy(world, {0, 65, 0}), b.id("oak_door"));
+  world.setBlock({7, 64, 0}, b.id("wall_torch[facing=west]"));
+  EXPECT_EQ(pickedBy(world, {7, 64, 0}), b.id("torch"));
+  EXPECT_EQ(brokenBy(world, {0, 63, 0}).size(), 1u);
 }
 
 // A shaped block is hit where the ray meets its boxes: a ray over a bottom slab's open half goes on
