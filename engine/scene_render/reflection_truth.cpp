@@ -20,19 +20,30 @@ struct Truth {
 
 // The first block along the ray that the depth buffer would hold: an opaque cube is a hit; a cutout
 // or partial block is ambiguous (its depth is there only where its texels are); translucent blocks
-// are not in the depth buffer, so the ray goes on through them.
+// are not in the depth buffer, so the ray goes on through them. A model block (World::shapes) is met
+// only where the ray meets its boxes: opaque, it is a hit there.
 Truth trace(const World& world, glm::dvec3 origin, glm::dvec3 dir, double maxDistance) {
   const BlockRegistry& blocks = world.blocks();
+  const BlockShapes* shapes = world.shapes();
   Truth truth;
   walkVoxels(origin, dir, maxDistance, [&](const VoxelStep& s) {
     if (s.cell.y >= kMaxY || s.cell.y < kMinY) return true;  // out of the world: nothing
     const BlockPos pos{s.cell.x, s.cell.y, s.cell.z};
     if (!world.isLoaded(ChunkPos::of(pos))) return true;
-    const BlockType& type = blocks[world.getBlock(pos)];
+    const BlockId id = world.getBlock(pos);
+    const BlockType& type = blocks[id];
     if (type.layer == RenderLayer::None || type.layer == RenderLayer::Translucent) return false;
-    truth.kind = type.isOpaqueCube() ? Truth::Kind::Block : Truth::Kind::Ambiguous;
+    double t = s.t;
+    if (shapes && type.shape == BlockShape::Model) {
+      const auto hit = firstBoxHit(shapes->boxes(id), s.cell, origin, dir);
+      if (!hit) return false;
+      t = hit->t;
+      truth.kind = type.layer == RenderLayer::Opaque ? Truth::Kind::Block : Truth::Kind::Ambiguous;
+    } else {
+      truth.kind = type.isOpaqueCube() ? Truth::Kind::Block : Truth::Kind::Ambiguous;
+    }
     truth.block = s.cell;
-    truth.point = origin + dir * s.t;
+    truth.point = origin + dir * t;
     return true;
   });
   return truth;

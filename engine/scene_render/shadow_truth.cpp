@@ -19,9 +19,11 @@ enum class Ray { Lit, Shadowed, Ambiguous };
 constexpr float kFlipMargin = 0.01f;
 
 // The first block along unit `dir` from `origin` decides: an opaque cube shadows, anything else drawn
-// (cutout, translucent) is ambiguous.
+// (cutout, translucent) is ambiguous. A model block (World::shapes) counts only where the ray meets
+// its boxes: opaque, it shadows there.
 Ray march(const World& world, glm::dvec3 origin, glm::dvec3 dir, double maxDistance) {
   const BlockRegistry& blocks = world.blocks();
+  const BlockShapes* shapes = world.shapes();
   Ray ray = Ray::Lit;
   walkVoxels(origin, dir, maxDistance, [&](const VoxelStep& s) {
     if (s.cell.y >= kMaxY) return true;  // out of the top of the world: open sky
@@ -30,6 +32,11 @@ Ray march(const World& world, glm::dvec3 origin, glm::dvec3 dir, double maxDista
     if (!world.isLoaded(ChunkPos::of(pos))) return true;  // nothing there to cast, in the map either
     const BlockId id = world.getBlock(pos);
     if (id == kAir) return false;
+    if (shapes && blocks[id].shape == BlockShape::Model) {
+      if (!firstBoxHit(shapes->boxes(id), s.cell, origin, dir)) return false;
+      ray = blocks[id].layer == RenderLayer::Opaque ? Ray::Shadowed : Ray::Ambiguous;
+      return true;
+    }
     ray = blocks[id].isOpaqueCube() ? Ray::Shadowed : Ray::Ambiguous;
     return true;
   });

@@ -1,8 +1,9 @@
 #pragma once
 // Amanatides and Woo's grid traversal: the cells a ray passes through, in order, each with the
-// distance at which the ray enters it and the face it enters through. What block picking and the
-// ray-traced shadow truth share.
+// distance at which the ray enters it and the face it enters through, and the ray's hits on a
+// block's boxes. What block picking and the ray-traced shadow and reflection truths share.
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 
@@ -41,6 +42,52 @@ std::optional<VoxelStep> walkVoxels(glm::dvec3 origin, glm::dvec3 dir, double ma
     s.normal[a] = -step[a];
   }
   return std::nullopt;
+}
+
+struct BoxHit {
+  double t;           // distance along the ray
+  glm::ivec3 normal;  // outward normal of the face entered; zero when the ray starts inside
+};
+
+// Where the unit ray first enters the box (the slab method), and through which face; nothing when it
+// misses. Starting inside: t = 0 and no face.
+inline std::optional<BoxHit> rayBox(glm::dvec3 origin, glm::dvec3 dir, glm::dvec3 lo, glm::dvec3 hi) {
+  double near = 0.0, far = 1e30;
+  glm::ivec3 normal(0);
+  for (int a = 0; a < 3; ++a) {
+    if (std::abs(dir[a]) < 1e-12) {
+      if (origin[a] < lo[a] || origin[a] > hi[a]) return std::nullopt;
+      continue;
+    }
+    double t0 = (lo[a] - origin[a]) / dir[a], t1 = (hi[a] - origin[a]) / dir[a];
+    int side = -1;  // the face entered: the low one when moving up the axis
+    if (t0 > t1) {
+      std::swap(t0, t1);
+      side = 1;
+    }
+    if (t0 > near) {
+      near = t0;
+      normal = glm::ivec3(0);
+      normal[a] = side;
+    }
+    far = std::min(far, t1);
+    if (near > far) return std::nullopt;
+  }
+  return BoxHit{near, normal};
+}
+
+// The nearest hit of the ray on a block's boxes (1/16 of a block, Boxes: a range of ShapeBox) in
+// cell `cell`; nothing when it passes them all.
+template <class Boxes>
+std::optional<BoxHit> firstBoxHit(const Boxes& boxes, glm::ivec3 cell, glm::dvec3 origin, glm::dvec3 dir) {
+  std::optional<BoxHit> best;
+  const glm::dvec3 corner(cell);
+  for (const auto& b : boxes) {
+    const auto hit = rayBox(origin, dir, corner + glm::dvec3(b.from[0], b.from[1], b.from[2]) / 16.0,
+                            corner + glm::dvec3(b.to[0], b.to[1], b.to[2]) / 16.0);
+    if (hit && (!best || hit->t < best->t)) best = hit;
+  }
+  return best;
 }
 
 }  // namespace terrasol
