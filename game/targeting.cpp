@@ -7,9 +7,7 @@
 #include "world/voxel_ray.h"
 
 namespace terrasol {
-namespace {
-
-}  // namespace
+namespace {}  // namespace
 
 std::optional<Target> targetBlock(const World& world, glm::dvec3 eye, glm::dvec3 direction, double reach) {
   const double length = glm::length(direction);

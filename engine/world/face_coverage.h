@@ -16,6 +16,7 @@ namespace terrasol {
 // A box in 1/16 of a block: from <= to on each axis, 0..16.
 struct ShapeBox {
   std::array<int, 3> from{0, 0, 0}, to{16, 16, 16};
+  friend bool operator==(const ShapeBox&, const ShapeBox&) = default;
 };
 
 // A rectangle on a side, in its two other axes in x, y, z order (west/east: y, z; down/up: x, z;

@@ -8,6 +8,7 @@
 #include "core/paths.h"
 #include "scene/block_atlas.h"
 #include "support/mesh_world.h"
+#include "support/pack_builder.h"
 
 namespace terrasol {
 namespace {
@@ -168,6 +169,48 @@ TEST(ModelShapes, LightSidesFollowTheModelsAndTheTestsHandShapes) {
     if (!testing::handShapes().boxes(s).empty()) {
       EXPECT_EQ(testing::handShapes().lightSides()[s], shapes.lightSides()[s]) << blocks.stateName(s);
     }
+  }
+}
+
+// A resource pack overriding one vanilla model: a pane's post 1/16 thick instead of 2/16. The atlas,
+// and so the mesh, follow the pack; collision stays the default pack's (as in Minecraft, a pack does
+// not change how blocks collide).
+TEST(ModelMeshPack, APackOverridingAModelChangesTheMesh) {
+  testing::PackBuilder thin("thin_pane");
+  thin.asset("models/block/template_glass_pane_post.json", R"({"ambientocclusion": false,
+      "textures": {"particle": "#pane"},
+      "elements": [{"from": [7.5, 0, 7.5], "to": [8.5, 16, 8.5], "faces": {
+        "down": {"texture": "#edge", "cullface": "down"}, "up": {"texture": "#edge", "cullface": "up"},
+        "north": {"texture": "#pane"}, "south": {"texture": "#pane"},
+        "west": {"texture": "#pane"}, "east": {"texture": "#pane"}}}]})");
+  PackStack packs = defaultPack();
+  packs.push(ResourcePack::open(thin.dir()));
+  const BlockRegistry& blocks = defaultBlocks();
+  const BlockId post = blocks.id("glass_pane");  // nothing joined: the post and four no-side faces
+  const auto xExtent = [&](const BlockAtlas& atlas) {
+    int lo = 32, hi = 0;
+    for (const ModelQuad& q : atlas.modelQuads[post])
+      if (q.face == static_cast<int>(Direction::Up))
+        for (const auto& c : q.corners32) lo = std::min(lo, c[0]), hi = std::max(hi, c[0]);
+    return std::pair(lo, hi);
+  };
+  const BlockAtlas vanilla = buildBlockAtlas(blocks, defaultPack()),
+                   overridden = buildBlockAtlas(blocks, packs);
+  EXPECT_EQ(xExtent(vanilla), std::pair(14, 18));
+  EXPECT_EQ(xExtent(overridden), std::pair(15, 17));
+  // Meshed: the post's top in the pack's place.
+  ModelWorld world(overridden);
+  world.set({3, 64, 3}, "glass_pane");
+  bool found = false;
+  const SectionMesh mesh = world.mesh();
+  const PackedVertices& v = mesh.layers[static_cast<std::size_t>(MeshLayer::Cutout)].vertices;
+  for (const PackedVertex& p : v)
+    found = found || (p.face() == static_cast<int>(Direction::Up) && p.x32() == 3 * 32 + 15);
+  EXPECT_TRUE(found);
+  const BlockShapes collision = defaultPackShapes(blocks);
+  ASSERT_FALSE(collision.boxes(post).empty());
+  for (const ShapeBox& b : collision.boxes(post)) {
+    EXPECT_EQ(b, (ShapeBox{{7, 0, 7}, {9, 16, 9}})) << "the default pack's post (and its four no-side faces)";
   }
 }
 

@@ -29,11 +29,13 @@ class ShadowTest : public testing::GlTest {
     request.readBack = true;
     const RenderedFrame frame = renderer.renderFrame(0, request);
     context_->checkErrors("rendering");
-    return {measureShadowError(renderer.world(), frame.pixels, frame.geometry, scene.shadow.distance), frame.nanPixels,
-            frame.stats};
+    return {measureShadowError(renderer.world(), frame.pixels, frame.geometry, scene.shadow.distance),
+            frame.nanPixels, frame.stats};
   }
   static double wrongPercent(const ShadowCounts& c) {
-    return c.evaluated ? 100.0 * static_cast<double>(c.falseLit + c.falseShadow) / static_cast<double>(c.evaluated) : 0.0;
+    return c.evaluated
+               ? 100.0 * static_cast<double>(c.falseLit + c.falseShadow) / static_cast<double>(c.evaluated)
+               : 0.0;
   }
 };
 
@@ -47,7 +49,9 @@ TEST_F(ShadowTest, NoonShadowsMatchRayTracedTruth) {
   scene.shadow.enabled = false;
   scene.sunPathRotation = -30;
   const Result none = measure(scene);
-  EXPECT_GT(100.0 * static_cast<double>(none.error.total.falseLit) / static_cast<double>(none.error.total.evaluated), 5.0);
+  EXPECT_GT(100.0 * static_cast<double>(none.error.total.falseLit) /
+                static_cast<double>(none.error.total.evaluated),
+            5.0);
 }
 
 // Shaped blocks are measured by their boxes: a ray over a slab's open half or between a fence's rails
@@ -162,7 +166,8 @@ TEST_F(ShadowTest, ExtremeSettingsStayFiniteAndSane) {
     const RenderedFrame frame = renderer.renderFrame(0, request);
     context_->checkErrors(c.name);
     EXPECT_EQ(frame.nanPixels, 0u) << c.name;
-    const ShadowError e = measureShadowError(renderer.world(), frame.pixels, frame.geometry, scene.shadow.distance);
+    const ShadowError e =
+        measureShadowError(renderer.world(), frame.pixels, frame.geometry, scene.shadow.distance);
     EXPECT_EQ(e.caveLeakPixels, 0u) << c.name;
     EXPECT_LT(wrongPercent(e.total), 10.0) << c.name << ": " << e.total.falseLit << " false lit, "
                                            << e.total.falseShadow << " false shadow of " << e.total.evaluated;
@@ -184,7 +189,8 @@ TEST_F(ShadowTest, CascadesMatchTruthAndDoNotFlicker) {
   const ShadowError e = measureShadowError(renderer.world(), a.pixels, a.geometry, scene.shadow.distance);
   EXPECT_GT(e.total.evaluated, 10000u);
   EXPECT_LT(wrongPercent(e.total), 0.5);
-  for (const glm::dvec3 move : {glm::dvec3(0.3, 0.1, -0.2), glm::dvec3(-0.45, 0.4, 0.45), glm::dvec3(0.49, 0.0, -0.49)}) {
+  for (const glm::dvec3 move :
+       {glm::dvec3(0.3, 0.1, -0.2), glm::dvec3(-0.45, 0.4, 0.45), glm::dvec3(0.49, 0.0, -0.49)}) {
     request.shadowCentreOffset = move * static_cast<double>(a.geometry.shadowTexelWorld);
     const RenderedFrame b = renderer.renderFrame(0, request);
     std::size_t compared = 0;
@@ -247,7 +253,8 @@ TEST_F(ShadowTest, AKeptMapLooksTheSameAndIsRedrawnWhenItsCentreMoves) {
   const RenderedFrame kept = renderer.renderFrame(0, request);
   EXPECT_TRUE(shadowSkipped(kept)) << "nothing changed: the map is kept";
   EXPECT_TRUE(compareImages(kept.image, drawn.image, {0.0f, 0.0f}).matches) << "and the image is the same";
-  request.shadowCentreOffset = glm::dvec3(40.0, 0.0, 25.0) * static_cast<double>(drawn.geometry.shadowTexelWorld);
+  request.shadowCentreOffset =
+      glm::dvec3(40.0, 0.0, 25.0) * static_cast<double>(drawn.geometry.shadowTexelWorld);
   EXPECT_FALSE(shadowSkipped(renderer.renderFrame(0, request))) << "a re-centred map is drawn again";
   request.reuseShadowMap = false;
   request.shadowCentreOffset = glm::dvec3(0.0);

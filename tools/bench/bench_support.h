@@ -17,7 +17,8 @@ inline const BlockRegistry& blocks() {
 
 // Chunks -radius..radius around the origin from `generator` (seed 1), lit.
 struct LitArea {
-  LitArea(const std::string& generator, int radius) : world(blocks()), light(world) {
+  LitArea(const std::string& generator, int radius, const BlockShapes* shapes = nullptr)
+      : world(blocks(), shapes), light(world) {
     gen = makeGenerator({generator, 1, {}}, blocks());
     for (int z = -radius; z <= radius; ++z)
       for (int x = -radius; x <= radius; ++x) {

@@ -8,6 +8,8 @@
 #include "light/light_engine.h"
 #include "mesh/mesher.h"
 #include "mesh/section_visibility.h"
+#include "scene/block_atlas.h"
+#include "world/connected_states.h"
 #include "world/generator.h"
 #include "world/terrain_generator.h"
 
@@ -18,7 +20,9 @@ using bench::blocks;
 
 // A lit 3 x 3 chunk terrain world around the origin, with textures numbered block * 6 + face.
 struct Terrain : bench::LitArea {
-  Terrain() : LitArea("terrain", 1), table(blocks(), [](BlockId id, int f) { return static_cast<std::uint16_t>(id * 6 + f); }) {}
+  Terrain()
+      : LitArea("terrain", 1),
+        table(blocks(), [](BlockId id, int f) { return static_cast<std::uint16_t>(id * 6 + f); }) {}
   BlockMeshTable table;
 };
 
@@ -39,11 +43,53 @@ void meshBenchmark(benchmark::State& state, Terrain& t, SectionPos section, Capt
   }
   state.counters["quads"] = static_cast<double>(quads);
   if (quads > 0) {
-    state.counters["ns_per_quad"] = benchmark::Counter(static_cast<double>(quads) * static_cast<double>(state.iterations()),
-                                                       benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+    state.counters["ns_per_quad"] =
+        benchmark::Counter(static_cast<double>(quads) * static_cast<double>(state.iterations()),
+                           benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
   }
   state.counters["bytes_per_vertex"] = sizeof(PackedVertex);
 }
+
+// A section packed with shaped blocks, drawn through their models: rows of stairs (turning into
+// corners where they meet), fences and glass panes joined to each other, eight layers high, an empty
+// row between each three.
+void BM_MeshShapes(benchmark::State& state) {
+  static const BlockShapes shapes = defaultPackShapes(blocks());
+  static const BlockAtlas atlas = [] {
+    PackStack packs;
+    packs.push(ResourcePack::open(resourcePackDir() / "default"));
+    return buildBlockAtlas(blocks(), packs);
+  }();
+  struct Shaped : bench::LitArea {
+    Shaped() : LitArea("void", 1, &shapes), table(meshTableOf(blocks(), atlas)) {}
+    BlockMeshTable table;
+  } s;
+  const char* rows[] = {"oak_stairs[facing=north]", "oak_fence", "glass_pane"};
+  for (int y = 64; y < 72; ++y)
+    for (int z = 0; z < 16; ++z)
+      for (int x = 0; x < 16; ++x) {
+        if (z % 4 != 3) s.set({x, y, z}, blocks().id(rows[z % 4]));
+      }
+  for (int y = 64; y < 72; ++y)
+    for (int z = 0; z < 16; ++z)
+      for (int x = 0; x < 16; ++x) {
+        const BlockPos p{x, y, z};
+        s.set(p, connectedState(s.world, p, s.world.getBlock(p)));
+      }
+  SectionSnapshot snapshot;
+  std::size_t quads = 0;
+  for (auto _ : state) {
+    captureSection(s.world, {0, sectionOf(64), 0}, snapshot);
+    const SectionMesh mesh = meshSection(snapshot, s.table);
+    quads = mesh.quads();
+    benchmark::DoNotOptimize(mesh);
+  }
+  state.counters["quads"] = static_cast<double>(quads);
+  state.counters["ns_per_quad"] =
+      benchmark::Counter(static_cast<double>(quads) * static_cast<double>(state.iterations()),
+                         benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+BENCHMARK(BM_MeshShapes)->Unit(benchmark::kMicrosecond);
 
 // The section holding the ground at the centre of a chunk, on land.
 void BM_MeshSurface(benchmark::State& state) {
@@ -71,7 +117,8 @@ BENCHMARK(BM_MeshCave)->Unit(benchmark::kMicrosecond);
 void BM_SectionFaceLinks(benchmark::State& state) {
   Terrain t;
   SectionSnapshot snapshot;
-  if (captureSection(t.world, {0, sectionOf(t.gen->surfaceHeight(8, 8)), 0}, snapshot) != CaptureResult::Captured) {
+  if (captureSection(t.world, {0, sectionOf(t.gen->surfaceHeight(8, 8)), 0}, snapshot) !=
+      CaptureResult::Captured) {
     state.SkipWithError("the surface section has nothing to mesh");
     return;
   }
