@@ -50,6 +50,27 @@ TEST(ChunkCodec, RoundTripsBlocksExactly) {
   EXPECT_LT(bytes.size(), 40000u) << "zstd should shrink a 200 KB chunk a lot";
 }
 
+// tests/saves/chunk_before_block_states.bin was written by the chunk codec as it was before blocks
+// had states (commit 0a5e9cc^, built on its own): stone and grass floors, a row of oak_log, oak_log,
+// oak_leaves, snow, glass, torch, glowstone, water, cobblestone and oak_planks at y 62, z 3, and a
+// four-block log at (8, 62..65, 8). It opens with every block in place, the logs (a model block with
+// an axis now) standing up, their default state; nothing is unknown.
+TEST(ChunkCodec, ASaveFromBeforeBlockStatesOpens) {
+  const BlockRegistry& b = defaultBlocks();
+  const auto bytes = readBytes(std::filesystem::path(TERRASOL_SOURCE_DIR) / "tests" / "saves" / "chunk_before_block_states.bin");
+  ASSERT_FALSE(bytes.empty());
+  std::vector<std::string> unknown;
+  const auto chunk = decodeChunk({0, 0}, bytes.data(), bytes.size(), b, &unknown);
+  EXPECT_TRUE(unknown.empty());
+  EXPECT_EQ(chunk->get(5, 60, 5), b.id("stone"));
+  EXPECT_EQ(chunk->get(5, 61, 5), b.id("grass_block"));
+  const char* row[] = {"oak_log[axis=y]", "oak_log[axis=y]", "oak_leaves", "snow",        "glass",
+                       "torch",           "glowstone",       "water",      "cobblestone", "oak_planks"};
+  for (int i = 0; i < 10; ++i) EXPECT_EQ(b.stateName(chunk->get(i, 62, 3)), row[i]) << i;
+  for (int y = 62; y < 66; ++y) EXPECT_EQ(chunk->get(8, y, 8), b.id("oak_log[axis=y]"));
+  EXPECT_EQ(chunk->get(8, 66, 8), kAir);
+}
+
 TEST(ChunkCodec, GarbageIsAnErrorNotACrash) {
   const auto bytes = encodeChunk(*editedChunk({0, 0}, 2), defaultBlocks());
   for (std::size_t cut : {std::size_t{0}, std::size_t{3}, bytes.size() / 2, bytes.size() - 1}) {
