@@ -31,7 +31,7 @@ namespace terrasol::session {
 namespace {
 
 constexpr const char* kHotbar[9] = {"stone",     "stone_slab", "oak_stairs", "oak_planks", "oak_log",
-                                    "oak_fence", "glass_pane", "oak_door",   "torch"};
+                                    "oak_fence", "glass_pane", "torch",      "oak_door"};
 constexpr double kAutosaveSeconds = 300.0;
 constexpr double kDoubleTapSeconds = 0.3;                  // two jump presses this close toggle flight
 constexpr std::int64_t kTimePresets[] = {1000, 6000, 12000, 18000};  // morning, noon, sunset, midnight

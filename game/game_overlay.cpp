@@ -101,7 +101,7 @@ void Game::writeReport() {
     const bool loaded = world_.world().isLoaded(chunk);
     probes.push_back({{"pos", {p.x, p.y, p.z}},
                       {"loaded", loaded},
-                      {"block", blocks_[world_.world().getBlock(p)].name},
+                      {"block", blocks_.stateName(world_.world().getBlock(p))},
                       {"block_light", world_.light().lightAt(p, LightChannel::Block)},
                       {"sky_light", world_.light().lightAt(p, LightChannel::Sky)}});
   }

@@ -97,22 +97,10 @@ StateCondition readCondition(const json& value, const std::string& key) {
 }
 
 // SplitMix64's finaliser: the seed's bits spread over the whole word.
-std::uint64_t mix(std::uint64_t z) {
-  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-  z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-  return z ^ (z >> 31);
-}
-
 const ModelPlacement& pick(const std::vector<ModelPlacement>& choices, std::int64_t seed) {
-  if (choices.size() == 1) return choices.front();
-  std::uint64_t total = 0;
-  for (const ModelPlacement& c : choices) total += static_cast<std::uint64_t>(c.weight);
-  std::uint64_t at = mix(static_cast<std::uint64_t>(seed)) % total;
-  for (const ModelPlacement& c : choices) {
-    if (at < static_cast<std::uint64_t>(c.weight)) return c;
-    at -= static_cast<std::uint64_t>(c.weight);
-  }
-  return choices.back();
+  std::vector<int> weights;
+  for (const ModelPlacement& c : choices) weights.push_back(c.weight);
+  return choices[weightedPick(weights, seed)];
 }
 
 }  // namespace
@@ -140,15 +128,6 @@ bool StateCondition::holds(const StateValues& state) const {
       return true;
   }
   return false;
-}
-
-std::int64_t positionSeed(glm::ivec3 pos) {
-  // Mth.getSeed, in unsigned arithmetic where Java's wraps.
-  std::uint64_t l = static_cast<std::uint64_t>(static_cast<std::int64_t>(pos.x) * 3129871) ^
-                    static_cast<std::uint64_t>(static_cast<std::int64_t>(pos.z) * 116129781ll) ^
-                    static_cast<std::uint64_t>(static_cast<std::int64_t>(pos.y));
-  l = l * l * 42317861ull + l * 11ull;
-  return static_cast<std::int64_t>(l) >> 16;
 }
 
 BlockStates BlockStates::parse(const json& root, const std::string& file) {
@@ -197,21 +176,31 @@ BlockStates BlockStates::load(const PackStack& packs, const std::string& block) 
 std::vector<ModelPlacement> BlockStates::select(const StateValues& state, glm::ivec3 pos) const {
   const std::int64_t seed = positionSeed(pos);
   std::vector<ModelPlacement> out;
+  if (const Variant* v = variantOf(state)) {
+    out.push_back(pick(v->choices, seed));
+    return out;
+  }
+  for (const Part& p : parts_) {
+    if (p.when.holds(state)) out.push_back(pick(p.choices, seed));
+  }
+  return out;
+}
+
+const BlockStates::Variant* BlockStates::variantOf(const StateValues& state) const {
   for (const Variant& v : variants_) {
     bool matches = true;
     for (const auto& [name, value] : v.when) {
       const auto it = state.find(name);
       matches = matches && it != state.end() && it->second == value;
     }
-    if (matches) {
-      out.push_back(pick(v.choices, seed));
-      return out;
-    }
+    if (matches) return &v;
   }
-  for (const Part& p : parts_) {
-    if (p.when.holds(state)) out.push_back(pick(p.choices, seed));
-  }
-  return out;
+  return nullptr;
+}
+
+std::vector<ModelPlacement> BlockStates::choices(const StateValues& state) const {
+  const Variant* v = variantOf(state);
+  return v && v->choices.size() > 1 ? v->choices : std::vector<ModelPlacement>{};
 }
 
 std::vector<std::string> BlockStates::models() const {

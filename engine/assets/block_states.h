@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "core/position_random.h"
 #include "core/state_values.h"
 
 namespace terrasol {
@@ -47,6 +48,11 @@ class BlockStates {
   // order) whose every property matches, or every multipart part that holds; each a weighted pick.
   std::vector<ModelPlacement> select(const StateValues& state, glm::ivec3 pos) const;
 
+  // The weighted models of the variant `state` is drawn with, where it picks among several by position
+  // (select() makes the same pick): what a mesher draws per cell. Empty for a single model, for a
+  // multipart blockstate and for a state no variant matches.
+  std::vector<ModelPlacement> choices(const StateValues& state) const;
+
   // Every model any state may use.
   std::vector<std::string> models() const;
 
@@ -59,11 +65,11 @@ class BlockStates {
     StateCondition when;
     std::vector<ModelPlacement> choices;
   };
+  // The first variant (in the file's key order) whose every property matches; null for none.
+  const Variant* variantOf(const StateValues& state) const;
   std::vector<Variant> variants_;
   std::vector<Part> parts_;
 };
 
-// Minecraft's position seed for random model picks (Mth.getSeed).
-std::int64_t positionSeed(glm::ivec3 pos);
 
 }  // namespace terrasol

@@ -109,7 +109,8 @@ void occludeByOwnShape(std::vector<ModelQuad>& quads, std::span<const ShapeBox> 
 
 BlockMeshTable::BlockMeshTable(const BlockRegistry& blocks,
                                const std::function<std::uint16_t(BlockId, int)>& textureOf,
-                               const std::function<std::vector<ModelQuad>(BlockId)>& modelQuadsOf) {
+                               const std::function<std::vector<ModelQuad>(BlockId)>& modelQuadsOf,
+                               const std::function<std::vector<ModelChoice>(BlockId)>& modelChoicesOf) {
   entries_.resize(blocks.size());
   for (BlockId id = 0; id < blocks.size(); ++id) {
     const BlockType& type = blocks[id];
@@ -125,8 +126,15 @@ BlockMeshTable::BlockMeshTable(const BlockRegistry& blocks,
     if (type.shape == BlockShape::Model) {
       if (modelQuadsOf) e.quads = modelQuadsOf(id);
       for (ModelQuad& q : e.quads) describeModelQuad(q, e);
+      if (modelChoicesOf) e.choices = modelChoicesOf(id);
+      for (ModelChoice& c : e.choices) {
+        FaceCoverage ignored = e.coverage;  // coverage is the origin pick's
+        for (ModelQuad& q : c.quads) describeModelQuad(q, e);
+        e.coverage = ignored;
+        e.weights.push_back(c.weight);
+      }
       for (int d = 0; d < 6; ++d) e.fullSides |= e.coverage.full(static_cast<Direction>(d)) ? 1u << d : 0u;
-      if (!plainCube(e.quads, e.texture)) continue;
+      if (!e.choices.empty() || !plainCube(e.quads, e.texture)) continue;
       e.shape = BlockShape::Cube;
       for (int f = 0; f < 6; ++f) {
         e.material[static_cast<std::size_t>(f)] = material(e, e.texture[static_cast<std::size_t>(f)], f);

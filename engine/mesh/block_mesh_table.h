@@ -33,6 +33,12 @@ struct ModelQuad {
   bool onSide = false;
 };
 
+// One of the weighted models a state picks among by position (core/position_random.h), as quads.
+struct ModelChoice {
+  int weight = 1;
+  std::vector<ModelQuad> quads;
+};
+
 // Fills each quad's ownOcclusion from the boxes (1/16) of the models the state is drawn with.
 void occludeByOwnShape(std::vector<ModelQuad>& quads, std::span<const ShapeBox> boxes);
 
@@ -42,8 +48,11 @@ class BlockMeshTable {
   // `textureOf(block, face)` is the texture id for a face (Direction order; cross plants and torches
   // use face 0), e.g. the index of its texture in the atlas; `modelQuadsOf(state)` a model block's
   // quads.
+  // `modelChoicesOf(state)`: the weighted models a state picks among per cell, when it does (its quads
+  // are then the origin's pick, for coverage).
   BlockMeshTable(const BlockRegistry& blocks, const std::function<std::uint16_t(BlockId, int)>& textureOf,
-                 const std::function<std::vector<ModelQuad>(BlockId)>& modelQuadsOf = {});
+                 const std::function<std::vector<ModelQuad>(BlockId)>& modelQuadsOf = {},
+                 const std::function<std::vector<ModelChoice>(BlockId)>& modelChoicesOf = {});
 
   struct Entry {
     BlockShape shape;
@@ -55,6 +64,8 @@ class BlockMeshTable {
     std::array<std::uint16_t, 6> texture;
     std::array<std::uint32_t, 6> material;  // PackedVertex::material of each cube face
     std::vector<ModelQuad> quads;           // shape Model
+    std::vector<ModelChoice> choices;       // picked per cell by position, when not empty
+    std::vector<int> weights;               // the choices'
     // What an opaque model block covers of its cell's sides (from its quads lying on them), and the
     // sides it covers whole, as bits by Direction: neighbours' faces there are hidden.
     FaceCoverage coverage;

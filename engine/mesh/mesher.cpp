@@ -2,76 +2,19 @@
 
 #include <algorithm>
 #include <bit>
-#include <cmath>
 #include <cstring>
 #include <utility>
 
+#include "core/position_random.h"
 #include "mesh/face_merge.h"
+#include "mesh/mesh_tables.h"
+#include "mesh/model_light.h"
 #include "world/liquid.h"
 
 namespace terrasol {
 namespace {
 
-struct Vec {
-  int x, y, z;
-};
-
-// Per face (Direction order), from kFaceBases in integers: the normal n and tangents t, b with
-// t x b = n, so corners taken as (-,-) (+,-) (+,+) (-,+) in (t, b) run counter-clockwise seen from
-// outside. u runs along t and v against b (v = 0 at the texture's top).
-struct FaceFrame {
-  Vec n, t, b;
-};
-constexpr Vec toVec(const float (&v)[3]) {
-  return {static_cast<int>(v[0]), static_cast<int>(v[1]), static_cast<int>(v[2])};
-}
-constexpr auto kFaces = [] {
-  std::array<FaceFrame, 6> faces{};
-  for (int d = 0; d < 6; ++d) {
-    const FaceBasis& b = kFaceBases[d];
-    faces[static_cast<std::size_t>(d)] = {toVec(b.normal), toVec(b.tangent), toVec(b.up)};
-  }
-  return faces;
-}();
-
-constexpr int offset(int dx, int dy, int dz) {
-  return dx + dz * SectionSnapshot::kSide + dy * SectionSnapshot::kSide * SectionSnapshot::kSide;
-}
-
-// Snapshot index step to the neighbour in each Direction.
-constexpr auto kNeighbour = [] {
-  std::array<int, 6> steps{};
-  for (int d = 0; d < 6; ++d)
-    steps[static_cast<std::size_t>(d)] = offset(kFaces[d].n.x, kFaces[d].n.y, kFaces[d].n.z);
-  return steps;
-}();
-
-// Per face and corner: snapshot index offsets (from the cell in front of the face) of the two cells
-// beside the corner and the diagonal one, the corner's position within its block (1/32) and its UV.
-struct CornerCells {
-  int side1, side2, diagonal;
-  std::uint32_t position;  // PackedVertex::packPosition of the corner within its block
-  bool top;                // on the block's top, where a lowered liquid surface moves it
-  std::uint32_t uv;
-};
-constexpr auto kCorners = [] {
-  std::array<std::array<CornerCells, 4>, 6> table{};
-  for (int d = 0; d < 6; ++d)
-    for (int c = 0; c < 4; ++c) {
-      const FaceFrame& f = kFaces[d];
-      const int su = kCornerSigns[c][0], sv = kCornerSigns[c][1];
-      const Vec a{su * f.t.x, su * f.t.y, su * f.t.z}, b{sv * f.b.x, sv * f.b.y, sv * f.b.z};
-      const int y32 = 16 + 16 * (f.n.y + a.y + b.y);
-      table[d][c] = {
-          offset(a.x, a.y, a.z),
-          offset(b.x, b.y, b.z),
-          offset(a.x + b.x, a.y + b.y, a.z + b.z),
-          PackedVertex::packPosition(16 + 16 * (f.n.x + a.x + b.x), y32, 16 + 16 * (f.n.z + a.z + b.z)),
-          y32 == 32,
-          PackedVertex::packUv(su > 0 ? 16 : 0, sv > 0 ? 0 : 16)};
-    }
-  return table;
-}();
+using namespace mesh_tables;
 
 class Mesher {
  public:
@@ -337,7 +280,15 @@ class Mesher {
   void model(int x, int y, int z, const BlockMeshTable::Entry& e) {
     const int here = SectionSnapshot::index(x, y, z);
     auto& out = layer(e);
-    for (const ModelQuad& m : e.quads) {
+    // A state picking among weighted models does so by its cell's position, the same every time.
+    const std::vector<ModelQuad>& quads =
+        e.choices.empty()
+            ? e.quads
+            : e.choices[weightedPick(e.weights,
+                                     positionSeed({s_.pos.x * 16 + x, kMinY + s_.pos.section * 16 + y,
+                                                   s_.pos.z * 16 + z}))]
+                  .quads;
+    for (const ModelQuad& m : quads) {
       int lit = here;
       if (m.cullface >= 0) {
         const int neighbour = here + kNeighbour[static_cast<std::size_t>(m.cullface)];
@@ -378,36 +329,7 @@ class Mesher {
     if (opaqueAt(front)) front = here;
     std::uint32_t corner[4];
     cornerLight(d, front, corner);
-    float block[4], sky[4], ao[4];
-    for (int c = 0; c < 4; ++c) {
-      const float cells = static_cast<float>((corner[c] >> 12 & 3) + 1);
-      block[c] = static_cast<float>(corner[c] & 63) / cells;
-      sky[c] = static_cast<float>(corner[c] >> 6 & 63) / cells;
-      ao[c] = cells - 1.0f;
-    }
-    const FaceFrame& f = kFaces[static_cast<std::size_t>(d)];
-    for (std::size_t v = 0; v < 4; ++v) {
-      const auto& p = m.corners32[v];
-      // The vertex on the face, -1..1 along its tangent and up.
-      const float s =
-          static_cast<float>(f.t.x * (p[0] - 16) + f.t.y * (p[1] - 16) + f.t.z * (p[2] - 16)) / 16.0f;
-      const float r =
-          static_cast<float>(f.b.x * (p[0] - 16) + f.b.y * (p[1] - 16) + f.b.z * (p[2] - 16)) / 16.0f;
-      float b = 0.0f, k = 0.0f, o = 0.0f;
-      for (int c = 0; c < 4; ++c) {
-        const float w = (1.0f + static_cast<float>(kCornerSigns[c][0]) * s) *
-                        (1.0f + static_cast<float>(kCornerSigns[c][1]) * r) * 0.25f;
-        b += w * block[c];
-        k += w * sky[c];
-        o += w * ao[c];
-      }
-      const int own = m.ownOcclusion[v];
-      const int occlusion = std::min(static_cast<int>(std::lround(o)), own == 2 ? 0 : 3 - own);
-      const float cells = static_cast<float>(occlusion + 1);
-      light[v] = static_cast<std::uint32_t>(std::lround(b * cells)) |
-                 static_cast<std::uint32_t>(std::lround(k * cells)) << 6 |
-                 static_cast<std::uint32_t>(occlusion) << 12;
-    }
+    interpolateModelLight(m, corner, light);
   }
 
   const SectionSnapshot& s_;

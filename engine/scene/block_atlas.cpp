@@ -36,33 +36,39 @@ BlockModel missingModel() {
 }
 
 // Calls use(state, model, placement) for every model each state of a model block is drawn with, as
-// its blockstates file picks them (at the origin: the position-seeded pick is the same for every
-// cell). A block whose blockstates or models cannot be read gets the missing cube instead, and the
-// reason goes to `problems`.
-template <class Use>
+// its blockstates file picks them at the origin, and alternative(state, k, model, placement) for each
+// of the weighted models k a state picks among by position (the mesher's per-cell pick). A block
+// whose blockstates or models cannot be read gets the missing cube instead, and the reason goes to
+// `problems`.
+template <class Use, class Alternative>
 void forEachModelOfEachState(const BlockRegistry& blocks, const PackStack& packs,
-                             std::vector<PackProblem>& problems, Use&& use) {
+                             std::vector<PackProblem>& problems, Use&& use, Alternative&& alternative) {
   ModelLibrary library(packs);
   static const BlockModel kMissing = missingModel();
   for (std::size_t b = 0; b < blocks.blockCount(); ++b) {
     const BlockType& type = blocks.block(b);
     if (type.shape != BlockShape::Model) continue;
-    std::vector<std::vector<std::pair<const BlockModel*, ModelPlacement>>> models(type.stateCount);
+    using Models = std::vector<std::pair<const BlockModel*, ModelPlacement>>;
+    std::vector<Models> models(type.stateCount), choices(type.stateCount);
     try {
       const BlockStates states = BlockStates::load(packs, type.name);
       for (std::uint16_t i = 0; i < type.stateCount; ++i) {
-        for (const ModelPlacement& p :
-             states.select(blocks.stateValues(static_cast<BlockId>(type.firstState + i)), {})) {
+        const StateValues values = blocks.stateValues(static_cast<BlockId>(type.firstState + i));
+        for (const ModelPlacement& p : states.select(values, {}))
           models[i].emplace_back(&library.model(p.model), p);
-        }
+        for (const ModelPlacement& p : states.choices(values))
+          choices[i].emplace_back(&library.model(p.model), p);
       }
     } catch (const Error& e) {
       problems.push_back({PackProblem::Severity::Error, e.what()});
       for (auto& m : models) m = {{&kMissing, ModelPlacement{}}};
+      for (auto& c : choices) c.clear();
     }
     for (std::uint16_t i = 0; i < type.stateCount; ++i) {
-      for (const auto& [model, placement] : models[i])
-        use(static_cast<BlockId>(type.firstState + i), *model, placement);
+      const auto state = static_cast<BlockId>(type.firstState + i);
+      for (const auto& [model, placement] : models[i]) use(state, *model, placement);
+      for (std::size_t k = 0; k < choices[i].size(); ++k)
+        alternative(state, k, *choices[i][k].first, choices[i][k].second);
     }
   }
 }
@@ -77,22 +83,34 @@ std::vector<ShapeBox> boxesOf(const BlockModel& model, const ModelPlacement& pla
   return boxes;
 }
 
-// Model blocks: each state's models baked, and their boxes.
+// Model blocks: each state's models baked, and their boxes; per state picking among weighted models
+// by position, each choice's weight, quads and boxes.
+struct BakedChoice {
+  int weight = 1;
+  std::vector<BakedQuad> quads;
+  std::vector<ShapeBox> boxes;
+};
 struct BakedStates {
   std::vector<std::vector<BakedQuad>> quads;
   std::vector<std::vector<ShapeBox>> boxes;
+  std::vector<std::vector<BakedChoice>> choices;
 };
 BakedStates bakeModelStates(const BlockRegistry& blocks, const PackStack& packs,
                             std::vector<PackProblem>& problems) {
   BakedStates baked{std::vector<std::vector<BakedQuad>>(blocks.size()),
-                    std::vector<std::vector<ShapeBox>>(blocks.size())};
-  forEachModelOfEachState(blocks, packs, problems,
-                          [&](BlockId s, const BlockModel& m, const ModelPlacement& p) {
-                            const std::vector<BakedQuad> quads = bakeModel(m, p);
-                            baked.quads[s].insert(baked.quads[s].end(), quads.begin(), quads.end());
-                            const std::vector<ShapeBox> boxes = boxesOf(m, p);
-                            baked.boxes[s].insert(baked.boxes[s].end(), boxes.begin(), boxes.end());
-                          });
+                    std::vector<std::vector<ShapeBox>>(blocks.size()),
+                    std::vector<std::vector<BakedChoice>>(blocks.size())};
+  forEachModelOfEachState(
+      blocks, packs, problems,
+      [&](BlockId s, const BlockModel& m, const ModelPlacement& p) {
+        const std::vector<BakedQuad> quads = bakeModel(m, p);
+        baked.quads[s].insert(baked.quads[s].end(), quads.begin(), quads.end());
+        const std::vector<ShapeBox> boxes = boxesOf(m, p);
+        baked.boxes[s].insert(baked.boxes[s].end(), boxes.begin(), boxes.end());
+      },
+      [&](BlockId s, std::size_t, const BlockModel& m, const ModelPlacement& p) {
+        baked.choices[s].push_back({p.weight, bakeModel(m, p), boxesOf(m, p)});
+      });
   return baked;
 }
 
@@ -148,6 +166,8 @@ BlockAtlas buildBlockAtlas(const BlockRegistry& blocks, const PackStack& packs) 
       if (!face.empty()) index.emplace(face, 0);
     }
     for (const BakedQuad& q : baked.quads[id]) index.emplace(candidatesOf(q.texture), 0);
+    for (const BakedChoice& c : baked.choices[id])
+      for (const BakedQuad& q : c.quads) index.emplace(candidatesOf(q.texture), 0);
   }
   std::vector<LoadedTexture> textures;
   for (auto& [candidates, texture] : index) {
@@ -158,6 +178,7 @@ BlockAtlas buildBlockAtlas(const BlockRegistry& blocks, const PackStack& packs) 
   result.atlas = buildAtlas(textures);
   result.faceTextures.resize(blocks.size());
   result.modelQuads.resize(blocks.size());
+  result.modelChoices.resize(blocks.size());
   for (BlockId id = 0; id < blocks.size(); ++id) {
     for (int f = 0; f < 6; ++f) {
       const auto& face = blocks[id].textures[static_cast<std::size_t>(f)];
@@ -166,6 +187,13 @@ BlockAtlas buildBlockAtlas(const BlockRegistry& blocks, const PackStack& packs) 
     for (const BakedQuad& q : baked.quads[id])
       result.modelQuads[id].push_back(meshQuad(q, index.at(candidatesOf(q.texture))));
     occludeByOwnShape(result.modelQuads[id], baked.boxes[id]);
+    for (const BakedChoice& c : baked.choices[id]) {
+      ModelChoice& choice = result.modelChoices[id].emplace_back();
+      choice.weight = c.weight;
+      for (const BakedQuad& q : c.quads)
+        choice.quads.push_back(meshQuad(q, index.at(candidatesOf(q.texture))));
+      occludeByOwnShape(choice.quads, c.boxes);
+    }
   }
   return result;
 }
@@ -174,11 +202,13 @@ BlockShapes blockShapesOf(const BlockRegistry& blocks, const PackStack& packs) {
   BlockShapes shapes(blocks);
   std::vector<std::vector<ShapeBox>> boxes(blocks.size());
   std::vector<PackProblem> problems;  // the atlas reports them
-  forEachModelOfEachState(blocks, packs, problems,
-                          [&](BlockId s, const BlockModel& m, const ModelPlacement& p) {
-                            const std::vector<ShapeBox> placed = boxesOf(m, p);
-                            boxes[s].insert(boxes[s].end(), placed.begin(), placed.end());
-                          });
+  forEachModelOfEachState(
+      blocks, packs, problems,
+      [&](BlockId s, const BlockModel& m, const ModelPlacement& p) {
+        const std::vector<ShapeBox> placed = boxesOf(m, p);
+        boxes[s].insert(boxes[s].end(), placed.begin(), placed.end());
+      },
+      [](BlockId, std::size_t, const BlockModel&, const ModelPlacement&) {});  // collision: the origin's pick
   for (BlockId s = 0; s < blocks.size(); ++s) {
     if (blocks[s].shape == BlockShape::Model) shapes.setBoxes(s, std::move(boxes[s]));
   }
@@ -194,7 +224,7 @@ BlockShapes defaultPackShapes(const BlockRegistry& blocks) {
 BlockMeshTable meshTableOf(const BlockRegistry& blocks, const BlockAtlas& atlas) {
   return BlockMeshTable(
       blocks, [&](BlockId id, int face) { return atlas.textureOf(id, face); },
-      [&](BlockId id) { return atlas.modelQuads[id]; });
+      [&](BlockId id) { return atlas.modelQuads[id]; }, [&](BlockId id) { return atlas.modelChoices[id]; });
 }
 
 }  // namespace terrasol

@@ -19,6 +19,7 @@ struct BlockAtlas {
   Atlas atlas;
   std::vector<std::array<std::uint16_t, 6>> faceTextures;  // per block id, Direction order
   std::vector<std::vector<ModelQuad>> modelQuads;          // per state of a model block
+  std::vector<std::vector<ModelChoice>> modelChoices;      // per state picking among weighted models
   std::vector<PackProblem> problems;                       // never fatal: missing textures show as such
   std::uint16_t textureOf(BlockId id, int face) const {
     return faceTextures[id][static_cast<std::size_t>(face)];

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 
+#include "assets/block_states.h"
 #include "core/paths.h"
 #include "scene/block_atlas.h"
 #include "support/mesh_world.h"
@@ -212,6 +213,44 @@ TEST(ModelMeshPack, APackOverridingAModelChangesTheMesh) {
   for (const ShapeBox& b : collision.boxes(post)) {
     EXPECT_EQ(b, (ShapeBox{{7, 0, 7}, {9, 16, 9}})) << "the default pack's post (and its four no-side faces)";
   }
+}
+
+// A variant listing weighted models is picked per cell by the cell's position: the mesher's pick is
+// the blockstate reader's (BlockStates::select), the same on every meshing, and the weights show.
+TEST(ModelMeshPack, WeightedModelsArePickedPerCellByPosition) {
+  testing::PackBuilder pack("weighted_slabs");
+  pack.asset("blockstates/stone_slab.json", R"({"variants": {
+      "type=bottom": [{"model": "block/stone_slab"}, {"model": "block/oak_slab", "weight": 3}],
+      "type=top": {"model": "block/stone_slab_top"}, "type=double": {"model": "block/stone"}}})");
+  PackStack packs = defaultPack();
+  packs.push(ResourcePack::open(pack.dir()));
+  const BlockRegistry& blocks = defaultBlocks();
+  const BlockAtlas atlas = buildBlockAtlas(blocks, packs);
+  ASSERT_EQ(atlas.modelChoices[blocks.id("stone_slab")].size(), 2u);
+  // In the file's order: the stone slab, then the oak one.
+  const std::vector<ModelChoice>& choices = atlas.modelChoices[blocks.id("stone_slab")];
+  const std::uint16_t stone = choices[0].quads.at(0).texture, oak = choices[1].quads.at(0).texture;
+  ASSERT_NE(oak, stone);
+  ModelWorld world(atlas);
+  for (int z = 0; z < 16; ++z)
+    for (int x = 0; x < 16; ++x) world.set({x, 64, z}, "stone_slab");
+  const BlockStates states = BlockStates::load(packs, "stone_slab");
+  const SectionMesh first = world.mesh(), second = world.mesh();
+  EXPECT_EQ(first.layers[0].vertices, second.layers[0].vertices) << "the same picks every time";
+  int oaks = 0, agree = 0;
+  for (const PackedVertex* q = first.layers[0].vertices.data();
+       q < first.layers[0].vertices.data() + first.layers[0].vertices.size(); q += 4) {
+    if (q->face() != static_cast<int>(Direction::Up)) continue;
+    const int x = std::min({q[0].x32(), q[1].x32(), q[2].x32()}) / 32,
+              z = std::min({q[0].z32(), q[1].z32(), q[2].z32()}) / 32;
+    const std::string expected =
+        states.select(blocks.stateValues(blocks.id("stone_slab")), {x, 64, z}).at(0).model;
+    agree += (q->texture() == oak) == (expected == "block/oak_slab");
+    oaks += q->texture() == oak;
+  }
+  EXPECT_EQ(agree, 256);
+  EXPECT_GT(oaks, 256 * 3 / 4 - 40);
+  EXPECT_LT(oaks, 256 * 3 / 4 + 40);
 }
 
 // Without blockstates (a stack without the default pack) a model block is a cube of the missing
