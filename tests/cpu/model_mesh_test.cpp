@@ -79,6 +79,57 @@ TEST_F(ModelMesh, QuadsAgainstAnOpaqueCubeAcrossTheirCullfaceAreLeftOut) {
       << "and both east faces against stone on the east, whose west face the stairs' back hides";
 }
 
+// Every state of every model block, meshed alone in the air, draws all its quads; walled in by stone
+// on all six sides, exactly those without a cullface stay (an opaque cube hides every face culled
+// against it).
+TEST_F(ModelMesh, EveryStateDrawsItsQuadsAndStoneHidesItsCulledOnes) {
+  const BlockRegistry& blocks = defaultBlocks();
+  ModelWorld world(*atlas_);
+  const BlockPos at{3, 64, 3};
+  int states = 0;
+  for (BlockId s = 0; s < blocks.size(); ++s) {
+    if (blocks[s].shape != BlockShape::Model) continue;
+    ++states;
+    const std::vector<ModelQuad>& quads = atlas_->modelQuads[s];
+    const auto inner = static_cast<std::size_t>(
+        std::count_if(quads.begin(), quads.end(), [](const ModelQuad& q) { return q.cullface < 0; }));
+    const auto drawn = [&] {
+      const SectionMesh mesh = world.mesh();
+      std::size_t n = 0;
+      for (const MeshData& layer : mesh.layers) {
+        for (std::size_t q = 0; q < layer.quads(); ++q) {
+          const PackedVertex* v = &layer.vertices[q * 4];
+          if (v->role() == QuadRole::Merged) continue;
+          bool inside = true, intoCell = false;
+          for (int a = 0; a < 3; ++a) {
+            const auto c = [&](int i) { return a == 0 ? v[i].x32() : a == 1 ? v[i].y32() : v[i].z32(); };
+            const int lo = a == 1 ? 0 : 96;  // the cell's corner in the section, 1/32
+            for (int i = 0; i < 4; ++i) inside = inside && c(i) >= lo && c(i) <= lo + 32;
+            // A stone neighbour's face on the cell's side, facing into it.
+            const bool onLow = c(0) == lo && c(1) == lo && c(2) == lo,
+                       onHigh = c(0) == lo + 32 && c(1) == lo + 32 && c(2) == lo + 32;
+            intoCell = intoCell || (onLow && v->face() == a * 2 + 1) || (onHigh && v->face() == a * 2);
+          }
+          n += inside && !intoCell;
+        }
+      }
+      return n;
+    };
+    world.set(at, blocks.stateName(s));
+    ASSERT_EQ(drawn(), quads.size()) << blocks.stateName(s) << " in the air";
+    for (int d = 0; d < 6; ++d) {
+      const BlockPos& o = kDirectionOffsets[d];
+      world.set(at.offset(o.x, o.y, o.z), "stone");
+    }
+    ASSERT_EQ(drawn(), inner) << blocks.stateName(s) << " walled in";
+    for (int d = 0; d < 6; ++d) {
+      const BlockPos& o = kDirectionOffsets[d];
+      world.set(at.offset(o.x, o.y, o.z), "air");
+    }
+  }
+  EXPECT_GT(states, 400);
+}
+
 // Shaped neighbours hide what they cover: a face against a shape's whole side goes, one against part
 // of a side stays unless it lies within that part.
 TEST_F(ModelMesh, ShapedNeighboursHideTheFacesTheyCover) {
