@@ -188,11 +188,11 @@ class Mesher {
   // is left out when both sides are opaque. The open cells then number exactly ao + 1 (3 - opaque
   // ones, or 1 when both sides are walled), so the sum less one count is the vertex's light field:
   // both sums, and the count less one as its ambient occlusion.
-  void cornerLight(int d, int front, std::uint32_t (&corner)[4]) const {
+  void cornerLight(const std::array<CornerCells, 4>& corners, int front, std::uint32_t (&corner)[4]) const {
     const std::uint32_t* light = s_.light.data() + front;
     const std::uint32_t own = light[0] - SectionSnapshot::kOpen;
     for (int c = 0; c < 4; ++c) {
-      const CornerCells& k = kCorners[static_cast<std::size_t>(d)][static_cast<std::size_t>(c)];
+      const CornerCells& k = corners[static_cast<std::size_t>(c)];
       const std::uint32_t t1 = light[k.side1], t2 = light[k.side2], t3 = light[k.diagonal];
       corner[c] = own + t1 + t2 + ((t1 | t2) != 0 ? t3 : 0);
     }
@@ -203,7 +203,7 @@ class Mesher {
   template <int D>
   void face(int x, int y, int z, const BlockMeshTable::Entry& e, int top32, int front) {
     std::uint32_t corner[4];
-    cornerLight(D, front, corner);
+    cornerLight(kCorners[D], front, corner);
     const std::uint32_t base = PackedVertex::packPosition(x * 32, y * 32, z * 32);
     const std::uint32_t lowered = static_cast<std::uint32_t>(32 - top32) << 10;
     PackedVertex* q = layer(e).quad();
@@ -328,7 +328,7 @@ class Mesher {
     int front = m.onSide ? here + kNeighbour[static_cast<std::size_t>(d)] : here;
     if (opaqueAt(front)) front = here;
     std::uint32_t corner[4];
-    cornerLight(d, front, corner);
+    cornerLight(kCorners[static_cast<std::size_t>(d)], front, corner);
     interpolateModelLight(m, corner, light);
   }
 

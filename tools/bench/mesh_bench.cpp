@@ -18,11 +18,24 @@ namespace {
 
 using bench::blocks;
 
-// A lit 3 x 3 chunk terrain world around the origin, with textures numbered block * 6 + face.
+// The default pack's shapes and atlas, as the game meshes with them (logs are model blocks drawn as
+// cubes; a pane's quads come from its models).
+const BlockShapes& shapes() {
+  static const BlockShapes s = defaultPackShapes(blocks());
+  return s;
+}
+const BlockAtlas& atlas() {
+  static const BlockAtlas a = [] {
+    PackStack packs;
+    packs.push(ResourcePack::open(resourcePackDir() / "default"));
+    return buildBlockAtlas(blocks(), packs);
+  }();
+  return a;
+}
+
+// A lit 3 x 3 chunk terrain world around the origin.
 struct Terrain : bench::LitArea {
-  Terrain()
-      : LitArea("terrain", 1),
-        table(blocks(), [](BlockId id, int f) { return static_cast<std::uint16_t>(id * 6 + f); }) {}
+  Terrain() : LitArea("terrain", 1, &shapes()), table(meshTableOf(blocks(), atlas())) {}
   BlockMeshTable table;
 };
 
@@ -54,14 +67,8 @@ void meshBenchmark(benchmark::State& state, Terrain& t, SectionPos section, Capt
 // corners where they meet), fences and glass panes joined to each other, eight layers high, an empty
 // row between each three.
 void BM_MeshShapes(benchmark::State& state) {
-  static const BlockShapes shapes = defaultPackShapes(blocks());
-  static const BlockAtlas atlas = [] {
-    PackStack packs;
-    packs.push(ResourcePack::open(resourcePackDir() / "default"));
-    return buildBlockAtlas(blocks(), packs);
-  }();
   struct Shaped : bench::LitArea {
-    Shaped() : LitArea("void", 1, &shapes), table(meshTableOf(blocks(), atlas)) {}
+    Shaped() : LitArea("void", 1, &shapes()), table(meshTableOf(blocks(), atlas())) {}
     BlockMeshTable table;
   } s;
   const char* rows[] = {"oak_stairs[facing=north]", "oak_fence", "glass_pane"};
