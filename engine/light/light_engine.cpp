@@ -41,34 +41,40 @@ std::vector<std::uint8_t> columnStops(const std::vector<std::uint8_t>& opacity,
   return stops;
 }
 
-// Per block id: 1 for an emitter, 2 for a block with light sides (ChunkLight's counts).
+// Per block id: 1 for an emitter, 2 for a block whose shape takes part in light (ChunkLight's counts).
 std::vector<std::uint8_t> specialCells(const std::vector<std::uint8_t>& emission,
-                                       const std::vector<std::uint8_t>& sides) {
+                                       const light::LightFaces& faces) {
   std::vector<std::uint8_t> kinds(emission.size());
-  for (std::size_t b = 0; b < kinds.size(); ++b)
-    kinds[b] = (emission[b] > 0 ? 1 : 0) | (sides[b] != 0 ? 2 : 0);
+  for (std::size_t b = 0; b < kinds.size(); ++b) {
+    kinds[b] = (emission[b] > 0 ? 1 : 0) | (faces.shaped(static_cast<BlockId>(b)) ? 2 : 0);
+  }
   return kinds;
+}
+
+// Whether two blocks take part in light through their shapes alike.
+bool sameFaces(const light::LightFaces& faces, BlockId a, BlockId b) {
+  return std::equal(faces.faces.begin() + a * 6, faces.faces.begin() + a * 6 + 6,
+                    faces.faces.begin() + b * 6);
 }
 
 }  // namespace
 
 LightEngine::LightEngine(World& world)
     : world_(world),
-      lightSides_(world.shapes() ? world.shapes()->lightSides()
-                                 : std::vector<std::uint8_t>(world.blocks().size())),
-      columnStop_(columnStops(world.blocks().opacities(), lightSides_)),
+      faces_(world),
+      columnStop_(columnStops(world.blocks().opacities(), faces_.full)),
       attenuation_(light::attenuations(world.blocks().opacities())),
-      flood_(light::floodAttenuations(attenuation_, lightSides_.data())),
+      flood_(light::floodAttenuations(attenuation_, faces_)),
       emission_(world.blocks().emissions().data()),
-      special_(specialCells(world.blocks().emissions(), lightSides_)),
+      special_(specialCells(world.blocks().emissions(), faces_)),
       frame_(std::make_unique<light::LightFrame>()),
       solver_(std::make_unique<light::SectionSolver>()) {}
 
 LightEngine::~LightEngine() = default;
 
 light::Propagator LightEngine::propagator(const light::ChunkWindow& window, LightChannel channel) {
-  return light::Propagator(*frame_, window, channel, flood_.data(), lightSides_.data(), emission_, decrease_,
-                           increase_, stats_, changed_);
+  return light::Propagator(*frame_, window, channel, flood_.data(), faces_, emission_, decrease_, increase_,
+                           stats_, changed_);
 }
 
 std::uint8_t LightEngine::lightAt(const BlockPos& pos, LightChannel channel) const {
@@ -221,7 +227,7 @@ void LightEngine::blockChanged(const BlockChange& change) {
   const auto opacity = world_.blocks().opacities().data();
   const bool sameLight = opacity[change.before] == opacity[change.after] &&
                          emission_[change.before] == emission_[change.after] &&
-                         lightSides_[change.before] == lightSides_[change.after];
+                         sameFaces(faces_, change.before, change.after);
   Chunk* chunk = world_.chunk(ChunkPos::of(at));
   if (sameLight || !chunk || !chunk->light().lit) return;
 
@@ -232,15 +238,14 @@ void LightEngine::blockChanged(const BlockChange& change) {
   emitters =
       static_cast<std::uint16_t>(emitters - (emission_[change.before] > 0) + (emission_[change.after] > 0));
   auto& shaped = light.shaped[static_cast<std::size_t>(sectionOf(at.y))];
-  shaped = static_cast<std::uint16_t>(shaped - (lightSides_[change.before] != 0) +
-                                      (lightSides_[change.after] != 0));
+  shaped = static_cast<std::uint16_t>(shaped - faces_.shaped(change.before) + faces_.shaped(change.after));
 
   const ChunkPos here = ChunkPos::of(at);
   const light::ChunkWindow window(world_, {here.x - kReach, here.z - kReach},
                                   {here.x + kReach, here.z + kReach});
-  // Sky light only sees opacity and light sides: a new or removed emitter leaves it alone.
-  const bool skyToo = opacity[change.before] != opacity[change.after] ||
-                      lightSides_[change.before] != lightSides_[change.after];
+  // Sky light only sees opacity and shapes: a new or removed emitter leaves it alone.
+  const bool skyToo =
+      opacity[change.before] != opacity[change.after] || !sameFaces(faces_, change.before, change.after);
   for (const LightChannel channel : {LightChannel::Block, LightChannel::Sky}) {
     if (channel == LightChannel::Sky && !skyToo) continue;
     Propagator p = propagator(window, channel);

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "light/changed_sections.h"
+#include "light/light_faces.h"
 #include "world/world.h"
 
 namespace terrasol {
@@ -91,7 +92,7 @@ class LightEngine {
                       LightChannel channel);
 
   World& world_;
-  std::vector<std::uint8_t> lightSides_;   // BlockShapes::lightSides, or none without shapes
+  light::LightFaces faces_;                // light through shaped blocks (none without shapes)
   std::vector<std::uint8_t> columnStop_;   // 1 where the open sky column ends (ChunkLight::skyTop)
   std::vector<std::uint8_t> attenuation_;  // max(1, opacity)
   std::vector<std::uint8_t> flood_;        // the flood fill's (light::floodAttenuations)

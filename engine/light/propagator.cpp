@@ -9,13 +9,13 @@
 namespace terrasol::light {
 
 Propagator::Propagator(LightFrame& frame, const ChunkWindow& window, LightChannel channel,
-                       const std::uint8_t* attenuation, const std::uint8_t* lightSides,
-                       const std::uint8_t* emission, std::vector<LightEngine::Entry>& decrease,
-                       std::vector<LightEngine::Entry>& increase, LightStats& stats, ChangedSections& changed)
+                       const std::uint8_t* attenuation, const LightFaces& faces, const std::uint8_t* emission,
+                       std::vector<LightEngine::Entry>& decrease, std::vector<LightEngine::Entry>& increase,
+                       LightStats& stats, ChangedSections& changed)
     : frame_(frame),
       channel_(channel),
       attenuation_(attenuation),
-      lightSides_(lightSides),
+      faces_(faces),
       emission_(emission),
       decrease_(decrease),
       increase_(increase),
@@ -171,42 +171,47 @@ void Propagator::runIncrease() {
     if (own.light(index) != e.level) continue;  // superseded since it was queued
     unsigned directions = e.directions;
     std::uint8_t inSection = kInSection[static_cast<std::size_t>(index)];
+    const std::uint8_t* from = nullptr;  // the cell's parts of its sides, where it is shaped
     if (*own.shaped != 0) [[unlikely]] {
-      // A section with shaped blocks: light does not leave a cell through its light sides.
+      // A section with shaped blocks: light does not leave a cell through a side covered whole.
       ++shapedReads;
-      if (const std::uint8_t sides = lightSides_[own.block(index)]; sides != 0) {
-        directions &= ~static_cast<unsigned>(sides);
+      const BlockId self = own.block(index);
+      if (faces_.shaped(self)) {
+        from = &faces_.faces[self * 6u];
+        directions &= ~static_cast<unsigned>(faces_.full[self]);
         inSection &= static_cast<std::uint8_t>(~kInterior);
       }
     }
     LightEngine::Entry* out = increase_.room(6);
     std::size_t count = 0;
     const int throughAir = e.level - 1;  // the most a neighbour can get
-    forNeighbours(r, own, index, e.pos, inSection, directions,
-                  [&](Cursor& c, CellIndex i, std::uint32_t pos, int d) {
-                    const std::uint8_t current = c.light(i);
-                    if (current >= throughAir) return;  // no block read: not even air would let it brighten
-                    const BlockId block = c.block(i);
-                    int attenuation = attenuation_[block];
-                    if (attenuation & kShaped) [[unlikely]] {
-                      // Nor does it enter one through them.
-                      if ((lightSides_[block] >> opposite(d)) & 1) {
-                        ++dimmer;
-                        return;
-                      }
-                      attenuation &= ~kShaped;
-                    }
-                    const int level = e.level - attenuation;
-                    if (level <= current) {
-                      ++dimmer;
-                      return;
-                    }
-                    c.set(frame_, i, static_cast<std::uint8_t>(level));
-                    if (level > 1)
-                      out[count++] = {pos, static_cast<std::uint8_t>(level), allBut(opposite(d))};
-                    else
-                      ++ones;
-                  });
+    forNeighbours(
+        r, own, index, e.pos, inSection, directions, [&](Cursor& c, CellIndex i, std::uint32_t pos, int d) {
+          const std::uint8_t current = c.light(i);
+          if (current >= throughAir) return;  // no block read: not even air would let it brighten
+          const BlockId block = c.block(i);
+          int attenuation = attenuation_[block];
+          if ((attenuation & kShaped) || from) [[unlikely]] {
+            // Nor across a side the two cells' parts cover together.
+            const std::uint8_t to =
+                attenuation & kShaped ? faces_.faces[block * 6u + static_cast<unsigned>(opposite(d))] : 0;
+            if (faces_.blocks(from ? from[d] : 0, to)) {
+              ++dimmer;
+              return;
+            }
+            attenuation &= ~kShaped;
+          }
+          const int level = e.level - attenuation;
+          if (level <= current) {
+            ++dimmer;
+            return;
+          }
+          c.set(frame_, i, static_cast<std::uint8_t>(level));
+          if (level > 1)
+            out[count++] = {pos, static_cast<std::uint8_t>(level), allBut(opposite(d))};
+          else
+            ++ones;
+        });
     increase_.commit(count);
   }
   own.flush();

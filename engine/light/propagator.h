@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "light/changed_sections.h"
+#include "light/light_faces.h"
 #include "light/light_frame.h"
 
 namespace terrasol::light {
@@ -27,13 +28,13 @@ inline std::vector<std::uint8_t> attenuations(const std::vector<std::uint8_t>& o
   return a;
 }
 
-// The flood fill's table: attenuations() with kShaped set where the block has light sides
-// (BlockShapes::lightSides): sides light does not cross, into the cell or out of it.
+// The flood fill's table: attenuations() with kShaped set where the block's shape takes part in
+// light (LightFaces): light entering or leaving such a cell checks the side it crosses.
 inline constexpr std::uint8_t kShaped = 0x80;
 inline std::vector<std::uint8_t> floodAttenuations(const std::vector<std::uint8_t>& attenuation,
-                                                   const std::uint8_t* lightSides) {
+                                                   const LightFaces& faces) {
   std::vector<std::uint8_t> a(attenuation);
-  for (std::size_t b = 0; b < a.size(); ++b) a[b] |= lightSides[b] ? kShaped : 0;
+  for (std::size_t b = 0; b < a.size(); ++b) a[b] |= faces.shaped(static_cast<BlockId>(b)) ? kShaped : 0;
   return a;
 }
 
@@ -149,9 +150,9 @@ struct Cell {
 class Propagator {
  public:
   // Resets `frame` to the window and channel.
-  // `attenuation` by block id: see floodAttenuations(); `lightSides` the states' BlockShapes::lightSides.
+  // `attenuation` by block id: see floodAttenuations().
   Propagator(LightFrame& frame, const ChunkWindow& window, LightChannel channel,
-             const std::uint8_t* attenuation, const std::uint8_t* lightSides, const std::uint8_t* emission,
+             const std::uint8_t* attenuation, const LightFaces& faces, const std::uint8_t* emission,
              std::vector<LightEngine::Entry>& decrease, std::vector<LightEngine::Entry>& increase,
              LightStats& stats, ChangedSections& changed);
   ~Propagator();  // adds the counters to the engine's stats
@@ -245,7 +246,7 @@ class Propagator {
   LightFrame& frame_;
   LightChannel channel_;
   const std::uint8_t* attenuation_;
-  const std::uint8_t* lightSides_;
+  const LightFaces& faces_;
   const std::uint8_t* emission_;
   EntryQueue decrease_;
   EntryQueue increase_;

@@ -1,5 +1,9 @@
 #include "world/block_shapes.h"
 
+#include <algorithm>
+
+#include "core/error.h"
+
 namespace terrasol {
 
 BlockShapes::BlockShapes(const BlockRegistry& blocks)
@@ -9,7 +13,8 @@ BlockShapes::BlockShapes(const BlockRegistry& blocks)
       shapeOccludesLight_(blocks.size()),
       opaqueModel_(blocks.size()),
       lightSides_(blocks.size()),
-      opaqueCubes_(blocks.opaqueCubes()) {
+      opaqueCubes_(blocks.opaqueCubes()),
+      lightFaces_(blocks.size()) {
   for (BlockId s = 0; s < blocks.size(); ++s) {
     shapeOccludesLight_[s] = blocks[s].shapeOccludesLight;
     opaqueModel_[s] = blocks[s].shape == BlockShape::Model && blocks[s].layer == RenderLayer::Opaque;
@@ -34,9 +39,19 @@ void BlockShapes::setBoxes(BlockId state, std::vector<ShapeBox> boxes) {
     collision_[state].push_back(b);
   }
   std::uint8_t sides = 0;
+  lightFaces_[state] = {};
   if (shapeOccludesLight_[state]) {
     const FaceCoverage coverage = FaceCoverage::of(boxes_[state]);
-    for (int d = 0; d < 6; ++d) sides |= coverage.full(static_cast<Direction>(d)) ? 1u << d : 0u;
+    for (int d = 0; d < 6; ++d) {
+      const std::bitset<256>& mask = coverage.side(static_cast<Direction>(d));
+      sides |= mask.all() ? 1u << d : 0u;
+      auto known = std::find(faceMasks_.begin(), faceMasks_.end(), mask);
+      if (known == faceMasks_.end()) {
+        if (faceMasks_.size() == 256) throw Error("more than 255 different light-occluding block sides");
+        known = faceMasks_.insert(faceMasks_.end(), mask);
+      }
+      lightFaces_[state][static_cast<std::size_t>(d)] = static_cast<std::uint8_t>(known - faceMasks_.begin());
+    }
   }
   lightSides_[state] = sides;
   if (opaqueModel_[state]) {

@@ -5,6 +5,9 @@
 // pack's: as in Minecraft, a resource pack does not change how a block collides). Immutable once
 // built; the world points at it (World::setShapes).
 
+#include <array>
+#include <bitset>
+#include <cstdint>
 #include <vector>
 
 #include "world/block_registry.h"
@@ -23,9 +26,15 @@ class BlockShapes {
   // blocks), none for a passable state (an open gate) and without flat ones (a ladder's plane).
   const std::vector<ShapeBox>& collision(BlockId state) const { return collision_[state]; }
 
-  // Per state, the sides light does not pass (bits by Direction): those its boxes cover whole, for a
-  // block whose shape occludes light (BlockType::shapeOccludesLight); 0 for every other. Light moves
-  // from a cell to its neighbour unless either one's side between them is among these.
+  // Light through shaped blocks, as vanilla's useShapeForLightOcclusion decides it: light moves from a
+  // cell to its neighbour unless the parts of the side between them that their shapes cover make up
+  // the whole side together (a bottom slab's bottom alone; a bottom slab's side with a top slab's
+  // beside it). Only blocks whose shape occludes light (BlockType::shapeOccludesLight) take part.
+  // Per state and side (Direction order), its covered part as an index into lightFaceMasks(); 0 is
+  // nothing covered.
+  const std::vector<std::array<std::uint8_t, 6>>& lightFaces() const { return lightFaces_; }
+  const std::vector<std::bitset<256>>& lightFaceMasks() const { return faceMasks_; }
+  // Per state, the sides covered whole (bits by Direction), which stop light on their own.
   const std::vector<std::uint8_t>& lightSides() const { return lightSides_; }
   // Per state, 1 for an opaque cube: BlockRegistry::opaqueCubes, and the states of opaque model
   // blocks whose shape is the whole cell (a double slab, a log lying on its side): they hide their
@@ -37,6 +46,8 @@ class BlockShapes {
   std::vector<std::uint8_t> collisionHeight_;  // per state: BlockType::collisionHeight, 0 when passable
   std::vector<bool> shapeOccludesLight_, opaqueModel_;
   std::vector<std::uint8_t> lightSides_, opaqueCubes_;
+  std::vector<std::array<std::uint8_t, 6>> lightFaces_;
+  std::vector<std::bitset<256>> faceMasks_{std::bitset<256>{}};  // index 0: nothing covered
 };
 
 }  // namespace terrasol

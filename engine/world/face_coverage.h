@@ -40,6 +40,8 @@ class FaceCoverage {
   bool covers(Direction side, const SideRect& rect) const;
   bool full(Direction side) const { return sides_[static_cast<std::size_t>(side)].all(); }
   bool empty(Direction side) const { return sides_[static_cast<std::size_t>(side)].none(); }
+  // The side's 16 x 16 cells, a * 16 + b in its two axes: neighbours' touching sides line up.
+  const std::bitset<256>& side(Direction side) const { return sides_[static_cast<std::size_t>(side)]; }
 
  private:
   std::array<std::bitset<256>, 6> sides_;

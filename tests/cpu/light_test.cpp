@@ -193,6 +193,17 @@ TEST(Light, ShapedBlocksStopLightAtTheSidesTheyCoverWhole) {
     EXPECT_EQ(windowSlab.block(window), 14 - 2) << "its sides are half open: torch light passes";
     EXPECT_EQ(windowSlab.block(inside), 14 - 3);
     EXPECT_EQ(windowSlab.sky(belowRoof), 15 - 1 - 1 - 3) << "and sky light, sideways into the room";
+    // Vanilla tests the two sides together: a bottom slab's lower half and a top slab's upper half
+    // close the side between them; two bottom slabs leave its upper half open.
+    Room halves("stone", "stone_slab");
+    halves.set(inside, "stone_slab[type=top]");
+    EXPECT_EQ(halves.block(window), 14 - 2);
+    EXPECT_EQ(halves.block(inside), 0) << "a top slab behind a bottom slab";
+    EXPECT_EQ(halves.block({3, 72, 2}), 0);
+    EXPECT_EQ(compareWithReference(halves.world), "");
+    halves.set(inside, "stone_slab");
+    EXPECT_EQ(halves.block(inside), 14 - 3) << "two bottom slabs";
+    EXPECT_EQ(compareWithReference(halves.world), "");
   }
   {
     const Room top("stone_slab[type=top]", "stone_slab[type=double]");

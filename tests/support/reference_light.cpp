@@ -19,6 +19,8 @@ ReferenceLight::ReferenceLight(const World& world) {
   const std::size_t cells = width_ * depth_ * static_cast<std::size_t>(kMaxY - kMinY);
   opacity_.assign(cells, 255);
   sides_.assign(cells, 0);
+  state_.assign(cells, kAir);
+  shapes_ = world.shapes();
   block_.assign(cells, 0);
   sky_.assign(cells, 0);
   const BlockRegistry& blocks = world.blocks();
@@ -30,6 +32,7 @@ ReferenceLight::ReferenceLight(const World& world) {
           const BlockType& type = blocks[c.get(x, y, z)];
           opacity_[index(p)] = type.opacity;
           sides_[index(p)] = world.shapes() ? world.shapes()->lightSides()[c.get(x, y, z)] : 0;
+          state_[index(p)] = c.get(x, y, z);
           block_[index(p)] = type.emission;
         }
     // Sky: 15 straight down until the first block with opacity or a light side up or down; that one
@@ -71,8 +74,8 @@ void ReferenceLight::spread(std::vector<std::uint8_t>& light) const {
       for (int d = 0; d < 6; ++d) {
         const std::size_t n = neighbours[d];
         if (n == SIZE_MAX || opacity_[n] == 255) continue;
-        // Not across a light side of either cell (Direction d from this one, its opposite d ^ 1 from n).
-        if ((sides_[i] >> d & 1) || (sides_[n] >> (d ^ 1) & 1)) continue;
+        // Not across a side the two cells' shapes cover together (side d of this one, d ^ 1 of n).
+        if (closed(i, n, d)) continue;
         const int offer = level - std::max<int>(1, opacity_[n]);
         if (offer > light[n]) {
           light[n] = static_cast<std::uint8_t>(offer);
@@ -81,6 +84,14 @@ void ReferenceLight::spread(std::vector<std::uint8_t>& light) const {
       }
     }
   }
+}
+
+bool ReferenceLight::closed(std::size_t i, std::size_t n, int d) const {
+  if (!shapes_) return false;
+  const auto& masks = shapes_->lightFaceMasks();
+  const auto& a = shapes_->lightFaces()[state_[i]];
+  const auto& b = shapes_->lightFaces()[state_[n]];
+  return (masks[a[static_cast<std::size_t>(d)]] | masks[b[static_cast<std::size_t>(d ^ 1)]]).all();
 }
 
 std::string compareWithReference(const World& world) {

@@ -25,11 +25,16 @@ class ReferenceLight {
            static_cast<std::size_t>(p.x - x0_);
   }
   void spread(std::vector<std::uint8_t>& light) const;
+  // Whether light cannot cross from cell i to its neighbour n in Direction d: the parts of the side
+  // between them their shapes cover make up the whole side (BlockShapes::lightFaces).
+  bool closed(std::size_t i, std::size_t n, int d) const;
 
   int x0_ = 0, z0_ = 0;
   std::size_t width_ = 0, depth_ = 0;
   std::vector<std::uint8_t> opacity_;  // 255: the cell's chunk is not loaded
   std::vector<std::uint8_t> sides_;    // BlockShapes::lightSides, bits by Direction
+  std::vector<BlockId> state_;
+  const BlockShapes* shapes_ = nullptr;
   std::vector<std::uint8_t> block_, sky_;
 };
 
