@@ -54,10 +54,7 @@ std::string valueOf(const BlockRegistry& blocks, BlockId state, const char* prop
 // Whether the block at `pos` fills its cell (a cube, a double slab): what walls and door hinges lean on.
 bool wholeBlock(const World& world, const BlockPos& pos) {
   const BlockId s = world.getBlock(pos);
-  if (world.opaqueCubes()[s]) return true;
-  if (!world.shapes()) return false;
-  const auto& boxes = world.shapes()->boxes(s);
-  return boxes.size() == 1 && boxes[0].from == ShapeBox{}.from && boxes[0].to == ShapeBox{}.to;
+  return world.opaqueCubes()[s] || (world.shapes() && world.shapes()->wholeCell(s));
 }
 
 // Minecraft's DoorBlock.getHinge: the side with more whole blocks beside it, the side away from a

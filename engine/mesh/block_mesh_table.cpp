@@ -6,9 +6,10 @@
 namespace terrasol {
 namespace {
 
-// A model quad's extent on its cullface's side (its bounding rectangle there, 1/16), and, for an
-// opaque block, the part of a side it covers: a quad lying on the side, facing out of it.
-void describeModelQuad(ModelQuad& q, BlockMeshTable::Entry& e) {
+// A model quad's extent on its cullface's side (its bounding rectangle there, 1/16), and, where
+// `coverage` is given (an opaque block), the part of a side it covers: a quad lying on the side,
+// facing out of it.
+void describeModelQuad(ModelQuad& q, FaceCoverage* coverage) {
   if (q.cullface < 0 && q.face >= 6) return;
   const int side = q.cullface >= 0 ? q.cullface : q.face;
   const int across = side / 2;                                 // West/East: x, Down/Up: y, North/South: z
@@ -22,9 +23,9 @@ void describeModelQuad(ModelQuad& q, BlockMeshTable::Entry& e) {
   q.rect = {lo[a] / 2, lo[b] / 2, (hi[a] + 1) / 2, (hi[b] + 1) / 2};
   const int plane = side % 2 == 1 ? 32 : 0;
   q.onSide = q.face == side && lo[across] == plane && hi[across] == plane;
-  if (e.layer != MeshLayer::Opaque || q.face != side || lo[across] != plane || hi[across] != plane) return;
+  if (!coverage || !q.onSide) return;
   // Only whole 1/16 cells count as covered.
-  e.coverage.add(static_cast<Direction>(side), {(lo[a] + 1) / 2, (lo[b] + 1) / 2, hi[a] / 2, hi[b] / 2});
+  coverage->add(static_cast<Direction>(side), {(lo[a] + 1) / 2, (lo[b] + 1) / 2, hi[a] / 2, hi[b] / 2});
 }
 
 MeshLayer layerOf(RenderLayer layer) {
@@ -125,12 +126,11 @@ BlockMeshTable::BlockMeshTable(const BlockRegistry& blocks,
     e.tint = type.tint;
     if (type.shape == BlockShape::Model) {
       if (modelQuadsOf) e.quads = modelQuadsOf(id);
-      for (ModelQuad& q : e.quads) describeModelQuad(q, e);
+      FaceCoverage* coverage = e.layer == MeshLayer::Opaque ? &e.coverage : nullptr;
+      for (ModelQuad& q : e.quads) describeModelQuad(q, coverage);
       if (modelChoicesOf) e.choices = modelChoicesOf(id);
       for (ModelChoice& c : e.choices) {
-        FaceCoverage ignored = e.coverage;  // coverage is the origin pick's
-        for (ModelQuad& q : c.quads) describeModelQuad(q, e);
-        e.coverage = ignored;
+        for (ModelQuad& q : c.quads) describeModelQuad(q, nullptr);  // coverage is the origin pick's
         e.weights.push_back(c.weight);
       }
       for (int d = 0; d < 6; ++d) e.fullSides |= e.coverage.full(static_cast<Direction>(d)) ? 1u << d : 0u;

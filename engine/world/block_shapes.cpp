@@ -54,10 +54,7 @@ void BlockShapes::setBoxes(BlockId state, std::vector<ShapeBox> boxes) {
     }
   }
   lightSides_[state] = sides;
-  if (opaqueModel_[state]) {
-    const auto& b = boxes_[state];
-    opaqueCubes_[state] = b.size() == 1 && b[0].from == ShapeBox{}.from && b[0].to == ShapeBox{}.to ? 1 : 0;
-  }
+  if (opaqueModel_[state]) opaqueCubes_[state] = wholeCell(state) ? 1 : 0;
 }
 
 }  // namespace terrasol

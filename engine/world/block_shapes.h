@@ -21,6 +21,8 @@ class BlockShapes {
   explicit BlockShapes(const BlockRegistry& blocks);
 
   const std::vector<ShapeBox>& boxes(BlockId state) const { return boxes_[state]; }
+  // Whether the state's shape is the whole cell (a cube, glass, a double slab).
+  bool wholeCell(BlockId state) const { return boxes_[state].size() == 1 && boxes_[state][0] == ShapeBox{}; }
   void setBoxes(BlockId state, std::vector<ShapeBox> boxes);
   // What a player collides with: the boxes, raised to the block's collision height (a fence's 1.5
   // blocks), none for a passable state (an open gate) and without flat ones (a ladder's plane).
