@@ -44,6 +44,13 @@ TEST(BlockRegistry, ShipsEveryRequiredBlockWithVanillaLightValues) {
   EXPECT_EQ(b("oak_log").opacity, 15);
   EXPECT_EQ(blocks.stateName(blocks.id("oak_log")), "oak_log[axis=y]");
   EXPECT_EQ(blocks.opacities().size(), blocks.size());
+  // Broad enough for a pack to show itself: at least 150 blocks, named as Minecraft names them.
+  EXPECT_GE(blocks.blockCount(), 150u);
+  for (const char* name : {"granite", "polished_andesite", "deepslate", "birch_log", "spruce_door", "acacia_fence_gate",
+                           "dark_oak_trapdoor", "cut_sandstone", "lime_wool",
+                           "black_concrete", "cyan_stained_glass", "bookshelf", "deepslate_diamond_ore", "lantern"}) {
+    EXPECT_NO_THROW(blocks.id(name)) << name;
+  }
 }
 
 std::string errorOf(const std::string& json) {

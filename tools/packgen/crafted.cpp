@@ -61,16 +61,6 @@ Texel paneEdge(int x, int y) {
   return t;
 }
 
-Texel wool(int x, int y) {
-  const float fibre = tileNoise(201, x * 1.0f, y * 2.0f, 8) * 0.6f + fbm(202, static_cast<float>(x), static_cast<float>(y)) * 0.4f;
-  Texel t;
-  t.color = rgb(233, 236, 236) * (0.86f + 0.16f * fibre);
-  t.height = 0.5f + 0.5f * fibre;
-  t.smoothness = 15;
-  t.porosity = 120;
-  return t;
-}
-
 // Smooth stone with a bevelled rim: the furnace's casing.
 Texel casing(int x, int y) {
   Texel t = rock(211, x, y, rgb(110, 110, 110), 0.1f);
@@ -118,7 +108,6 @@ void addCraftedTextures(std::vector<GeneratedTexture>& out) {
   out.push_back(still("oak_door_top", doorTop));
   out.push_back(still("oak_trapdoor", trapdoor));
   out.push_back(still("glass_pane_top", paneEdge));
-  out.push_back(still("white_wool", wool));
   out.push_back(still("furnace_front", furnaceFront));
   out.push_back(still("furnace_side", casing));
   out.push_back(still("furnace_top", [](int x, int y) { return stone(x, y); }));

@@ -91,8 +91,10 @@ Texel dirt(int x, int y) {
   return t;
 }
 
-Texel ore(int x, int y, std::uint64_t seed, glm::vec3 speck, int specular) {
-  Texel t = stone(x, y);
+Texel ore(int x, int y, std::uint64_t seed, glm::vec3 speck, int specular) { return oreIn(x, y, seed, speck, specular, stone); }
+
+Texel oreIn(int x, int y, std::uint64_t seed, glm::vec3 speck, int specular, Texel (*ground)(int, int)) {
+  Texel t = ground(x, y);
   const Cells c = voronoi(seed, x, y, 4);
   if (c.d1 < 1.6f + 0.8f * hash01(seed, c.id, 3)) {
     t.color = speck * (0.8f + 0.4f * hash01(seed, x, y));
@@ -116,11 +118,13 @@ Texel metalBlock(int x, int y, glm::vec3 base, int metal, int smoothness) {
   return t;
 }
 
-Texel planks(int x, int y) {
+Texel planks(int x, int y) { return planksOf(x, y, rgb(162, 130, 78)); }
+
+Texel planksOf(int x, int y, glm::vec3 colour) {
   const int board = y / 4;
   const float grain = tileNoise(51 + static_cast<std::uint64_t>(board), static_cast<float>(x), y * 4.0f, 8);
   Texel t;
-  t.color = rgb(162, 130, 78) * (0.82f + 0.25f * grain) * (board % 2 ? 0.95f : 1.0f);
+  t.color = colour * (0.82f + 0.25f * grain) * (board % 2 ? 0.95f : 1.0f);
   const bool seam = y % 4 == 3 || (x == (board * 7 + 3) % kSize);
   if (seam) t.color *= 0.6f;
   t.height = seam ? 0.5f : 0.85f + 0.15f * grain;
@@ -128,32 +132,38 @@ Texel planks(int x, int y) {
   return t;
 }
 
-Texel logSide(int x, int y) {
+Texel logSide(int x, int y) { return logSideOf(x, y, rgb(109, 85, 50)); }
+
+Texel logSideOf(int x, int y, glm::vec3 bark) {
   const float stripe = tileNoise(61, x * 1.0f, y * 0.25f, 8);
   Texel t;
-  t.color = rgb(109, 85, 50) * (0.65f + 0.45f * stripe);
+  t.color = bark * (0.65f + 0.45f * stripe);
   t.height = 0.4f + 0.6f * stripe;
   t.smoothness = 25;
   t.porosity = 30;
   return t;
 }
 
-Texel logTop(int x, int y) {
+Texel logTop(int x, int y) { return logTopOf(x, y, rgb(109, 85, 50), rgb(176, 143, 88)); }
+
+Texel logTopOf(int x, int y, glm::vec3 bark, glm::vec3 wood) {
   const float dx = x - 7.5f, dy = y - 7.5f, r = std::sqrt(dx * dx + dy * dy);
   Texel t;
-  if (std::max(std::abs(dx), std::abs(dy)) > 6.5f) return logSide(x, y);
+  if (std::max(std::abs(dx), std::abs(dy)) > 6.5f) return logSideOf(x, y, bark);
   const float ring = 0.5f + 0.5f * std::cos(r * 2.2f);
-  t.color = rgb(176, 143, 88) * (0.8f + 0.2f * ring);
+  t.color = wood * (0.8f + 0.2f * ring);
   t.height = 0.85f + 0.15f * ring;
   t.smoothness = 60;
   return t;
 }
 
-Texel leaves(int x, int y) {
-  const float n = fbm(71, static_cast<float>(x), static_cast<float>(y));
+Texel leaves(int x, int y) { return leavesOf(x, y, 71); }
+
+Texel leavesOf(int x, int y, std::uint64_t seed) {
+  const float n = fbm(seed, static_cast<float>(x), static_cast<float>(y));
   Texel t;
   t.color = glm::vec3(0.55f + 0.35f * n);  // grey: tinted by the foliage colour
-  t.alpha = hash01(72, x, y) < 0.28f ? 0.0f : 1.0f;
+  t.alpha = hash01(seed + 1, x, y) < 0.28f ? 0.0f : 1.0f;
   t.height = 0.5f + 0.5f * n;
   t.smoothness = 70;
   t.porosity = 180;  // B above 64: subsurface scattering
@@ -343,6 +353,7 @@ std::vector<GeneratedTexture> generateDefaultTextures() {
   out.push_back(encode("lava_still", paint(8, [](int x, int y, int f) { return liquid(x, y, f, true, false); }), 8, 4));
   out.push_back(encode("lava_flow", paint(8, [](int x, int y, int f) { return liquid(x, y, f, true, true); }), 8, 3));
   addCraftedTextures(out);
+  addFamilyTextures(out);
   return out;
 }
 

@@ -46,12 +46,23 @@ Texel dirt(int x, int y);
 Texel planks(int x, int y);
 Texel logSide(int x, int y);
 Texel glass(int x, int y);
+// The same recipes in other colours and seeds, for the other woods, stones and ores.
+Texel planksOf(int x, int y, glm::vec3 colour);
+Texel logSideOf(int x, int y, glm::vec3 bark);
+Texel logTopOf(int x, int y, glm::vec3 bark, glm::vec3 wood);
+Texel leavesOf(int x, int y, std::uint64_t seed);
+Texel oreIn(int x, int y, std::uint64_t seed, glm::vec3 speck, int specular, Texel (*ground)(int, int));
+Texel metalBlock(int x, int y, glm::vec3 base, int metal, int smoothness);
+Texel plant(int x, int y, std::uint64_t seed, glm::vec3 flower);
 
 // One still texture from a recipe.
 GeneratedTexture still(const std::string& name, const std::function<Texel(int, int)>& f);
 
-// The textures of crafted and shaped blocks: doors, trapdoors, ladders, panes, wool, furnaces,
+// The textures of crafted and shaped blocks: doors, trapdoors, ladders, panes, furnaces,
 // farmland and paths (crafted.cpp).
 void addCraftedTextures(std::vector<GeneratedTexture>& out);
+// More stones, the other woods, sandstone, the sixteen colours, crafted blocks, plants, ores, metal
+// and gem blocks (families.cpp).
+void addFamilyTextures(std::vector<GeneratedTexture>& out);
 
 }  // namespace terrasol::packgen
