@@ -3,6 +3,7 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <map>
+#include <set>
 
 #include "assets/block_model.h"
 #include "assets/block_states.h"
@@ -196,6 +197,37 @@ BlockAtlas buildBlockAtlas(const BlockRegistry& blocks, const PackStack& packs) 
     }
   }
   return result;
+}
+
+TextureCoverage textureCoverage(const BlockRegistry& blocks, const PackStack& packs) {
+  // What the game loads for a list of candidates: the first the stack has.
+  std::set<std::string> drawn;
+  const auto use = [&](const std::vector<std::string>& candidates) {
+    for (const std::string& name : candidates) {
+      if (packs.findBlockTexture(name + ".png")) {
+        drawn.insert(name);
+        return;
+      }
+    }
+  };
+  std::vector<PackProblem> problems;  // inspect and the atlas report them
+  const BakedStates baked = bakeModelStates(blocks, packs, problems);
+  for (BlockId id = 0; id < blocks.size(); ++id) {
+    for (const auto& face : blocks[id].textures) use(face);
+    for (const BakedQuad& q : baked.quads[id]) use(candidatesOf(q.texture));
+    for (const BakedChoice& c : baked.choices[id])
+      for (const BakedQuad& q : c.quads) use(candidatesOf(q.texture));
+  }
+  TextureCoverage coverage;
+  if (packs.packs().empty()) return coverage;
+  std::set<std::string> top;
+  for (const std::string& file : packs.packs().back()->blockTextureFiles()) {
+    if (!file.ends_with(".png") || file.ends_with("_n.png") || file.ends_with("_s.png")) continue;
+    top.insert(file.substr(0, file.size() - 4));
+  }
+  for (const std::string& name : top)
+    (drawn.contains(name) ? coverage.used : coverage.unused).push_back(name);
+  return coverage;
 }
 
 BlockShapes blockShapesOf(const BlockRegistry& blocks, const PackStack& packs) {

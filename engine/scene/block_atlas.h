@@ -36,6 +36,14 @@ BlockShapes blockShapesOf(const BlockRegistry& blocks, const PackStack& packs);
 // The same from resourcepacks/default alone: what the game collides with.
 BlockShapes defaultPackShapes(const BlockRegistry& blocks);
 
+// Of the top pack's block textures (base names: no _n, _s or .mcmeta), those the blocks draw with (their
+// faces' textures and their models', as the stack resolves them) and the rest, each sorted: how much
+// of a pack the world can show.
+struct TextureCoverage {
+  std::vector<std::string> used, unused;
+};
+TextureCoverage textureCoverage(const BlockRegistry& blocks, const PackStack& packs);
+
 // The mesher's table for `blocks` drawn with `atlas`'s textures and model quads.
 BlockMeshTable meshTableOf(const BlockRegistry& blocks, const BlockAtlas& atlas);
 

@@ -1,7 +1,6 @@
+#include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 #include <zip.h>
-
-#include <OpenImageIO/imageio.h>
 
 #include <array>
 #include <fstream>
@@ -11,6 +10,7 @@
 #include "core/error.h"
 #include "core/paths.h"
 #include "packgen.h"
+#include "scene/block_atlas.h"
 #include "support/pack_builder.h"
 #include "support/test_data.h"
 #include "support/world_support.h"
@@ -22,7 +22,9 @@ using testing::PackBuilder;
 using testing::solidImage;
 
 // A real third-party pack (the test data's), where it is present.
-std::filesystem::path pixelPerfection() { return testing::testData() / "packs" / "pixel_perfection_ce"; }
+std::filesystem::path pixelPerfection() {
+  return testing::testData() / "packs" / "pixel_perfection_ce";
+}
 
 PackStack stackOf(std::initializer_list<std::filesystem::path> dirs) {
   PackStack stack;
@@ -36,13 +38,15 @@ std::string problemsText(const std::vector<PackProblem>& problems) {
   return text;
 }
 
-LoadedTexture load(const PackStack& stack, std::vector<std::string> names, std::vector<PackProblem>& problems) {
+LoadedTexture load(const PackStack& stack, std::vector<std::string> names,
+                   std::vector<PackProblem>& problems) {
   return loadBlockTexture(stack, names, problems);
 }
 
 TEST(ResourcePack, LaterPacksOverrideEarlierOnesAndCompanionsComeFromTheSamePack) {
   PackBuilder low("pack_low");
-  low.image("stone.png", solidImage(16, 16, 100, 100, 100)).image("stone_s.png", solidImage(16, 16, 200, 230, 0, 255));
+  low.image("stone.png", solidImage(16, 16, 100, 100, 100))
+      .image("stone_s.png", solidImage(16, 16, 200, 230, 0, 255));
   low.image("dirt.png", solidImage(16, 16, 120, 80, 40));
   PackBuilder high("pack_high", "blocks");  // the pre-1.13 folder name
   high.image("stone.png", solidImage(16, 16, 50, 50, 50));
@@ -98,7 +102,9 @@ TEST(ResourcePack, AnimationsSplitIntoFramesWithTheirTiming) {
       p[0] = static_cast<std::uint8_t>(y / 16 * 60), p[1] = 0, p[2] = 0, p[3] = 255;
     }
   pack.image("lava_still.png", strip);
-  pack.text("lava_still.png.mcmeta", R"({"animation": {"frametime": 3, "interpolate": true, "frames": [0, 2, {"index": 3, "time": 7}]}})");
+  pack.text(
+      "lava_still.png.mcmeta",
+      R"({"animation": {"frametime": 3, "interpolate": true, "frames": [0, 2, {"index": 3, "time": 7}]}})");
   pack.image("lava_still_n.png", solidImage(16, 16, 127, 127, 255));  // one frame for all
   std::vector<PackProblem> problems;
   const auto t = load(stackOf({pack.dir()}), {"lava_still"}, problems);
@@ -137,8 +143,8 @@ TEST(ResourcePack, AnimationsSplitIntoFramesWithTheirTiming) {
 }
 
 TEST(Animation, FramesFollowGameTimeExactlyForever) {
-  const auto anim = parseAnimation(R"({"animation": {"frametime": 2, "frames": [0, {"index": 3, "time": 5}, 1]}})",
-                                   16, 64, "test.mcmeta");
+  const auto anim = parseAnimation(
+      R"({"animation": {"frametime": 2, "frames": [0, {"index": 3, "time": 5}, 1]}})", 16, 64, "test.mcmeta");
   ASSERT_TRUE(anim);
   EXPECT_EQ(anim->totalTicks(), 9);
   const int expected[9] = {0, 0, 3, 3, 3, 3, 3, 1, 1};
@@ -147,7 +153,8 @@ TEST(Animation, FramesFollowGameTimeExactlyForever) {
   EXPECT_EQ(frameAt(*anim, -1).frame, 1) << "negative time wraps";
   EXPECT_EQ(frameAt(*anim, 2).next, 1);
   EXPECT_FLOAT_EQ(frameAt(*anim, 3).blend, 0.0f) << "no interpolation asked";
-  const auto smooth = parseAnimation(R"({"animation": {"frametime": 4, "interpolate": true}})", 16, 32, "s.mcmeta");
+  const auto smooth =
+      parseAnimation(R"({"animation": {"frametime": 4, "interpolate": true}})", 16, 32, "s.mcmeta");
   EXPECT_FLOAT_EQ(frameAt(*smooth, 2, 0.5f).blend, 2.5f / 4.0f);
   EXPECT_EQ(frameAt(*smooth, 5).frame, 1);
   EXPECT_EQ(frameAt(*smooth, 5).next, 0);
@@ -161,7 +168,8 @@ TEST(Tints, ColormapsAreSampledLikeMinecraftAndDefaultsFillIn) {
       std::uint8_t* p = map.pixel(x, y);
       p[0] = static_cast<std::uint8_t>(x), p[1] = static_cast<std::uint8_t>(y), p[2] = 7, p[3] = 255;
     }
-  // x = (int)((1 - 0.8f) * 255) = 50 (0.8f is a little above 0.8, as in Minecraft), y = (int)(0.68 * 255) = 173
+  // x = (int)((1 - 0.8f) * 255) = 50 (0.8f is a little above 0.8, as in Minecraft), y = (int)(0.68 * 255) =
+  // 173
   const glm::vec3 plains = sampleColormap(map, 0.8f, 0.4f);
   EXPECT_NEAR(plains.r * 255.0f, 50.0f, 0.5f);
   EXPECT_NEAR(plains.g * 255.0f, 173.0f, 0.5f);
@@ -186,10 +194,11 @@ TEST(ResourcePack, BadInputGivesClearErrorsNamingTheFile) {
   pack.text("empty.png", "");
   pack.text("garbage.png", "\x89PNG\r\n\x1a\nthis is not a png");
   // A valid PNG declaring 100 000 x 100 000 pixels (40 GB): refused from its header, before allocating.
-  const unsigned char huge[] = {0x89, 0x50, 0x4e, 0x47, 0xd, 0xa, 0x1a, 0xa, 0x0, 0x0, 0x0, 0xd, 0x49, 0x48,
-      0x44, 0x52, 0x0, 0x1, 0x86, 0xa0, 0x0, 0x1, 0x86, 0xa0, 0x8, 0x6, 0x0, 0x0, 0x0, 0xa8, 0x52, 0xb, 0xc8,
-      0x0, 0x0, 0x0, 0x9, 0x49, 0x44, 0x41, 0x54, 0x78, 0x9c, 0x63, 0x0, 0x0, 0x0, 0x1, 0x0, 0x1, 0x5e, 0xff,
-      0x7d, 0xf9, 0x0, 0x0, 0x0, 0x0, 0x49, 0x45, 0x4e, 0x44, 0xae, 0x42, 0x60, 0x82};
+  const unsigned char huge[] = {
+      0x89, 0x50, 0x4e, 0x47, 0xd,  0xa,  0x1a, 0xa,  0x0,  0x0,  0x0,  0xd,  0x49, 0x48, 0x44, 0x52, 0x0,
+      0x1,  0x86, 0xa0, 0x0,  0x1,  0x86, 0xa0, 0x8,  0x6,  0x0,  0x0,  0x0,  0xa8, 0x52, 0xb,  0xc8, 0x0,
+      0x0,  0x0,  0x9,  0x49, 0x44, 0x41, 0x54, 0x78, 0x9c, 0x63, 0x0,  0x0,  0x0,  0x1,  0x0,  0x1,  0x5e,
+      0xff, 0x7d, 0xf9, 0x0,  0x0,  0x0,  0x0,  0x49, 0x45, 0x4e, 0x44, 0xae, 0x42, 0x60, 0x82};
   pack.text("huge.png", std::string(reinterpret_cast<const char*>(huge), sizeof huge));
   pack.image("strip.png", solidImage(16, 40, 1, 1, 1));
   pack.text("strip.png.mcmeta", R"({"animation": {}})");
@@ -206,9 +215,13 @@ TEST(ResourcePack, BadInputGivesClearErrorsNamingTheFile) {
 
   const PackStack stack = stackOf({pack.dir()});
   const std::pair<const char*, const char*> cases[] = {
-      {"empty", "empty file"},        {"garbage", "garbage.png"},   {"huge", "100000x100000"},
-      {"strip", "not a stack of 16x16 frames"}, {"oblong", "not square and has no .mcmeta"},
-      {"meta", "meta.png.mcmeta: invalid JSON"}, {"frames", "frames[1] is frame 5, but the strip has 2"},
+      {"empty", "empty file"},
+      {"garbage", "garbage.png"},
+      {"huge", "100000x100000"},
+      {"strip", "not a stack of 16x16 frames"},
+      {"oblong", "not square and has no .mcmeta"},
+      {"meta", "meta.png.mcmeta: invalid JSON"},
+      {"frames", "frames[1] is frame 5, but the strip has 2"},
       {"truncated", "truncated.png"},
   };
   for (const auto& [name, expected] : cases) {
@@ -228,7 +241,8 @@ TEST(ResourcePack, SixteenBitGreyAndPaletteImagesAreConverted) {
     pixels[0] = 0x8000;
     auto out = OIIO::ImageOutput::create("png");
     ASSERT_TRUE(out);
-    ASSERT_TRUE(out->open(pack.file("deep.png").string(), OIIO::ImageSpec(16, 16, 2, OIIO::TypeDesc::UINT16)));
+    ASSERT_TRUE(
+        out->open(pack.file("deep.png").string(), OIIO::ImageSpec(16, 16, 2, OIIO::TypeDesc::UINT16)));
     ASSERT_TRUE(out->write_image(OIIO::TypeDesc::UINT16, pixels.data()));
     ASSERT_TRUE(out->close());
   }
@@ -247,7 +261,8 @@ TEST(ResourcePack, SixteenBitGreyAndPaletteImagesAreConverted) {
   EXPECT_TRUE(problems.empty()) << problemsText(problems);
 }
 
-void writeZip(const std::filesystem::path& file, const std::vector<std::pair<std::string, std::string>>& entries) {
+void writeZip(const std::filesystem::path& file,
+              const std::vector<std::pair<std::string, std::string>>& entries) {
   std::filesystem::remove(file);
   int error = 0;
   zip_t* z = zip_open(file.c_str(), ZIP_CREATE | ZIP_TRUNCATE, &error);
@@ -272,8 +287,9 @@ std::string pngBytes(const Image& image) {
 TEST(ResourcePack, ZipPacksLoadAndUnsafeEntriesAreRefused) {
   const auto dir = testing::scratchDir("zips");
   const std::string mcmeta = R"({"pack": {"pack_format": 15, "description": "zipped"}})";
-  writeZip(dir / "good.zip", {{"MyPack/pack.mcmeta", mcmeta},
-                              {"MyPack/assets/minecraft/textures/block/stone.png", pngBytes(solidImage(16, 16, 42, 42, 42))}});
+  writeZip(dir / "good.zip",
+           {{"MyPack/pack.mcmeta", mcmeta},
+            {"MyPack/assets/minecraft/textures/block/stone.png", pngBytes(solidImage(16, 16, 42, 42, 42))}});
   std::vector<PackProblem> problems;
   const auto stone = load(stackOf({dir / "good.zip"}), {"stone"}, problems);
   EXPECT_FALSE(stone.missing) << problemsText(problems);
@@ -298,7 +314,8 @@ TEST(ResourcePack, MalformedPackMcmetaIsNamed) {
   for (const auto& [text, expected] : std::vector<std::pair<std::string, std::string>>{
            {"{", "invalid JSON"},
            {R"({"pack": {"description": "x"}})", "pack_format must be an integer"},
-           {R"({"pack": {"pack_format": 15}, "terrasol": {"normal_map_convention": "up"}})", "normal_map_convention"}}) {
+           {R"({"pack": {"pack_format": 15}, "terrasol": {"normal_map_convention": "up"}})",
+            "normal_map_convention"}}) {
     PackBuilder pack("pack_mcmeta", "block", text);
     try {
       ResourcePack::open(pack.dir());
@@ -335,6 +352,36 @@ TEST(ResourcePack, PixelPerfectionLoadsWithoutErrorsOverTheDefaultPack) {
   const auto water = load(stack, {"water_still"}, problems);
   EXPECT_EQ(water.source.find("pixel_perfection_ce") != std::string::npos, true) << water.source;
   EXPECT_EQ(water.albedo.size(), 16u);  // a 16 x 256 strip
+}
+
+// How much of a pack the blocks draw: the top pack's textures (maps and animation files aside), used
+// where a block's face or model names them through the stack.
+TEST(TextureCoverage, CountsTheTopPacksTexturesTheBlocksDraw) {
+  const Image red = testing::solidImage(16, 16, 200, 20, 20);
+  PackBuilder pack("coverage");
+  pack.image("stone.png", red)
+      .image("stone_n.png", red)
+      .image("birch_door_top.png", red)
+      .image("oak_planks.png", red);
+  pack.image("not_a_block.png", red).text("stone.png.mcmeta", R"({"animation": {}})");
+  const PackStack stack = stackOf({resourcePackDir() / "default", pack.dir()});
+  const TextureCoverage c = textureCoverage(testing::defaultBlocks(), stack);
+  EXPECT_EQ(c.used, (std::vector<std::string>{"birch_door_top", "oak_planks", "stone"}));
+  EXPECT_EQ(c.unused, (std::vector<std::string>{"not_a_block"}));
+  // The default pack is all used.
+  const TextureCoverage own =
+      textureCoverage(testing::defaultBlocks(), stackOf({resourcePackDir() / "default"}));
+  EXPECT_TRUE(own.unused.empty()) << own.unused.front();
+  EXPECT_GT(own.used.size(), 180u);
+}
+
+TEST(TextureCoverage, PixelPerfectionIsPartlyDrawn) {
+  TERRASOL_SKIP_WITHOUT_TEST_DATA();
+  const TextureCoverage c =
+      textureCoverage(testing::defaultBlocks(), stackOf({resourcePackDir() / "default", pixelPerfection()}));
+  std::printf("pixel_perfection_ce: used %zu of %zu block textures\n", c.used.size(),
+              c.used.size() + c.unused.size());
+  EXPECT_GT(c.used.size(), 150u);
 }
 
 // resourcepacks/default is what tools/packgen writes: the generator and the committed files agree.

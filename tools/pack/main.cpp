@@ -1,6 +1,8 @@
 // terrasol-pack: checks resource packs and builds their atlases, for pack authors.
 //   terrasol-pack inspect PACK...             one line per problem, then a summary; exit 1 on errors
 //   terrasol-pack atlas PACK... --out DIR     albedo/normal/specular atlases and their mip levels as PNG
+//   terrasol-pack coverage PACK...            the top pack's block textures the blocks do not draw, then
+//                                             "used U of N block textures"
 // Packs are stacked bottom to top in the order given; the default pack is not added implicitly.
 
 #include <chrono>
@@ -11,18 +13,21 @@
 #include <vector>
 
 #include "assets/atlas.h"
-#include "scene/block_atlas.h"
 #include "core/error.h"
-#include "core/tool_main.h"
 #include "core/paths.h"
+#include "core/tool_main.h"
+#include "scene/block_atlas.h"
 #include "world/block_registry.h"
 
 namespace terrasol {
 namespace {
 
 int usage() {
-  std::fputs("usage: terrasol-pack inspect PACK...\n"
-             "       terrasol-pack atlas PACK... --out DIR\n", stderr);
+  std::fputs(
+      "usage: terrasol-pack inspect PACK...\n"
+      "       terrasol-pack atlas PACK... --out DIR\n"
+      "       terrasol-pack coverage PACK...\n",
+      stderr);
   return 2;
 }
 
@@ -43,8 +48,9 @@ int inspect(const PackStack& packs) {
       const std::string base = companionBase(file);
       if (!base.empty()) {
         if (!pack->blockTexture(base + ".png")) {
-          problems.push_back({PackProblem::Severity::Warning,
-                              pack->files().displayName(*pack->blockTexture(file)) + ": no base texture " + base + ".png"});
+          problems.push_back(
+              {PackProblem::Severity::Warning,
+               pack->files().displayName(*pack->blockTexture(file)) + ": no base texture " + base + ".png"});
         }
         continue;
       }
@@ -75,9 +81,11 @@ int atlas(const PackStack& packs, const std::filesystem::path& out) {
   const auto start = std::chrono::steady_clock::now();
   const BlockAtlas blockAtlas = buildBlockAtlas(blocks, packs);  // exactly what the renderer gets
   const Atlas& built = blockAtlas.atlas;
-  const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  const double ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   for (const auto& p : blockAtlas.problems) {
-    std::printf("%s: %s\n", p.severity == PackProblem::Severity::Error ? "error" : "warning", p.message.c_str());
+    std::printf("%s: %s\n", p.severity == PackProblem::Severity::Error ? "error" : "warning",
+                p.message.c_str());
   }
   std::filesystem::create_directories(out);
   for (int level = 0; level < built.levels(); ++level) {
@@ -86,9 +94,18 @@ int atlas(const PackStack& packs, const std::filesystem::path& out) {
     saveImage(out / ("normal" + suffix + ".png"), built.normal[static_cast<std::size_t>(level)]);
     saveImage(out / ("specular" + suffix + ".png"), built.specular[static_cast<std::size_t>(level)]);
   }
-  std::printf("%zu textures in %d tiles of %dx%d, %d mip levels, %dx%d atlas, built in %.1f ms; written to %s\n",
-              built.textures.size(), built.columns * built.rows, built.tileSize, built.tileSize, built.levels(),
-              built.albedo[0].width, built.albedo[0].height, ms, out.string().c_str());
+  std::printf(
+      "%zu textures in %d tiles of %dx%d, %d mip levels, %dx%d atlas, built in %.1f ms; written to %s\n",
+      built.textures.size(), built.columns * built.rows, built.tileSize, built.tileSize, built.levels(),
+      built.albedo[0].width, built.albedo[0].height, ms, out.string().c_str());
+  return 0;
+}
+
+int coverage(const PackStack& packs) {
+  const BlockRegistry blocks = BlockRegistry::fromFile(resourcePackDir() / "default" / "blocks.json");
+  const TextureCoverage c = textureCoverage(blocks, packs);
+  for (const std::string& name : c.unused) std::printf("unused: %s\n", name.c_str());
+  std::printf("used %zu of %zu block textures\n", c.used.size(), c.used.size() + c.unused.size());
   return 0;
 }
 
@@ -107,6 +124,7 @@ int run(int argc, char** argv) {
   }
   if (packs.packs().empty()) return usage();
   if (command == "inspect") return inspect(packs);
+  if (command == "coverage") return coverage(packs);
   if (command == "atlas" && !out.empty()) return atlas(packs, out);
   return usage();
 }
