@@ -3,10 +3,10 @@
 // by every chunk they touch, each writing only its own blocks, so the result is independent of
 // generation order.
 
-#include "world/terrain_generator.h"
-
 #include <cmath>
 #include <cstdlib>
+
+#include "world/terrain_generator.h"
 
 namespace terrasol {
 namespace {
@@ -18,12 +18,17 @@ bool insideChunk(const Chunk& chunk, int wx, int wz) {
   return chunkOf(wx) == chunk.pos().x && chunkOf(wz) == chunk.pos().z;
 }
 
-BlockId getWorld(const Chunk& chunk, int wx, int y, int wz) { return chunk.get(localOf(wx), y, localOf(wz)); }
-void setWorld(Chunk& chunk, int wx, int y, int wz, BlockId id) { chunk.set(localOf(wx), y, localOf(wz), id); }
+BlockId getWorld(const Chunk& chunk, int wx, int y, int wz) {
+  return chunk.get(localOf(wx), y, localOf(wz));
+}
+void setWorld(Chunk& chunk, int wx, int y, int wz, BlockId id) {
+  chunk.set(localOf(wx), y, localOf(wz), id);
+}
 
 struct OreKind {
   BlockId TerrainGenerator::Blocks::*block;
-  int attempts;  // veins started per chunk
+  BlockId TerrainGenerator::Blocks::*deep;  // in deepslate
+  int attempts;                             // veins started per chunk
   int minY, maxY;
   double radius;
 };
@@ -31,10 +36,16 @@ struct OreKind {
 }  // namespace
 
 void TerrainGenerator::placeOres(Chunk& chunk) const {
+  // Depths as Minecraft spreads them, roughly: coal high, iron and copper in the middle, gold, lapis
+  // and diamonds deep (diamonds only below y = 16), emeralds high in the mountains.
   static constexpr OreKind kOres[] = {
-      {&Blocks::coalOre, 14, 0, 130, 1.6},
-      {&Blocks::ironOre, 10, -60, 72, 1.3},
-      {&Blocks::goldOre, 3, -60, 30, 1.1},
+      {&Blocks::coalOre, &Blocks::deepslateCoalOre, 14, 0, 130, 1.6},
+      {&Blocks::ironOre, &Blocks::deepslateIronOre, 10, -60, 72, 1.3},
+      {&Blocks::goldOre, &Blocks::deepslateGoldOre, 3, -60, 30, 1.1},
+      {&Blocks::copperOre, &Blocks::deepslateCopperOre, 6, -16, 112, 1.5},
+      {&Blocks::lapisOre, &Blocks::deepslateLapisOre, 2, -60, 64, 1.1},
+      {&Blocks::diamondOre, &Blocks::deepslateDiamondOre, 2, -60, 16, 1.0},
+      {&Blocks::emeraldOre, &Blocks::emeraldOre, 3, 100, 230, 0.6},
   };
   const ChunkPos p = chunk.pos();
   for (std::size_t kind = 0; kind < std::size(kOres); ++kind) {
@@ -48,10 +59,13 @@ void TerrainGenerator::placeOres(Chunk& chunk) const {
         for (int dz = -r; dz <= r; ++dz)
           for (int dx = -r; dx <= r; ++dx) {
             const int x = cx + dx, y = cy + dy, z = cz + dz;
-            if (x < 0 || x > 15 || z < 0 || z > 15 || dx * dx + dy * dy + dz * dz > ore.radius * ore.radius) continue;
+            if (x < 0 || x > 15 || z < 0 || z > 15 || dx * dx + dy * dy + dz * dz > ore.radius * ore.radius)
+              continue;
             // Ragged edges: each cell of the sphere is kept with probability 3/4.
             if ((hashCoords(h, dx, dy, dz) & 3) == 0) continue;
-            if (chunk.get(x, y, z) == b_.stone) chunk.set(x, y, z, b_.*ore.block);
+            const BlockId here = chunk.get(x, y, z);
+            if (here == b_.stone) chunk.set(x, y, z, b_.*ore.block);
+            if (here == b_.deepslate) chunk.set(x, y, z, b_.*ore.deep);
           }
     }
   }
@@ -66,7 +80,8 @@ void TerrainGenerator::placeGlowstone(Chunk& chunk) const {
     // Find a cave ceiling above the start: air with stone over it.
     int ceiling = kMinY - 1;
     for (int y = start; y < start + 16; ++y) {
-      if (chunk.get(x, y, z) == kAir && chunk.get(x, y + 1, z) == b_.stone) {
+      const BlockId above = chunk.get(x, y + 1, z);
+      if (chunk.get(x, y, z) == kAir && (above == b_.stone || above == b_.deepslate)) {
         ceiling = y + 1;
         break;
       }
@@ -81,7 +96,8 @@ void TerrainGenerator::placeGlowstone(Chunk& chunk) const {
           const int reach = 2 + dy;  // narrower the lower it hangs
           if (dx * dx + dz * dz > reach * reach + 1 || (hashCoords(h, dx, dy, dz) & 3) == 0) continue;
           const BlockId here = chunk.get(bx, by, bz);
-          if ((dy == 0 && here == b_.stone) || (dy < 0 && here == kAir)) chunk.set(bx, by, bz, b_.glowstone);
+          const bool rock = here == b_.stone || here == b_.deepslate;
+          if ((dy == 0 && rock) || (dy < 0 && here == kAir)) chunk.set(bx, by, bz, b_.glowstone);
         }
   }
 }
@@ -99,7 +115,8 @@ void TerrainGenerator::placeTrees(Chunk& chunk) const {
         const int tx = ncx * 16 + static_cast<int>(h & 15), tz = ncz * 16 + static_cast<int>((h >> 4) & 15);
         const int ground = surfaceHeight(tx, tz);
         if (ground <= kSeaLevel + 1 || ground >= 118) continue;  // not on beaches, sea beds or rock
-        if (caveDensity(tx, ground, tz) < 0.0 && carveAllowed(ground, ground)) continue;  // ground carved away
+        if (caveDensity(tx, ground, tz) < 0.0 && carveAllowed(ground, ground))
+          continue;  // ground carved away
         const int trunk = 4 + static_cast<int>((h >> 8) % 3);
         const int top = ground + trunk;
         // Leaves: two wide layers below the top, two narrow ones at and above it.
@@ -130,7 +147,10 @@ void TerrainGenerator::placePlants(Chunk& chunk) const {
       const int y = surfaceHeight(x0 + x, z0 + z);
       if (chunk.get(x, y, z) != b_.grass || chunk.get(x, y + 1, z) != kAir) continue;
       const std::uint64_t roll = hashCoords(seed_ ^ kPlantSalt, x0 + x, y, z0 + z) % 100;
-      const BlockId plant = roll < 14 ? b_.shortGrass : roll < 15 ? b_.dandelion : roll < 16 ? b_.poppy : kAir;
+      const BlockId plant = roll < 14   ? b_.shortGrass
+                            : roll < 15 ? b_.dandelion
+                            : roll < 16 ? b_.poppy
+                                        : kAir;
       if (plant != kAir) chunk.set(x, y + 1, z, plant);
     }
 }

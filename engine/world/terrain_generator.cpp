@@ -14,21 +14,49 @@ double smoothstep(double a, double b, double x) {
 
 // Index into a chunk-sized column buffer laid out exactly like 24 consecutive sections.
 constexpr std::size_t columnIndex(int x, int y, int z) {
-  return static_cast<std::size_t>(y - kMinY) * 256 + static_cast<std::size_t>(z) * 16 + static_cast<std::size_t>(x);
+  return static_cast<std::size_t>(y - kMinY) * 256 + static_cast<std::size_t>(z) * 16 +
+         static_cast<std::size_t>(x);
 }
 static_assert(columnIndex(3, kMinY + 17, 5) == 4096 + Section::index(3, 1, 5));
 
 // Floor division for the cave lattice.
-constexpr std::int64_t floorDiv(std::int64_t a, std::int64_t b) { return a / b - ((a % b != 0) && ((a < 0) != (b < 0))); }
+constexpr std::int64_t floorDiv(std::int64_t a, std::int64_t b) {
+  return a / b - ((a % b != 0) && ((a < 0) != (b < 0)));
+}
 
 }  // namespace
 
 TerrainGenerator::TerrainGenerator(std::uint64_t seed, const BlockRegistry& r)
     : seed_(seed),
-      b_{r.id("stone"),     r.id("dirt"),      r.id("grass_block"), r.id("sand"),      r.id("gravel"),
-         r.id("bedrock"),   r.id("water"),     r.id("lava"),        r.id("snow"),      r.id("oak_log"),
-         r.id("oak_leaves"), r.id("short_grass"), r.id("dandelion"), r.id("poppy"),    r.id("coal_ore"),
-         r.id("iron_ore"),  r.id("gold_ore"),  r.id("glowstone")},
+      b_{r.id("stone"),
+         r.id("dirt"),
+         r.id("grass_block"),
+         r.id("sand"),
+         r.id("gravel"),
+         r.id("bedrock"),
+         r.id("water"),
+         r.id("lava"),
+         r.id("snow"),
+         r.id("oak_log"),
+         r.id("oak_leaves"),
+         r.id("short_grass"),
+         r.id("dandelion"),
+         r.id("poppy"),
+         r.id("coal_ore"),
+         r.id("iron_ore"),
+         r.id("gold_ore"),
+         r.id("glowstone"),
+         r.id("deepslate"),
+         r.id("deepslate_coal_ore"),
+         r.id("deepslate_iron_ore"),
+         r.id("deepslate_gold_ore"),
+         r.id("copper_ore"),
+         r.id("deepslate_copper_ore"),
+         r.id("lapis_ore"),
+         r.id("deepslate_lapis_ore"),
+         r.id("diamond_ore"),
+         r.id("deepslate_diamond_ore"),
+         r.id("emerald_ore")},
       continents_(seed ^ 0x01),
       hills_(seed ^ 0x02),
       mountains_(seed ^ 0x03),
@@ -45,8 +73,8 @@ int TerrainGenerator::surfaceHeight(int x, int z) const {
   const double m = smoothstep(0.0, 0.35, mountains_.fractal(x / 450.0, z / 450.0, 3) * 2.0);
   const double ridge = 1.0 - std::abs(ridges_.fractal(x / 140.0, z / 140.0, 4) * 2.0);
   const double land = smoothstep(-0.35, 0.1, c);  // 0 in deep ocean, 1 inland
-  double height = 48.0 + 22.0 * land + 10.0 * c;   // ocean floor ~40, plains ~66..74
-  height += h * (3.0 + 14.0 * land);               // gentle plains, rolling hills inland
+  double height = 48.0 + 22.0 * land + 10.0 * c;  // ocean floor ~40, plains ~66..74
+  height += h * (3.0 + 14.0 * land);              // gentle plains, rolling hills inland
   height += land * m * (30.0 + 100.0 * ridge * ridge);
   return std::clamp(static_cast<int>(std::floor(height)), kMinY + 8, kMaxY - 40);
 }
@@ -65,7 +93,8 @@ double TerrainGenerator::caveLattice(std::int64_t cx, std::int64_t cy, std::int6
 }
 
 double TerrainGenerator::caveDensity(int x, int y, int z) const {
-  const std::int64_t cx = floorDiv(x, kCaveCellXZ), cy = floorDiv(y - kMinY, kCaveCellY), cz = floorDiv(z, kCaveCellXZ);
+  const std::int64_t cx = floorDiv(x, kCaveCellXZ), cy = floorDiv(y - kMinY, kCaveCellY),
+                     cz = floorDiv(z, kCaveCellXZ);
   const double fx = static_cast<double>(x - cx * kCaveCellXZ) / kCaveCellXZ;
   const double fy = static_cast<double>(y - kMinY - cy * kCaveCellY) / kCaveCellY;
   const double fz = static_cast<double>(z - cz * kCaveCellXZ) / kCaveCellXZ;
@@ -74,12 +103,12 @@ double TerrainGenerator::caveDensity(int x, int y, int z) const {
   const double c010 = caveLattice(cx, cy + 1, cz), c110 = caveLattice(cx + 1, cy + 1, cz);
   const double c001 = caveLattice(cx, cy, cz + 1), c101 = caveLattice(cx + 1, cy, cz + 1);
   const double c011 = caveLattice(cx, cy + 1, cz + 1), c111 = caveLattice(cx + 1, cy + 1, cz + 1);
-  return lerp(lerp(lerp(c000, c100, fx), lerp(c010, c110, fx), fy), lerp(lerp(c001, c101, fx), lerp(c011, c111, fx), fy),
-              fz);
+  return lerp(lerp(lerp(c000, c100, fx), lerp(c010, c110, fx), fy),
+              lerp(lerp(c001, c101, fx), lerp(c011, c111, fx), fy), fz);
 }
 
 bool TerrainGenerator::carveAllowed(int y, int surface) const {
-  if (y <= kMinY + 4) return false;                                 // keep the bedrock floor whole
+  if (y <= kMinY + 4) return false;                               // keep the bedrock floor whole
   if (surface <= kSeaLevel + 1 && y > surface - 6) return false;  // no holes in sea or lake beds
   return true;
 }
@@ -99,10 +128,13 @@ void TerrainGenerator::generate(Chunk& chunk) const {
   // Cave lattice for this chunk: 5 x n x 5 points, computed once and interpolated per block.
   const int cellsY = (maxSurface - kMinY) / kCaveCellY + 2;
   std::vector<double> lattice(static_cast<std::size_t>(5 * 5 * cellsY));
-  auto latticeAt = [&](int i, int j, int k) -> double& { return lattice[static_cast<std::size_t>((j * 5 + k) * 5 + i)]; };
+  auto latticeAt = [&](int i, int j, int k) -> double& {
+    return lattice[static_cast<std::size_t>((j * 5 + k) * 5 + i)];
+  };
   for (int j = 0; j < cellsY; ++j)
     for (int k = 0; k < 5; ++k)
-      for (int i = 0; i < 5; ++i) latticeAt(i, j, k) = caveLattice(x0 / kCaveCellXZ + i, j, z0 / kCaveCellXZ + k);
+      for (int i = 0; i < 5; ++i)
+        latticeAt(i, j, k) = caveLattice(x0 / kCaveCellXZ + i, j, z0 / kCaveCellXZ + k);
 
   for (int z = 0; z < 16; ++z)
     for (int x = 0; x < 16; ++x) {
@@ -115,12 +147,19 @@ void TerrainGenerator::generate(Chunk& chunk) const {
       const int depthOfDirt = 3 + static_cast<int>(r % 2);
       const int bedrockTop = kMinY + 1 + static_cast<int>((r >> 8) % 4);
       for (int y = kMinY; y <= h; ++y) {
-        BlockId id = b_.stone;
+        // Deepslate below y = 0, thinning out to none at kDeepslateTop.
+        const bool deep =
+            y < 0 || (y < kDeepslateTop &&
+                      static_cast<int>(hashCoords(seed_ ^ 0x0D, x0 + x, y, z0 + z) % kDeepslateTop) >= y);
+        BlockId id = deep ? b_.deepslate : b_.stone;
         if (y <= bedrockTop && (y == kMinY || ((r >> (16 + y - kMinY)) & 1))) {
           id = b_.bedrock;
         } else if (y == h) {
-          id = peak ? b_.snow : rocky ? b_.stone : underwater ? ((r >> 40) % 4 == 0 ? b_.gravel : b_.sand)
-                                                 : beach ? b_.sand : b_.grass;
+          id = peak         ? b_.snow
+               : rocky      ? b_.stone
+               : underwater ? ((r >> 40) % 4 == 0 ? b_.gravel : b_.sand)
+               : beach      ? b_.sand
+                            : b_.grass;
         } else if (y > h - depthOfDirt && !rocky) {
           id = (beach || underwater) ? b_.sand : b_.dirt;
         }
@@ -138,11 +177,12 @@ void TerrainGenerator::generate(Chunk& chunk) const {
         const double fy = static_cast<double>((y - kMinY) % kCaveCellY) / kCaveCellY;
         auto lerp = [](double p, double q, double t) { return p + (q - p) * t; };
         // Same arithmetic, in the same order, as caveDensity(), so both agree bit for bit.
-        const double d = lerp(lerp(lerp(latticeAt(cx, cy, cz), latticeAt(cx + 1, cy, cz), fx),
-                                   lerp(latticeAt(cx, cy + 1, cz), latticeAt(cx + 1, cy + 1, cz), fx), fy),
-                              lerp(lerp(latticeAt(cx, cy, cz + 1), latticeAt(cx + 1, cy, cz + 1), fx),
-                                   lerp(latticeAt(cx, cy + 1, cz + 1), latticeAt(cx + 1, cy + 1, cz + 1), fx), fy),
-                              fz);
+        const double d =
+            lerp(lerp(lerp(latticeAt(cx, cy, cz), latticeAt(cx + 1, cy, cz), fx),
+                      lerp(latticeAt(cx, cy + 1, cz), latticeAt(cx + 1, cy + 1, cz), fx), fy),
+                 lerp(lerp(latticeAt(cx, cy, cz + 1), latticeAt(cx + 1, cy, cz + 1), fx),
+                      lerp(latticeAt(cx, cy + 1, cz + 1), latticeAt(cx + 1, cy + 1, cz + 1), fx), fy),
+                 fz);
         if (d < 0.0) column[columnIndex(x, y, z)] = y <= kLavaLevel ? b_.lava : kAir;
       }
     }

@@ -1,8 +1,9 @@
 #pragma once
 // The `terrain` generator: seeded, deterministic Minecraft-like land. Shape from 2D noise (continents,
-// hills, ridged mountains), sea-level water, beaches, snowy peaks; 3D noise caves (tunnels and
-// caverns, open to the surface on land), lava below y = -54; then features: ores, glowstone clusters
-// on deep cave ceilings, oak trees, grass and flowers.
+// hills, ridged mountains), sea-level water, beaches, snowy peaks; deepslate below y = 0 (blending
+// into stone up to y = 7); 3D noise caves (tunnels and caverns, open to the surface on land), lava
+// below y = -54; then features: ores by depth (in deepslate, their deepslate forms), glowstone
+// clusters on deep cave ceilings, oak trees, grass and flowers.
 
 #include <array>
 #include <cstdint>
@@ -16,6 +17,7 @@ class TerrainGenerator final : public ChunkGenerator {
  public:
   static constexpr int kSeaLevel = 62;  // highest water block
   static constexpr int kLavaLevel = -54;  // caves at or below fill with lava
+  static constexpr int kDeepslateTop = 8;  // stone from here up; below y = 0 deepslate; a blend between
 
   TerrainGenerator(std::uint64_t seed, const BlockRegistry& blocks);
 
@@ -27,7 +29,9 @@ class TerrainGenerator final : public ChunkGenerator {
 
   struct Blocks {
     BlockId stone, dirt, grass, sand, gravel, bedrock, water, lava, snow, log, leaves, shortGrass, dandelion,
-        poppy, coalOre, ironOre, goldOre, glowstone;
+        poppy, coalOre, ironOre, goldOre, glowstone, deepslate, deepslateCoalOre, deepslateIronOre,
+        deepslateGoldOre, copperOre, deepslateCopperOre, lapisOre, deepslateLapisOre, diamondOre,
+        deepslateDiamondOre, emeraldOre;
   };
 
  private:

@@ -1,3 +1,5 @@
+#include "world/generator.h"
+
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -7,7 +9,6 @@
 #include "core/error.h"
 #include "support/world_support.h"
 #include "world/chunk_loader.h"
-#include "world/generator.h"
 #include "world/terrain_generator.h"
 
 namespace terrasol {
@@ -124,9 +125,28 @@ std::map<std::string, int> census(const ChunkGenerator& gen, int cx0, int cz0, i
 TEST(TerrainGenerator, HasEveryFeatureOfAMinecraftLikeWorld) {
   const auto gen = makeGenerator({"terrain", 1, {}}, defaultBlocks());
   const auto counts = census(*gen, -8, -8, 16);  // 256 x 256 blocks
-  for (const char* name : {"stone", "dirt", "grass_block", "sand", "water", "bedrock", "oak_log", "oak_leaves",
-                           "short_grass", "dandelion", "poppy", "coal_ore", "iron_ore", "gold_ore", "lava",
-                           "glowstone", "cave air"}) {
+  for (const char* name : {"stone",
+                           "dirt",
+                           "grass_block",
+                           "sand",
+                           "water",
+                           "bedrock",
+                           "oak_log",
+                           "oak_leaves",
+                           "short_grass",
+                           "dandelion",
+                           "poppy",
+                           "coal_ore",
+                           "iron_ore",
+                           "gold_ore",
+                           "lava",
+                           "glowstone",
+                           "cave air",
+                           "deepslate",
+                           "deepslate_iron_ore",
+                           "copper_ore",
+                           "lapis_ore",
+                           "deepslate_diamond_ore"}) {
     EXPECT_GT(counts.count(name) ? counts.at(name) : 0, 0) << name << " never generated";
   }
   // Heights cover sea, plains and mountains somewhere in a wider sample.
@@ -138,6 +158,45 @@ TEST(TerrainGenerator, HasEveryFeatureOfAMinecraftLikeWorld) {
     }
   EXPECT_LT(lowest, TerrainGenerator::kSeaLevel - 10);
   EXPECT_GT(highest, 140);
+}
+
+// Deepslate fills the ground below y = 0 and thins out up to y = 7; ores follow their depths: each
+// kind in the rock it lies in, diamonds only up to y = 16.
+TEST(TerrainGenerator, DeepslateBelowZeroAndOresByDepth) {
+  const auto gen = makeGenerator({"terrain", 1, {}}, defaultBlocks());
+  const BlockRegistry& b = defaultBlocks();
+  std::map<int, std::pair<int, int>> rock;  // y: stone, deepslate
+  int diamondsHigh = 0, stoneOresDeep = 0, deepOresHigh = 0;
+  for (int cz = -3; cz < 3; ++cz)
+    for (int cx = -3; cx < 3; ++cx) {
+      const auto chunk = generate(*gen, {cx, cz});
+      for (int y = -40; y < 40; ++y)
+        for (int z = 0; z < 16; ++z)
+          for (int x = 0; x < 16; ++x) {
+            const std::string& name = b[chunk->get(x, y, z)].name;
+            if (name == "stone") ++rock[y].first;
+            if (name == "deepslate") ++rock[y].second;
+            if (name.find("diamond_ore") != std::string::npos && y > 16)
+              ++diamondsHigh;  // veins start below 16
+            if (name.ends_with("_ore") && !name.starts_with("deepslate") && name != "emerald_ore" && y < 0)
+              ++stoneOresDeep;
+            if (name.starts_with("deepslate_") && name.ends_with("_ore") && y >= 8) ++deepOresHigh;
+          }
+    }
+  for (const auto& [y, counts] : rock) {
+    if (y < 0) {
+      EXPECT_EQ(counts.first, 0) << "stone at y " << y;
+    }
+    if (y >= 8) {
+      EXPECT_EQ(counts.second, 0) << "deepslate at y " << y;
+    }
+  }
+  EXPECT_GT(rock[3].first, 0);
+  EXPECT_GT(rock[3].second, 0) << "a blend at y 3";
+  EXPECT_GT(rock[1].second, rock[6].second) << "thinning out upwards";
+  EXPECT_EQ(diamondsHigh, 0);
+  EXPECT_EQ(stoneOresDeep, 0);
+  EXPECT_EQ(deepOresHigh, 0);
 }
 
 TEST(TerrainGenerator, CavesOpenToTheSurfaceSomewhere) {
