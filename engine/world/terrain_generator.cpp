@@ -56,7 +56,20 @@ TerrainGenerator::TerrainGenerator(std::uint64_t seed, const BlockRegistry& r)
          r.id("deepslate_lapis_ore"),
          r.id("diamond_ore"),
          r.id("deepslate_diamond_ore"),
-         r.id("emerald_ore")},
+         r.id("emerald_ore"),
+         r.id("sandstone"),
+         r.id("ice"),
+         r.id("snow_layer"),
+         r.id("birch_log"),
+         r.id("birch_leaves"),
+         r.id("spruce_log"),
+         r.id("spruce_leaves"),
+         r.id("acacia_log"),
+         r.id("acacia_leaves"),
+         r.id("cactus"),
+         r.id("dead_bush"),
+         r.id("fern")},
+      biomes_(seed),
       continents_(seed ^ 0x01),
       hills_(seed ^ 0x02),
       mountains_(seed ^ 0x03),
@@ -143,6 +156,8 @@ void TerrainGenerator::generate(Chunk& chunk) const {
       const bool underwater = h < kSeaLevel - 3;
       const bool peak = h >= 150;
       const bool rocky = h >= 118;
+      const Biome biome = biomes_.biomeAt(x0 + x, z0 + z, h);
+      const bool desert = biome == Biome::Desert, snowy = biome == Biome::SnowyPlains;
       const std::uint64_t r = hashCoords(seed_, x0 + x, 1, z0 + z);
       const int depthOfDirt = 3 + static_cast<int>(r % 2);
       const int bedrockTop = kMinY + 1 + static_cast<int>((r >> 8) % 4);
@@ -155,17 +170,21 @@ void TerrainGenerator::generate(Chunk& chunk) const {
         if (y <= bedrockTop && (y == kMinY || ((r >> (16 + y - kMinY)) & 1))) {
           id = b_.bedrock;
         } else if (y == h) {
-          id = peak         ? b_.snow
-               : rocky      ? b_.stone
-               : underwater ? ((r >> 40) % 4 == 0 ? b_.gravel : b_.sand)
-               : beach      ? b_.sand
-                            : b_.grass;
+          id = peak              ? b_.snow
+               : rocky           ? b_.stone
+               : underwater      ? ((r >> 40) % 4 == 0 ? b_.gravel : b_.sand)
+               : beach || desert ? b_.sand
+                                 : b_.grass;
         } else if (y > h - depthOfDirt && !rocky) {
-          id = (beach || underwater) ? b_.sand : b_.dirt;
+          id = (beach || underwater || desert) ? b_.sand : b_.dirt;
+        } else if (desert && y > h - depthOfDirt - 4) {
+          id = b_.sandstone;  // sand lies on sandstone
         }
         column[columnIndex(x, y, z)] = id;
       }
       for (int y = h + 1; y <= kSeaLevel; ++y) column[columnIndex(x, y, z)] = b_.water;
+      // Snowy plains: ice on still water.
+      if (snowy && h < kSeaLevel) column[columnIndex(x, kSeaLevel, z)] = b_.ice;
 
       // Carve caves through the solid part of the column.
       const int cx = x / kCaveCellXZ, cz = z / kCaveCellXZ;
@@ -184,6 +203,10 @@ void TerrainGenerator::generate(Chunk& chunk) const {
                       lerp(latticeAt(cx, cy + 1, cz + 1), latticeAt(cx + 1, cy + 1, cz + 1), fx), fy),
                  fz);
         if (d < 0.0) column[columnIndex(x, y, z)] = y <= kLavaLevel ? b_.lava : kAir;
+      }
+      // And a layer of snow on the ground, where caves left it.
+      if (snowy && h >= kSeaLevel && !rocky && column[columnIndex(x, h, z)] != kAir) {
+        column[columnIndex(x, h + 1, z)] = b_.snowLayer;
       }
     }
 

@@ -1,13 +1,15 @@
 #pragma once
 // The `terrain` generator: seeded, deterministic Minecraft-like land. Shape from 2D noise (continents,
-// hills, ridged mountains), sea-level water, beaches, snowy peaks; deepslate below y = 0 (blending
-// into stone up to y = 7); 3D noise caves (tunnels and caverns, open to the surface on land), lava
-// below y = -54; then features: ores by depth (in deepslate, their deepslate forms), glowstone
-// clusters on deep cave ceilings, oak trees, grass and flowers.
+// hills, ridged mountains), sea-level water, beaches, snowy peaks; biomes (world/biomes.h) decide
+// the ground (grass, desert sand over sandstone, snow-covered grass and ice), the trees (oak, birch,
+// spruce, acacia, cacti) and the plants; deepslate below y = 0 (blending into stone up to y = 7); 3D
+// noise caves (tunnels and caverns, open to the surface on land), lava below y = -54; ores by depth
+// (in deepslate, their deepslate forms), glowstone clusters on deep cave ceilings.
 
 #include <array>
 #include <cstdint>
 
+#include "world/biomes.h"
 #include "world/generator.h"
 #include "world/noise.h"
 
@@ -26,12 +28,16 @@ class TerrainGenerator final : public ChunkGenerator {
 
   // Cave density at a block: negative inside a cave. Pure; the same value generate() uses.
   double caveDensity(int x, int y, int z) const;
+  // The biome of a column.
+  Biome biomeAt(int x, int z) const { return biomes_.biomeAt(x, z, surfaceHeight(x, z)); }
+  const BiomeSource& biomes() const { return biomes_; }
 
   struct Blocks {
     BlockId stone, dirt, grass, sand, gravel, bedrock, water, lava, snow, log, leaves, shortGrass, dandelion,
         poppy, coalOre, ironOre, goldOre, glowstone, deepslate, deepslateCoalOre, deepslateIronOre,
         deepslateGoldOre, copperOre, deepslateCopperOre, lapisOre, deepslateLapisOre, diamondOre,
-        deepslateDiamondOre, emeraldOre;
+        deepslateDiamondOre, emeraldOre, sandstone, ice, snowLayer, birchLog, birchLeaves, spruceLog, spruceLeaves,
+        acaciaLog, acaciaLeaves, cactus, deadBush, fern;
   };
 
  private:
@@ -45,10 +51,12 @@ class TerrainGenerator final : public ChunkGenerator {
   void placeOres(Chunk& chunk) const;
   void placeGlowstone(Chunk& chunk) const;
   void placeTrees(Chunk& chunk) const;
+  void placeTree(Chunk& chunk, Biome biome, int tx, int ground, int tz, std::uint64_t h) const;
   void placePlants(Chunk& chunk) const;
 
   std::uint64_t seed_;
   Blocks b_;
+  BiomeSource biomes_;
   Noise continents_, hills_, mountains_, ridges_, tunnelA_, tunnelB_, caverns_, forests_;
 };
 

@@ -4,10 +4,12 @@
 
 #include <chrono>
 #include <map>
+#include <set>
 #include <thread>
 
 #include "core/error.h"
 #include "support/world_support.h"
+#include "world/biomes.h"
 #include "world/chunk_loader.h"
 #include "world/terrain_generator.h"
 
@@ -197,6 +199,82 @@ TEST(TerrainGenerator, DeepslateBelowZeroAndOresByDepth) {
   EXPECT_EQ(diamondsHigh, 0);
   EXPECT_EQ(stoneOresDeep, 0);
   EXPECT_EQ(deepOresHigh, 0);
+}
+
+// Biomes come from the seed alone, every one of them lies within a few thousand blocks, and their
+// borders are smooth: few columns have a neighbour of another biome.
+TEST(Biomes, DeterministicEveryKindAndSmoothBorders) {
+  const BiomeSource a(1), b(1), c(2);
+  const TerrainGenerator gen(1, defaultBlocks());
+  std::array<int, kBiomeCount> seen{};
+  int differ = 0, borders = 0, columns = 0;
+  for (int z = -3000; z <= 3000; z += 25)
+    for (int x = -3000; x <= 3000; x += 25) {
+      const int h = gen.surfaceHeight(x, z);
+      ASSERT_EQ(a.biomeAt(x, z, h), b.biomeAt(x, z, h));
+      differ += a.biomeAt(x, z, h) != c.biomeAt(x, z, h);
+      const Biome here = gen.biomeAt(x, z);
+      ++seen[static_cast<std::size_t>(here)];
+      borders += gen.biomeAt(x + 1, z) != here || gen.biomeAt(x, z + 1) != here;
+      ++columns;
+    }
+  for (int k = 0; k < kBiomeCount; ++k)
+    EXPECT_GT(seen[static_cast<std::size_t>(k)], 50) << biomeName(static_cast<Biome>(k));
+  EXPECT_GT(differ, columns / 5) << "another seed, other biomes";
+  EXPECT_LT(borders, columns / 25) << "neighbouring columns of different biomes";
+}
+
+// Each biome's ground and growth: desert sand over sandstone with cacti and dead bushes, snow on
+// the snowy plains with ice on their water, spruces in the taiga, birches in birch forests, acacias
+// on the savanna.
+TEST(Biomes, EachBiomeHasItsGroundAndTrees) {
+  const TerrainGenerator gen(1, defaultBlocks());
+  const BlockRegistry& b = defaultBlocks();
+  std::map<std::string, std::set<std::string>> found;  // biome: blocks at and above its surfaces
+  const auto sample = [&](Biome wanted) {
+    // The first chunk, walking out from the origin, well inside the biome (inland, for the snow), and
+    // its eight neighbours; only the biome's own columns count.
+    const auto inside = [&](int x, int z) {
+      for (const auto& [dx, dz] :
+           {std::pair{0, 0}, std::pair{-40, 0}, std::pair{40, 0}, std::pair{0, -40}, std::pair{0, 40}}) {
+        if (gen.biomeAt(x + dx, z + dz) != wanted ||
+            gen.surfaceHeight(x + dx, z + dz) <= TerrainGenerator::kSeaLevel + 1)
+          return false;
+      }
+      return true;
+    };
+    for (int r = 0; r < 300; ++r)
+      for (int i = -r; i <= r; ++i)
+        for (const auto& [cx, cz] : {std::pair{i, -r}, std::pair{i, r}, std::pair{-r, i}, std::pair{r, i}}) {
+          if (!inside(cx * 16 + 8, cz * 16 + 8)) continue;
+          for (int dz = -1; dz <= 1; ++dz)
+            for (int dx = -1; dx <= 1; ++dx) {
+              auto chunk = std::make_unique<Chunk>(ChunkPos{cx + dx, cz + dz});
+              gen.generate(*chunk);
+              for (int z = 0; z < 16; ++z)
+                for (int x = 0; x < 16; ++x) {
+                  const int wx = chunk->pos().minBlockX() + x, wz = chunk->pos().minBlockZ() + z;
+                  if (gen.biomeAt(wx, wz) != wanted) continue;
+                  const int h = gen.surfaceHeight(wx, wz);
+                  for (int y = h - 6; y <= h + 12; ++y)
+                    found[std::string(biomeName(wanted))].insert(b[chunk->get(x, y, z)].name);
+                }
+            }
+          return;
+        }
+    ADD_FAILURE() << "no " << biomeName(wanted) << " near the origin";
+  };
+  for (const Biome biome :
+       {Biome::Desert, Biome::SnowyPlains, Biome::Taiga, Biome::BirchForest, Biome::Savanna})
+    sample(biome);
+  const auto has = [&](const char* biome, const char* block) { return found[biome].contains(block); };
+  EXPECT_TRUE(has("desert", "sand") && has("desert", "sandstone") && has("desert", "dead_bush") &&
+              has("desert", "cactus"));
+  EXPECT_FALSE(has("desert", "grass_block"));
+  EXPECT_TRUE(has("snowy_plains", "snow_layer") && has("snowy_plains", "spruce_log"));
+  EXPECT_TRUE(has("taiga", "spruce_log") && has("taiga", "spruce_leaves") && has("taiga", "fern"));
+  EXPECT_TRUE(has("birch_forest", "birch_log") && has("birch_forest", "birch_leaves"));
+  EXPECT_TRUE(has("savanna", "acacia_log"));
 }
 
 TEST(TerrainGenerator, CavesOpenToTheSurfaceSomewhere) {
