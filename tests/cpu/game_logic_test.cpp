@@ -1,5 +1,5 @@
-// The game's plain-C++ parts: player physics against Minecraft's numbers, block picking, controls,
-// input scripts and settings files.
+// The game's plain-C++ parts: player physics against Minecraft's numbers, controls, input scripts
+// and settings files (block picking and placement: placement_test.cpp).
 
 #include <gtest/gtest.h>
 
@@ -11,13 +11,11 @@
 #include "core/error.h"
 #include "frame_rate.h"
 #include "input_script.h"
-#include "placement.h"
 #include "player.h"
-#include "scene/block_atlas.h"
 #include "settings.h"
 #include "support/error_of.h"
+#include "support/game_world.h"
 #include "support/world_support.h"
-#include "targeting.h"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -26,22 +24,9 @@ namespace terrasol {
 namespace {
 
 using testing::defaultBlocks;
+using testing::defaultShapes;
+using testing::flatWorld;
 using testing::scratchDir;
-
-// Loaded chunks around the origin: stone up to y = 63 (the floor's top face at y = 64).
-World flatWorld(int radius = 3) {
-  World world(defaultBlocks());
-  const BlockId stone = defaultBlocks().id("stone");
-  for (int cz = -radius; cz <= radius; ++cz)
-    for (int cx = -radius; cx <= radius; ++cx) {
-      auto chunk = std::make_unique<Chunk>(ChunkPos{cx, cz});
-      for (int z = 0; z < 16; ++z)
-        for (int x = 0; x < 16; ++x)
-          for (int y = 0; y < 64; ++y) chunk->set(x, y, z, stone);
-      world.insertChunk(std::move(chunk));
-    }
-  return world;
-}
 
 using testing::errorOf;
 
@@ -149,11 +134,6 @@ TEST(PlayerTest, WallsOneBlockHighAreNotSteppedOnto) {
   EXPECT_NEAR(p.position().y, 65.0, 1e-6) << "jumping gets on top";
 }
 
-// The default pack's shapes: slabs and stairs collide as their models are built.
-const BlockShapes& defaultShapes() {
-  static const BlockShapes shapes = defaultPackShapes(defaultBlocks());
-  return shapes;
-}
 
 TEST(PlayerTest, StepsOntoSlabsAndUpStairsWithoutJumping) {
   World world = flatWorld();
@@ -332,170 +312,6 @@ TEST(FrameRateTest, MedianOnePercentLowAndMean) {
   const FrameRateSummary one = summarizeFrames({0.020});
   EXPECT_NEAR(one.onePercentLowFps, 50.0, 1e-9) << "fewer than 100 frames: the slowest one";
   EXPECT_EQ(summarizeFrames({}).frames, 0u);
-}
-
-TEST(TargetingTest, PicksTheFirstBlockAndTheFaceWithinReach) {
-  World world = flatWorld();
-  const auto hit = targetBlock(world, {0.5, 65.62, 0.5}, {0.0, -1.0, 0.0});
-  ASSERT_TRUE(hit);
-  EXPECT_EQ(hit->block, (BlockPos{0, 63, 0}));
-  EXPECT_EQ(hit->normal, glm::ivec3(0, 1, 0));
-  EXPECT_EQ(hit->place, (BlockPos{0, 64, 0}));
-  EXPECT_FALSE(targetBlock(world, {0.5, 70.0, 0.5}, {0.0, -1.0, 0.0})) << "6 blocks is out of reach";
-  world.setBlock({0, 64, 0}, defaultBlocks().id("water"));
-  const auto throughWater = targetBlock(world, {0.5, 65.62, 0.5}, {0.0, -1.0, 0.0});
-  ASSERT_TRUE(throughWater);
-  EXPECT_EQ(throughWater->block, (BlockPos{0, 63, 0})) << "water is not targeted";
-  EXPECT_FALSE(targetBlock(world, {0.5, 65.62, 0.5}, {0.0, 0.0, 0.0})) << "no direction, no target";
-}
-
-// Minecraft's placement rules: slabs by the clicked face and height, two slabs joined into one double
-// slab, stairs facing the way the player looks and upside down against a ceiling or a side's upper half.
-TEST(PlacementTest, SlabsAndStairsTakeTheirStateFromWhereAndHowTheyArePlaced) {
-  World world = flatWorld();
-  const BlockRegistry& b = defaultBlocks();
-  const BlockId slab = b.id("stone_slab"), stairs = b.id("oak_stairs");
-  const Target floor{{0, 63, 0}, {0, 1, 0}, {0, 64, 0}, 1.0};
-  const glm::dvec3 south(0.0, -0.5, 1.0), west(-1.0, -0.2, 0.1);
-  const auto one = [&](const std::vector<Placement>& cells) {
-    EXPECT_EQ(cells.size(), 1u);
-    return cells.empty() ? Placement{} : cells[0];
-  };
-  const auto name = [&](const std::vector<Placement>& cells) { return b.stateName(one(cells).state); };
-  EXPECT_EQ(name(placementOf(world, slab, floor, floor.place, {0.5, 64.0, 0.5}, south)), "stone_slab[type=bottom]");
-  // On a wall's side, above or below its middle.
-  const Target side{{0, 64, 3}, {0, 0, -1}, {0, 64, 2}, 2.0};
-  EXPECT_EQ(name(placementOf(world, slab, side, side.place, {0.5, 64.7, 3.0}, south)), "stone_slab[type=top]");
-  EXPECT_EQ(name(placementOf(world, slab, side, side.place, {0.5, 64.3, 3.0}, south)), "stone_slab[type=bottom]");
-  // Against a ceiling.
-  const Target ceiling{{0, 70, 0}, {0, -1, 0}, {0, 69, 0}, 2.0};
-  EXPECT_EQ(name(placementOf(world, slab, ceiling, ceiling.place, {0.5, 70.0, 0.5}, south)), "stone_slab[type=top]");
-  EXPECT_EQ(name(placementOf(world, stairs, ceiling, ceiling.place, {0.5, 70.0, 0.5}, south)),
-            "oak_stairs[facing=south,half=top,shape=straight]");
-  // Clicking a bottom slab's top joins them where it is; its side does not.
-  world.setBlock({0, 64, 0}, slab);
-  const Target onSlab{{0, 64, 0}, {0, 1, 0}, {0, 65, 0}, 1.0};
-  const Placement joined = one(placementOf(world, slab, onSlab, onSlab.place, {0.5, 64.5, 0.5}, south));
-  EXPECT_EQ(joined.at, (BlockPos{0, 64, 0}));
-  EXPECT_EQ(b.stateName(joined.state), "stone_slab[type=double]");
-  const Target slabSide{{0, 64, 0}, {0, 0, 1}, {0, 64, 1}, 1.0};
-  EXPECT_EQ(one(placementOf(world, slab, slabSide, slabSide.place, {0.5, 64.2, 1.0}, south)).at, (BlockPos{0, 64, 1}));
-  // Stairs face the way the player looks.
-  EXPECT_EQ(name(placementOf(world, stairs, floor, floor.place, {0.5, 64.0, 0.5}, south)),
-            "oak_stairs[facing=south,half=bottom,shape=straight]");
-  EXPECT_EQ(name(placementOf(world, stairs, floor, floor.place, {0.5, 64.0, 0.5}, west)),
-            "oak_stairs[facing=west,half=bottom,shape=straight]");
-  // A block without a placement rule keeps its state.
-  EXPECT_EQ(one(placementOf(world, b.id("stone"), side, side.place, {0.5, 64.7, 3.0}, south)).state, b.id("stone"));
-}
-
-// The other rules: logs along the clicked face's axis, furnaces facing the player, snow piling up,
-// ladders and wall torches only on a wall's side, trapdoors on a side's half, doors in two cells
-// with the hinge away from a wall beside them.
-TEST(PlacementTest, EveryRuleOfThePack) {
-  World world = flatWorld();
-  world.setShapes(&defaultShapes());
-  const BlockRegistry& b = defaultBlocks();
-  const glm::dvec3 south(0.0, -0.5, 1.0);
-  const auto names = [&](const std::vector<Placement>& cells) {
-    std::string out;
-    for (const Placement& p : cells) {
-      if (!out.empty()) out += ' ';
-      out += b.stateName(p.state);
-    }
-    return out;
-  };
-  const Target floor{{0, 63, 0}, {0, 1, 0}, {0, 64, 0}, 1.0};
-  const Target wallSide{{0, 64, 3}, {0, 0, -1}, {0, 64, 2}, 2.0};  // the north side of stone at z 3
-  world.setBlock({0, 64, 3}, b.id("stone"));
-  const auto place = [&](const char* block, const Target& t, glm::dvec3 hit) {
-    return names(placementOf(world, b.id(block), t, t.place, hit, south));
-  };
-  EXPECT_EQ(place("oak_log", floor, {0.5, 64.0, 0.5}), "oak_log[axis=y]");
-  EXPECT_EQ(place("oak_log", wallSide, {0.5, 64.5, 3.0}), "oak_log[axis=z]");
-  EXPECT_EQ(place("furnace", floor, {0.5, 64.0, 0.5}), "furnace[facing=north]") << "its front to the player";
-  EXPECT_EQ(place("oak_fence_gate", floor, {0.5, 64.0, 0.5}), "oak_fence_gate[facing=south,open=false]");
-  EXPECT_EQ(place("ladder", wallSide, {0.5, 64.5, 3.0}), "ladder[facing=north]");
-  EXPECT_EQ(place("ladder", floor, {0.5, 64.0, 0.5}), "") << "not on a floor";
-  EXPECT_EQ(place("torch", wallSide, {0.5, 64.5, 3.0}), "wall_torch[facing=north]");
-  EXPECT_EQ(place("torch", floor, {0.5, 64.0, 0.5}), "torch");
-  EXPECT_EQ(place("oak_trapdoor", wallSide, {0.5, 64.8, 3.0}), "oak_trapdoor[facing=north,half=top,open=false]");
-  EXPECT_EQ(place("oak_trapdoor", floor, {0.5, 64.0, 0.5}), "oak_trapdoor[facing=north,half=bottom,open=false]");
-  world.setBlock({0, 64, 0}, b.id("snow_layer"));
-  const Target onSnow{{0, 64, 0}, {0, 1, 0}, {0, 65, 0}, 1.0};
-  EXPECT_EQ(place("snow_layer", onSnow, {0.5, 64.125, 0.5}), "snow_layer[layers=2]");
-  // A door facing south: its left is east, as Minecraft turns south anticlockwise. Its hinge goes
-  // against a wall beside it, and away from a door it pairs with.
-  const Target ground{{5, 63, 5}, {0, 1, 0}, {5, 64, 5}, 1.0};
-  const auto hinge = [&] {
-    const std::string both = place("oak_door", ground, {5.5, 64.0, 5.5});
-    const auto at = both.find("hinge=");
-    return both.substr(at + 6, both.find(',', at) - at - 6);
-  };
-  world.setBlock({6, 64, 5}, b.id("stone"));
-  EXPECT_EQ(place("oak_door", ground, {5.5, 64.0, 5.5}),
-            "oak_door[facing=south,half=lower,hinge=left,open=false] oak_door[facing=south,half=upper,hinge=left,open=false]");
-  world.setBlock({6, 64, 5}, kAir);
-  world.setBlock({4, 64, 5}, b.id("stone"));
-  EXPECT_EQ(hinge(), "right") << "stone on its right (west)";
-  world.setBlock({4, 64, 5}, b.id("oak_door[facing=south,half=lower,hinge=left]"));
-  EXPECT_EQ(hinge(), "left") << "a door on its right: the pair's hinges on the outer sides";
-  world.setBlock({4, 64, 5}, kAir);
-  EXPECT_EQ(hinge(), "left") << "alone, clicked on the cell's west half (x 0.5 counts as the left)";
-}
-
-// Right-clicking a door opens both its halves, a gate opened from its far side turns to swing away,
-// breaking either half of a door takes both, and other blocks are not used.
-TEST(PlacementTest, DoorsGatesAndTrapdoorsOpenAndClose) {
-  World world = flatWorld();
-  const BlockRegistry& b = defaultBlocks();
-  world.setBlock({0, 64, 0}, b.id("oak_door[facing=south,half=lower]"));
-  world.setBlock({0, 65, 0}, b.id("oak_door[facing=south,half=upper]"));
-  const auto used = useOf(world, {0, 65, 0}, {0.0, 0.0, 1.0});
-  ASSERT_EQ(used.size(), 2u);
-  EXPECT_EQ(b.stateName(used[0].state), "oak_door[facing=south,half=upper,hinge=left,open=true]");
-  EXPECT_EQ(used[1].at, (BlockPos{0, 64, 0}));
-  EXPECT_EQ(b.stateName(used[1].state), "oak_door[facing=south,half=lower,hinge=left,open=true]");
-  EXPECT_EQ(brokenBy(world, {0, 64, 0}).size(), 2u);
-  world.setBlock({3, 64, 0}, b.id("oak_fence_gate[facing=south]"));
-  const auto gate = useOf(world, {3, 64, 0}, {0.0, 0.0, -1.0});
-  ASSERT_EQ(gate.size(), 1u);
-  EXPECT_EQ(b.stateName(gate[0].state), "oak_fence_gate[facing=north,open=true]") << "opened from the south";
-  world.setBlock({5, 64, 0}, b.id("oak_trapdoor"));
-  EXPECT_EQ(b.stateName(useOf(world, {5, 64, 0}, {0.0, 0.0, 1.0}).at(0).state),
-            "oak_trapdoor[facing=north,half=bottom,open=true]");
-  EXPECT_TRUE(useOf(world, {0, 63, 0}, {0.0, 0.0, 1.0}).empty()) << "stone does not open";
-  // Picking gives the block's default state, a torch for a wall torch.
-  EXPECT_EQ(pickedBy(world, {0, 65, 0}), b.id("oak_door"));
-  world.setBlock({7, 64, 0}, b.id("wall_torch[facing=west]"));
-  EXPECT_EQ(pickedBy(world, {7, 64, 0}), b.id("torch"));
-  EXPECT_EQ(brokenBy(world, {0, 63, 0}).size(), 1u);
-}
-
-// A shaped block is hit where the ray meets its boxes: a ray over a bottom slab's open half goes on
-// to what lies behind, one onto its top hits it there, and the outline is the slab's, not the cell's.
-TEST(TargetingTest, ShapedBlocksAreHitByTheirBoxesAndOutlinedByThem) {
-  World world = flatWorld();
-  world.setShapes(&defaultShapes());
-  world.setBlock({0, 64, 2}, defaultBlocks().id("stone_slab"));
-  world.setBlock({0, 64, 4}, defaultBlocks().id("stone"));
-  const auto over = targetBlock(world, {0.5, 64.75, 0.5}, {0.0, 0.0, 1.0});
-  ASSERT_TRUE(over);
-  EXPECT_EQ(over->block, (BlockPos{0, 64, 4})) << "over the slab's open upper half";
-  const auto onto = targetBlock(world, {0.5, 64.25, 0.5}, {0.0, 0.0, 1.0});
-  ASSERT_TRUE(onto);
-  EXPECT_EQ(onto->block, (BlockPos{0, 64, 2}));
-  EXPECT_EQ(onto->normal, glm::ivec3(0, 0, -1));
-  EXPECT_NEAR(onto->distance, 1.5, 1e-9);
-  const auto down = targetBlock(world, {0.5, 66.0, 2.5}, {0.0, -1.0, 0.0});
-  ASSERT_TRUE(down);
-  EXPECT_EQ(down->block, (BlockPos{0, 64, 2}));
-  EXPECT_EQ(down->normal, glm::ivec3(0, 1, 0));
-  EXPECT_NEAR(down->distance, 1.5, 1e-9) << "its top is at 64.5";
-  const WorldBox outline = outlineOf(world, {0, 64, 2});
-  EXPECT_EQ(outline.min, glm::dvec3(0.0, 64.0, 2.0));
-  EXPECT_EQ(outline.max, glm::dvec3(1.0, 64.5, 3.0));
-  EXPECT_EQ(outlineOf(world, {0, 64, 4}).max, glm::dvec3(1.0, 65.0, 5.0));
 }
 
 TEST(ControlsTest, PressesCountOnceAndHoldsCarryOver) {

@@ -11,6 +11,7 @@
 #include "light/level_words.h"
 #include "light/light_engine.h"
 #include "light/light_frame.h"
+#include "support/lit_world.h"
 #include "support/reference_light.h"
 #include "support/world_support.h"
 #include "world/chunk_streamer.h"
@@ -21,41 +22,8 @@ namespace {
 
 using testing::compareWithReference;
 using testing::defaultBlocks;
-using testing::handShapes;
+using testing::LitWorld;
 
-// A world with light, loaded and edited the way the game does it.
-struct LitWorld {
-  explicit LitWorld(const std::string& generator, const std::string& layers = "")
-      : world(defaultBlocks(), &handShapes()), light(world) {
-    GeneratorSettings settings{generator, 1, {}};
-    if (!layers.empty()) settings.flatLayers = parseFlatLayers(layers, defaultBlocks());
-    gen = makeGenerator(settings, defaultBlocks());
-  }
-  void load(ChunkPos pos) {
-    auto chunk = std::make_unique<Chunk>(pos);
-    gen->generate(*chunk);
-    world.insertChunk(std::move(chunk));
-    light.chunkLoaded(pos);
-  }
-  void loadArea(int x0, int z0, int x1, int z1) {
-    for (int z = z0; z <= z1; ++z)
-      for (int x = x0; x <= x1; ++x) load({x, z});
-  }
-  void set(const BlockPos& p, const char* block) {
-    if (const auto change = world.setBlock(p, defaultBlocks().id(block))) light.blockChanged(*change);
-  }
-  void fill(BlockPos a, BlockPos b, const char* block) {
-    for (int y = a.y; y <= b.y; ++y)
-      for (int z = a.z; z <= b.z; ++z)
-        for (int x = a.x; x <= b.x; ++x) set({x, y, z}, block);
-  }
-  int block(const BlockPos& p) const { return light.lightAt(p, LightChannel::Block); }
-  int sky(const BlockPos& p) const { return light.lightAt(p, LightChannel::Sky); }
-
-  World world;
-  LightEngine light;
-  std::unique_ptr<ChunkGenerator> gen;
-};
 
 int manhattan(const BlockPos& a, const BlockPos& b) {
   return std::abs(a.x - b.x) + std::abs(a.y - b.y) + std::abs(a.z - b.z);
@@ -162,64 +130,6 @@ TEST(Light, GlowstoneInAClosedRoomStaysInside) {
   EXPECT_EQ(w.sky({0, 72, 0}), 0) << "a closed room has no sky light";
   EXPECT_EQ(w.sky({0, 77, 0}), 15);
   EXPECT_EQ(compareWithReference(w.world), "");
-}
-
-// Vanilla's useShapeForLightOcclusion: light does not cross a side a slab's or stair's shape covers
-// whole, in or out, and crosses every other. A closed stone room in the void gets one block of its
-// roof or its north wall replaced; a torch stands two blocks north of the wall.
-TEST(Light, ShapedBlocksStopLightAtTheSidesTheyCoverWhole) {
-  struct Room : LitWorld {
-    Room(const char* roof, const char* window) : LitWorld("void") {
-      loadArea(-1, -1, 1, 1);
-      fill({0, 70, 0}, {6, 74, 6}, "stone");
-      fill({1, 71, 1}, {5, 73, 5}, "air");
-      set({3, 74, 3}, roof);
-      set({3, 72, 0}, window);
-      set({3, 72, -2}, "torch");
-      EXPECT_EQ(compareWithReference(world), "") << roof << ", " << window;
-    }
-  };
-  const BlockPos roof{3, 74, 3}, belowRoof{3, 73, 3}, window{3, 72, 0}, inside{3, 72, 1};
-  {
-    const Room glass("glass", "glass");
-    EXPECT_EQ(glass.sky(belowRoof), 15) << "glass: the open sky column goes through";
-    EXPECT_EQ(glass.block(inside), 14 - 3);
-  }
-  {
-    const Room roofSlab("stone_slab", "stone");
-    EXPECT_EQ(roofSlab.sky(roof), 14) << "a bottom slab lets sky light in through its open top";
-    EXPECT_EQ(roofSlab.sky(belowRoof), 0) << "but not out through its bottom";
-    const Room windowSlab("stone", "stone_slab");
-    EXPECT_EQ(windowSlab.block(window), 14 - 2) << "its sides are half open: torch light passes";
-    EXPECT_EQ(windowSlab.block(inside), 14 - 3);
-    EXPECT_EQ(windowSlab.sky(belowRoof), 15 - 1 - 1 - 3) << "and sky light, sideways into the room";
-    // Vanilla tests the two sides together: a bottom slab's lower half and a top slab's upper half
-    // close the side between them; two bottom slabs leave its upper half open.
-    Room halves("stone", "stone_slab");
-    halves.set(inside, "stone_slab[type=top]");
-    EXPECT_EQ(halves.block(window), 14 - 2);
-    EXPECT_EQ(halves.block(inside), 0) << "a top slab behind a bottom slab";
-    EXPECT_EQ(halves.block({3, 72, 2}), 0);
-    EXPECT_EQ(compareWithReference(halves.world), "");
-    halves.set(inside, "stone_slab");
-    EXPECT_EQ(halves.block(inside), 14 - 3) << "two bottom slabs";
-    EXPECT_EQ(compareWithReference(halves.world), "");
-  }
-  {
-    const Room top("stone_slab[type=top]", "stone_slab[type=double]");
-    EXPECT_EQ(top.sky(roof), 0) << "a top slab's covered top keeps sky light out of it";
-    EXPECT_EQ(top.sky(belowRoof), 0);
-    EXPECT_EQ(top.block(window), 0) << "a double slab is closed on every side";
-    EXPECT_EQ(top.block(inside), 0);
-  }
-  {
-    const Room back("stone", "oak_stairs[facing=north]");
-    EXPECT_EQ(back.block(window), 0) << "stairs facing the torch turn their closed back to it";
-    EXPECT_EQ(back.block(inside), 0);
-    const Room side("stone", "oak_stairs[facing=east]");
-    EXPECT_EQ(side.block(window), 14 - 2) << "stairs facing east: their north and south sides are L-shaped";
-    EXPECT_EQ(side.block(inside), 14 - 3);
-  }
 }
 
 TEST(Light, A100BlockShaftFillsWithSkyAndEmptiesWhenCapped) {
@@ -385,23 +295,6 @@ TEST(Light, RelightingASectionFromDarknessOrFromLightThatIsGoneMatchesAFullRecom
     w.light.relightSection({0, sectionOf(at.y), 0});
     ASSERT_EQ(compareWithReference(w.world), "") << "after removing the torch at " << at.x << " " << at.y << " " << at.z;
   }
-}
-
-// A glass window swapped for a double slab (closed on every side) without the light engine hearing of
-// it: relighting its section takes the light out of the room behind it.
-TEST(Light, RelightingASectionKnowsItsShapedBlocks) {
-  LitWorld w("void");
-  w.loadArea(-1, -1, 1, 1);
-  w.fill({0, 70, 0}, {6, 74, 6}, "stone");
-  w.fill({1, 71, 1}, {5, 73, 5}, "air");
-  w.set({3, 72, 0}, "glass");
-  w.set({3, 72, -2}, "torch");
-  ASSERT_EQ(w.block({3, 72, 1}), 11);
-  ASSERT_TRUE(w.world.setBlock({3, 72, 0}, defaultBlocks().id("stone_slab[type=double]")));
-  w.light.relightSection({0, sectionOf(72), 0});
-  EXPECT_EQ(w.block({3, 72, 1}), 0);
-  EXPECT_EQ(w.sky({3, 72, 1}), 0);
-  EXPECT_EQ(compareWithReference(w.world), "");
 }
 
 TEST(Light, ByteWordsCompareEveryPairOfLevels) {
