@@ -93,16 +93,8 @@ void Game::useBlocks(const FrameInput& in, double dt) {
 
 bool Game::blocksPlayer(const BlockPos& at, BlockId state) const {
   const Box body = player_.box();
-  const auto overlaps = [&](glm::dvec3 lo, glm::dvec3 hi) {
-    return body.min.x < hi.x && body.max.x > lo.x && body.min.y < hi.y && body.max.y > lo.y &&
-           body.min.z < hi.z && body.max.z > lo.z;
-  };
-  const glm::dvec3 corner(at.x, at.y, at.z);
-  for (const ShapeBox& b : shapes_.collision(state)) {
-    if (overlaps(corner + glm::dvec3(b.from[0], b.from[1], b.from[2]) / 16.0,
-                 corner + glm::dvec3(b.to[0], b.to[1], b.to[2]) / 16.0)) {
-      return true;
-    }
+  for (const Box& b : collisionBoxes(shapes_, state, at)) {
+    if (overlaps(b, body)) return true;
   }
   return false;
 }

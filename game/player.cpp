@@ -2,11 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <vector>
-
 #include <glm/geometric.hpp>
-#include <glm/vec2.hpp>
 #include <glm/trigonometric.hpp>
+#include <glm/vec2.hpp>
+#include <vector>
 
 #include "world/liquid.h"
 
@@ -22,7 +21,7 @@ constexpr double kJumpVelocity = 0.42, kSprintJumpBoost = 0.2;
 constexpr double kWaterSink = 0.08 / 16.0, kSwimUp = 0.04;
 constexpr double kSneakFactor = 0.3, kInputScale = 0.98;
 constexpr double kEdgeProbe = 0.6, kEdgeStep = 0.05;  // sneaking: how far down ground must be; back-off step
-constexpr double kStepHeight = 0.6;  // walked up without jumping (a slab, a stair)
+constexpr double kStepHeight = 0.6;                   // walked up without jumping (a slab, a stair)
 // A tick's move is capped on each axis so the block boxes gathered for it stay few; far above any
 // speed the rules reach (falling tops out near 3.9 blocks a tick).
 constexpr double kMaxMove = 32.0;
@@ -40,7 +39,9 @@ bool anyCell(const Box& box, F&& f) {
   return false;
 }
 
-Box shifted(const Box& b, glm::dvec3 d) { return {b.min + d, b.max + d}; }
+Box shifted(const Box& b, glm::dvec3 d) {
+  return {b.min + d, b.max + d};
+}
 
 // The box grown to cover its whole move.
 Box swept(const Box& b, glm::dvec3 d) {
@@ -60,20 +61,11 @@ std::vector<Box> solidBoxes(const World& world, const Box& region) {
       if (isSolid(world, p)) boxes.push_back({corner, corner + glm::dvec3(1.0)});
       return false;
     }
-    for (const ShapeBox& b : shapes->collision(world.getBlock(p))) {
-      boxes.push_back({corner + glm::dvec3(b.from[0], b.from[1], b.from[2]) / 16.0,
-                       corner + glm::dvec3(b.to[0], b.to[1], b.to[2]) / 16.0});
-    }
+    const std::vector<Box> cell = collisionBoxes(*shapes, world.getBlock(p), p);
+    boxes.insert(boxes.end(), cell.begin(), cell.end());
     return false;
   });
   return boxes;
-}
-
-bool overlaps(const Box& a, const Box& b) {
-  for (int i = 0; i < 3; ++i) {
-    if (a.max[i] <= b.min[i] + kEpsilon || a.min[i] >= b.max[i] - kEpsilon) return false;
-  }
-  return true;
 }
 
 // How far `box` can go along `axis` (wanting `d`) before touching one of `boxes`. Boxes it already
@@ -90,6 +82,23 @@ double clip(const std::vector<Box>& boxes, const Box& box, int axis, double d) {
 }
 
 }  // namespace
+
+bool overlaps(const Box& a, const Box& b) {
+  for (int i = 0; i < 3; ++i) {
+    if (a.max[i] <= b.min[i] + kEpsilon || a.min[i] >= b.max[i] - kEpsilon) return false;
+  }
+  return true;
+}
+
+std::vector<Box> collisionBoxes(const BlockShapes& shapes, BlockId state, const BlockPos& at) {
+  std::vector<Box> boxes;
+  const glm::dvec3 corner(at.x, at.y, at.z);
+  for (const ShapeBox& b : shapes.collision(state)) {
+    boxes.push_back({corner + glm::dvec3(b.from[0], b.from[1], b.from[2]) / 16.0,
+                     corner + glm::dvec3(b.to[0], b.to[1], b.to[2]) / 16.0});
+  }
+  return boxes;
+}
 
 bool isSolid(const World& world, const BlockPos& pos) {
   if (!inWorldHeight(pos.y)) return false;
@@ -155,7 +164,8 @@ void Player::tick(const World& world, const MoveInput& input) {
   in *= kInputScale * (sneaking_ ? kSneakFactor : 1.0);
   if (glm::dot(in, in) > 1.0) in = glm::normalize(in);
   const double yawRad = glm::radians(double(yaw));
-  const glm::dvec3 ahead(-std::sin(yawRad), 0.0, std::cos(yawRad)), right(-std::cos(yawRad), 0.0, -std::sin(yawRad));
+  const glm::dvec3 ahead(-std::sin(yawRad), 0.0, std::cos(yawRad)),
+      right(-std::cos(yawRad), 0.0, -std::sin(yawRad));
   const auto accelerate = [&](double speed) { velocity_ += (ahead * in.y + right * in.x) * speed; };
   const double sprint = sprinting_ ? kSprintBoost : 1.0;
 

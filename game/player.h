@@ -73,5 +73,9 @@ class Player {
 bool isSolid(const World& world, const BlockPos& pos);
 // Whether the box touches any solid cell (cells of unloaded chunks count as solid).
 bool collides(const World& world, const Box& box);
+// A state's collision boxes (BlockShapes::collision) as world boxes, were it in cell `at`.
+std::vector<Box> collisionBoxes(const BlockShapes& shapes, BlockId state, const BlockPos& at);
+// Whether two boxes overlap by more than a hair.
+bool overlaps(const Box& a, const Box& b);
 
 }  // namespace terrasol

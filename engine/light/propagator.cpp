@@ -176,7 +176,7 @@ void Propagator::runIncrease() {
       // A section with shaped blocks: light does not leave a cell through a side covered whole.
       ++shapedReads;
       const BlockId self = own.block(index);
-      if (faces_.shaped(self)) {
+      if (attenuation_[self] & kShaped) {
         from = &faces_.faces[self * 6u];
         directions &= ~static_cast<unsigned>(faces_.full[self]);
         inSection &= static_cast<std::uint8_t>(~kInterior);

@@ -12,9 +12,9 @@ Texel clear() {
   return t;
 }
 
-// Oak boards running up the texture, for doors and trapdoors.
-Texel verticalBoards(int x, int y) {
-  Texel t = planks(y, x);
+// Boards running up the texture, for doors and trapdoors.
+Texel verticalBoards(int x, int y, glm::vec3 wood) {
+  Texel t = planksOf(y, x, wood);
   t.color *= 0.95f;
   return t;
 }
@@ -29,30 +29,38 @@ Texel ladder(int x, int y) {
   return t;
 }
 
-bool doorFrame(int x, int y) { return x <= 1 || x >= 14 || y <= 1 || y >= 14; }
+bool doorFrame(int x, int y) {
+  return x <= 1 || x >= 14 || y <= 1 || y >= 14;
+}
 
-Texel doorBottom(int x, int y) {
-  Texel t = verticalBoards(x, y);
+}  // namespace
+
+Texel doorBottom(int x, int y, glm::vec3 wood) {
+  Texel t = verticalBoards(x, y, wood);
   if (doorFrame(x, y)) t.color *= 0.8f, t.height = 1.0f;
-  if (!doorFrame(x, y) && (x == 7 || x == 8) && y > 3 && y < 12) t.color *= 0.7f, t.height = 0.6f;  // a cross brace
+  if (!doorFrame(x, y) && (x == 7 || x == 8) && y > 3 && y < 12)
+    t.color *= 0.7f, t.height = 0.6f;  // a cross brace
   return t;
 }
 
-Texel doorTop(int x, int y) {
+Texel doorTop(int x, int y, glm::vec3 wood) {
   const bool window = y >= 3 && y <= 7 && ((x >= 3 && x <= 6) || (x >= 9 && x <= 12));
   if (window) return clear();
-  Texel t = verticalBoards(x, y);
+  Texel t = verticalBoards(x, y, wood);
   if (doorFrame(x, y) || x == 7 || x == 8 || y == 8) t.color *= 0.8f, t.height = 1.0f;
   return t;
 }
 
-Texel trapdoor(int x, int y) {
-  const bool hole = ((x >= 3 && x <= 6) || (x >= 9 && x <= 12)) && ((y >= 3 && y <= 6) || (y >= 9 && y <= 12));
+Texel trapdoor(int x, int y, glm::vec3 wood) {
+  const bool hole =
+      ((x >= 3 && x <= 6) || (x >= 9 && x <= 12)) && ((y >= 3 && y <= 6) || (y >= 9 && y <= 12));
   if (hole) return clear();
-  Texel t = verticalBoards(x, y);
+  Texel t = verticalBoards(x, y, wood);
   if (doorFrame(x, y)) t.color *= 0.8f, t.height = 1.0f;
   return t;
 }
+
+namespace {
 
 Texel paneEdge(int x, int y) {
   Texel t = glass(0, y);  // the glass's frame colour, along the pane's edge
@@ -104,9 +112,10 @@ Texel pathTop(int x, int y) {
 
 void addCraftedTextures(std::vector<GeneratedTexture>& out) {
   out.push_back(still("ladder", ladder));
-  out.push_back(still("oak_door_bottom", doorBottom));
-  out.push_back(still("oak_door_top", doorTop));
-  out.push_back(still("oak_trapdoor", trapdoor));
+  const glm::vec3 oak = rgb(162, 130, 78);  // planks()'s
+  out.push_back(still("oak_door_bottom", [oak](int x, int y) { return doorBottom(x, y, oak); }));
+  out.push_back(still("oak_door_top", [oak](int x, int y) { return doorTop(x, y, oak); }));
+  out.push_back(still("oak_trapdoor", [oak](int x, int y) { return trapdoor(x, y, oak); }));
   out.push_back(still("glass_pane_top", paneEdge));
   out.push_back(still("furnace_front", furnaceFront));
   out.push_back(still("furnace_side", casing));

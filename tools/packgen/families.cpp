@@ -13,7 +13,8 @@ namespace {
 // A rock's colour with a second mineral speckled through it (granite, diorite).
 Texel speckled(int x, int y, std::uint64_t seed, glm::vec3 base, glm::vec3 speck, float amount) {
   Texel t = rock(seed, x, y, base, 0.12f);
-  if (hash01(seed + 7, x, y) < amount) t.color = speck * (0.85f + 0.3f * hash01(seed + 8, x, y)), t.height = 0.9f;
+  if (hash01(seed + 7, x, y) < amount)
+    t.color = speck * (0.85f + 0.3f * hash01(seed + 8, x, y)), t.height = 0.9f;
   return t;
 }
 
@@ -83,7 +84,8 @@ Texel sandstoneSide(int x, int y, glm::vec3 colour) {
 }
 
 Texel wool(int x, int y, glm::vec3 colour) {
-  const float fibre = tileNoise(201, x * 1.0f, y * 2.0f, 8) * 0.6f + fbm(202, static_cast<float>(x), static_cast<float>(y)) * 0.4f;
+  const float fibre = tileNoise(201, x * 1.0f, y * 2.0f, 8) * 0.6f +
+                      fbm(202, static_cast<float>(x), static_cast<float>(y)) * 0.4f;
   Texel t;
   t.color = colour * (0.86f + 0.16f * fibre);
   t.height = 0.5f + 0.5f * fibre;
@@ -91,7 +93,9 @@ Texel wool(int x, int y, glm::vec3 colour) {
   t.porosity = 120;
   return t;
 }
-Texel concrete(int x, int y, glm::vec3 colour) { return smooth(x, y, 411, colour, 0.03f, 120); }
+Texel concrete(int x, int y, glm::vec3 colour) {
+  return smooth(x, y, 411, colour, 0.03f, 120);
+}
 Texel terracotta(int x, int y, glm::vec3 colour) {
   Texel t = rock(421, x, y, colour, 0.08f);
   t.smoothness = 60;
@@ -112,51 +116,44 @@ struct Wood {
   std::uint64_t leafSeed;
 };
 
-Texel door(int x, int y, glm::vec3 planks, bool top) {
-  const bool frame = x <= 1 || x >= 14 || y <= 1 || y >= 14;
-  if (top && y >= 3 && y <= 7 && ((x >= 3 && x <= 6) || (x >= 9 && x <= 12))) {
-    Texel t;
-    t.alpha = 0.0f;
-    return t;
-  }
-  Texel t = planksOf(y, x, planks);
-  if (frame || (top && (x == 7 || x == 8 || y == 8))) t.color *= 0.8f, t.height = 1.0f;
-  return t;
-}
-
-Texel trapdoor(int x, int y, glm::vec3 planks) {
-  if (((x >= 3 && x <= 6) || (x >= 9 && x <= 12)) && ((y >= 3 && y <= 6) || (y >= 9 && y <= 12))) {
-    Texel t;
-    t.alpha = 0.0f;
-    return t;
-  }
-  Texel t = planksOf(y, x, planks);
-  if (x <= 1 || x >= 14 || y <= 1 || y >= 14) t.color *= 0.8f, t.height = 1.0f;
-  return t;
-}
-
 void addWood(std::vector<GeneratedTexture>& out, const Wood& w) {
   const std::string n = w.name;
   out.push_back(still(n + "_planks", [w](int x, int y) { return planksOf(x, y, w.planks); }));
   out.push_back(still(n + "_log", [w](int x, int y) { return logSideOf(x, y, w.bark); }));
   out.push_back(still(n + "_log_top", [w](int x, int y) { return logTopOf(x, y, w.bark, w.core); }));
-  out.push_back(still("stripped_" + n + "_log", [w](int x, int y) { return logSideOf(x, y, w.core * 0.85f); }));
-  out.push_back(still("stripped_" + n + "_log_top", [w](int x, int y) { return logTopOf(x, y, w.core * 0.85f, w.core); }));
+  out.push_back(
+      still("stripped_" + n + "_log", [w](int x, int y) { return logSideOf(x, y, w.core * 0.85f); }));
+  out.push_back(still("stripped_" + n + "_log_top",
+                      [w](int x, int y) { return logTopOf(x, y, w.core * 0.85f, w.core); }));
   out.push_back(still(n + "_leaves", [w](int x, int y) { return leavesOf(x, y, w.leafSeed); }));
-  out.push_back(still(n + "_door_bottom", [w](int x, int y) { return door(x, y, w.planks, false); }));
-  out.push_back(still(n + "_door_top", [w](int x, int y) { return door(x, y, w.planks, true); }));
+  out.push_back(still(n + "_door_bottom", [w](int x, int y) { return doorBottom(x, y, w.planks); }));
+  out.push_back(still(n + "_door_top", [w](int x, int y) { return doorTop(x, y, w.planks); }));
   out.push_back(still(n + "_trapdoor", [w](int x, int y) { return trapdoor(x, y, w.planks); }));
 }
 
 // Minecraft's sixteen dye colours, in its order.
 constexpr std::array<std::pair<const char*, std::array<int, 3>>, 16> kDyes = {{
-    {"white", {233, 236, 236}},    {"orange", {240, 118, 19}}, {"magenta", {189, 68, 179}}, {"light_blue", {58, 175, 217}},
-    {"yellow", {248, 197, 39}},    {"lime", {112, 185, 25}},   {"pink", {237, 141, 172}},   {"gray", {62, 68, 71}},
-    {"light_gray", {142, 142, 134}}, {"cyan", {21, 137, 145}}, {"purple", {121, 42, 172}},  {"blue", {53, 57, 157}},
-    {"brown", {114, 71, 40}},      {"green", {84, 109, 27}},   {"red", {160, 39, 34}},      {"black", {20, 21, 25}},
+    {"white", {233, 236, 236}},
+    {"orange", {240, 118, 19}},
+    {"magenta", {189, 68, 179}},
+    {"light_blue", {58, 175, 217}},
+    {"yellow", {248, 197, 39}},
+    {"lime", {112, 185, 25}},
+    {"pink", {237, 141, 172}},
+    {"gray", {62, 68, 71}},
+    {"light_gray", {142, 142, 134}},
+    {"cyan", {21, 137, 145}},
+    {"purple", {121, 42, 172}},
+    {"blue", {53, 57, 157}},
+    {"brown", {114, 71, 40}},
+    {"green", {84, 109, 27}},
+    {"red", {160, 39, 34}},
+    {"black", {20, 21, 25}},
 }};
 
-glm::vec3 dye(std::size_t i) { return rgb(kDyes[i].second[0], kDyes[i].second[1], kDyes[i].second[2]); }
+glm::vec3 dye(std::size_t i) {
+  return rgb(kDyes[i].second[0], kDyes[i].second[1], kDyes[i].second[2]);
+}
 
 Texel bookshelf(int x, int y) {
   if (y <= 1 || y >= 14 || y == 7 || y == 8) return planks(x, y);
@@ -214,37 +211,55 @@ void addFamilyTextures(std::vector<GeneratedTexture>& out) {
   // Stones.
   out.push_back(still("mossy_cobblestone", [](int x, int y) { return moss(cobblestone(x, y), x, y, 601); }));
   out.push_back(still("smooth_stone", [](int x, int y) { return polished(stone(x, y), x, y); }));
-  out.push_back(still("stone_bricks", [](int x, int y) { return bricks(x, y, 611, rgb(122, 122, 122), rgb(90, 90, 90), 4, 8); }));
+  out.push_back(still("stone_bricks", [](int x, int y) {
+    return bricks(x, y, 611, rgb(122, 122, 122), rgb(90, 90, 90), 4, 8);
+  }));
   out.push_back(still("cracked_stone_bricks", [](int x, int y) {
     return crack(bricks(x, y, 611, rgb(122, 122, 122), rgb(90, 90, 90), 4, 8), x, y);
   }));
   out.push_back(still("mossy_stone_bricks", [](int x, int y) {
     return moss(bricks(x, y, 611, rgb(122, 122, 122), rgb(90, 90, 90), 4, 8), x, y, 612);
   }));
-  const auto granite = [](int x, int y) { return speckled(x, y, 621, rgb(149, 103, 85), rgb(190, 150, 135), 0.25f); };
-  const auto diorite = [](int x, int y) { return speckled(x, y, 631, rgb(188, 188, 188), rgb(110, 110, 110), 0.2f); };
-  const auto andesite = [](int x, int y) { return speckled(x, y, 641, rgb(136, 136, 137), rgb(160, 160, 160), 0.15f); };
+  const auto granite = [](int x, int y) {
+    return speckled(x, y, 621, rgb(149, 103, 85), rgb(190, 150, 135), 0.25f);
+  };
+  const auto diorite = [](int x, int y) {
+    return speckled(x, y, 631, rgb(188, 188, 188), rgb(110, 110, 110), 0.2f);
+  };
+  const auto andesite = [](int x, int y) {
+    return speckled(x, y, 641, rgb(136, 136, 137), rgb(160, 160, 160), 0.15f);
+  };
   out.push_back(still("granite", granite));
   out.push_back(still("polished_granite", [granite](int x, int y) { return polished(granite(x, y), x, y); }));
   out.push_back(still("diorite", diorite));
   out.push_back(still("polished_diorite", [diorite](int x, int y) { return polished(diorite(x, y), x, y); }));
   out.push_back(still("andesite", andesite));
-  out.push_back(still("polished_andesite", [andesite](int x, int y) { return polished(andesite(x, y), x, y); }));
+  out.push_back(
+      still("polished_andesite", [andesite](int x, int y) { return polished(andesite(x, y), x, y); }));
   out.push_back(still("deepslate", deepslate));
   out.push_back(still("deepslate_top", [](int x, int y) { return rock(302, x, y, rgb(84, 84, 90), 0.2f); }));
   out.push_back(still("cobbled_deepslate", cobbledDeepslate));
   out.push_back(still("polished_deepslate", [](int x, int y) { return polished(deepslate(x, y), x, y); }));
-  out.push_back(still("tuff", [](int x, int y) { return speckled(x, y, 651, rgb(108, 109, 102), rgb(130, 125, 110), 0.2f); }));
-  out.push_back(still("calcite", [](int x, int y) { return smooth(x, y, 661, rgb(223, 224, 220), 0.05f, 110); }));
-  out.push_back(still("obsidian", [](int x, int y) { return smooth(x, y, 671, rgb(20, 18, 30), 0.4f, 220); }));
-  out.push_back(still("bricks", [](int x, int y) { return bricks(x, y, 681, rgb(150, 74, 58), rgb(170, 160, 150), 4, 8); }));
+  out.push_back(still("tuff", [](int x, int y) {
+    return speckled(x, y, 651, rgb(108, 109, 102), rgb(130, 125, 110), 0.2f);
+  }));
+  out.push_back(
+      still("calcite", [](int x, int y) { return smooth(x, y, 661, rgb(223, 224, 220), 0.05f, 110); }));
+  out.push_back(
+      still("obsidian", [](int x, int y) { return smooth(x, y, 671, rgb(20, 18, 30), 0.4f, 220); }));
+  out.push_back(still(
+      "bricks", [](int x, int y) { return bricks(x, y, 681, rgb(150, 74, 58), rgb(170, 160, 150), 4, 8); }));
   // Sand and sandstone, clay, ice.
   out.push_back(still("red_sand", [](int x, int y) { return rock(691, x, y, rgb(190, 102, 33), 0.08f); }));
   const glm::vec3 sandstone = rgb(216, 203, 155);
   out.push_back(still("sandstone", [sandstone](int x, int y) { return sandstoneSide(x, y, sandstone); }));
-  out.push_back(still("sandstone_top", [sandstone](int x, int y) { return smooth(x, y, 701, sandstone, 0.05f, 40); }));
-  out.push_back(still("sandstone_bottom", [sandstone](int x, int y) { return rock(702, x, y, sandstone, 0.1f); }));
-  out.push_back(still("cut_sandstone", [sandstone](int x, int y) { return polished(smooth(x, y, 703, sandstone, 0.05f, 40), x, y); }));
+  out.push_back(
+      still("sandstone_top", [sandstone](int x, int y) { return smooth(x, y, 701, sandstone, 0.05f, 40); }));
+  out.push_back(
+      still("sandstone_bottom", [sandstone](int x, int y) { return rock(702, x, y, sandstone, 0.1f); }));
+  out.push_back(still("cut_sandstone", [sandstone](int x, int y) {
+    return polished(smooth(x, y, 703, sandstone, 0.05f, 40), x, y);
+  }));
   out.push_back(still("clay", [](int x, int y) { return smooth(x, y, 711, rgb(160, 166, 179), 0.05f, 70); }));
   out.push_back(still("packed_ice", [](int x, int y) {
     Texel t = smooth(x, y, 721, rgb(141, 180, 250), 0.1f, 230);
@@ -267,7 +282,8 @@ void addFamilyTextures(std::vector<GeneratedTexture>& out) {
                         Wood{"dark_oak", rgb(66, 43, 20), rgb(60, 46, 26), rgb(75, 50, 25), 761}}) {
     addWood(out, w);
   }
-  out.push_back(still("stripped_oak_log", [](int x, int y) { return logSideOf(x, y, rgb(176, 143, 88) * 0.85f); }));
+  out.push_back(
+      still("stripped_oak_log", [](int x, int y) { return logSideOf(x, y, rgb(176, 143, 88) * 0.85f); }));
   out.push_back(still("stripped_oak_log_top", [](int x, int y) {
     return logTopOf(x, y, rgb(176, 143, 88) * 0.85f, rgb(176, 143, 88));
   }));
@@ -308,34 +324,48 @@ void addFamilyTextures(std::vector<GeneratedTexture>& out) {
   out.push_back(still("cornflower", [](int x, int y) { return plant(x, y, 555, rgb(70, 100, 220)); }));
   out.push_back(still("lantern", lantern));
   // Ores, in stone and in deepslate, and the metal and gem blocks.
-  out.push_back(still("deepslate_coal_ore", [](int x, int y) { return oreIn(x, y, 181, rgb(45, 45, 45), 12, deepslate); }));
-  out.push_back(still("deepslate_iron_ore", [](int x, int y) { return oreIn(x, y, 182, rgb(216, 175, 147), 230, deepslate); }));
-  out.push_back(still("deepslate_gold_ore", [](int x, int y) { return oreIn(x, y, 183, rgb(250, 220, 80), 231, deepslate); }));
-  out.push_back(still("copper_ore", [](int x, int y) { return oreIn(x, y, 184, rgb(200, 110, 75), 234, stone); }));
-  out.push_back(still("deepslate_copper_ore", [](int x, int y) { return oreIn(x, y, 184, rgb(200, 110, 75), 234, deepslate); }));
+  out.push_back(still("deepslate_coal_ore",
+                      [](int x, int y) { return oreIn(x, y, 181, rgb(45, 45, 45), 12, deepslate); }));
+  out.push_back(still("deepslate_iron_ore",
+                      [](int x, int y) { return oreIn(x, y, 182, rgb(216, 175, 147), 230, deepslate); }));
+  out.push_back(still("deepslate_gold_ore",
+                      [](int x, int y) { return oreIn(x, y, 183, rgb(250, 220, 80), 231, deepslate); }));
+  out.push_back(
+      still("copper_ore", [](int x, int y) { return oreIn(x, y, 184, rgb(200, 110, 75), 234, stone); }));
+  out.push_back(still("deepslate_copper_ore",
+                      [](int x, int y) { return oreIn(x, y, 184, rgb(200, 110, 75), 234, deepslate); }));
   // Gems are dielectrics: very smooth, with their own F0 (diamond n 2.42: 0.17; emerald n 1.58: 0.05).
   const auto gem = [](int x, int y, std::uint64_t seed, glm::vec3 colour, int f0, Texel (*ground)(int, int)) {
     Texel t = oreIn(x, y, seed, colour, f0, ground);
     if (t.height == 1.0f && t.porosity == 0) t.smoothness = 235;  // the gem's texels, not the rock's
     return t;
   };
-  out.push_back(still("diamond_ore", [gem](int x, int y) { return gem(x, y, 185, rgb(90, 230, 220), 44, stone); }));
-  out.push_back(still("deepslate_diamond_ore", [gem](int x, int y) { return gem(x, y, 185, rgb(90, 230, 220), 44, deepslate); }));
-  out.push_back(still("emerald_ore", [gem](int x, int y) { return gem(x, y, 186, rgb(40, 200, 90), 13, stone); }));
-  out.push_back(still("lapis_ore", [gem](int x, int y) { return gem(x, y, 187, rgb(30, 60, 170), 10, stone); }));
-  out.push_back(still("deepslate_lapis_ore", [gem](int x, int y) { return gem(x, y, 187, rgb(30, 60, 170), 10, deepslate); }));
+  out.push_back(
+      still("diamond_ore", [gem](int x, int y) { return gem(x, y, 185, rgb(90, 230, 220), 44, stone); }));
+  out.push_back(still("deepslate_diamond_ore",
+                      [gem](int x, int y) { return gem(x, y, 185, rgb(90, 230, 220), 44, deepslate); }));
+  out.push_back(
+      still("emerald_ore", [gem](int x, int y) { return gem(x, y, 186, rgb(40, 200, 90), 13, stone); }));
+  out.push_back(
+      still("lapis_ore", [gem](int x, int y) { return gem(x, y, 187, rgb(30, 60, 170), 10, stone); }));
+  out.push_back(still("deepslate_lapis_ore",
+                      [gem](int x, int y) { return gem(x, y, 187, rgb(30, 60, 170), 10, deepslate); }));
   const auto gemBlock = [](int x, int y, glm::vec3 colour, int f0) {
     Texel t = polished(smooth(x, y, 801, colour, 0.08f, 235), x, y);
     t.f0 = f0;
     return t;
   };
-  out.push_back(still("diamond_block", [gemBlock](int x, int y) { return gemBlock(x, y, rgb(100, 230, 225), 44); }));
-  out.push_back(still("emerald_block", [gemBlock](int x, int y) { return gemBlock(x, y, rgb(50, 200, 100), 13); }));
+  out.push_back(
+      still("diamond_block", [gemBlock](int x, int y) { return gemBlock(x, y, rgb(100, 230, 225), 44); }));
+  out.push_back(
+      still("emerald_block", [gemBlock](int x, int y) { return gemBlock(x, y, rgb(50, 200, 100), 13); }));
   out.push_back(still("lapis_block", [](int x, int y) { return rock(811, x, y, rgb(35, 65, 160), 0.15f); }));
-  out.push_back(still("exposed_copper", [](int x, int y) { return metalBlock(x, y, rgb(160, 120, 95), 234, 150); }));
+  out.push_back(
+      still("exposed_copper", [](int x, int y) { return metalBlock(x, y, rgb(160, 120, 95), 234, 150); }));
   out.push_back(still("weathered_copper", [](int x, int y) {
     Texel t = metalBlock(x, y, rgb(110, 150, 110), 234, 100);
-    if (fbm(821, static_cast<float>(x), static_cast<float>(y)) > 0.5f) t.color = rgb(80, 160, 130), t.f0 = 20, t.smoothness = 50;
+    if (fbm(821, static_cast<float>(x), static_cast<float>(y)) > 0.5f)
+      t.color = rgb(80, 160, 130), t.f0 = 20, t.smoothness = 50;
     return t;
   }));
   out.push_back(still("oxidized_copper", [](int x, int y) {

@@ -55,6 +55,11 @@ Texel oreIn(int x, int y, std::uint64_t seed, glm::vec3 speck, int specular, Tex
 Texel metalBlock(int x, int y, glm::vec3 base, int metal, int smoothness);
 Texel plant(int x, int y, std::uint64_t seed, glm::vec3 flower);
 
+// A wood's door halves and trapdoor: boards running up, a frame, windows (crafted.cpp).
+Texel doorBottom(int x, int y, glm::vec3 wood);
+Texel doorTop(int x, int y, glm::vec3 wood);
+Texel trapdoor(int x, int y, glm::vec3 wood);
+
 // One still texture from a recipe.
 GeneratedTexture still(const std::string& name, const std::function<Texel(int, int)>& f);
 
