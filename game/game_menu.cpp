@@ -42,11 +42,7 @@ void Game::drawHud() {
         const glm::vec4 rect = atlas.tileRect(atlas.textures[static_cast<std::size_t>(texture)].firstTile);
         slot.u0 = rect.x, slot.v0 = rect.y, slot.u1 = rect.z, slot.v1 = rect.w;
       }
-      const Tint tint = blocks_[id].tint;
-      const glm::vec3 colour = tint == Tint::Grass     ? assets.tints.grass
-                               : tint == Tint::Foliage ? assets.tints.foliage
-                               : tint == Tint::Water   ? assets.tints.water
-                                                       : glm::vec3(1.0f);
+      const glm::vec3 colour = tintColour(assets.colormaps, blocks_[id].tint);
       slot.r = colour.r, slot.g = colour.g, slot.b = colour.b;
       slots.push_back(std::move(slot));
     }

@@ -25,7 +25,7 @@ std::unique_ptr<DeferredRenderer> makeRenderer(const BlockAssets& assets, const 
   options.shadow = shadow;
   options.reflections = reflections;
   options.props = props;
-  return std::make_unique<DeferredRenderer>(ShaderPreprocessor(shaderDir()), assets.atlas.atlas, assets.tints, options);
+  return std::make_unique<DeferredRenderer>(ShaderPreprocessor(shaderDir()), assets.atlas.atlas, assets.colormaps, options);
 }
 
 }  // namespace
@@ -38,7 +38,7 @@ std::unique_ptr<BlockAssets> BlockAssets::load(const BlockRegistry& blocks, cons
 
 BlockAssets::BlockAssets(const BlockRegistry& blocks, const PackStack& stack, std::vector<std::string> names)
     : atlas(buildBlockAtlas(blocks, stack)),
-      tints(loadTints(stack, atlas.problems)),
+      colormaps(loadColormaps(stack, atlas.problems)),
       table(meshTableOf(blocks, atlas)),
       packNames(std::move(names)) {}
 

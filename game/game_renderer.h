@@ -19,7 +19,7 @@ struct BlockAssets {
   static std::unique_ptr<BlockAssets> load(const BlockRegistry& blocks, const std::vector<PackChoice>& packs);
   BlockAssets(const BlockRegistry& blocks, const PackStack& stack, std::vector<std::string> names);
   BlockAtlas atlas;
-  BiomeTints tints;
+  BiomeColormaps colormaps;
   BlockMeshTable table;
   std::vector<std::string> packNames;  // bottom to top, as loaded
 };

@@ -3,12 +3,12 @@
 
 #include "lib/atlas_uv.glsl"
 #include "lib/block_vertex.glsl"
+#include "lib/block_tint.glsl"
 
 layout(location = ATTRIB_PACKED) in uvec4 a_packed;
 
 uniform mat4 u_viewProjection;  // camera at the origin: positions stay small far from the world's origin
 uniform vec3 u_sectionOffset;   // section's minimum corner minus the camera position (computed in double)
-uniform vec3 u_tints[4];        // linear; index 0 is white
 uniform vec2 u_viewportPixels;
 uniform bool u_sealMergedEdges;  // the G-buffer pass; not the translucent one, whose blending would
                                   // count an overlap twice
@@ -37,7 +37,7 @@ vec4 sealed(vec4 clip, vec3 position, BlockVertex v) {
 out vec3 v_position;  // camera-relative
 out vec2 v_uv;
 flat out vec2 v_tile;
-flat out vec3 v_tint;  // per quad
+out vec3 v_tint;  // linear; changes across biome borders
 out vec3 v_light;     // block, sky, ao
 flat out vec3 v_normal;
 flat out vec3 v_tangent;
@@ -51,13 +51,13 @@ void main() {
   v_position = u_sectionOffset + v.position;
   v_uv = v.uv;
   v_tile = atlasTile(v.texture);
-  v_tint = u_tints[v.tint];
+  v_tint = blockTint(v);
   v_light = vec3(v.blockLight, v.skyLight, v.ao);
   v_normal = kFaceNormals[v.face];
   v_tangent = kFaceTangents[v.face];
   v_up = kFaceUps[v.face];
 #if defined(WAVES) || defined(REFLECTIONS)
-  v_water = v.tint == 3 ? 1.0 : 0.0;
+  v_water = v.tint == TINT_WATER ? 1.0 : 0.0;
 #endif
   gl_Position = u_viewProjection * vec4(v_position, 1.0);
   if (u_sealMergedEdges && v.merged) gl_Position = sealed(gl_Position, v_position, v);

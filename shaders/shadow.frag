@@ -7,7 +7,7 @@
 
 layout(binding = UNIT_ATLAS_ALBEDO) uniform sampler2D u_atlasAlbedo;
 
-flat in vec3 v_tint;
+in vec3 v_tint;  // linear
 
 #ifdef TRANSLUCENT
 layout(location = OUT_COLOR) out vec4 o_transmittance;

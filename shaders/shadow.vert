@@ -3,17 +3,17 @@
 
 #include "lib/atlas_uv.glsl"
 #include "lib/block_vertex.glsl"
+#include "lib/block_tint.glsl"
 #include "lib/shadow_warp.glsl"
 
 layout(location = ATTRIB_PACKED) in uvec4 a_packed;
 
 uniform mat4 u_shadowMatrix;   // camera-relative world -> light clip space (unwarped)
 uniform vec3 u_sectionOffset;  // section's minimum corner minus the camera position
-uniform vec3 u_tints[4];       // linear; index 0 is white
 
 out vec2 v_uv;
 flat out vec2 v_tile;
-flat out vec3 v_tint;  // per quad
+out vec3 v_tint;  // linear; changes across biome borders
 
 void main() {
   BlockVertex v = unpackBlockVertex(a_packed);
@@ -22,5 +22,5 @@ void main() {
   gl_Position = p;
   v_uv = v.uv;
   v_tile = atlasTile(v.texture);
-  v_tint = u_tints[v.tint];
+  v_tint = blockTint(v);
 }

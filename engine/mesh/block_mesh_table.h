@@ -78,8 +78,7 @@ class BlockMeshTable {
     // Grass blocks tint only their top; plants, leaves and water tint everything.
     const bool untinted =
         e.tint == Tint::Grass && e.shape == BlockShape::Cube && face != static_cast<int>(Direction::Up);
-    return static_cast<std::uint32_t>(texture) | static_cast<std::uint32_t>(face) << 16 |
-           (untinted ? 0u : static_cast<std::uint32_t>(e.tint)) << 20;
+    return PackedVertex::packMaterial(texture, face, untinted ? 0 : static_cast<int>(e.tint));
   }
 
  private:

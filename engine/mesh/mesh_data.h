@@ -22,11 +22,14 @@ inline constexpr int kQuadRoles = 3;
 
 // One vertex in 16 bytes:
 //   position: x | y << 10 | z << 20, in 1/32 block from the section's minimum corner (0..512 each)
-//   material: texture id (16 bits) | face (4 bits) << 16 | tint (2 bits) << 20 | QuadRole (2 bits) << 22
+//   material: texture id (16 bits) | face (4 bits) << 16 | Tint (3 bits) << 20 | QuadRole (2 bits) << 23
 //             face 0..5 = Direction (normal along an axis), 6..9 = the diagonal planes of cross plants
 //   light:    block light sum (6 bits) | sky light sum (6 bits) << 6 | ambient occlusion 0..3 (2 bits) << 12
+//             | tint temperature (8 bits) << 14 | tint downfall (8 bits) << 22
 //             smooth light sums the open cells among the four around a corner, and there are always
-//             ao + 1 of them (see the mesher), so the shader divides by that: sums are 0..60
+//             ao + 1 of them (see the mesher), so the shader divides by that: sums are 0..60.
+//             The tint climate (world/biomes.h TintClimate) is the biomes' at the vertex, interpolated
+//             between column centres; 0 on untinted vertices
 //   uv:       u | v << 9, in 1/16 of the texture (0..256: merged faces repeat it, mesh/face_merge.h),
 //             v = 0 at the texture's top row
 struct PackedVertex {
@@ -39,6 +42,14 @@ struct PackedVertex {
     return static_cast<std::uint32_t>(x32) | static_cast<std::uint32_t>(y32) << 10 |
            static_cast<std::uint32_t>(z32) << 20;
   }
+  static constexpr std::uint32_t packMaterial(int texture, int face, int tint) {
+    return static_cast<std::uint32_t>(texture) | static_cast<std::uint32_t>(face) << 16 |
+           static_cast<std::uint32_t>(tint) << 20;
+  }
+  static constexpr std::uint32_t packTintClimate(int temperature, int downfall) {
+    return static_cast<std::uint32_t>(temperature) << 14 | static_cast<std::uint32_t>(downfall) << 22;
+  }
+  static constexpr std::uint32_t kTintClimateBits = 0xFFFFu << 14;
   static constexpr std::uint32_t packUv(int u, int v) {
     return static_cast<std::uint32_t>(u) | static_cast<std::uint32_t>(v) << 9;
   }
@@ -47,10 +58,12 @@ struct PackedVertex {
   int z32() const { return static_cast<int>((position >> 20) & 1023); }
   int texture() const { return static_cast<int>(material & 0xFFFF); }
   int face() const { return static_cast<int>((material >> 16) & 15); }
-  int tint() const { return static_cast<int>((material >> 20) & 3); }
-  QuadRole role() const { return static_cast<QuadRole>((material >> 22) & 3); }
-  void setRole(QuadRole r) { material = (material & ~(3u << 22)) | static_cast<std::uint32_t>(r) << 22; }
+  int tint() const { return static_cast<int>((material >> 20) & 7); }
+  QuadRole role() const { return static_cast<QuadRole>((material >> 23) & 3); }
+  void setRole(QuadRole r) { material = (material & ~(3u << 23)) | static_cast<std::uint32_t>(r) << 23; }
   int ao() const { return static_cast<int>((light >> 12) & 3); }
+  int tintTemperature() const { return static_cast<int>((light >> 14) & 255); }
+  int tintDownfall() const { return static_cast<int>((light >> 22) & 255); }
   int cellsLit() const { return ao() + 1; }  // how many cells the light sums add up
   // The averages x4, rounded: 0..60.
   int blockLight4() const { return (static_cast<int>(light & 63) * 4 + cellsLit() / 2) / cellsLit(); }

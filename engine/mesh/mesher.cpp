@@ -304,9 +304,8 @@ class Mesher {
       } else {
         std::fill_n(light, 4, cellLight(lit));
       }
-      const std::uint32_t mat = static_cast<std::uint32_t>(m.texture) |
-                                static_cast<std::uint32_t>(m.face) << 16 |
-                                (m.tinted ? static_cast<std::uint32_t>(e.tint) : 0u) << 20;
+      const std::uint32_t mat =
+          PackedVertex::packMaterial(m.texture, m.face, m.tinted ? static_cast<int>(e.tint) : 0);
       // The brighter diagonal splits the quad, as for full faces.
       const int first = (light[0] >> 12) + (light[2] >> 12) < (light[1] >> 12) + (light[3] >> 12) ? 1 : 0;
       PackedVertex* q = out.quad();
@@ -343,11 +342,33 @@ class Mesher {
 
 thread_local std::array<std::size_t, kMeshLayers> Mesher::lastSize_{};
 
+// Gives each biome-tinted vertex its tint climate, interpolated bilinearly between the centres of
+// the four columns around it, so colours change smoothly across faces and blocks.
+void applyTints(PackedVertices& vertices, const SectionSnapshot& s) {
+  for (PackedVertex& v : vertices) {
+    if (!tintedByBiome(static_cast<Tint>(v.tint()))) continue;
+    // In 1/32 block from the centre of column -1: 16..528, so the division rounds down.
+    const int u = v.x32() + 16, w = v.z32() + 16;
+    const int i = u / 32 - 1, j = w / 32 - 1, fx = u % 32, fz = w % 32;
+    const TintClimate a = s.tint(i, j), b = s.tint(i + 1, j), c = s.tint(i, j + 1), d = s.tint(i + 1, j + 1);
+    auto mix = [&](std::uint8_t TintClimate::*axis) {
+      const int sum = (32 - fx) * (32 - fz) * a.*axis + fx * (32 - fz) * b.*axis + (32 - fx) * fz * c.*axis +
+                      fx * fz * d.*axis;
+      return (sum + 512) / 1024;
+    };
+    v.light = (v.light & ~PackedVertex::kTintClimateBits) |
+              PackedVertex::packTintClimate(mix(&TintClimate::temperature), mix(&TintClimate::downfall));
+  }
+}
+
 }  // namespace
 
 SectionMesh meshSection(const SectionSnapshot& snapshot, const BlockMeshTable& table) {
   SectionMesh mesh = Mesher(snapshot, table).run();
-  for (auto& layer : mesh.layers) mergeFaces(layer.vertices);
+  for (auto& layer : mesh.layers) {
+    applyTints(layer.vertices, snapshot);
+    mergeFaces(layer.vertices);
+  }
   return mesh;
 }
 

@@ -119,6 +119,12 @@ CaptureResult captureSection(const World& world, SectionPos pos, SectionSnapshot
   const Chunk* columns[3][3];
   for (int dz = -1; dz <= 1; ++dz)
     for (int dx = -1; dx <= 1; ++dx) columns[dz + 1][dx + 1] = world.chunk({pos.x + dx, pos.z + dz});
+  for (int lz = -1; lz <= 16; ++lz)
+    for (int lx = -1; lx <= 16; ++lx) {
+      const Chunk* owner = columns[(lz + 16) / 16][(lx + 16) / 16];
+      out.tints[static_cast<std::size_t>((lz + 1) * SectionSnapshot::kSide + lx + 1)] =
+          owner ? owner->tint(lx & 15, lz & 15) : chunk->tint(std::clamp(lx, 0, 15), std::clamp(lz, 0, 15));
+    }
   const std::uint8_t* opaqueCube = world.opaqueCubes().data();
   const int y0 = kMinY + pos.section * 16;
   for (int ly = -1; ly <= 16; ++ly) {

@@ -1,6 +1,6 @@
 #pragma once
-// A copy of one 16³ section and the one-block halo around it (18³ cells): blocks and both light
-// channels, everything the mesher reads. Taken on the main thread from the World; meshed on any
+// A copy of one 16³ section and the one-block halo around it (18³ cells): blocks, both light
+// channels and the columns' tints, everything the mesher reads. Taken on the main thread from the World; meshed on any
 // thread. Cells outside the world or in unloaded chunks read as air with no light (they are drawn
 // against later, when their chunk loads and the section is remeshed).
 
@@ -35,6 +35,10 @@ class SectionSnapshot {
   std::array<BlockId, kCells> blocks;
   std::array<std::uint32_t, kCells> light;  // lightTerm per cell
   std::array<std::uint8_t, kCells> opaque;  // 1: an opaque cube (World::opaqueCubes)
+  // The columns' tints (Chunk::tint), x and z -1..16 as in index(); a missing neighbour chunk
+  // repeats this chunk's edge.
+  std::array<TintClimate, kSide * kSide> tints;
+  TintClimate tint(int x, int z) const { return tints[static_cast<std::size_t>((z + 1) * kSide + x + 1)]; }
 };
 
 enum class CaptureResult { Captured, Empty, Buried };

@@ -1,9 +1,8 @@
 #include "render/atlas_textures.h"
 
 namespace terrasol {
-namespace {
 
-gl::Texture upload(const std::vector<Image>& levels, GLenum format, GLenum minFilter) {
+gl::Texture uploadTexture(const std::vector<Image>& levels, GLenum format, GLenum minFilter, GLenum magFilter) {
   gl::Texture texture = gl::Texture::create(GL_TEXTURE_2D);
   const Image& base = levels.front();
   glTextureStorage2D(texture.id(), static_cast<GLsizei>(levels.size()), format, base.width, base.height);
@@ -16,18 +15,17 @@ gl::Texture upload(const std::vector<Image>& levels, GLenum format, GLenum minFi
   }
   glTextureParameteri(texture.id(), GL_TEXTURE_MAX_LEVEL, static_cast<GLint>(levels.size()) - 1);
   glTextureParameteri(texture.id(), GL_TEXTURE_MIN_FILTER, static_cast<GLint>(minFilter));
-  glTextureParameteri(texture.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);  // pixel art stays crisp up close
+  glTextureParameteri(texture.id(), GL_TEXTURE_MAG_FILTER, static_cast<GLint>(magFilter));
   glTextureParameteri(texture.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
   glTextureParameteri(texture.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
   return texture;
 }
 
-}  // namespace
-
 AtlasTextures::AtlasTextures(const Atlas& atlas)
-    : albedo_(upload(atlas.albedo, GL_SRGB8_ALPHA8, GL_NEAREST_MIPMAP_LINEAR)),
-      normal_(upload(atlas.normal, GL_RGBA8, GL_NEAREST_MIPMAP_LINEAR)),
-      specular_(upload(atlas.specular, GL_RGBA8, GL_NEAREST_MIPMAP_NEAREST)),
+    // Magnified nearest: pixel art stays crisp up close.
+    : albedo_(uploadTexture(atlas.albedo, GL_SRGB8_ALPHA8, GL_NEAREST_MIPMAP_LINEAR, GL_NEAREST)),
+      normal_(uploadTexture(atlas.normal, GL_RGBA8, GL_NEAREST_MIPMAP_LINEAR, GL_NEAREST)),
+      specular_(uploadTexture(atlas.specular, GL_RGBA8, GL_NEAREST_MIPMAP_NEAREST, GL_NEAREST)),
       levels_(atlas.levels()) {}
 
 }  // namespace terrasol

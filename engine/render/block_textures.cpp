@@ -14,14 +14,17 @@ glm::vec3 srgbToLinear(glm::vec3 c) { return {srgbToLinear(c.r), srgbToLinear(c.
 
 }  // namespace
 
-BlockTextures::BlockTextures(const Atlas& atlas, const BiomeTints& tints)
+BlockTextures::BlockTextures(const Atlas& atlas, const BiomeColormaps& colormaps)
     : textures_(atlas),
       tiles_(gl::Buffer::create()),
       entries_(atlas.textures),
       current_(atlas.textures.size()),
       grid_(atlas.columns, atlas.slotSize, atlas.tileSize),
       size_(static_cast<float>(atlas.columns * atlas.slotSize), static_cast<float>(atlas.rows * atlas.slotSize)),
-      tints_{glm::vec3(1.0f), srgbToLinear(tints.grass), srgbToLinear(tints.foliage), srgbToLinear(tints.water)} {
+      // Sampled in the vertex shader at a vertex's climate, between texels for maps not 256 wide.
+      grassColormap_(uploadTexture({colormaps.grass}, GL_SRGB8_ALPHA8, GL_LINEAR, GL_LINEAR)),
+      foliageColormap_(uploadTexture({colormaps.foliage}, GL_SRGB8_ALPHA8, GL_LINEAR, GL_LINEAR)),
+      waterTint_(srgbToLinear(tintColour(colormaps, Tint::Water))) {
   for (std::size_t i = 0; i < entries_.size(); ++i) current_[i] = static_cast<std::uint32_t>(entries_[i].firstTile);
   if (current_.empty()) current_.push_back(0);  // a storage buffer may not be empty
   glNamedBufferStorage(tiles_.id(), static_cast<GLsizeiptr>(current_.size() * sizeof(std::uint32_t)), current_.data(),
@@ -48,10 +51,11 @@ void BlockTextures::bind(GLuint program) const {
   glBindTextureUnit(slots::kUnitAtlasAlbedo, textures_.albedo());
   glBindTextureUnit(slots::kUnitAtlasNormal, textures_.normal());
   glBindTextureUnit(slots::kUnitAtlasSpecular, textures_.specular());
+  glBindTextureUnit(slots::kUnitGrassColormap, grassColormap_.id());
+  glBindTextureUnit(slots::kUnitFoliageColormap, foliageColormap_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, slots::kStorageTiles, tiles_.id());
   glProgramUniform3iv(program, glGetUniformLocation(program, "u_atlasGrid"), 1, glm::value_ptr(grid_));
   glProgramUniform2fv(program, glGetUniformLocation(program, "u_atlasSize"), 1, glm::value_ptr(size_));
-  glProgramUniform3fv(program, glGetUniformLocation(program, "u_tints"), 4, glm::value_ptr(tints_[0]));
 }
 
 }  // namespace terrasol

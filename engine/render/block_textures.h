@@ -1,7 +1,7 @@
 #pragma once
 // Everything the block passes sample besides the G-buffer: the three atlases, the tile each texture
 // id shows this frame (animations advance it; a storage buffer the vertex shader indexes), the atlas
-// grid and the biome tints. GL thread only.
+// grid and the biome colormaps. GL thread only.
 
 #include <array>
 #include <cstdint>
@@ -18,14 +18,14 @@ namespace terrasol {
 
 class BlockTextures {
  public:
-  BlockTextures(const Atlas& atlas, const BiomeTints& tints);
+  BlockTextures(const Atlas& atlas, const BiomeColormaps& colormaps);
 
   // Points every animated texture at its frame for world time `ticks`.
   void update(std::int64_t ticks);
-  // Binds the atlases and the tile buffer, and sets the atlas and tint uniforms of `program`.
+  // Binds the atlases, the colormaps and the tile buffer, and sets the atlas uniforms of `program`.
   void bind(GLuint program) const;
   const AtlasTextures& atlas() const { return textures_; }
-  glm::vec3 waterTint() const { return tints_[3]; }  // linear
+  glm::vec3 waterTint() const { return waterTint_; }  // linear, at the plains' temperature
 
  private:
   AtlasTextures textures_;
@@ -34,7 +34,8 @@ class BlockTextures {
   std::vector<std::uint32_t> current_;
   glm::ivec3 grid_;   // columns, slot size, tile size
   glm::vec2 size_;    // texels
-  std::array<glm::vec3, 4> tints_;  // linear: none (white), grass, foliage, water
+  gl::Texture grassColormap_, foliageColormap_;
+  glm::vec3 waterTint_;
 };
 
 }  // namespace terrasol

@@ -13,9 +13,9 @@
 
 namespace terrasol {
 
-DeferredRenderer::DeferredRenderer(const ShaderPreprocessor& shaders, const Atlas& atlas, const BiomeTints& tints,
+DeferredRenderer::DeferredRenderer(const ShaderPreprocessor& shaders, const Atlas& atlas, const BiomeColormaps& colormaps,
                                    const RendererOptions& options)
-    : shared_(atlas, tints, options),
+    : shared_(atlas, colormaps, options),
       geometry_(VariantBuilder(shaders, shared_), shared_),
       lighting_(VariantBuilder(shaders, shared_), shared_),
       reflection_(VariantBuilder(shaders, shared_), shared_),

@@ -3,6 +3,7 @@
 #include <sstream>
 
 #include "assets/labpbr.h"
+#include "core/tint.h"
 #include "mesh/mesh_data.h"
 #include "render/gbuffer_layout.h"
 #include "render/gl_slots.h"
@@ -36,6 +37,24 @@ std::string metalArray() {
     text += (id > 230 ? ", " : "") + vec3Literal(f0.x, f0.y, f0.z);
   }
   return text + ")";
+}
+
+// Tint ids and colours (core/tint.h) for lib/block_tint.glsl.
+std::vector<ShaderDefine> tintDefines() {
+  auto literal = [](glm::vec3 c) { return vec3Literal(c.r, c.g, c.b); };
+  auto id = [](Tint t) { return std::to_string(static_cast<int>(t)); };
+  return {{"TINT_GRASS", id(Tint::Grass)},
+          {"TINT_FOLIAGE", id(Tint::Foliage)},
+          {"TINT_WATER", id(Tint::Water)},
+          {"TINT_BIRCH", id(Tint::Birch)},
+          {"TINT_SPRUCE", id(Tint::Spruce)},
+          {"WATER_COLD", literal(kWaterCold)},
+          {"WATER_TEMPERATE", literal(kWaterTemperate)},
+          {"WATER_WARM", literal(kWaterWarm)},
+          {"WATER_TEMPERATE_FROM", std::to_string(kWaterTemperateFrom)},
+          {"WATER_TEMPERATE_TO", std::to_string(kWaterTemperateTo)},
+          {"BIRCH_FOLIAGE", literal(kBirchFoliage)},
+          {"SPRUCE_FOLIAGE", literal(kSpruceFoliage)}};
 }
 
 }  // namespace
@@ -74,6 +93,7 @@ std::vector<ShaderDefine> rendererDefines() {
   defines.push_back({"FACE_UPS", faceArray([](const FaceBasis& b) { return b.up; })});
   defines.push_back({"LABPBR_METAL_F0", metalArray()});
   defines.push_back({"SHADOW_MAX_CASCADES", std::to_string(kMaxShadowCascades)});
+  for (auto& d : tintDefines()) defines.push_back(std::move(d));
   return defines;
 }
 

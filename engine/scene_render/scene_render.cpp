@@ -70,10 +70,10 @@ RendererOptions withProps(RendererOptions options, const PlacedProps& props) {
 }  // namespace
 
 struct SceneRenderer::Gpu {
-  Gpu(const ShaderPreprocessor& shaders, const Atlas& atlas, const BiomeTints& tints, const RendererOptions& options,
+  Gpu(const ShaderPreprocessor& shaders, const Atlas& atlas, const BiomeColormaps& colormaps, const RendererOptions& options,
       glm::ivec2 size, const SceneFile& scene, const SceneWorld& world)
       : props(placeProps(scene, world)),
-        renderer(shaders, atlas, tints, withProps(options, props)),
+        renderer(shaders, atlas, colormaps, withProps(options, props)),
         target(size) {}
   PlacedProps props;  // before the renderer, which is built for what they need
   DeferredRenderer renderer;
@@ -86,7 +86,7 @@ SceneRenderer::SceneRenderer(const SceneFile& scene) : scene_(scene), debugView_
   const PackStack packs = openPacks(scene);
   world_ = std::make_unique<World>(scene, packs);
   std::vector<PackProblem>& problems = world_->atlas.problems;
-  const BiomeTints tints = loadTints(packs, problems);
+  const BiomeColormaps colormaps = loadColormaps(packs, problems);
   stats_.problems = problems;
   const std::vector<SectionMesh> meshes = world_->world.meshVisible(world_->table);
   stats_.loadMs = msSince(start);
@@ -102,7 +102,7 @@ SceneRenderer::SceneRenderer(const SceneFile& scene) : scene_(scene), debugView_
   options.cullPasses = scene.cullPasses;
   options.reflections = scene.reflections;
   options.water = scene.water;
-  gpu_ = std::make_unique<Gpu>(shaders, world_->atlas.atlas, tints, options, glm::ivec2(scene.width, scene.height), scene,
+  gpu_ = std::make_unique<Gpu>(shaders, world_->atlas.atlas, colormaps, options, glm::ivec2(scene.width, scene.height), scene,
                                world_->world);
   for (const auto& mesh : meshes) {
     gpu_->meshes.upload(mesh);

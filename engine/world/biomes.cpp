@@ -13,6 +13,26 @@ std::string_view biomeName(Biome biome) {
   return kNames[static_cast<int>(biome)];
 }
 
+TintClimate biomeTint(Biome biome) {
+  struct Weather {
+    float temperature, downfall;
+  };
+  static constexpr Weather kWeather[kBiomeCount] = {
+      {0.5f, 0.5f},   // ocean
+      {0.8f, 0.4f},   // beach
+      {0.8f, 0.4f},   // plains
+      {0.7f, 0.8f},   // forest
+      {0.6f, 0.6f},   // birch forest
+      {0.25f, 0.8f},  // taiga
+      {0.0f, 0.5f},   // snowy plains
+      {2.0f, 0.0f},   // desert
+      {2.0f, 0.0f},   // savanna
+      {1.0f, 0.3f},   // stony peaks
+  };
+  const Weather w = kWeather[static_cast<int>(biome)];
+  return tintClimate(w.temperature, w.downfall);
+}
+
 BiomeSource::BiomeSource(std::uint64_t seed) : temperature_(seed ^ 0x0B10), humidity_(seed ^ 0x0B11) {}
 
 Climate BiomeSource::climate(int x, int z, int height) const {

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <string_view>
 
+#include "core/tint.h"
 #include "world/noise.h"
 
 namespace terrasol {
@@ -31,6 +32,9 @@ std::string_view biomeName(Biome biome);
 struct Climate {
   double temperature, humidity;  // about -1..1
 };
+
+// Minecraft's temperature and downfall of each biome (plains 0.8 and 0.4, desert 2 and 0, ...).
+TintClimate biomeTint(Biome biome);
 
 class BiomeSource {
  public:

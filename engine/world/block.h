@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "core/tint.h"
+
 namespace terrasol {
 
 // A block state: what the world stores in a cell. Each block has one state per combination of its
@@ -16,7 +18,6 @@ inline constexpr BlockId kAir = 0;
 // Model: drawn by the models its blockstates file names (assets/minecraft/blockstates/<name>.json).
 enum class BlockShape : std::uint8_t { None, Cube, Cross, Liquid, Torch, Model };
 enum class RenderLayer : std::uint8_t { None, Opaque, Cutout, Translucent };
-enum class Tint : std::uint8_t { None, Grass, Foliage, Water };
 
 // Texture names per face in Direction order (west, east, down, up, north, south). Each face lists
 // candidates, first found in the packs wins (e.g. "short_grass" then its pre-1.20.3 name "grass").

@@ -207,8 +207,12 @@ BlockType parseBlock(const json& block, const std::string& where) {
       {{"opaque", RenderLayer::Opaque},
        {"cutout", RenderLayer::Cutout},
        {"translucent", RenderLayer::Translucent}}};
-  static constexpr std::array<std::pair<const char*, Tint>, 4> kTints = {
-      {{"none", Tint::None}, {"grass", Tint::Grass}, {"foliage", Tint::Foliage}, {"water", Tint::Water}}};
+  static constexpr std::array<std::pair<const char*, Tint>, kTintCount> kTints = {{{"none", Tint::None},
+                                                                                  {"grass", Tint::Grass},
+                                                                                  {"foliage", Tint::Foliage},
+                                                                                  {"water", Tint::Water},
+                                                                                  {"birch", Tint::Birch},
+                                                                                  {"spruce", Tint::Spruce}}};
 
   type.shape = block.contains("shape") ? parseEnum(block["shape"], kShapes, at + ".shape") : BlockShape::Cube;
   if (type.shape != BlockShape::None) {

@@ -4,6 +4,7 @@
 
 #include <array>
 
+#include "world/biomes.h"
 #include "world/chunk_light.h"
 #include "world/coords.h"
 #include "world/section.h"
@@ -36,14 +37,26 @@ class Chunk {
   ChunkLight& light() { return light_; }
   const ChunkLight& light() const { return light_; }
 
+  // Each column's grass and foliage colour, blended over its neighbourhood by the generator. Not
+  // saved: a loaded chunk asks its generator again (ChunkGenerator::fillTints).
+  TintClimate tint(int x, int z) const { return tints_[static_cast<std::size_t>(z * 16 + x)]; }
+  void setTint(int x, int z, TintClimate tint) { tints_[static_cast<std::size_t>(z * 16 + x)] = tint; }
+
   // Edited since load or generation: must be saved before unloading.
   bool modified() const { return modified_; }
   void setModified(bool modified) { modified_ = modified; }
 
  private:
+  static constexpr std::array<TintClimate, 256> filledTints() {
+    std::array<TintClimate, 256> tints{};
+    tints.fill(kPlainsTint);
+    return tints;
+  }
+
   ChunkPos pos_;
   std::array<Section, kSectionCount> sections_;
   ChunkLight light_;
+  std::array<TintClimate, 256> tints_ = filledTints();
   bool modified_ = false;
 };
 

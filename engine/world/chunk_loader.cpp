@@ -82,7 +82,9 @@ void ChunkLoader::work() {
     bool failed = false;
     try {
       if (storage_) chunk = storage_->load(pos);
-      if (!chunk) {
+      if (chunk) {
+        generator_.fillTints(*chunk);
+      } else {
         chunk = std::make_unique<Chunk>(pos);
         generator_.generate(*chunk);
       }

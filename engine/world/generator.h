@@ -21,6 +21,9 @@ class ChunkGenerator {
   // The y of the highest block the generator puts in this column before carving (kMinY - 1 for none);
   // the game spawns the player above it.
   virtual int surfaceHeight(int x, int z) const = 0;
+  // Sets the chunk's column tints (Chunk::tint); generate() does it too, and a chunk loaded from a
+  // save gets them here. Worlds without biomes keep the plains tint.
+  virtual void fillTints(Chunk& /*chunk*/) const {}
 };
 
 struct FlatLayer {

@@ -220,6 +220,7 @@ void TerrainGenerator::generate(Chunk& chunk) const {
   placeGlowstone(chunk);
   placeTrees(chunk);
   placePlants(chunk);
+  fillTints(chunk);
   chunk.compact();
 }
 

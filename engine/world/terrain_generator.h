@@ -25,6 +25,7 @@ class TerrainGenerator final : public ChunkGenerator {
 
   void generate(Chunk& chunk) const override;
   int surfaceHeight(int x, int z) const override;
+  void fillTints(Chunk& chunk) const override;
 
   // Cave density at a block: negative inside a cave. Pure; the same value generate() uses.
   double caveDensity(int x, int y, int z) const;

@@ -27,7 +27,7 @@ vec4 specularTexelAt(AtlasCoord at) {
 }
 
 in vec3 v_position;
-flat in vec3 v_tint;
+in vec3 v_tint;  // linear
 in vec3 v_light;
 // The face's frame, looked up per vertex: indexing the tables here would gather per pixel.
 flat in vec3 v_normal;

@@ -34,7 +34,7 @@ Exported exportOf(const Region& region, const std::string& name) {
   PackStack packs;
   packs.push(ResourcePack::open(resourcePackDir() / "default"));
   BlockAtlas atlas = buildBlockAtlas(blocks, packs);
-  const BiomeTints tints = loadTints(packs, atlas.problems);
+  const BiomeColormaps tints = loadColormaps(packs, atlas.problems);
   const BlockMeshTable table(blocks, [&](BlockId id, int face) { return atlas.textureOf(id, face); });
   const SceneWorld world(scene, blocks);
   const std::vector<SectionMesh> meshes = meshRegion(world.world(), region, table);

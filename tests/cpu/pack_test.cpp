@@ -6,7 +6,6 @@
 #include <fstream>
 
 #include "assets/texture_loader.h"
-#include "assets/tints.h"
 #include "core/error.h"
 #include "core/paths.h"
 #include "packgen.h"
@@ -159,33 +158,6 @@ TEST(Animation, FramesFollowGameTimeExactlyForever) {
   EXPECT_EQ(frameAt(*smooth, 5).frame, 1);
   EXPECT_EQ(frameAt(*smooth, 5).next, 0);
   EXPECT_FALSE(parseAnimation(R"({"texture": {"blur": true}})", 16, 16, "plain.mcmeta"));
-}
-
-TEST(Tints, ColormapsAreSampledLikeMinecraftAndDefaultsFillIn) {
-  Image map(256, 256);
-  for (int y = 0; y < 256; ++y)
-    for (int x = 0; x < 256; ++x) {
-      std::uint8_t* p = map.pixel(x, y);
-      p[0] = static_cast<std::uint8_t>(x), p[1] = static_cast<std::uint8_t>(y), p[2] = 7, p[3] = 255;
-    }
-  // x = (int)((1 - 0.8f) * 255) = 50 (0.8f is a little above 0.8, as in Minecraft), y = (int)(0.68 * 255) =
-  // 173
-  const glm::vec3 plains = sampleColormap(map, 0.8f, 0.4f);
-  EXPECT_NEAR(plains.r * 255.0f, 50.0f, 0.5f);
-  EXPECT_NEAR(plains.g * 255.0f, 173.0f, 0.5f);
-  const glm::vec3 extreme = sampleColormap(map, 5.0f, -3.0f);  // clamped, never outside the map
-  EXPECT_NEAR(extreme.r, 0.0f, 1e-6f);
-
-  PackBuilder pack("pack_tints");
-  std::vector<PackProblem> problems;
-  const BiomeTints none = loadTints(stackOf({pack.dir()}), problems);
-  EXPECT_EQ(none.grass, kDefaultGrass);
-  EXPECT_EQ(none.water, kDefaultWater);
-  TERRASOL_SKIP_WITHOUT_TEST_DATA();
-  const BiomeTints real = loadTints(stackOf({pack.dir(), pixelPerfection()}), problems);
-  EXPECT_TRUE(problems.empty()) << problemsText(problems);
-  EXPECT_NE(real.grass, kDefaultGrass) << "pixel_perfection_ce's grass colormap is used";
-  EXPECT_GT(real.grass.g, real.grass.b) << "and it is green";
 }
 
 // Each bad file gives one error naming it, and the texture falls back to "missing"; nothing crashes.

@@ -71,7 +71,7 @@ int run(int argc, char** argv) {
   for (const auto& p : extraPacks) packPaths.push_back(p);
   for (const auto& p : packPaths) packs.push(ResourcePack::open(p));
   BlockAtlas atlas = buildBlockAtlas(blocks, packs);
-  const BiomeTints tints = loadTints(packs, atlas.problems);
+  const BiomeColormaps colormaps = loadColormaps(packs, atlas.problems);
   const BlockMeshTable table = meshTableOf(blocks, atlas);
 
   std::vector<SectionMesh> meshes;
@@ -93,7 +93,7 @@ int run(int argc, char** argv) {
     }
     meshes = meshRegion(world.world(), *region, table);
   }
-  const ExportStats stats = exportRegion(meshes, *region, atlas, tints, out);
+  const ExportStats stats = exportRegion(meshes, *region, atlas, colormaps, out);
   std::printf("terrasol-export: %zu quads (%zu vertices, %zu triangles) from %zu sections written to %s\n", stats.quads,
               stats.vertices, stats.triangles, meshes.size(), out.string().c_str());
   return 0;

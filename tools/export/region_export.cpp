@@ -91,9 +91,8 @@ std::vector<SectionMesh> meshRegion(const World& world, const Region& region, co
 }
 
 ExportStats exportRegion(const std::vector<SectionMesh>& meshes, const Region& region, const BlockAtlas& atlas,
-                         const BiomeTints& tints, const std::filesystem::path& file) {
+                         const BiomeColormaps& colormaps, const std::filesystem::path& file) {
   const glm::vec3 origin(region.min);
-  const glm::vec3 tintColours[4] = {glm::vec3(1.0f), tints.grass, tints.foliage, tints.water};
   LayerData layers[kMeshLayers];
   ExportStats stats;
   for (const SectionMesh& mesh : meshes) {
@@ -115,7 +114,10 @@ ExportStats exportRegion(const std::vector<SectionMesh>& meshes, const Region& r
           const glm::vec4 rect = atlas.atlas.tileRect(texture >= 0 ? atlas.atlas.textures[static_cast<std::size_t>(texture)].firstTile : 0);
           out.uvs.push_back(rect.x + (rect.z - rect.x) * static_cast<float>(p.u()) / 16.0f);
           out.uvs.push_back(rect.y + (rect.w - rect.y) * static_cast<float>(p.v()) / 16.0f);
-          const glm::vec3 c = tintColours[p.tint()] * (0.4f + 0.6f * static_cast<float>(p.ao()) / 3.0f);
+          const glm::vec3 tint = tintColour(colormaps, static_cast<Tint>(p.tint()),
+                                            {static_cast<std::uint8_t>(p.tintTemperature()),
+                                             static_cast<std::uint8_t>(p.tintDownfall())});
+          const glm::vec3 c = tint * (0.4f + 0.6f * static_cast<float>(p.ao()) / 3.0f);
           out.colors.insert(out.colors.end(), {c.r, c.g, c.b});
         }
         for (const std::uint32_t i : {0u, 1u, 2u, 0u, 2u, 3u}) out.indices.push_back(base + i);  // mesh_data.h's quads

@@ -34,6 +34,6 @@ struct ExportStats {
 
 // Writes `meshes` (sections covering the region) clipped to `region`. Throws Error naming the file.
 ExportStats exportRegion(const std::vector<SectionMesh>& meshes, const Region& region, const BlockAtlas& atlas,
-                         const BiomeTints& tints, const std::filesystem::path& file);
+                         const BiomeColormaps& colormaps, const std::filesystem::path& file);
 
 }  // namespace terrasol

@@ -366,6 +366,9 @@ void writeDefaultPack(const std::filesystem::path& dir) {
     saveImage(blockDir / (t.name + "_s.png"), t.specular);
     if (!t.mcmeta.empty()) std::ofstream(blockDir / (t.name + ".png.mcmeta")) << t.mcmeta;
   }
+  const auto colormapDir = dir / "assets" / "minecraft" / "textures" / "colormap";
+  std::filesystem::create_directories(colormapDir);
+  for (const auto& c : generateColormaps()) saveImage(colormapDir / (c.name + ".png"), c.map);
 }
 
 }  // namespace terrasol::packgen

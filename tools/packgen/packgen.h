@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include <glm/vec3.hpp>
+
 #include "assets/image.h"
 
 namespace terrasol::packgen {
@@ -19,7 +21,14 @@ struct GeneratedTexture {
 
 std::vector<GeneratedTexture> generateDefaultTextures();
 
-// Writes every texture (and _n, _s, .png.mcmeta) into DIR/assets/minecraft/textures/block/.
+struct GeneratedColormap {
+  std::string name;  // "grass", "foliage"
+  Image map;         // 256 x 256
+};
+std::vector<GeneratedColormap> generateColormaps();
+
+// Writes every texture (and _n, _s, .png.mcmeta) into DIR/assets/minecraft/textures/block/, and the
+// colormaps into DIR/assets/minecraft/textures/colormap/.
 void writeDefaultPack(const std::filesystem::path& dir);
 
 }  // namespace terrasol::packgen
