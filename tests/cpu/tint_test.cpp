@@ -159,6 +159,20 @@ TEST(Tints, BiomeBordersBlendWithoutASeam) {
 // mesher reads neighbouring chunks' columns at a chunk's edge. Untinted vertices carry none.
 TEST(Tints, VerticesCarryTheirColumnsClimateInterpolated) {
   testing::MeshWorld w(BlockMeshTable(testing::defaultBlocks(), [](BlockId, int) { return std::uint16_t{1}; }));
+  w.set({5, 64, 5}, "grass_block");
+  w.set({5, 65, 5}, "oak_leaves");
+  int uniform = 0;
+  for (const MeshData& layer : w.mesh().layers)
+    for (const PackedVertex& v : layer.vertices) {
+      if (v.tint() == 0) continue;
+      ++uniform;
+      EXPECT_EQ(v.tintTemperature(), kPlainsTint.temperature) << "one biome all round: its climate everywhere";
+      EXPECT_EQ(v.tintDownfall(), kPlainsTint.downfall);
+    }
+  EXPECT_EQ(uniform, 4 * 6) << "the leaves' six faces (the grass top is hidden)";
+  w.set({5, 64, 5}, "air");
+  w.set({5, 65, 5}, "air");
+
   const TintClimate warm{200, 40}, cold{40, 20};
   for (int z = 0; z < 16; ++z)
     for (int x = 0; x < 16; ++x) w.world.chunk({0, 0})->setTint(x, z, x < 8 ? warm : cold);
