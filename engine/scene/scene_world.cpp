@@ -6,6 +6,7 @@
 
 #include "core/error.h"
 #include "mesh/mesh_scheduler.h"
+#include "scene/camera_path.h"
 #include "mesh/section_mesh.h"
 #include "scene/block_atlas.h"
 #include "world/connected_states.h"
@@ -13,29 +14,52 @@
 namespace terrasol {
 namespace {
 
-ChunkPos cameraChunk(const SceneFile& scene) {
+// The chunk of every frame's camera, each once.
+std::vector<ChunkPos> cameraChunks(const SceneFile& scene) {
   // Clamped so a camera far outside the world border still names a valid chunk.
   const double limit = 30'000'000.0;
   const auto block = [&](double v) { return static_cast<int>(std::floor(std::clamp(v, -limit, limit))); };
-  return ChunkPos::of({block(scene.cameraPosition.x), 0, block(scene.cameraPosition.z)});
+  std::vector<ChunkPos> chunks;
+  for (int frame = 0; frame < scene.frameCount(); ++frame) {
+    const glm::dvec3 p = cameraAtFrame(scene, frame).position;
+    chunks.push_back(ChunkPos::of({block(p.x), 0, block(p.z)}));
+  }
+  std::sort(chunks.begin(), chunks.end());
+  chunks.erase(std::unique(chunks.begin(), chunks.end()), chunks.end());
+  return chunks;
+}
+
+// The chunks within `radius` of any of `centres`, each once, row by row (z, then x).
+std::vector<ChunkPos> chunksAround(const std::vector<ChunkPos>& centres, int radius) {
+  std::vector<ChunkPos> chunks;
+  for (const ChunkPos& c : centres)
+    for (int dz = -radius; dz <= radius; ++dz)
+      for (int dx = -radius; dx <= radius; ++dx) chunks.push_back({c.x + dx, c.z + dz});
+  const auto rowOrder = [](ChunkPos a, ChunkPos b) { return a.z != b.z ? a.z < b.z : a.x < b.x; };
+  std::sort(chunks.begin(), chunks.end(), rowOrder);
+  chunks.erase(std::unique(chunks.begin(), chunks.end()), chunks.end());
+  return chunks;
 }
 
 }  // namespace
 
 SceneWorld::SceneWorld(const SceneFile& scene, const BlockRegistry& blocks)
-    : shapes_(defaultPackShapes(blocks)), world_(blocks, &shapes_), light_(world_), centre_(cameraChunk(scene)), viewDistance_(scene.viewDistance) {
+    : shapes_(defaultPackShapes(blocks)),
+      world_(blocks, &shapes_),
+      light_(world_),
+      centres_(cameraChunks(scene)),
+      viewDistance_(scene.viewDistance),
+      loaded_(chunksAround(centres_, viewDistance_ + 1)) {
   try {
     generator_ = makeGenerator({scene.generator, scene.seed, {}}, blocks);
   } catch (const Error& e) {
     throw Error(sceneError(scene, "world.generator", e.what()));
   }
-  const int load = viewDistance_ + 1;
-  for (int dz = -load; dz <= load; ++dz)
-    for (int dx = -load; dx <= load; ++dx) {
-      auto chunk = std::make_unique<Chunk>(ChunkPos{centre_.x + dx, centre_.z + dz});
-      generator_->generate(*chunk);
-      world_.insertChunk(std::move(chunk));
-    }
+  for (const ChunkPos& pos : loaded_) {
+    auto chunk = std::make_unique<Chunk>(pos);
+    generator_->generate(*chunk);
+    world_.insertChunk(std::move(chunk));
+  }
   for (const SceneEdit& edit : scene.edits) {
     bool found = false;
     std::string problem;
@@ -53,27 +77,29 @@ SceneWorld::SceneWorld(const SceneFile& scene, const BlockRegistry& blocks)
     });
   }
   // Light after the edits: one propagation instead of one per edited block.
-  for (int dz = -load; dz <= load; ++dz)
-    for (int dx = -load; dx <= load; ++dx) light_.chunkLoaded({centre_.x + dx, centre_.z + dz});
+  for (const ChunkPos& pos : loaded_) light_.chunkLoaded(pos);
   light_.takeChangedSections();  // everything is meshed fresh anyway
 }
 
-// Only the part of the box inside the loaded chunks and the world's height is visited, so a huge box
-// costs no more than the loaded area.
+// Only the part of the box inside the loaded chunks and the world's height is visited, chunk by
+// chunk, so a huge box costs no more than the loaded area.
 template <class F>
 void SceneWorld::forEachCell(const SceneEdit& edit, F&& f) const {
-  const int load = viewDistance_ + 1;
-  const glm::ivec3 lo(std::max(edit.from.x, (centre_.x - load) * 16), std::max(edit.from.y, kMinY),
-                      std::max(edit.from.z, (centre_.z - load) * 16));
-  const glm::ivec3 hi(std::min(edit.to.x, (centre_.x + load) * 16 + 15), std::min(edit.to.y, kMaxY - 1),
-                      std::min(edit.to.z, (centre_.z + load) * 16 + 15));
-  for (int z = lo.z; z <= hi.z; ++z)
-    for (int y = lo.y; y <= hi.y; ++y)
-      for (int x = lo.x; x <= hi.x; ++x) f(BlockPos{x, y, z});
+  for (const ChunkPos& c : loaded_) {
+    const glm::ivec3 lo(std::max(edit.from.x, c.minBlockX()), std::max(edit.from.y, kMinY),
+                        std::max(edit.from.z, c.minBlockZ()));
+    const glm::ivec3 hi(std::min(edit.to.x, c.minBlockX() + 15), std::min(edit.to.y, kMaxY - 1),
+                        std::min(edit.to.z, c.minBlockZ() + 15));
+    for (int z = lo.z; z <= hi.z; ++z)
+      for (int y = lo.y; y <= hi.y; ++y)
+        for (int x = lo.x; x <= hi.x; ++x) f(BlockPos{x, y, z});
+  }
 }
 
 bool SceneWorld::withinView(SectionPos pos) const {
-  return std::abs(pos.x - centre_.x) <= viewDistance_ && std::abs(pos.z - centre_.z) <= viewDistance_;
+  return std::any_of(centres_.begin(), centres_.end(), [&](ChunkPos c) {
+    return std::abs(pos.x - c.x) <= viewDistance_ && std::abs(pos.z - c.z) <= viewDistance_;
+  });
 }
 
 std::vector<SectionMesh> SceneWorld::advanceTo(int frame, const BlockMeshTable& table) {
@@ -110,13 +136,12 @@ std::vector<SectionMesh> SceneWorld::advanceTo(int frame, const BlockMeshTable& 
 std::vector<SectionMesh> SceneWorld::meshVisible(const BlockMeshTable& table) const {
   std::vector<SectionMesh> meshes;
   SectionSnapshot snapshot;
-  for (int dz = -viewDistance_; dz <= viewDistance_; ++dz)
-    for (int dx = -viewDistance_; dx <= viewDistance_; ++dx)
-      for (int s = 0; s < kSectionCount; ++s) {
-        SectionMesh mesh = meshFromWorld(world_, {centre_.x + dx, s, centre_.z + dz}, table, snapshot);
-        // Kept even when empty: a closed section's links still hide what lies behind it.
-        if (!mesh.empty() || mesh.faceLinks != kAllFacesLinked) meshes.push_back(std::move(mesh));
-      }
+  for (const ChunkPos& c : chunksAround(centres_, viewDistance_))
+    for (int s = 0; s < kSectionCount; ++s) {
+      SectionMesh mesh = meshFromWorld(world_, {c.x, s, c.z}, table, snapshot);
+      // Kept even when empty: a closed section's links still hide what lies behind it.
+      if (!mesh.empty() || mesh.faceLinks != kAllFacesLinked) meshes.push_back(std::move(mesh));
+    }
   return meshes;
 }
 

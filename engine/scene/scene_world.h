@@ -1,6 +1,7 @@
 #pragma once
-// A scene's world, ready to draw: the chunks around the camera generated, the scene's edits applied,
-// light fully propagated, and every visible section meshed. Main thread only.
+// A scene's world, ready to draw: the chunks around every frame's camera generated, the scene's edits
+// applied, light fully propagated, and every visible section meshed. A camera path may visit places
+// far apart (one biome a frame): only the areas round its frames' cameras are made. Main thread only.
 
 #include <memory>
 #include <vector>
@@ -14,12 +15,12 @@ namespace terrasol {
 
 class SceneWorld {
  public:
-  // Generates chunks within view distance + 1 of the camera (the extra ring gives the visible ones
-  // their light and mesh halo), applies the edits, then lights everything. Throws Error naming the
-  // scene key for an unknown block or generator.
+  // Generates chunks within view distance + 1 of each frame's camera (the extra ring gives the
+  // visible ones their light and mesh halo), applies the edits, then lights everything. Throws Error
+  // naming the scene key for an unknown block or generator.
   SceneWorld(const SceneFile& scene, const BlockRegistry& blocks);
 
-  // Meshes of every section that has faces, within the view distance of the camera, and the empty
+  // Meshes of every section that has faces, within the view distance of a frame's camera, and the empty
   // meshes of closed sections (their face links hide what is behind them).
   std::vector<SectionMesh> meshVisible(const BlockMeshTable& table) const;
 
@@ -32,8 +33,6 @@ class SceneWorld {
   const World& world() const { return world_; }
   LightEngine& light() { return light_; }
   const LightEngine& light() const { return light_; }
-  ChunkPos centre() const { return centre_; }
-  int viewDistance() const { return viewDistance_; }
 
  private:
   struct Edit {
@@ -50,8 +49,9 @@ class SceneWorld {
   World world_;
   LightEngine light_;
   std::unique_ptr<ChunkGenerator> generator_;
-  ChunkPos centre_;
+  std::vector<ChunkPos> centres_;  // each frame's camera chunk, each once
   int viewDistance_;
+  std::vector<ChunkPos> loaded_;  // within view distance + 1 of a centre
   std::vector<Edit> edits_;  // in file order
 };
 
