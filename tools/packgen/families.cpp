@@ -190,13 +190,18 @@ Texel cactusSide(int x, int y) {
   return t;
 }
 
+// Laid out as Minecraft's lantern.png, where its model's faces read: the cage's sides (x 0..5,
+// y 2..8: a metal frame round the glow), the cage's top and bottom (y 9..14) and the cap's sides
+// (x 1..4, y 0..1) in metal; the rest is empty.
 Texel lantern(int x, int y) {
   Texel t;
   t.alpha = 0.0f;
-  const bool frame = (x == 5 || x == 10 || y == 6 || y == 14) && x >= 5 && x <= 10 && y >= 6 && y <= 14;
-  if (frame || (y == 5 && x >= 6 && x <= 9)) {
+  const bool capSide = y <= 1 && x >= 1 && x <= 4;
+  const bool cageSide = y >= 2 && y <= 8 && x <= 5;
+  const bool cageEnd = y >= 9 && y <= 14 && x <= 5;
+  if (capSide || cageEnd || (cageSide && (x == 0 || x == 5 || y == 2 || y == 8))) {
     t = metalBlock(x, y, rgb(70, 75, 85), 230, 150);
-  } else if (x > 5 && x < 10 && y > 6 && y < 14) {
+  } else if (cageSide) {
     t.color = rgb(255, 210, 120);
     t.alpha = 1.0f;
     t.emission = 220;

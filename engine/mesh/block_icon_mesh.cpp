@@ -1,0 +1,49 @@
+#include "mesh/block_icon_mesh.h"
+
+#include <algorithm>
+#include <memory>
+
+#include "mesh/section_snapshot.h"
+
+namespace terrasol {
+
+SectionMesh iconMesh(const BlockMeshTable& table, const BlockRegistry& blocks, BlockId state) {
+  // Big (about 35 KB): on the heap.
+  auto snapshot = std::make_unique<SectionSnapshot>();
+  snapshot->pos = {0, 0, 0};
+  snapshot->blocks.fill(kAir);
+  snapshot->opaque.fill(0);
+  snapshot->light.fill(SectionSnapshot::lightTerm(false, 0, 15));
+  snapshot->tints.fill(kPlainsTint);
+  const auto cell = static_cast<std::size_t>(SectionSnapshot::index(kIconCell, kIconCell, kIconCell));
+  const bool opaque = blocks.opaqueCubes()[state] != 0;
+  snapshot->blocks[cell] = state;
+  snapshot->opaque[cell] = opaque ? 1 : 0;
+  snapshot->light[cell] = SectionSnapshot::lightTerm(opaque, 0, 15);
+  return meshSection(*snapshot, table);
+}
+
+std::vector<BlockId> iconStates(const BlockRegistry& blocks) {
+  std::vector<BlockId> states;
+  for (std::size_t i = 0; i < blocks.blockCount(); ++i) {
+    const BlockType& type = blocks.block(i);
+    if (type.defaultState == kAir || type.shape == BlockShape::None) continue;
+    const bool wallVariant = [&] {
+      for (std::size_t j = 0; j < blocks.blockCount(); ++j)
+        if (blocks.block(j).wallVariant == type.name) return true;
+      return false;
+    }();
+    if (wallVariant) continue;
+    // Fences, panes and walls show a piece running across, not their lone post.
+    BlockId state = type.defaultState;
+    if (!type.connects.empty() && type.connects != "gate") {
+      for (const char* side : {"east", "west"}) {
+        state = blocks.with(state, side, "true").value_or(blocks.with(state, side, "low").value_or(state));
+      }
+    }
+    states.push_back(state);
+  }
+  return states;
+}
+
+}  // namespace terrasol
