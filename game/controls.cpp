@@ -13,7 +13,7 @@ constexpr std::string_view kActionNames[kActionCount] = {
     "forward",  "back",     "left",     "right",    "jump",     "sneak",        "sprint",
     "hotbar_1", "hotbar_2", "hotbar_3", "hotbar_4", "hotbar_5", "hotbar_6",     "hotbar_7",
     "hotbar_8", "hotbar_9", "hide_hud", "screenshot", "debug_overlay", "debug_view", "time_faster",
-    "time_stop", "time_set", "place_prop"};
+    "time_stop", "time_set", "place_prop", "inventory"};
 
 struct NamedKey {
   std::string_view name;
@@ -89,7 +89,7 @@ KeyBindings::KeyBindings() {
       {Action::Screenshot, GLFW_KEY_F2},   {Action::DebugOverlay, GLFW_KEY_F3},
       {Action::DebugView, GLFW_KEY_F4},    {Action::TimeFaster, GLFW_KEY_F6},
       {Action::TimeStop, GLFW_KEY_F7},     {Action::TimeSet, GLFW_KEY_F8},
-      {Action::PlaceProp, GLFW_KEY_P},
+      {Action::PlaceProp, GLFW_KEY_P},     {Action::Inventory, GLFW_KEY_E},
   };
   for (const auto& [action, key] : defaults) bind(action, key);
   for (int i = 0; i < 9; ++i) bind(static_cast<Action>(static_cast<int>(Action::Hotbar1) + i), GLFW_KEY_1 + i);

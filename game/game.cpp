@@ -115,7 +115,7 @@ Game::Game(GlfwWindow& window, const GameOptions& options)
   installCallbacks();
   hud_.emplace(window_.handle());
   window_.setVsync(settings_.vsync && !options.benchmark);
-  setMenu(false);
+  setScreens(false, false);
 }
 
 Game::~Game() {
@@ -134,18 +134,24 @@ void Game::installCallbacks() {
   glfwSetKeyCallback(w, [](GLFWwindow* win, int key, int, int action, int) {
     Game& g = of(win);
     if (action == GLFW_REPEAT) return;
-    if (g.menuOpen_) {
-      if (action == GLFW_PRESS && g.hud_ && g.hud_->takeKey(key, g.settings_)) {
+    if (g.screenOpen()) {
+      if (g.menuOpen_ && action == GLFW_PRESS && g.hud_ && g.hud_->takeKey(key, g.settings_)) {
         saveSettings(g.settingsFile_, g.settings_);
         return;
       }
-      if (key != kEscapeKey) return;  // the menu's own typing goes to ImGui
+      // The inventory's key closes it, unless the search field is being typed in.
+      if (g.inventoryOpen_ && action == GLFW_PRESS && key == g.settings_.keys.key(Action::Inventory) &&
+          !(g.hud_ && g.hud_->typing())) {
+        g.setScreens(false, false);
+        return;
+      }
+      if (key != kEscapeKey) return;  // the screens' own typing goes to ImGui
     }
     g.controls_.key(key, action == GLFW_PRESS);
   });
   glfwSetMouseButtonCallback(w, [](GLFWwindow* win, int button, int action, int) {
     Game& g = of(win);
-    if (g.menuOpen_) return;
+    if (g.screenOpen()) return;
     const MouseButton b = button == GLFW_MOUSE_BUTTON_LEFT    ? MouseButton::Left
                           : button == GLFW_MOUSE_BUTTON_RIGHT ? MouseButton::Right
                                                               : MouseButton::Middle;
@@ -153,13 +159,13 @@ void Game::installCallbacks() {
   });
   glfwSetCursorPosCallback(w, [](GLFWwindow* win, double x, double y) {
     Game& g = of(win);
-    if (g.cursorKnown_ && !g.menuOpen_) g.controls_.mouseMoved(glm::dvec2(x, y) - g.lastCursor_);
+    if (g.cursorKnown_ && !g.screenOpen()) g.controls_.mouseMoved(glm::dvec2(x, y) - g.lastCursor_);
     g.lastCursor_ = {x, y};
     g.cursorKnown_ = true;
   });
   glfwSetScrollCallback(w, [](GLFWwindow* win, double, double y) {
     Game& g = of(win);
-    if (!g.menuOpen_) g.controls_.scrolled(y);
+    if (!g.screenOpen()) g.controls_.scrolled(y);
   });
   glfwSetWindowFocusCallback(w, [](GLFWwindow* win, int focused) {
     if (!focused) of(win).controls_.releaseAll();  // keys let go elsewhere never reach us
@@ -174,7 +180,7 @@ void Game::playScript(double now) {
   for (const ScriptEvent& e : script_->due(now)) {
     switch (e.kind) {
       case ScriptEvent::Kind::Key:
-        if (menuOpen_ && e.key != kEscapeKey) break;
+        if (screenOpen() && e.key != kEscapeKey) break;
         controls_.key(e.key, e.down.value_or(true));
         if (!e.down) scriptTaps_.push_back(e.key);
         break;
@@ -205,8 +211,12 @@ void Game::playScript(double now) {
 }
 
 void Game::handleInput(const FrameInput& in, double dt) {
-  if (in.menuPressed) setMenu(!menuOpen_);
-  if (menuOpen_) return;
+  if (in.menuPressed) setScreens(!screenOpen(), false);  // Esc closes what is open, or opens the menu
+  if (screenOpen()) return;
+  if (in.wasPressed(Action::Inventory)) {
+    setScreens(false, true);
+    return;
+  }
   player_.look(static_cast<float>(in.mouseDelta.x * settings_.mouseSensitivity),
                static_cast<float>(in.mouseDelta.y * settings_.mouseSensitivity));
   for (int i = 0; i < 9; ++i) {
@@ -242,7 +252,7 @@ void Game::handleInput(const FrameInput& in, double dt) {
 
 void Game::tickWorld(const FrameInput& in, int ticks) {
   MoveInput move;
-  if (!menuOpen_) {
+  if (!screenOpen()) {
     move.forward = static_cast<float>(in.isHeld(Action::Forward)) - static_cast<float>(in.isHeld(Action::Back));
     move.strafe = static_cast<float>(in.isHeld(Action::Right)) - static_cast<float>(in.isHeld(Action::Left));
     move.jump = in.isHeld(Action::Jump);
@@ -290,10 +300,10 @@ void Game::draw(bool timed) {
   frame.reuseShadowMap = true;
   frame.props = &props_->placed().gpu();
   frame.underWater = underWaterAt(world_.world(), world_.light(), frame.cameraPosition);
-  if (targetProp_ && !menuOpen_ && showHud_) {
+  if (targetProp_ && !screenOpen() && showHud_) {
     const WorldBounds b = props_->placed().bounds(*targetProp_);
     frame.outline = WorldBox{b.min, b.max};
-  } else if (target_ && !menuOpen_ && showHud_) {
+  } else if (target_ && !screenOpen() && showHud_) {
     frame.outline = outlineOf(world_.world(), target_->block);
   }
   timings_.clear();

@@ -15,8 +15,10 @@
 
 namespace terrasol::session {
 
-void Game::setMenu(bool open) {
-  menuOpen_ = open;
+void Game::setScreens(bool menu, bool inventory) {
+  menuOpen_ = menu;
+  inventoryOpen_ = inventory;
+  const bool open = screenOpen();
   controls_.releaseAll();
   cursorKnown_ = false;
   GLFWwindow* w = window_.handle();
@@ -24,32 +26,39 @@ void Game::setMenu(bool open) {
   if (!open && glfwRawMouseMotionSupported()) glfwSetInputMode(w, GLFW_RAW_MOUSE_MOTION, GLFW_TRUE);
 }
 
+Hud::Slot Game::slotOf(BlockId state) {
+  Hud::Slot slot;
+  slot.name = blocks_[state].name;
+  if (const auto icon = renderer_.iconOf(state)) {
+    const BlockIcons& icons = renderer_.icons();
+    const glm::vec4 uv = icons.uv(*icon);
+    slot.texture = icons.texture();
+    slot.u0 = uv.x, slot.v0 = uv.y, slot.u1 = uv.z, slot.v1 = uv.w;
+  }
+  return slot;
+}
+
+std::vector<Hud::Slot> Game::hotbarSlots() {
+  std::vector<Hud::Slot> slots;
+  for (const BlockId state : hotbar_) slots.push_back(slotOf(state));
+  return slots;
+}
+
 void Game::drawHud() {
   hud_->beginFrame();
-  if (showHud_ && !menuOpen_) {
+  if (showHud_ && !screenOpen()) {
     hud_->crosshair();
-    std::vector<Hud::Slot> slots;
-    const BlockAssets& assets = renderer_.assets();
-    const GLuint icons = renderer_.iconTexture();
-    for (BlockId id : hotbar_) {
-      Hud::Slot slot;
-      slot.name = blocks_[id].name;
-      slot.texture = icons;
-      const int face = blocks_[id].shape == BlockShape::Cube ? static_cast<int>(Direction::Up) : 0;
-      const int texture = assets.atlas.textureOf(id, face);
-      const Atlas& atlas = assets.atlas.atlas;
-      if (texture >= 0 && static_cast<std::size_t>(texture) < atlas.textures.size()) {
-        const glm::vec4 rect = atlas.tileRect(atlas.textures[static_cast<std::size_t>(texture)].firstTile);
-        slot.u0 = rect.x, slot.v0 = rect.y, slot.u1 = rect.z, slot.v1 = rect.w;
-      }
-      const glm::vec3 colour = tintColour(assets.colormaps, blocks_[id].tint);
-      slot.r = colour.r, slot.g = colour.g, slot.b = colour.b;
-      slots.push_back(std::move(slot));
-    }
-    hud_->hotbar(slots, selected_);
+    hud_->hotbar(hotbarSlots(), selected_);
   }
   if (showOverlay_) hud_->overlay(overlayLeft(), overlayRight());
   if (menuOpen_) applyMenu(hud_->menu(settings_, renderer_.assets().packNames, propFiles(), selectedProp_));
+  if (inventoryOpen_) {
+    std::vector<Hud::Slot> items;
+    for (const BlockId state : renderer_.iconStates()) items.push_back(slotOf(state));
+    const Hud::InventoryResult r = hud_->inventory(items, hotbarSlots(), selected_);
+    if (r.select) selected_ = *r.select;
+    if (r.place) hotbar_[static_cast<std::size_t>(r.place->first)] = renderer_.iconStates()[r.place->second];
+  }
   hud_->endFrame();
 }
 
@@ -63,7 +72,7 @@ void Game::applyMenu(const MenuResult& r) {
   }
   if (r.prop) selectedProp_ = *r.prop;
   if (r.save) save();
-  if (r.resume) setMenu(false);
+  if (r.resume) setScreens(false, false);
   if (r.quit) quit_ = true;
 }
 

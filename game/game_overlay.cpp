@@ -116,11 +116,15 @@ void Game::writeReport() {
   nlohmann::json edits = nlohmann::json::array();
   for (const Edit& e : edits_) edits.push_back({{"pos", {e.pos.x, e.pos.y, e.pos.z}}, {"block", e.block}});
   const glm::dvec3 p = player_.position();
+  nlohmann::json hotbar = nlohmann::json::array();
+  for (const BlockId state : hotbar_) hotbar.push_back(blocks_.stateName(state));
   const nlohmann::json report = {
       {"world", world_.dir().string()},
       {"time", world_.level().time},
       {"frames", {{"drawn", framesDrawn_}, {"minimised", framesHidden_}}},
       {"player", {{"position", {p.x, p.y, p.z}}, {"yaw", player_.yaw}, {"pitch", player_.pitch}, {"flying", player_.flying}}},
+      {"screen", menuOpen_ ? "menu" : inventoryOpen_ ? "inventory" : "none"},
+      {"hotbar", hotbar},
       {"edits", edits},
       {"props", props},
       {"probes", probes}};

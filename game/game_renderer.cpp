@@ -2,9 +2,13 @@
 
 #include "core/error.h"
 #include "core/paths.h"
+#include "mesh/block_icon_mesh.h"
 
 namespace terrasol {
 namespace {
+
+// Drawn at up to 64 pixels (the hotbar's largest slot); ImGui shrinks them smoothly.
+constexpr int kIconPixels = 64;
 
 PackStack openPacks(const std::vector<PackChoice>& packs, std::vector<std::string>& names) {
   PackStack stack;
@@ -47,7 +51,13 @@ GameRenderer::GameRenderer(const BlockRegistry& blocks, const GameSettings& sett
       assets_(BlockAssets::load(blocks, settings.packs)),
       renderer_(makeRenderer(*assets_, settings.shadow, settings.reflections, {})),
       shadow_(settings.shadow),
-      reflections_(settings.reflections) {}
+      reflections_(settings.reflections),
+      iconStates_(terrasol::iconStates(blocks)),
+      iconOfBlock_(blocks.blockCount(), -1) {
+  for (std::size_t i = 0; i < iconStates_.size(); ++i) {
+    iconOfBlock_[blocks.blockIndex(iconStates_[i])] = static_cast<int>(i);
+  }
+}
 
 std::unique_ptr<BlockAssets> GameRenderer::loadPacks(const std::vector<PackChoice>& packs) const {
   return BlockAssets::load(blocks_, packs);
@@ -55,7 +65,7 @@ std::unique_ptr<BlockAssets> GameRenderer::loadPacks(const std::vector<PackChoic
 
 void GameRenderer::commit(std::unique_ptr<BlockAssets> assets) {
   assets_ = std::move(assets);
-  icons_.reset();
+  icons_.reset();  // drawn with the new packs when next shown
   renderer_ = makeRenderer(*assets_, shadow_, reflections_, propNeeds_);
   meshes_.clear();  // their tiles index the old atlas; the remeshed sections come back
 }
@@ -64,24 +74,29 @@ void GameRenderer::applySettings(const GameSettings& settings) {
   if (settings.shadow == shadow_ && settings.reflections == reflections_) return;
   shadow_ = settings.shadow;
   reflections_ = settings.reflections;
-  icons_.reset();
   renderer_ = makeRenderer(*assets_, shadow_, reflections_, propNeeds_);
 }
 
 void GameRenderer::setPropNeeds(const PropNeeds& needs) {
   if (needs == propNeeds_) return;
   propNeeds_ = needs;
-  icons_.reset();
   renderer_ = makeRenderer(*assets_, shadow_, reflections_, propNeeds_);
 }
 
-GLuint GameRenderer::iconTexture() {
+const BlockIcons& GameRenderer::icons() {
   if (!icons_) {
-    icons_ = gl::TextureView::create(GL_TEXTURE_2D, renderer_->atlasAlbedo(), GL_RGBA8, 0, 1, 0, 1);
-    glTextureParameteri(icons_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTextureParameteri(icons_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    std::vector<SectionMesh> meshes;
+    for (const BlockId state : iconStates_) meshes.push_back(iconMesh(assets_->table, blocks_, state));
+    icons_ = std::make_unique<BlockIcons>(ShaderPreprocessor(shaderDir()), assets_->atlas.atlas, assets_->colormaps,
+                                          meshes, kIconPixels);
   }
-  return icons_.id();
+  return *icons_;
+}
+
+std::optional<std::size_t> GameRenderer::iconOf(BlockId state) const {
+  const int icon = iconOfBlock_[blocks_.blockIndex(state)];
+  if (icon < 0) return std::nullopt;
+  return static_cast<std::size_t>(icon);
 }
 
 void GameRenderer::render(const FrameInputs& frame, glm::ivec2 size, std::vector<PassTiming>* timings) {

@@ -6,7 +6,10 @@
 #include <memory>
 #include <vector>
 
+#include <optional>
+
 #include "mesh/mesher.h"
+#include "render/block_icons.h"
 #include "render/deferred_renderer.h"
 #include "scene/block_atlas.h"
 #include "settings.h"
@@ -42,9 +45,11 @@ class GameRenderer {
   void render(const FrameInputs& frame, glm::ivec2 size, std::vector<PassTiming>* timings);
   const FrameStats& lastFrame() const { return renderer_->lastFrame(); }
   std::size_t sectionsOnGpu() const { return meshes_.sections().size(); }
-  // The atlas's level 0 as plain RGBA8 (the HUD draws into a non-sRGB target: the stored sRGB bytes
-  // are what should reach the screen).
-  GLuint iconTexture();
+  // The inventory's icons (drawn on first use, again after the packs change), one per block of
+  // iconStates(); iconOf gives a state's block's icon, if its block has one.
+  const BlockIcons& icons();
+  const std::vector<BlockId>& iconStates() const { return iconStates_; }
+  std::optional<std::size_t> iconOf(BlockId state) const;
 
  private:
   const BlockRegistry& blocks_;
@@ -54,7 +59,9 @@ class GameRenderer {
   ReflectionSettings reflections_;
   PropNeeds propNeeds_;
   SectionMeshes meshes_;
-  gl::TextureView icons_;  // of renderer_'s atlas; remade with it
+  std::vector<BlockId> iconStates_;
+  std::vector<int> iconOfBlock_;  // per block type: its icon, or -1
+  std::unique_ptr<BlockIcons> icons_;
 };
 
 }  // namespace terrasol

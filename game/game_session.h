@@ -60,7 +60,10 @@ class Game {
  private:
   static Game& of(GLFWwindow* w);  // the Game a window callback belongs to
   void installCallbacks();
-  void setMenu(bool open);
+  // Opens or closes the Esc menu or the inventory: while either is open the cursor is free and the
+  // keyboard and mouse go to them.
+  void setScreens(bool menu, bool inventory);
+  bool screenOpen() const { return menuOpen_ || inventoryOpen_; }
   void playScript(double now);
   void handleInput(const FrameInput& in, double dt);
   void useBlocks(const FrameInput& in, double dt);
@@ -73,6 +76,8 @@ class Game {
   void stream(Clock::time_point frameStart);
   void draw(bool timed);
   void drawHud();
+  Hud::Slot slotOf(BlockId state);  // its block's inventory icon
+  std::vector<Hud::Slot> hotbarSlots();
   void applyMenu(const MenuResult& r);
   // Places `model` (relative to the world folder, or absolute) standing in the targeted free cell.
   void placeProp(const std::string& model);
@@ -106,7 +111,7 @@ class Game {
   std::vector<int> scriptTaps_;       // keys tapped this frame: released next frame
   std::vector<MouseButton> buttonTaps_;
 
-  bool menuOpen_ = false, showHud_ = true, showOverlay_ = false, quit_ = false;
+  bool menuOpen_ = false, inventoryOpen_ = false, showHud_ = true, showOverlay_ = false, quit_ = false;
   bool hidden_ = false;  // the last frame had no pixels to draw
   int framesDrawn_ = 0, framesHidden_ = 0;
   bool spawnPending_ = false;

@@ -1,9 +1,11 @@
 #pragma once
 // The HUD and menus, drawn with Dear ImGui over the finished frame: crosshair, hotbar, the F3 debug
-// overlay, and the Esc menu with the settings (applied live by the game from what menu() reports).
+// overlay, the Esc menu with the settings (applied live by the game from what menu() reports) and
+// the creative inventory (E).
 
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "settings.h"
@@ -32,7 +34,8 @@ class Hud {
 
   void beginFrame();
   void crosshair();
-  // A hotbar slot: the block's name and its icon (a tile of `texture`, uv from the top left, tinted).
+  // A hotbar slot or inventory item: the block's name and its icon (a cell of `texture`, from
+  // (u0, v0) at its top left to (u1, v1), tinted).
   struct Slot {
     std::string name;
     unsigned texture = 0;
@@ -46,6 +49,17 @@ class Hud {
                   const std::vector<std::string>& propFiles, const std::string& selectedProp);
   void endFrame();  // draws into the bound framebuffer
 
+  // What the player did in the inventory this frame.
+  struct InventoryResult {
+    std::optional<std::pair<int, std::size_t>> place;  // put item `second` into hotbar slot `first`
+    std::optional<int> select;                          // a hotbar slot clicked
+  };
+  // Every item as an icon, found by a search field; clicking one puts it into the selected hotbar
+  // slot, dragging one onto a hotbar slot (shown below them) puts it there.
+  InventoryResult inventory(const std::vector<Slot>& items, const std::vector<Slot>& hotbar, int selected);
+  // A text field has the keyboard: letters are typing, not game keys.
+  bool typing() const;
+
   // While the menu waits for a key to bind, the game hands key presses here first; true when taken.
   bool takeKey(int key, GameSettings& settings);
 
@@ -57,6 +71,7 @@ class Hud {
 
   std::optional<Action> rebinding_;
   std::string newPack_;
+  std::string search_;  // the inventory's, kept while it is closed
 };
 
 }  // namespace terrasol

@@ -104,6 +104,7 @@ BlockIcons::BlockIcons(const ShaderPreprocessor& shaders, const Atlas& atlas, co
   glBindVertexArray(0);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   glDisable(GL_CULL_FACE);
+  glUseProgram(0);  // the program goes with this scope: nothing may find it current (ImGui restores it)
 }
 
 glm::vec4 BlockIcons::uv(std::size_t icon) const {

@@ -25,6 +25,8 @@ class BlockRegistry {
   std::size_t size() const { return blockOf_.size(); }
   std::size_t blockCount() const { return types_.size(); }
   const BlockType& block(std::size_t index) const { return types_[index]; }
+  // The index of a state's block type (0 .. blockCount() - 1).
+  std::size_t blockIndex(BlockId state) const { return blockOf_[state]; }
 
   // A state named as Minecraft's commands name it: "stone", "oak_log[axis=x]"; properties left out
   // keep their default. Throws Error saying what is unknown or malformed.

@@ -107,6 +107,25 @@ TEST_F(GameWindowTest, ScriptedPlayEditsSavesAndTheNextRunFindsTheEditsAndTheLig
   EXPECT_EQ(reopened["time"].get<std::int64_t>() / 20, played["time"].get<std::int64_t>() / 20) << "the world time is kept";
 }
 
+// E opens the creative inventory over the frozen game: every block's icon and the hotbar below. A
+// void world at noon behind it, so the picture depends on nothing streamed.
+TEST_F(GameWindowTest, TheInventoryKeyOpensTheInventory) {
+  const GameDir game("game_inventory");
+  std::filesystem::create_directories(game.dir / "world");
+  std::ofstream(game.dir / "world" / "level.json")
+      << R"({ "version": 1, "generator": "void", "seed": 1, "time": 6000,
+              "player": { "position": [0.5, 100, 0.5], "yaw": 0, "pitch": 0, "flying": true } })";
+  const auto script = game.dir / "script.json";
+  std::ofstream(script) << R"({ "step": 0.05, "events": [ { "t": 0.1, "key": "E" } ] })";
+  const auto report = game.dir / "report.json";
+  const auto shot = game.dir / "inventory.png";
+  ASSERT_EQ(runGame(game.common + " --size 480x270 --input-script " + script.string() + " --frames 10 --screenshot " +
+                    shot.string() + " --report " + report.string()),
+            0);
+  EXPECT_EQ(readJson(report)["screen"], "inventory");
+  EXPECT_TRUE(testing::matchesGolden(loadImage(shot), "game_inventory"));
+}
+
 TEST_F(GameWindowTest, APlacedPropIsLitSavedAndBackInTheNextRun) {
   const GameDir game("game_prop");
   const auto& dir = game.dir;
