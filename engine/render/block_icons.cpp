@@ -7,7 +7,6 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "core/error.h"
-#include "mesh/block_icon_mesh.h"
 #include "render/block_textures.h"
 #include "render/gl/program.h"
 #include "render/gl/render_target.h"
@@ -29,10 +28,12 @@ glm::mat4 iconTransform(const SectionMesh& mesh) {
       lo = glm::min(lo, p);
       hi = glm::max(hi, p);
     }
-  if (lo.x > hi.x) lo = hi = glm::vec3(kIconCell + 0.5f);
+  if (lo.x > hi.x) lo = hi = glm::vec3(0.5f);
   const float extent = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z});
   const float zoom = std::clamp(1.0f / std::max(extent, 1e-3f), 1.0f, 2.0f);
-  const glm::vec3 centre = zoom > 1.0f ? (lo + hi) * 0.5f : glm::vec3(kIconCell + 0.5f);
+  // A big mesh keeps its cell's centre (a slab sits low, as in Minecraft), a small one its own.
+  const glm::vec3 middle = (lo + hi) * 0.5f;
+  const glm::vec3 centre = zoom > 1.0f ? middle : glm::floor(middle) + 0.5f;
   const glm::vec3 eye = centre + glm::normalize(glm::vec3(1.0f, std::tan(glm::radians(30.0f)) * std::sqrt(2.0f), -1.0f)) * 4.0f;
   const float half = 0.86f / zoom;  // a cube's outline is 1.41 wide and 1.57 tall
   return glm::ortho(-half, half, -half, half, 0.1f, 8.0f) * glm::lookAt(eye, centre, glm::vec3(0.0f, 1.0f, 0.0f));
