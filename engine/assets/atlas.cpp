@@ -1,7 +1,5 @@
 #include "assets/atlas.h"
 
-#include <OpenImageIO/imagebuf.h>
-#include <OpenImageIO/imagebufalgo.h>
 
 #include <algorithm>
 #include <bit>
@@ -17,13 +15,7 @@ constexpr int kMaxTile = 512;
 
 Image scaleTo(const Image& src, int size) {
   if (src.width == size && src.height == size) return src;
-  const OIIO::ImageBuf in(OIIO::ImageSpec(src.width, src.height, 4, OIIO::TypeDesc::UINT8),
-                          const_cast<std::uint8_t*>(src.rgba.data()));
-  const OIIO::ROI roi(0, size, 0, size, 0, 1, 0, 4);
-  const OIIO::ImageBuf out = OIIO::ImageBufAlgo::resample(in, false, roi);
-  Image image(size, size);
-  out.get_pixels(roi, OIIO::TypeDesc::UINT8, image.rgba.data());
-  return image;
+  return resizeImage(src, size, size, false);
 }
 
 // Copies `tile` into the slot at (sx, sy) of `atlas`, the band around it wrapping the tile.

@@ -101,6 +101,16 @@ void saveImage(const std::filesystem::path& file, const Image& image) {
   }
 }
 
+Image resizeImage(const Image& src, int w, int h, bool filtered) {
+  const OIIO::ImageBuf in = wrap(src);
+  const OIIO::ROI roi(0, w, 0, h, 0, 1, 0, 4);
+  const OIIO::ImageBuf out =
+      filtered ? OIIO::ImageBufAlgo::resize(in, "", 0.0f, roi) : OIIO::ImageBufAlgo::resample(in, false, roi);
+  Image image(w, h);
+  out.get_pixels(roi, OIIO::TypeDesc::UINT8, image.rgba.data());
+  return image;
+}
+
 ImageComparison compareImages(const Image& actual, const Image& expected, const ImageTolerance& tolerance) {
   ImageComparison result;
   result.sameSize = actual.width == expected.width && actual.height == expected.height;

@@ -1,5 +1,7 @@
 #pragma once
-// 8-bit RGBA images and tolerant image comparison. All file I/O goes through OpenImageIO.
+// 8-bit RGBA images and tolerant image comparison. All file I/O goes through OpenImageIO (image.cpp);
+// a build for machines where its many libraries cannot go (TERRASOL_IMAGE_IO=stb, the GPU check's
+// bundle) reads and writes PNG and the other formats stb_image knows instead (image_stb.cpp).
 
 #include <cstdint>
 #include <filesystem>
@@ -32,6 +34,9 @@ Image loadImage(const std::filesystem::path& file, const ImageLimits& limits = {
 Image decodeImage(const std::vector<std::uint8_t>& bytes, const std::string& name, const ImageLimits& limits = {});
 // Writes by extension (.png, .exr, ...); throws Error naming the file on failure.
 void saveImage(const std::filesystem::path& file, const Image& image);
+// Scaled to w x h: `filtered` for colour and normals, else each pixel the source pixel under its
+// centre (data that must not blend: specular maps' metal ids and emission).
+Image resizeImage(const Image& src, int w, int h, bool filtered);
 
 // A pixel fails when any channel differs by more than `pixel` (0..1); the images match when at most
 // `percent` of the pixels fail. Defaults allow llvmpipe's differences across CPU instruction sets

@@ -1,7 +1,5 @@
 #include "assets/texture_loader.h"
 
-#include <OpenImageIO/imagebuf.h>
-#include <OpenImageIO/imagebufalgo.h>
 
 #include <cstring>
 
@@ -29,18 +27,9 @@ std::vector<Image> splitFrames(const Image& strip, int frameHeight) {
   return frames;
 }
 
-// Resampled with OpenImageIO: filtered for normal maps, nearest for specular data (no new metal ids
-// or emission values may appear between texels).
-Image resample(const Image& src, int w, int h, bool filtered) {
-  const OIIO::ImageBuf in(OIIO::ImageSpec(src.width, src.height, 4, OIIO::TypeDesc::UINT8),
-                          const_cast<std::uint8_t*>(src.rgba.data()));
-  const OIIO::ROI roi(0, w, 0, h, 0, 1, 0, 4);
-  const OIIO::ImageBuf out =
-      filtered ? OIIO::ImageBufAlgo::resize(in, "", 0.0f, roi) : OIIO::ImageBufAlgo::resample(in, false, roi);
-  Image image(w, h);
-  out.get_pixels(roi, OIIO::TypeDesc::UINT8, image.rgba.data());
-  return image;
-}
+// Filtered for normal maps, nearest for specular data (no new metal ids or emission values may appear
+// between texels).
+Image resample(const Image& src, int w, int h, bool filtered) { return resizeImage(src, w, h, filtered); }
 
 struct Companion {
   std::vector<Image> frames;

@@ -1,7 +1,7 @@
 // terrasol-render: renders a scene file headless (EGL), one PNG per frame of its camera path.
 //
 //   terrasol-render SCENE.json --out DIR [--set KEY=VALUE]... [--compare GOLDEN_DIR [--update-goldens]]
-//                   [--threshold X] [--max-failing PERCENT] [--report FILE.json] [--timings]
+//                   [--threshold X] [--max-failing PERCENT] [--report FILE.json] [--timings] [--no-images]
 //
 // Exit status: 0 done (and every frame matched); 1 a frame differs from its golden, a golden is
 // missing, or rendering failed; 2 bad arguments or a bad scene (nothing is written then).
@@ -33,7 +33,7 @@ struct Options {
   std::filesystem::path scene, out, compare, report;
   std::vector<std::string> overrides;
   std::vector<Sweep> sweeps;
-  bool updateGoldens = false, timings = false;
+  bool updateGoldens = false, timings = false, noImages = false;
   std::optional<float> threshold, maxFailing;
 };
 
@@ -44,8 +44,11 @@ const char* const kUsage =
     "  --update-goldens       with --compare: write the frames into GOLDEN_DIR instead, on purpose\n"
     "  --threshold X          per-pixel threshold 0..1 (default: the scene's compare.pixel_threshold)\n"
     "  --max-failing PERCENT  pixels allowed over it (default: the scene's compare.max_failing_percent)\n"
-    "  --report FILE.json     per-frame report: ms per pass, NaN/Inf pixels, sections drawn and culled\n"
+    "  --report FILE.json     per-frame report: ms per pass, NaN/Inf pixels, sections drawn and culled,\n"
+    "                         shadow and reflection error against the ray-traced truth; the GL renderer\n"
     "  --timings              print ms per pass (after a warm-up frame)\n"
+    "  --no-images            write no frames (benchmarks: the time to encode a PNG would leave the GPU\n"
+    "                         idle between frames, and it would clock down)\n"
     "  --sweep KEY=V1,V2,...  render every combination of the swept values (repeatable); writes\n"
     "                         DIR/sweep.csv and DIR/sweep.png (shadow error against ms, Pareto front)\n";
 
@@ -80,6 +83,7 @@ Options parseOptions(int argc, char** argv) {
     else if (arg == "--max-failing") o.maxFailing = numberArgument(arg, value(i, arg));
     else if (arg == "--report") o.report = value(i, arg);
     else if (arg == "--timings") o.timings = true;
+    else if (arg == "--no-images") o.noImages = true;
     else if (arg == "--sweep") o.sweeps.push_back(parseSweep(value(i, arg)));
     else if (!arg.empty() && arg[0] != '-' && o.scene.empty()) o.scene = arg;
     else throw UsageError("unknown argument \"" + arg + "\"");
@@ -176,7 +180,7 @@ bool compareFrame(const Options& o, const SceneFile& scene, int index, const Ima
   return false;
 }
 
-int renderScene(const Options& o, const SceneFile& scene, SceneRenderer& renderer) {
+int renderScene(const Options& o, const SceneFile& scene, SceneRenderer& renderer, const std::string& gl) {
   std::filesystem::create_directories(o.out);
   if (!o.compare.empty()) std::filesystem::create_directories(o.compare);
   Progress progress(renderer.frames(), stdout);
@@ -190,7 +194,7 @@ int renderScene(const Options& o, const SceneFile& scene, SceneRenderer& rendere
   for (int i = 0; i < renderer.frames(); ++i) {
     const auto start = std::chrono::steady_clock::now();
     const RenderedFrame frame = renderer.renderFrame(i, request);
-    saveImage(o.out / frameName("frame", i), frame.image);
+    if (!o.noImages) saveImage(o.out / frameName("frame", i), frame.image);
     if (!o.report.empty()) {
       frames.push_back(frameReport(i, frame));
       if (frame.geometry.shadowMapShown) frames.back()["shadow_error"] = shadowReport(renderer, i, frame, request);
@@ -212,6 +216,8 @@ int renderScene(const Options& o, const SceneFile& scene, SceneRenderer& rendere
   progress.finish();
   if (!o.report.empty()) {
     std::ofstream(o.report) << nlohmann::json{{"scene", scene.file.string()},
+                                              {"gl", gl},
+                                              {"size", {scene.width, scene.height}},
                                               {"shader_variants", renderer.renderer().shaderVariants()},
                                               {"gbuffer_bytes_per_pixel", renderer.renderer().gbufferContents().bytesPerPixel()},
                                               {"frames", frames}}.dump(2)
@@ -263,7 +269,7 @@ int run(int argc, char** argv) {
     std::fprintf(stderr, "terrasol-render: %s: %s\n", p.severity == PackProblem::Severity::Error ? "error" : "warning",
                  p.message.c_str());
   }
-  const int status = renderScene(options, *scene, *renderer);
+  const int status = renderScene(options, *scene, *renderer, context->description());
   context->checkErrors("rendering the scene");
   return status;
 }
