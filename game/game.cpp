@@ -268,7 +268,7 @@ void Game::tickWorld(const FrameInput& in, int ticks) {
   }
 }
 
-void Game::stream(Clock::time_point frameStart) {
+int Game::stream(Clock::time_point frameStart) {
   const glm::dvec3 p = player_.position();
   const ChunkPos centre = ChunkPos::of({static_cast<int>(std::floor(std::clamp(p.x, -3e7, 3e7))), 0,
                                         static_cast<int>(std::floor(std::clamp(p.z, -3e7, 3e7)))});
@@ -285,6 +285,7 @@ void Game::stream(Clock::time_point frameStart) {
       spawnPending_ = false;
     }
   }
+  return static_cast<int>(changed.size());
 }
 
 void Game::draw(bool timed) {

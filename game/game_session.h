@@ -73,7 +73,7 @@ class Game {
   // Whether `state` placed at `at` would stand in the player (its collision boxes).
   bool blocksPlayer(const BlockPos& at, BlockId state) const;
   void tickWorld(const FrameInput& in, int ticks);
-  void stream(Clock::time_point frameStart);
+  int stream(Clock::time_point frameStart);  // the number of section meshes uploaded
   void draw(bool timed);
   void drawHud();
   Hud::Slot slotOf(BlockId state);  // its block's inventory icon

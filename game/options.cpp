@@ -67,8 +67,11 @@ std::string gameUsage() {
          "                    last on top (this run; the menu's list is saved in the settings)\n"
          "  --settings FILE   the settings file (default: ~/.config/terrasol/settings.json)\n"
          "  --input-script F  replay timed key and mouse events from JSON (see game/input_script.h)\n"
-         "  --benchmark [S]   fly a fixed path for S seconds (default 20) at the current settings and\n"
-         "                    print frames per second (median and 1% low); nothing is saved\n"
+         "  --benchmark [PATH.json] [S]\n"
+         "                    fly the built-in circle, or the camera path of a scene file (benchmarks/\n"
+         "                    flight.json, still.json), for S seconds (default 20) at the current settings and\n"
+         "                    print frames per second (median and 1% low) and ms per pass; nothing is saved\n"
+         "  --benchmark-json F  with --benchmark: write every frame's time and what it did, and ms per pass\n"
          "  --report FILE     write the player, the edits and the probes as JSON at exit\n"
          "  --probe X,Y,Z     a block whose id and light go into the report (repeatable)\n"
          "  --frames N        quit after N frames (for smoke tests)\n"
@@ -103,8 +106,11 @@ GameOptions parseGameOptions(const std::vector<std::string>& args) {
     } else if (arg == "--input-script") {
       options.inputScript = value();
     } else if (arg == "--benchmark") {
-      const bool hasValue = i + 1 < args.size() && !args[i + 1].starts_with("--");
-      options.benchmark = hasValue ? parseSeconds(arg, value()) : 20.0;
+      auto next = [&] { return i + 1 < args.size() && !args[i + 1].starts_with("--"); };
+      if (next() && args[i + 1].ends_with(".json")) options.benchmarkPath = value();
+      options.benchmark = next() ? parseSeconds(arg, value()) : 20.0;
+    } else if (arg == "--benchmark-json") {
+      options.benchmarkJson = value();
     } else if (arg == "--report") {
       options.report = value();
     } else if (arg == "--probe") {
@@ -123,6 +129,7 @@ GameOptions parseGameOptions(const std::vector<std::string>& args) {
       throw Error("unknown option '" + arg + "' (see --help)");
     }
   }
+  if (!options.benchmarkJson.empty() && !options.benchmark) throw Error("--benchmark-json needs --benchmark");
   if (!options.screenshot.empty() && !options.frames && !options.benchmark) {
     throw Error("--screenshot needs --frames or --benchmark");
   }

@@ -20,7 +20,9 @@ struct GameOptions {
   std::filesystem::path settings;            // the settings file
   std::optional<int> frames;                 // quit after this many frames (smoke tests)
   std::filesystem::path inputScript;         // replay these events (a fixed time step)
-  std::optional<double> benchmark;           // seconds of the fixed benchmark flight
+  std::optional<double> benchmark;           // seconds of the benchmark flight
+  std::filesystem::path benchmarkPath;       // a scene file whose camera path is flown instead of the circle
+  std::filesystem::path benchmarkJson;       // per-frame times and per-pass ms go here
   std::filesystem::path report;              // JSON at exit: player, edits, probes
   std::vector<BlockPos> probes;              // blocks whose block and light go into the report
   glm::ivec2 size{1280, 720};                // window size

@@ -1,5 +1,7 @@
 #include "mesh/mesh_scheduler.h"
 
+#include "core/thread_priority.h"
+
 #include <algorithm>
 #include <exception>
 #include <string>
@@ -10,7 +12,10 @@
 namespace terrasol {
 
 MeshScheduler::MeshScheduler(const BlockMeshTable& table, int threads) : table_(table) {
-  for (int i = 0; i < std::max(threads, 1); ++i) workers_.emplace_back([this] { work(); });
+  for (int i = 0; i < std::max(threads, 1); ++i) workers_.emplace_back([this] {
+    lowerThisThreadsPriority();
+    work();
+  });
 }
 
 MeshScheduler::~MeshScheduler() {

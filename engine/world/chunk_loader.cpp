@@ -1,5 +1,7 @@
 #include "world/chunk_loader.h"
 
+#include "core/thread_priority.h"
+
 #include <algorithm>
 #include <utility>
 
@@ -17,7 +19,10 @@ std::int64_t distance2(ChunkPos a, ChunkPos b) {
 
 ChunkLoader::ChunkLoader(const ChunkGenerator& generator, WorldStorage* storage, int threads)
     : generator_(generator), storage_(storage) {
-  for (int i = 0; i < std::max(threads, 1); ++i) workers_.emplace_back([this] { work(); });
+  for (int i = 0; i < std::max(threads, 1); ++i) workers_.emplace_back([this] {
+    lowerThisThreadsPriority();
+    work();
+  });
 }
 
 ChunkLoader::~ChunkLoader() {

@@ -32,7 +32,9 @@ EGLDisplay surfacelessDisplay() {
 }
 
 EGLDisplay deviceDisplay() {
-  if (!hasClientExtension("EGL_EXT_platform_device") || !hasClientExtension("EGL_EXT_device_enumeration")) {
+  // NVIDIA's EGL names enumeration as part of EGL_EXT_device_base.
+  if (!hasClientExtension("EGL_EXT_platform_device") ||
+      !(hasClientExtension("EGL_EXT_device_enumeration") || hasClientExtension("EGL_EXT_device_base"))) {
     return EGL_NO_DISPLAY;
   }
   const auto queryDevices =
