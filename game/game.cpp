@@ -268,6 +268,13 @@ void Game::tickWorld(const FrameInput& in, int ticks) {
   }
 }
 
+void Game::frameDone(double seconds) {
+  frameGraph_.push_back(static_cast<float>(seconds * 1000.0));
+  if (frameGraph_.size() > 240) frameGraph_.pop_front();
+  resolution_.setMaxScale(settings_.renderScale);
+  if (settings_.targetFps > 0) resolution_.update(seconds * 1000.0, settings_.targetFps);
+}
+
 int Game::stream(Clock::time_point frameStart) {
   const glm::dvec3 p = player_.position();
   const ChunkPos centre = ChunkPos::of({static_cast<int>(std::floor(std::clamp(p.x, -3e7, 3e7))), 0,
@@ -301,6 +308,7 @@ void Game::draw(bool timed) {
   frame.reuseShadowMap = true;
   frame.props = &props_->placed().gpu();
   frame.underWater = underWaterAt(world_.world(), world_.light(), frame.cameraPosition);
+  frame.renderScale = settings_.targetFps > 0 ? resolution_.scale() : settings_.renderScale;
   if (targetProp_ && !screenOpen() && showHud_) {
     const WorldBounds b = props_->placed().bounds(*targetProp_);
     frame.outline = WorldBox{b.min, b.max};
@@ -368,6 +376,7 @@ int Game::run() {
     }
     window_.swapBuffers();
     frameTimes_.push_back(std::chrono::duration<double>(Clock::now() - frameStart).count());
+    if (!hidden_) frameDone(frameTimes_.back());
     double sum = 0.0;
     for (double t : frameTimes_) sum += t;
     while (sum > 1.0 && frameTimes_.size() > 1) {

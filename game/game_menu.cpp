@@ -50,7 +50,7 @@ void Game::drawHud() {
     hud_->crosshair();
     hud_->hotbar(hotbarSlots(), selected_);
   }
-  if (showOverlay_) hud_->overlay(overlayLeft(), overlayRight());
+  if (showOverlay_) hud_->overlay(overlayLeft(), overlayRight(), {frameGraph_.begin(), frameGraph_.end()});
   if (menuOpen_) applyMenu(hud_->menu(settings_, renderer_.assets().packNames, propFiles(), selectedProp_));
   if (inventoryOpen_) {
     std::vector<Hud::Slot> items;

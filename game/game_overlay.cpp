@@ -72,6 +72,11 @@ std::vector<std::string> Game::overlayRight() const {
   out.push_back("GL: " + glRenderer_);
   const glm::ivec2 size = drawableSize();
   out.push_back(format("Display: %dx%d, view %d chunks, fov %.0f", size.x, size.y, settings_.viewDistance, settings_.fov));
+  const float scale = settings_.targetFps > 0 ? resolution_.scale() : settings_.renderScale;
+  const glm::ivec2 drawn = scaledRenderSize(size, scale);
+  out.push_back(settings_.targetFps > 0
+                    ? format("Render scale: %.2f (%dx%d), dynamic for %d fps", scale, drawn.x, drawn.y, settings_.targetFps)
+                    : format("Render scale: %.2f (%dx%d)", scale, drawn.x, drawn.y));
   const ShadowSettings& s = settings_.shadow;
   out.push_back(s.enabled ? format("Shadows: %s %d^2, %.0f blocks, pcf %d", std::string(nameOf(s.mode, kShadowModes)).c_str(),
                                    s.resolution, s.distance, s.pcfSamples)

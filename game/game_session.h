@@ -5,6 +5,7 @@
 
 #include <array>
 #include <chrono>
+#include <deque>
 #include <cstdio>
 #include <filesystem>
 #include <optional>
@@ -12,6 +13,7 @@
 #include <vector>
 
 #include "controls.h"
+#include "render/dynamic_resolution.h"
 #include "game_renderer.h"
 #include "game_props.h"
 #include "pipeline/streamed_world.h"
@@ -75,6 +77,8 @@ class Game {
   void tickWorld(const FrameInput& in, int ticks);
   int stream(Clock::time_point frameStart);  // the number of section meshes uploaded
   void draw(bool timed);
+  // After a drawn frame of `seconds`: dynamic resolution's next scale.
+  void frameDone(double seconds);
   void drawHud();
   Hud::Slot slotOf(BlockId state);  // its block's inventory icon
   std::vector<Hud::Slot> hotbarSlots();
@@ -117,6 +121,7 @@ class Game {
   bool spawnPending_ = false;
   int selected_ = 0;
   std::array<BlockId, 9> hotbar_{};
+  DynamicResolution resolution_;  // the render scale while settings_.targetFps holds a rate
   int debugView_ = 0;
   int timeSpeed_ = 0;  // index into kTimeSpeeds
   bool timeStopped_ = false;
@@ -129,6 +134,7 @@ class Game {
   std::vector<Edit> edits_;
   std::vector<PassTiming> timings_;
   std::vector<double> frameTimes_;  // seconds, the last second's
+  std::deque<float> frameGraph_;     // ms, the last 240 frames' (the F3 graph)
   bool screenshotRequested_ = false;
   bool scriptStarted_ = false;
   double scriptClock_ = 0.0;  // script time: starts when the world is ready

@@ -100,7 +100,8 @@ void Hud::hotbar(const std::vector<Slot>& slots, int selected) {
   }
 }
 
-void Hud::overlay(const std::vector<std::string>& left, const std::vector<std::string>& right) {
+void Hud::overlay(const std::vector<std::string>& left, const std::vector<std::string>& right,
+                  const std::vector<float>& frameMs) {
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   ImGui::SetNextWindowPos({4.0f, 4.0f});
   ImGui::SetNextWindowBgAlpha(0.45f);
@@ -110,6 +111,14 @@ void Hud::overlay(const std::vector<std::string>& left, const std::vector<std::s
   if (ImGui::Begin("##debug_left", nullptr, kOverlayFlags)) {
     ImGui::SetWindowFontScale(scale);
     for (const std::string& line : left) ImGui::TextUnformatted(line.c_str());
+    if (!frameMs.empty()) {
+      // Scaled to the slowest frame shown (at least 50 ms), as Minecraft's and Luanti's graphs are.
+      const float top = std::max(50.0f, *std::max_element(frameMs.begin(), frameMs.end()));
+      char label[64];
+      std::snprintf(label, sizeof label, "frame ms (top %.0f)", top);
+      ImGui::PlotLines("##frames", frameMs.data(), static_cast<int>(frameMs.size()), 0, label, 0.0f, top,
+                       {240.0f * scale, 48.0f * scale});
+    }
     leftBottom = ImGui::GetWindowPos().y + ImGui::GetWindowSize().y;
     leftRight = ImGui::GetWindowPos().x + ImGui::GetWindowSize().x;
   }

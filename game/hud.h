@@ -43,7 +43,9 @@ class Hud {
     float r = 1, g = 1, b = 1;
   };
   void hotbar(const std::vector<Slot>& slots, int selected);
-  void overlay(const std::vector<std::string>& left, const std::vector<std::string>& right);
+  // The F3 panels; under the left one, the last frames' times as a graph (ms, oldest first).
+  void overlay(const std::vector<std::string>& left, const std::vector<std::string>& right,
+               const std::vector<float>& frameMs = {});
   // `propFiles`: models the Props tab offers; `selectedProp`: the one the place-prop key places.
   MenuResult menu(GameSettings& settings, const std::vector<std::string>& loadedPacks,
                   const std::vector<std::string>& propFiles, const std::string& selectedProp);

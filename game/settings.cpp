@@ -43,7 +43,7 @@ void parseKeys(const json& value, KeyBindings& keys) {
 
 GameSettings parseRoot(const json& root, const path& dir) {
   checkObject(root, "", {"view_distance", "fov", "mouse_sensitivity", "sun_path_rotation", "shadow", "reflections", "packs",
-                         "keys", "vsync"});
+                         "keys", "vsync", "render_scale", "target_fps"});
   GameSettings s;
   if (const json* v = field(root, "view_distance")) s.viewDistance = static_cast<int>(wholeNumber(*v, "view_distance", 2, 32));
   if (const json* v = field(root, "fov")) s.fov = numberIn(*v, "fov", 30.0, 110.0, false);
@@ -54,6 +54,8 @@ GameSettings parseRoot(const json& root, const path& dir) {
   if (const json* v = field(root, "packs")) s.packs = parsePacks(*v, dir);
   if (const json* v = field(root, "keys")) parseKeys(*v, s.keys);
   if (const json* v = field(root, "vsync")) s.vsync = boolean(*v, "vsync");
+  if (const json* v = field(root, "render_scale")) s.renderScale = numberIn(*v, "render_scale", 0.25, 1.0, false);
+  if (const json* v = field(root, "target_fps")) s.targetFps = static_cast<int>(wholeNumber(*v, "target_fps", 0, 1000));
   return s;
 }
 
@@ -84,7 +86,8 @@ void saveSettings(const std::filesystem::path& file, const GameSettings& s) {
   const json root = {{"view_distance", s.viewDistance}, {"fov", s.fov},
                      {"mouse_sensitivity", s.mouseSensitivity}, {"sun_path_rotation", s.sunPathRotation},
                      {"shadow", shadowJson(s.shadow)}, {"reflections", reflectionsJson(s.reflections)},
-                     {"packs", packs}, {"keys", keys}, {"vsync", s.vsync}};
+                     {"packs", packs}, {"keys", keys}, {"vsync", s.vsync},
+                     {"render_scale", s.renderScale}, {"target_fps", s.targetFps}};
   if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path());
   writeFileAtomically(file, root.dump(2) + "\n");
 }

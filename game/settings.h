@@ -28,6 +28,8 @@ struct GameSettings {
   std::vector<PackChoice> packs;    // stacked bottom to top over the default pack
   KeyBindings keys;
   bool vsync = true;
+  float renderScale = 1.0f;         // the scene drawn at this fraction of the window, 0.25..1
+  int targetFps = 30;               // dynamic resolution holds this rate (below render_scale); 0: off
 
   static ShadowSettings defaultShadow() {
     ShadowSettings s;

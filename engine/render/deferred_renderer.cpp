@@ -26,15 +26,25 @@ DeferredRenderer::DeferredRenderer(const ShaderPreprocessor& shaders, const Atla
       outline_(VariantBuilder(shaders, shared_), shared_),
       gpuTimer_(!softwareRenderer()) {}
 
+glm::ivec2 scaledRenderSize(glm::ivec2 size, float scale) {
+  const float s = std::isfinite(scale) ? std::clamp(scale, 0.25f, 1.0f) : 1.0f;
+  if (s >= 1.0f) return size;
+  return glm::max(glm::ivec2(glm::round(glm::vec2(size) * s)), glm::ivec2(1));
+}
+
 void DeferredRenderer::render(const FrameInputs& inputs, const SectionMeshes& meshes, GLuint framebuffer,
-                              glm::ivec2 size, std::vector<PassTiming>* timings) {
-  if (size.x <= 0 || size.y <= 0) return;  // a minimised window: nothing to draw
+                              glm::ivec2 targetSize, std::vector<PassTiming>* timings) {
+  if (targetSize.x <= 0 || targetSize.y <= 0) return;  // a minimised window: nothing to draw
   stats_ = {};
   reflected_ = false;
+  // Debug views show the G-buffer texel for texel.
+  const glm::ivec2 size =
+      inputs.debugView == DebugView::None ? scaledRenderSize(targetSize, inputs.renderScale) : targetSize;
   Frame frame{inputs, meshes, stats_};
   frame.view = viewFor(inputs, size);
   frame.target = framebuffer;
   frame.size = size;
+  frame.targetSize = targetSize;
   frame.shadow = shadow_.lookup();
   shared_.textures.update(inputs.ticks);
 

@@ -74,7 +74,8 @@ struct Frame {
   FrameResources resources{};
   GBuffer* gbuffer = nullptr;  // realized by the graph before the first pass that needs it
   GLuint target = 0;           // the framebuffer drawn into (0: a window)
-  glm::ivec2 size{0};
+  glm::ivec2 size{0};          // the scene's: the G-buffer's and every pass's before the final one
+  glm::ivec2 targetSize{0};    // the target's: the final pass scales the scene up to it
   ShadowLookup shadow;
   ReflectionTargets reflections;
   // The shadow pass drew or kept the map this frame. (A frame whose passes never read the map, a debug

@@ -49,7 +49,14 @@ struct FrameInputs {
   const Props* props = nullptr;
   // Under water, the surface is seen from below and what lies beyond fades into the water's colour.
   std::optional<UnderWater> underWater;
+  // The G-buffer, lighting and translucent passes draw at this fraction of the target's size (0.25..1),
+  // and the final pass scales the picture up to it (render/dynamic_resolution.h moves it in the game).
+  // Debug views always draw at 1.
+  float renderScale = 1.0f;
 };
+
+// The size the scene is drawn at for a target of `size` and a render scale (clamped to 0.25..1).
+glm::ivec2 scaledRenderSize(glm::ivec2 size, float scale);
 
 // Choices that pick shader variants, fixed for the renderer's life.
 struct RendererOptions {

@@ -127,6 +127,7 @@ FrameInputs SceneRenderer::inputsFor(int frame) const {
   inputs.ticks = camera.time;
   inputs.sunPathRotation = scene_.sunPathRotation;
   inputs.viewDistance = static_cast<float>(scene_.viewDistance * 16);
+  inputs.renderScale = scene_.renderScale;
   inputs.debugView = debugView_;
   inputs.materialAo = scene_.materialAo;
   inputs.props = &gpu_->props.gpu();

@@ -23,7 +23,7 @@ void drawFullScreen(GLuint program, const PassShared& shared, GLenum mode, GLsiz
 
 void bindTarget(const Frame& frame) {
   glBindFramebuffer(GL_FRAMEBUFFER, frame.target);
-  glViewport(0, 0, frame.size.x, frame.size.y);
+  glViewport(0, 0, frame.targetSize.x, frame.targetSize.y);
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_CULL_FACE);
 }
@@ -31,7 +31,10 @@ void bindTarget(const Frame& frame) {
 }  // namespace
 
 FinalPass::FinalPass(const VariantBuilder& build, PassShared& shared)
-    : shared_(shared), final_(build("fullscreen.vert", "final.frag")) {}
+    : shared_(shared), final_(build("fullscreen.vert", "final.frag")), bilinear_(gl::Sampler::create()) {
+  for (const GLenum filter : {GL_TEXTURE_MIN_FILTER, GL_TEXTURE_MAG_FILTER}) glSamplerParameteri(bilinear_.id(), filter, GL_LINEAR);
+  for (const GLenum wrap : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T}) glSamplerParameteri(bilinear_.id(), wrap, GL_CLAMP_TO_EDGE);
+}
 
 void FinalPass::setup(FrameGraph::Builder& builder, Frame& frame) {
   builder.read(frame.resources.scene);
@@ -42,7 +45,12 @@ void FinalPass::execute(Frame& frame) {
   bindTarget(frame);
   glBindTextureUnit(0, frame.gbuffer->scene());
   glProgramUniform1f(final_.id(), glGetUniformLocation(final_.id(), "u_exposure"), kExposure);
+  // Scene texels per target pixel: 1 reads texel for texel, below 1 scales the scene up.
+  const glm::vec2 scale = glm::vec2(frame.size) / glm::vec2(frame.targetSize);
+  glProgramUniform2fv(final_.id(), glGetUniformLocation(final_.id(), "u_sceneScale"), 1, glm::value_ptr(scale));
+  glBindSampler(0, bilinear_.id());  // texelFetch ignores it: the unscaled path reads exactly as before
   drawFullScreen(final_.id(), shared_, GL_TRIANGLES, 3);
+  glBindSampler(0, 0);
 }
 
 DebugViewPass::DebugViewPass(const VariantBuilder& build, PassShared& shared)
@@ -94,6 +102,8 @@ void OutlinePass::execute(Frame& frame) {
   glEnable(GL_BLEND);
   glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
   glBindTextureUnit(0, frame.gbuffer->depth());
+  const glm::vec2 scale = glm::vec2(frame.size) / glm::vec2(frame.targetSize);
+  glProgramUniform2fv(outline_.id(), glGetUniformLocation(outline_.id(), "u_depthScale"), 1, glm::value_ptr(scale));
   gl::setVec3(outline_.id(), "u_min", glm::vec3(box.min - kGrow - frame.view.camera));
   gl::setVec3(outline_.id(), "u_max", glm::vec3(box.max + kGrow - frame.view.camera));
   gl::setMat4(outline_.id(), "u_viewProjection", frame.view.viewProjection);

@@ -18,6 +18,7 @@ class FinalPass final : public RenderPass {
  private:
   PassShared& shared_;
   gl::Program final_;
+  gl::Sampler bilinear_;  // the scene read between texels when it is scaled up
 };
 
 // Writes the target without reading the lit scene, so the graph leaves out what only the final image needs.
