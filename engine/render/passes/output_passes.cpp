@@ -2,6 +2,7 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include "render/gl/render_target.h"
 #include "render/gl/uniforms.h"
 #include "render/gl_slots.h"
 
@@ -31,10 +32,9 @@ void bindTarget(const Frame& frame) {
 }  // namespace
 
 FinalPass::FinalPass(const VariantBuilder& build, PassShared& shared)
-    : shared_(shared), final_(build("fullscreen.vert", "final.frag")), bilinear_(gl::Sampler::create()) {
-  for (const GLenum filter : {GL_TEXTURE_MIN_FILTER, GL_TEXTURE_MAG_FILTER}) glSamplerParameteri(bilinear_.id(), filter, GL_LINEAR);
-  for (const GLenum wrap : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T}) glSamplerParameteri(bilinear_.id(), wrap, GL_CLAMP_TO_EDGE);
-}
+    : shared_(shared),
+      final_(build("fullscreen.vert", "final.frag")),
+      upscale_(build("fullscreen.vert", "upscale.frag")) {}
 
 void FinalPass::setup(FrameGraph::Builder& builder, Frame& frame) {
   builder.read(frame.resources.scene);
@@ -42,15 +42,30 @@ void FinalPass::setup(FrameGraph::Builder& builder, Frame& frame) {
 }
 
 void FinalPass::execute(Frame& frame) {
-  bindTarget(frame);
   glBindTextureUnit(0, frame.gbuffer->scene());
   glProgramUniform1f(final_.id(), glGetUniformLocation(final_.id(), "u_exposure"), kExposure);
-  // Scene texels per target pixel: 1 reads texel for texel, below 1 scales the scene up.
-  const glm::vec2 scale = glm::vec2(frame.size) / glm::vec2(frame.targetSize);
-  glProgramUniform2fv(final_.id(), glGetUniformLocation(final_.id(), "u_sceneScale"), 1, glm::value_ptr(scale));
-  glBindSampler(0, bilinear_.id());  // texelFetch ignores it: the unscaled path reads exactly as before
+  if (frame.size == frame.targetSize) {
+    bindTarget(frame);
+    drawFullScreen(final_.id(), shared_, GL_TRIANGLES, 3);
+    return;
+  }
+  if (imageSize_ != frame.size) {
+    imageSize_ = frame.size;
+    image_ = targetTexture(GL_RGBA8, frame.size, GL_NEAREST);
+    imageTarget_ = gl::Framebuffer::create();
+    glNamedFramebufferTexture(imageTarget_.id(), GL_COLOR_ATTACHMENT0, image_.id(), 0);
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, imageTarget_.id());
+  glViewport(0, 0, frame.size.x, frame.size.y);
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_CULL_FACE);
   drawFullScreen(final_.id(), shared_, GL_TRIANGLES, 3);
-  glBindSampler(0, 0);
+
+  bindTarget(frame);
+  glBindTextureUnit(0, image_.id());
+  const glm::vec2 scale = glm::vec2(frame.size) / glm::vec2(frame.targetSize);
+  glProgramUniform2fv(upscale_.id(), glGetUniformLocation(upscale_.id(), "u_sceneScale"), 1, glm::value_ptr(scale));
+  drawFullScreen(upscale_.id(), shared_, GL_TRIANGLES, 3);
 }
 
 DebugViewPass::DebugViewPass(const VariantBuilder& build, PassShared& shared)

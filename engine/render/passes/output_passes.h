@@ -17,8 +17,11 @@ class FinalPass final : public RenderPass {
 
  private:
   PassShared& shared_;
-  gl::Program final_;
-  gl::Sampler bilinear_;  // the scene read between texels when it is scaled up
+  gl::Program final_, upscale_;
+  // At a render scale: the final image at the scene's size, then scaled up to the target.
+  glm::ivec2 imageSize_{0};
+  gl::Texture image_;
+  gl::Framebuffer imageTarget_;
 };
 
 // Writes the target without reading the lit scene, so the graph leaves out what only the final image needs.
