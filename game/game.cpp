@@ -14,6 +14,7 @@
 #include <thread>
 
 #include "core/error.h"
+#include "first_run.h"
 #include "core/log.h"
 #include "core/paths.h"
 #include "game_renderer.h"
@@ -112,6 +113,7 @@ Game::Game(GlfwWindow& window, const GameOptions& options)
   if (!offered.empty()) selectedProp_ = offered.front();
   if (!options.inputScript.empty()) script_.emplace(loadInputScript(options.inputScript));
   glRenderer_ = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  if (!std::filesystem::exists(settingsFile_)) probeMachine();
   installCallbacks();
   hud_.emplace(window_.handle());
   window_.setVsync(settings_.vsync && !options.benchmark);
@@ -266,6 +268,25 @@ void Game::tickWorld(const FrameInput& in, int ticks) {
     }
     if (!timeStopped_) world_.level().time += kTimeSpeeds[timeSpeed_];
   }
+}
+
+void Game::probeMachine() {
+  if (drawableSize().x <= 0 || drawableSize().y <= 0) return;
+  std::vector<double> ms;
+  for (int i = 0; i < 7; ++i) {
+    const Clock::time_point start = Clock::now();
+    draw(false);
+    glFinish();
+    ms.push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
+  }
+  ms.erase(ms.begin());  // the first pays for shader and target creation
+  std::sort(ms.begin(), ms.end());
+  settings_ = firstRunSettings({glRenderer_, ms[ms.size() / 2]}, settings_);
+  renderer_.applySettings(settings_);
+  world_.setViewDistance(settings_.viewDistance);
+  resolution_.setMaxScale(settings_.renderScale);
+  logInfo("first start: " + settings_.firstRun->choice);
+  if (!options_.benchmark) saveSettings(settingsFile_, settings_);
 }
 
 void Game::frameDone(double seconds) {

@@ -79,6 +79,8 @@ class Game {
   void draw(bool timed);
   // After a drawn frame of `seconds`: dynamic resolution's next scale.
   void frameDone(double seconds);
+  // The first start (no settings file): times a few empty frames and picks settings for the machine.
+  void probeMachine();
   void drawHud();
   Hud::Slot slotOf(BlockId state);  // its block's inventory icon
   std::vector<Hud::Slot> hotbarSlots();

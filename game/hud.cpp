@@ -190,6 +190,13 @@ void Hud::settingsTab(GameSettings& s, MenuResult& out) {
   ImGui::SliderFloat("Sun path rotation", &s.sunPathRotation, -90.0f, 90.0f, "%.0f deg");
   out.settingsChanged |= released();
   out.settingsChanged |= ImGui::Checkbox("VSync", &s.vsync);
+  ImGui::SliderFloat("Render scale", &s.renderScale, 0.25f, 1.0f, "%.2f");
+  out.settingsChanged |= released();
+  ImGui::SliderInt("Target fps (0: fixed scale)", &s.targetFps, 0, 144);
+  out.settingsChanged |= released();
+  if (s.firstRun) {
+    ImGui::TextWrapped("Chosen on the first start for %s (%s).", s.firstRun->glRenderer.c_str(), s.firstRun->choice.c_str());
+  }
   ImGui::Separator();
   ImGui::TextUnformatted("Shadows");
   ShadowSettings& sh = s.shadow;

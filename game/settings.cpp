@@ -43,7 +43,7 @@ void parseKeys(const json& value, KeyBindings& keys) {
 
 GameSettings parseRoot(const json& root, const path& dir) {
   checkObject(root, "", {"view_distance", "fov", "mouse_sensitivity", "sun_path_rotation", "shadow", "reflections", "packs",
-                         "keys", "vsync", "render_scale", "target_fps"});
+                         "keys", "vsync", "render_scale", "target_fps", "first_run"});
   GameSettings s;
   if (const json* v = field(root, "view_distance")) s.viewDistance = static_cast<int>(wholeNumber(*v, "view_distance", 2, 32));
   if (const json* v = field(root, "fov")) s.fov = numberIn(*v, "fov", 30.0, 110.0, false);
@@ -56,6 +56,14 @@ GameSettings parseRoot(const json& root, const path& dir) {
   if (const json* v = field(root, "vsync")) s.vsync = boolean(*v, "vsync");
   if (const json* v = field(root, "render_scale")) s.renderScale = numberIn(*v, "render_scale", 0.25, 1.0, false);
   if (const json* v = field(root, "target_fps")) s.targetFps = static_cast<int>(wholeNumber(*v, "target_fps", 0, 1000));
+  if (const json* v = field(root, "first_run")) {
+    checkObject(*v, "first_run", {"gl", "frame_ms", "choice"});
+    FirstRunRecord r;
+    if (const json* g = field(*v, "gl")) r.glRenderer = nonEmptyString(*g, "first_run.gl");
+    if (const json* m = field(*v, "frame_ms")) r.frameMs = numberIn(*m, "first_run.frame_ms", 0.0, 1e6, false);
+    if (const json* c = field(*v, "choice")) r.choice = nonEmptyString(*c, "first_run.choice");
+    s.firstRun = r;
+  }
   return s;
 }
 
@@ -83,11 +91,14 @@ void saveSettings(const std::filesystem::path& file, const GameSettings& s) {
     const auto a = static_cast<Action>(i);
     keys[std::string(actionName(a))] = keyName(s.keys.key(a));
   }
-  const json root = {{"view_distance", s.viewDistance}, {"fov", s.fov},
+  json root = {{"view_distance", s.viewDistance}, {"fov", s.fov},
                      {"mouse_sensitivity", s.mouseSensitivity}, {"sun_path_rotation", s.sunPathRotation},
                      {"shadow", shadowJson(s.shadow)}, {"reflections", reflectionsJson(s.reflections)},
                      {"packs", packs}, {"keys", keys}, {"vsync", s.vsync},
                      {"render_scale", s.renderScale}, {"target_fps", s.targetFps}};
+  if (s.firstRun) {
+    root["first_run"] = {{"gl", s.firstRun->glRenderer}, {"frame_ms", s.firstRun->frameMs}, {"choice", s.firstRun->choice}};
+  }
   if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path());
   writeFileAtomically(file, root.dump(2) + "\n");
 }

@@ -4,6 +4,8 @@
 // and the key (never silently replaced: the player's settings are not thrown away).
 
 #include <filesystem>
+#include <optional>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -18,6 +20,14 @@ struct PackChoice {
   friend bool operator==(const PackChoice&, const PackChoice&) = default;
 };
 
+// What the first start measured and chose (game/first_run.h), kept in the file and shown in the menu.
+struct FirstRunRecord {
+  std::string glRenderer;
+  double frameMs = 0.0;
+  std::string choice;
+  friend bool operator==(const FirstRunRecord&, const FirstRunRecord&) = default;
+};
+
 struct GameSettings {
   int viewDistance = 6;             // chunks, 2..32
   float fov = 70.0f;                // degrees, 30..110
@@ -30,6 +40,7 @@ struct GameSettings {
   bool vsync = true;
   float renderScale = 1.0f;         // the scene drawn at this fraction of the window, 0.25..1
   int targetFps = 30;               // dynamic resolution holds this rate (below render_scale); 0: off
+  std::optional<FirstRunRecord> firstRun;  // "first_run": absent in files written by hand
 
   static ShadowSettings defaultShadow() {
     ShadowSettings s;

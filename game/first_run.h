@@ -1,0 +1,26 @@
+#pragma once
+// Settings for the machine the game first starts on (no settings file yet): a short probe (the GL
+// renderer and the time of a few frames of the empty renderer at the window's size) picks them. Plain
+// C++; the game measures, this decides.
+
+#include <string>
+
+#include "settings.h"
+
+namespace terrasol {
+
+struct MachineProbe {
+  std::string glRenderer;  // GL_RENDERER
+  double frameMs = 0.0;    // the median of a few frames with nothing loaded: the passes' fixed cost
+};
+
+// A software renderer (Mesa's llvmpipe or softpipe, SwiftShader): every pixel costs CPU time.
+bool softwareRenderer(const std::string& glRenderer);
+
+// The defaults adjusted for the machine, with what was chosen and why in `firstRun`. Software
+// rendering: view distance 4 (3 when even an empty frame is slow), shadows 1024² over 64 blocks,
+// reflections off, dynamic resolution for 30 fps; a GPU: view distance 12, shadows 2048² over 128
+// blocks, reflections on, dynamic resolution for 60 fps.
+GameSettings firstRunSettings(const MachineProbe& probe, GameSettings settings = {});
+
+}  // namespace terrasol
