@@ -204,7 +204,7 @@ namespace {
 
 void parseRender(const json& render, SceneFile& scene) {
   checkObject(render, "render",
-              {"width", "height", "scale", "view_distance", "debug_view", "specular", "material_ao", "cave_culling",
+              {"width", "height", "scale", "target_fps", "view_distance", "debug_view", "specular", "material_ao", "cave_culling",
                "shadow_caster_culling", "cull_faces_away", "leave_out_absent_maps", "cull_passes", "shadow",
                "reflections", "water"});
   if (const json* v = field(render, "width")) {
@@ -215,6 +215,9 @@ void parseRender(const json& render, SceneFile& scene) {
   }
   if (const json* v = field(render, "scale")) {
     scene.renderScale = static_cast<float>(numberIn(*v, "render.scale", 0.25, 1.0, false));
+  }
+  if (const json* v = field(render, "target_fps")) {
+    scene.targetFps = static_cast<int>(wholeNumber(*v, "render.target_fps", 0, 1000));
   }
   if (const json* v = field(render, "view_distance")) {
     scene.viewDistance = static_cast<int>(wholeNumber(*v, "render.view_distance", 0, 32));

@@ -66,6 +66,7 @@ struct SceneFile {
   int width = 320, height = 180;   // pixels, 1..8192 each
   int viewDistance = 4;            // chunks, 0..32
   float renderScale = 1.0f;        // render.scale, 0.25..1: the scene drawn smaller, scaled up at the end
+  int targetFps = 0;               // render.target_fps: dynamic resolution below render.scale; 0: off
   DebugView debugView = DebugView::None;               // "render.debug_view": one of kDebugViews
   SpecularModel specular = SpecularModel::BlinnPhong;  // "render.specular": one of kSpecularModels
   bool materialAo = true;          // "render.material_ao": LabPBR _n blue darkens ambient light

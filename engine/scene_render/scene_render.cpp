@@ -81,7 +81,8 @@ struct SceneRenderer::Gpu {
   RenderTarget target;
 };
 
-SceneRenderer::SceneRenderer(const SceneFile& scene) : scene_(scene), debugView_(scene.debugView) {
+SceneRenderer::SceneRenderer(const SceneFile& scene)
+    : scene_(scene), debugView_(scene.debugView), resolution_(scene.renderScale) {
   const auto start = std::chrono::steady_clock::now();
   const PackStack packs = openPacks(scene);
   world_ = std::make_unique<World>(scene, packs);
@@ -127,7 +128,7 @@ FrameInputs SceneRenderer::inputsFor(int frame) const {
   inputs.ticks = camera.time;
   inputs.sunPathRotation = scene_.sunPathRotation;
   inputs.viewDistance = static_cast<float>(scene_.viewDistance * 16);
-  inputs.renderScale = scene_.renderScale;
+  inputs.renderScale = scene_.renderScale;  // with render.target_fps, the most renderFrame uses
   inputs.debugView = debugView_;
   inputs.materialAo = scene_.materialAo;
   inputs.props = &gpu_->props.gpu();
@@ -149,7 +150,14 @@ RenderedFrame SceneRenderer::renderFrame(int frame, const FrameRequest& request)
   inputs.reuseShadowMap = request.reuseShadowMap;
   RenderedFrame out;
   const GLuint fbo = gpu_->target.framebuffer();
+  if (scene_.targetFps > 0) inputs.renderScale = resolution_.scale();
+  const auto start = std::chrono::steady_clock::now();
   gpu_->renderer.render(inputs, gpu_->meshes, fbo, gpu_->target.size(), request.timed ? &out.timings : nullptr);
+  if (scene_.targetFps > 0) {
+    glFinish();  // the frame's whole time, as the game measures it
+    resolution_.update(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count(),
+                       scene_.targetFps);
+  }
   out.stats = gpu_->renderer.lastFrame();
   if (request.checkNan || request.readBack) {
     out.pixels = gpu_->renderer.gbuffer()->read();

@@ -9,6 +9,7 @@
 
 #include "assets/image.h"
 #include "render/deferred_renderer.h"
+#include "render/dynamic_resolution.h"
 #include "scene/scene_file.h"
 #include "world/world.h"
 
@@ -73,6 +74,7 @@ class SceneRenderer {
   SceneRenderStats stats_;
   std::unique_ptr<World> world_;
   std::unique_ptr<Gpu> gpu_;
+  DynamicResolution resolution_;  // with render.target_fps: the scale of the next frame
 };
 
 }  // namespace terrasol

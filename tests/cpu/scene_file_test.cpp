@@ -93,6 +93,8 @@ TEST(SceneFile, AbsentKeysTakeTheirDefaults) {
     EXPECT_EQ(scene.width, 320);
     EXPECT_EQ(scene.height, 180);
     EXPECT_EQ(scene.viewDistance, 4);
+    EXPECT_EQ(scene.renderScale, 1.0f) << "goldens are drawn at scale 1";
+    EXPECT_EQ(scene.targetFps, 0) << "dynamic resolution is off in scenes";
     EXPECT_EQ(scene.debugView, DebugView::None);
     EXPECT_EQ(scene.cameraPosition, glm::dvec3(0.0, 80.0, 0.0));
     EXPECT_EQ(scene.cameraLookAt, glm::dvec3(0.0, 80.0, -1.0));
@@ -358,6 +360,8 @@ TEST(SceneFile, OutOfRangeValuesNameTheKey) {
   EXPECT_TRUE(failsWith(R"({"render": {"height": 0}})", "scenes/a.json: render.height: "));
   EXPECT_TRUE(failsWith(R"({"render": {"height": 9000}})", "scenes/a.json: render.height: "));
   EXPECT_TRUE(failsWith(R"({"render": {"view_distance": 33}})", "scenes/a.json: render.view_distance: "));
+  EXPECT_TRUE(failsWith(R"({"render": {"target_fps": -1}})", "scenes/a.json: render.target_fps: "));
+  EXPECT_TRUE(failsWith(R"({"render": {"scale": 0.2}})", "scenes/a.json: render.scale: "));
   EXPECT_TRUE(failsWith(R"({"render": {"view_distance": -1}})", "scenes/a.json: render.view_distance: "));
   EXPECT_TRUE(
       failsWith(R"({"camera": {"fov": 0}})", "scenes/a.json: camera.fov: expected a number greater than 0"));
