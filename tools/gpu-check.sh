@@ -21,7 +21,7 @@ mode=${1:-build}
 case $mode in
   build)
     "$root/tools/deps.sh"
-    "$root/tools/build.sh" "$build" -DTERRASOL_TESTS=ON
+    "$root/tools/build.sh" "$build" -DTERRASOL_TESTS=ON -DTERRASOL_IMAGE_IO=oiio
     ;;
   --bundle)
     "$root/tools/deps.sh"
