@@ -1,7 +1,7 @@
 // terrasol-render: renders a scene file headless (EGL), one PNG per frame of its camera path.
 //
 //   terrasol-render SCENE.json --out DIR [--set KEY=VALUE]... [--compare GOLDEN_DIR [--update-goldens]]
-//                   [--threshold X] [--max-failing PERCENT] [--report FILE.json] [--timings] [--no-images]
+//                   [--threshold X] [--max-failing PERCENT] [--report FILE.json] [--timings] [--no-images] [--game-shadows]
 //
 // Exit status: 0 done (and every frame matched); 1 a frame differs from its golden, a golden is
 // missing, or rendering failed; 2 bad arguments or a bad scene (nothing is written then).
@@ -33,7 +33,7 @@ struct Options {
   std::filesystem::path scene, out, compare, report;
   std::vector<std::string> overrides;
   std::vector<Sweep> sweeps;
-  bool updateGoldens = false, timings = false, noImages = false;
+  bool updateGoldens = false, timings = false, noImages = false, gameShadows = false;
   std::optional<float> threshold, maxFailing;
 };
 
@@ -47,6 +47,8 @@ const char* const kUsage =
     "  --report FILE.json     per-frame report: ms per pass, NaN/Inf pixels, sections drawn and culled,\n"
     "                         shadow and reflection error against the ray-traced truth; the GL renderer\n"
     "  --timings              print ms per pass (after a warm-up frame)\n"
+    "  --game-shadows         keep and spread the shadow map as the game does (FrameInputs::reuseShadowMap)\n"
+    "                         instead of drawing it whole every frame\n"
     "  --no-images            write no frames (benchmarks: the time to encode a PNG would leave the GPU\n"
     "                         idle between frames, and it would clock down)\n"
     "  --sweep KEY=V1,V2,...  render every combination of the swept values (repeatable); writes\n"
@@ -84,6 +86,7 @@ Options parseOptions(int argc, char** argv) {
     else if (arg == "--report") o.report = value(i, arg);
     else if (arg == "--timings") o.timings = true;
     else if (arg == "--no-images") o.noImages = true;
+    else if (arg == "--game-shadows") o.gameShadows = true;
     else if (arg == "--sweep") o.sweeps.push_back(parseSweep(value(i, arg)));
     else if (!arg.empty() && arg[0] != '-' && o.scene.empty()) o.scene = arg;
     else throw UsageError("unknown argument \"" + arg + "\"");
@@ -190,6 +193,7 @@ int renderScene(const Options& o, const SceneFile& scene, SceneRenderer& rendere
   request.timed = o.timings || !o.report.empty();
   request.checkNan = !o.report.empty();
   request.readBack = !o.report.empty();
+  request.reuseShadowMap = o.gameShadows;
   if (request.timed) renderer.renderFrame(0);  // warm-up: first-use costs are not a pass's time
   for (int i = 0; i < renderer.frames(); ++i) {
     const auto start = std::chrono::steady_clock::now();
