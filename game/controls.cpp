@@ -128,4 +128,13 @@ FrameInput Controls::take() {
   return out;
 }
 
+bool DoubleTap::press(double now) {
+  if (last_ >= 0.0 && now - last_ <= kSeconds) {
+    last_ = -1.0;
+    return true;
+  }
+  last_ = now;
+  return false;
+}
+
 }  // namespace terrasol

@@ -63,6 +63,17 @@ struct FrameInput {
   bool wasPressed(MouseButton b) const { return buttonPressed[static_cast<std::size_t>(b)]; }
 };
 
+// Two presses of a key close together, as Minecraft's double-tapped jump that toggles flight.
+class DoubleTap {
+ public:
+  static constexpr double kSeconds = 0.3;
+  // A press at `now` (seconds): true when it is the second of two within kSeconds.
+  bool press(double now);
+
+ private:
+  double last_ = -1.0;  // the first press's time; -1 when none is waiting for its second
+};
+
 class Controls {
  public:
   explicit Controls(const KeyBindings& bindings) : bindings_(&bindings) {}

@@ -31,6 +31,7 @@ class GameRenderer {
  public:
   GameRenderer(const BlockRegistry& blocks, const GameSettings& settings);
 
+  const BlockRegistry& blocks() const { return blocks_; }
   const BlockAssets& assets() const { return *assets_; }
   // Builds the new packs' assets; the caller remeshes with the new table, then commit() swaps them in
   // (the old table lives until the old mesher threads are gone). Throws Error for a bad pack.

@@ -57,13 +57,14 @@ ScriptEvent parseEvent(const json& value, const std::string& key) {
   }
   if (const json* v = field(value, "command")) {
     e.kind = ScriptEvent::Kind::Command;
-    e.command = oneOf(*v, member(key, "command"), kScriptCommands);
+    e.command = enumOf<ScriptCommand>(*v, member(key, "command"), kScriptCommands);
     ++kinds;
   }
+  const bool placeProp = e.kind == ScriptEvent::Kind::Command && e.command == ScriptCommand::PlaceProp;
   if (const json* v = field(value, "model")) {
-    if (e.command != "place_prop") fail(member(key, "model"), "only \"place_prop\" takes a model");
+    if (!placeProp) fail(member(key, "model"), "only \"place_prop\" takes a model");
     e.model = nonEmptyString(*v, member(key, "model"));
-  } else if (e.command == "place_prop") {
+  } else if (placeProp) {
     fail(key, "\"place_prop\" needs \"model\" (a .gltf or .glb file)");
   }
   if (kinds != 1) fail(key, "expected exactly one of \"key\", \"button\", \"look\", \"mouse_move\", \"scroll\", \"command\"");

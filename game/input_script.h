@@ -17,6 +17,7 @@
 // Events play in time order once the game clock reaches their "t".
 
 #include <filesystem>
+#include <iterator>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -28,6 +29,12 @@
 
 namespace terrasol {
 
+enum class ScriptCommand { Save, Screenshot, Quit, Minimise, Restore, PlaceProp };
+// Their names in scripts, in ScriptCommand's order.
+inline constexpr std::string_view kScriptCommands[] = {"save", "screenshot", "quit", "minimise", "restore",
+                                                      "place_prop"};
+static_assert(std::size(kScriptCommands) == static_cast<std::size_t>(ScriptCommand::PlaceProp) + 1);
+
 struct ScriptEvent {
   enum class Kind { Key, Button, Look, MouseMove, Scroll, Command } kind = Kind::Key;
   double t = 0.0;
@@ -35,17 +42,14 @@ struct ScriptEvent {
   MouseButton button{};            // Button
   std::optional<bool> down;        // Key, Button: nullopt taps (down this frame, up the next)
   glm::dvec2 value{0.0};           // Look: yaw, pitch; MouseMove: dx, dy; Scroll: x = notches
-  std::string command;             // Command
-  std::string model;               // Command "place_prop": the glTF file
+  ScriptCommand command{};         // Command
+  std::string model;               // Command PlaceProp: the glTF file
 };
 
 struct InputScript {
   double step = 1.0 / 60.0;
   std::vector<ScriptEvent> events;  // sorted by t (stable: equal times keep file order)
 };
-
-inline constexpr std::string_view kScriptCommands[] = {"save", "screenshot", "quit", "minimise", "restore",
-                                                      "place_prop"};
 
 // Throws Error naming the file, the event ("events[3].key") and what is wrong.
 InputScript parseInputScript(std::string_view json, const std::filesystem::path& file);

@@ -9,7 +9,7 @@
 #include "game.h"
 #include "options.h"
 #include "platform/glfw/glfw_window.h"
-#include "render/gl/render_target.h"
+#include "screenshot.h"
 #include "scene_render/scene_render.h"
 
 namespace terrasol {
@@ -25,10 +25,7 @@ int flyDemo(GlfwWindow& window, const GameOptions& options) {
     scene.draw(demoFrame(seconds), 0, window.framebufferSize());
     window.checkErrors("frame");
     const bool last = options.frames && frame + 1 >= *options.frames;
-    if (last && !options.screenshot.empty()) {
-      saveImage(options.screenshot, readFramebuffer(0, window.framebufferSize()));
-      logInfo("screenshot saved to " + options.screenshot.string());
-    }
+    if (last && !options.screenshot.empty()) saveScreenshot(options.screenshot, window.framebufferSize());
     window.swapBuffers();
     if (last) break;
   }

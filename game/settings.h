@@ -57,4 +57,11 @@ GameSettings loadSettings(const std::filesystem::path& file);
 void saveSettings(const std::filesystem::path& file, const GameSettings& settings);
 std::filesystem::path defaultSettingsFile();
 
+// The settings and the file they are kept in.
+struct SettingsFile {
+  std::filesystem::path path;
+  GameSettings values;
+  void save() const { saveSettings(path, values); }
+};
+
 }  // namespace terrasol

@@ -8,14 +8,17 @@
 #include <thread>
 
 #include "controls.h"
+#include "core/day_cycle.h"
 #include "core/error.h"
 #include "frame_rate.h"
+#include "hotbar.h"
 #include "input_script.h"
 #include "player.h"
 #include "settings.h"
 #include "support/error_of.h"
 #include "support/game_world.h"
 #include "support/world_support.h"
+#include "time_controls.h"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -335,6 +338,54 @@ TEST(ControlsTest, PressesCountOnceAndHoldsCarryOver) {
   EXPECT_TRUE(c.take().menuPressed);
 }
 
+TEST(ControlsTest, ADoubleTapIsTwoPressesWithinItsTime) {
+  DoubleTap tap;
+  EXPECT_FALSE(tap.press(1.0));
+  EXPECT_TRUE(tap.press(1.25));
+  EXPECT_FALSE(tap.press(1.3)) << "the second press of a pair starts no new one";
+  EXPECT_FALSE(tap.press(2.0));
+  EXPECT_FALSE(tap.press(2.35)) << "too slow: a new first press";
+  EXPECT_TRUE(tap.press(2.5));
+}
+
+TEST(HotbarTest, WheelWrapsAndPickSelectsOrReplaces) {
+  const BlockRegistry& blocks = defaultBlocks();
+  Hotbar bar(blocks);
+  EXPECT_EQ(blocks.stateName(bar.held()), "stone");
+  bar.scroll(-1.0);  // wheel down: the next slot
+  EXPECT_EQ(bar.selected(), 1);
+  bar.scroll(3.0);
+  EXPECT_EQ(bar.selected(), Hotbar::kSlots - 2);
+  bar.scroll(-2.0);
+  EXPECT_EQ(bar.selected(), 0) << "round past the last slot";
+  bar.pick(bar.at(7));  // already in the bar: selected
+  EXPECT_EQ(bar.selected(), 7);
+  const BlockId glass = blocks.id("glass");
+  bar.pick(glass);  // not in the bar: into the selected slot
+  EXPECT_EQ(bar.selected(), 7);
+  EXPECT_EQ(bar.held(), glass);
+}
+
+TEST(TimeControlsTest, SpeedsStopAndPresets) {
+  TimeControls time;
+  std::int64_t t = 100;
+  time.tick(t);
+  EXPECT_EQ(t, 101);
+  time.faster();
+  time.tick(t);
+  EXPECT_EQ(t, 111);
+  time.faster();
+  time.faster();  // round to x1
+  EXPECT_EQ(time.speed(), 1);
+  time.toggleStop();
+  time.tick(t);
+  EXPECT_EQ(t, 111);
+  EXPECT_EQ(TimeControls::nextPreset(0), 1000);
+  EXPECT_EQ(TimeControls::nextPreset(6000), 12000);
+  EXPECT_EQ(TimeControls::nextPreset(18000), kTicksPerDay + 1000) << "midnight: the next morning";
+  EXPECT_EQ(TimeControls::nextPreset(3 * kTicksPerDay + 7000), 3 * kTicksPerDay + 12000);
+}
+
 TEST(ControlsTest, KeyNamesRoundTrip) {
   for (int key : {GLFW_KEY_W, GLFW_KEY_1, GLFW_KEY_F3, GLFW_KEY_F12, GLFW_KEY_SPACE, GLFW_KEY_LEFT_SHIFT}) {
     EXPECT_EQ(keyNamed(keyName(key)), key) << keyName(key);
@@ -365,7 +416,7 @@ TEST(InputScriptTest, ParsesSortsAndPlaysInTimeOrder) {
   EXPECT_EQ(half[1].value, glm::dvec2(90, 45));
   EXPECT_EQ(player.due(1.9).size(), 1u);
   EXPECT_FALSE(player.finished());
-  EXPECT_EQ(player.due(2.0)[0].command, "quit");
+  EXPECT_EQ(player.due(2.0)[0].command, ScriptCommand::Quit);
   EXPECT_TRUE(player.finished());
 }
 

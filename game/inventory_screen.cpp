@@ -1,19 +1,19 @@
-// Hud::inventory: the creative inventory window.
+#include "inventory_screen.h"
+
 #include <algorithm>
 #include <cstdint>
 
 #include <imgui.h>
 
-#include "hud.h"
 #include "inventory.h"
 
 namespace terrasol {
 namespace {
 
-ImTextureID textureOf(const Hud::Slot& s) { return reinterpret_cast<ImTextureID>(static_cast<std::uintptr_t>(s.texture)); }
+ImTextureID textureOf(const ItemIcon& s) { return reinterpret_cast<ImTextureID>(static_cast<std::uintptr_t>(s.texture)); }
 
 // The slot's icon as a button; true when clicked.
-bool iconButton(const Hud::Slot& s, float size) {
+bool iconButton(const ItemIcon& s, float size) {
   if (s.texture == 0) return ImGui::Button("##empty", {size, size});
   return ImGui::ImageButton(textureOf(s), {size, size}, {s.u0, s.v0}, {s.u1, s.v1}, 2, {0, 0, 0, 0},
                             {s.r, s.g, s.b, 1.0f});
@@ -23,10 +23,11 @@ constexpr const char* kPayload = "TERRASOL_ITEM";
 
 }  // namespace
 
-bool Hud::typing() const { return ImGui::GetIO().WantTextInput; }
+bool InventoryScreen::typing() const { return ImGui::GetIO().WantTextInput; }
 
-Hud::InventoryResult Hud::inventory(const std::vector<Slot>& items, const std::vector<Slot>& hotbar, int selected) {
-  InventoryResult out;
+InventoryScreen::Result InventoryScreen::draw(const std::vector<ItemIcon>& items, const std::vector<ItemIcon>& hotbar,
+                                              int selected) {
+  Result out;
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   const float cell = std::clamp(display.y / 16.0f, 28.0f, 48.0f);
   ImGui::SetNextWindowPos({display.x * 0.5f, display.y * 0.5f}, ImGuiCond_Always, {0.5f, 0.5f});

@@ -1,0 +1,55 @@
+#pragma once
+// The game's screens over the picture: the HUD (crosshair, hotbar; F1 hides it), the F3 panels, the
+// Esc menu and the inventory, with the block icons they show. Takes keys for the menu's rebinding
+// before the game does (InputRouter's ScreenKeys).
+
+#include <string>
+#include <vector>
+
+#include "hotbar.h"
+#include "hud.h"
+#include "input_router.h"
+#include "inventory_screen.h"
+#include "menu.h"
+#include "settings.h"
+
+struct GLFWwindow;
+
+namespace terrasol {
+
+class GameRenderer;
+
+class GameUi final : public ScreenKeys {
+ public:
+  GameUi(GLFWwindow* window, SettingsFile& settings, std::string selectedProp);
+
+  bool takeKey(int key) override;  // a new binding is saved at once
+  bool typing() const override { return inventory_.typing(); }
+
+  bool hudShown() const { return hudShown_; }
+  void toggleHud() { hudShown_ = !hudShown_; }
+  void showHud() { hudShown_ = true; }
+  // The model the place-prop key places, as chosen in the menu's Props tab.
+  const std::string& selectedProp() const { return selectedProp_; }
+
+  // One frame's ImGui, between these two.
+  void begin() { hud_.beginFrame(); }
+  void end() { hud_.endFrame(); }
+  void crosshairAndHotbar(GameRenderer& renderer, const Hotbar& hotbar);
+  void overlay(const std::vector<std::string>& left, const std::vector<std::string>& right,
+               const std::vector<float>& frameMs) {
+    hud_.overlay(left, right, frameMs);
+  }
+  MenuResult menu(const std::vector<std::string>& loadedPacks, const std::vector<std::string>& propFiles);
+  void inventory(GameRenderer& renderer, Hotbar& hotbar);
+
+ private:
+  SettingsFile& settings_;
+  Hud hud_;
+  Menu menu_;
+  InventoryScreen inventory_;
+  bool hudShown_ = true;
+  std::string selectedProp_;
+};
+
+}  // namespace terrasol
