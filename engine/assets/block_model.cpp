@@ -8,6 +8,7 @@
 #include "core/error.h"
 #include "core/json_check.h"
 #include "core/log.h"
+#include "core/model_units.h"
 
 namespace terrasol {
 
@@ -28,27 +29,28 @@ glm::vec3 boxCorner(const json& value, const std::string& key) {
   if (!value.is_array() || value.size() != 3) expected(key, "an array of 3 numbers from -16 to 32", value);
   glm::vec3 v;
   for (std::size_t i = 0; i < 3; ++i)
-    v[static_cast<int>(i)] = numberIn(value[i], element(key, i), -16.0, 32.0, false);
+    v[static_cast<int>(i)] = numberIn(value[i], element(key, i), -kModelUnits, 2 * kModelUnits, false);  // -1..2 blocks
   return v;
 }
 
 // Minecraft's default uv of a face: the element's extent on the face, seen from outside.
 glm::vec4 defaultUv(ModelFace face, glm::vec3 from, glm::vec3 to) {
+  constexpr float kUnits = kModelUnits;
   switch (face) {
     case ModelFace::Down:
-      return {from.x, 16.0f - to.z, to.x, 16.0f - from.z};
+      return {from.x, kUnits - to.z, to.x, kUnits - from.z};
     case ModelFace::Up:
       return {from.x, from.z, to.x, to.z};
     case ModelFace::North:
-      return {16.0f - to.x, 16.0f - to.y, 16.0f - from.x, 16.0f - from.y};
+      return {kUnits - to.x, kUnits - to.y, kUnits - from.x, kUnits - from.y};
     case ModelFace::South:
-      return {from.x, 16.0f - to.y, to.x, 16.0f - from.y};
+      return {from.x, kUnits - to.y, to.x, kUnits - from.y};
     case ModelFace::West:
-      return {from.z, 16.0f - to.y, to.z, 16.0f - from.y};
+      return {from.z, kUnits - to.y, to.z, kUnits - from.y};
     case ModelFace::East:
-      return {16.0f - to.z, 16.0f - to.y, 16.0f - from.z, 16.0f - from.y};
+      return {kUnits - to.z, kUnits - to.y, kUnits - from.z, kUnits - from.y};
   }
-  return {0.0f, 0.0f, 16.0f, 16.0f};
+  return {0.0f, 0.0f, kUnits, kUnits};
 }
 
 ElementFace readFace(const json& value, const std::string& key, ModelFace face, const ModelElement& e) {
@@ -59,7 +61,7 @@ ElementFace readFace(const json& value, const std::string& key, ModelFace face, 
     const std::string k = member(key, "uv");
     if (!uv->is_array() || uv->size() != 4) expected(k, "an array of 4 numbers from 0 to 16", *uv);
     for (std::size_t i = 0; i < 4; ++i)
-      f.uv[static_cast<int>(i)] = numberIn((*uv)[i], element(k, i), 0.0, 16.0, false);
+      f.uv[static_cast<int>(i)] = numberIn((*uv)[i], element(k, i), 0.0, kModelUnits, false);
   }
   const json* texture = field(value, "texture");
   if (!texture) fail(key, "a face needs a \"texture\"");

@@ -4,6 +4,8 @@
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
+#include "core/model_units.h"
+
 namespace terrasol {
 namespace {
 
@@ -29,19 +31,20 @@ glm::vec3 faceCorner(ModelFace face, glm::vec3 from, glm::vec3 to, bool s, bool 
 
 // Where a point lies in a face's default uv (1/16 units): defaultUv's mapping, for uvlock.
 glm::vec2 lockedUv(ModelFace face, glm::vec3 p) {
+  constexpr float kUnits = kModelUnits;
   switch (face) {
     case ModelFace::Down:
-      return {p.x, 16.0f - p.z};
+      return {p.x, kUnits - p.z};
     case ModelFace::Up:
       return {p.x, p.z};
     case ModelFace::North:
-      return {16.0f - p.x, 16.0f - p.y};
+      return {kUnits - p.x, kUnits - p.y};
     case ModelFace::South:
-      return {p.x, 16.0f - p.y};
+      return {p.x, kUnits - p.y};
     case ModelFace::West:
-      return {p.z, 16.0f - p.y};
+      return {p.z, kUnits - p.y};
     case ModelFace::East:
-      return {16.0f - p.z, 16.0f - p.y};
+      return {kUnits - p.z, kUnits - p.y};
   }
   return {0.0f, 0.0f};
 }
@@ -158,8 +161,8 @@ std::vector<BakedQuad> bakeModel(const BlockModel& model, const ModelPlacement& 
       }
       const int shift = spec->rotation / 90;
       for (std::size_t i = 0; i < 4; ++i) {
-        q.uvs[i] = uvs[(i + static_cast<std::size_t>(shift)) % 4] / 16.0f;
-        q.corners[i] = corners[i] / 16.0f;
+        q.uvs[i] = uvs[(i + static_cast<std::size_t>(shift)) % 4] / static_cast<float>(kModelUnits);
+        q.corners[i] = corners[i] / static_cast<float>(kModelUnits);
       }
       quads.push_back(std::move(q));
     }

@@ -18,12 +18,17 @@
 namespace terrasol {
 
 inline constexpr std::int64_t kTicksPerDay = 24000;
+inline constexpr std::int64_t kSunrise = 0;
+inline constexpr std::int64_t kNoon = kTicksPerDay / 4;
+inline constexpr std::int64_t kSunset = kTicksPerDay / 2;
+inline constexpr std::int64_t kMidnight = kTicksPerDay * 3 / 4;
+static_assert(kNoon == 6000 && kSunset == 12000 && kMidnight == 18000);
 
 // skyBrightness at night; by day it is 1. Vanilla's sky light never drops below this either.
 inline constexpr float kNightSkyBrightness = 0.2f;
 
 struct DayState {
-  double dayFraction;       // 0..1, ticks mod 24000 / 24000
+  double dayFraction;       // 0..1, ticks mod kTicksPerDay / kTicksPerDay
   glm::vec3 toSun, toMoon;  // unit vectors towards them (world space, y up)
   // Unit: toSun while the sun is above the horizon (sun elevation >= 0), else toMoon.
   glm::vec3 toShadowLight;

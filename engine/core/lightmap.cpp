@@ -5,8 +5,6 @@
 namespace terrasol {
 namespace {
 
-static_assert(Lightmap::kSize == 16, "light levels are 0..15");
-
 // Light that reaches even a fully dark cave, so level 0/0 is near black rather than a hole in the picture
 // (vanilla keeps a small minimum too).
 constexpr float kAmbient = 0.02f;
@@ -61,7 +59,7 @@ glm::vec3 Lightmap::at(int block, int sky) const {
 }
 
 float lightLevelBrightness(int level) {
-  const float f = static_cast<float>(std::clamp(level, 0, 15)) / 15.0f;
+  const float f = static_cast<float>(std::clamp(level, 0, kMaxLight)) / kMaxLight;
   return f / (4.0f - 3.0f * f);
 }
 

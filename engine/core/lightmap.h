@@ -11,11 +11,12 @@
 #include <glm/glm.hpp>
 
 #include "core/day_cycle.h"
+#include "core/light_level.h"
 
 namespace terrasol {
 
 struct Lightmap {
-  static constexpr int kSize = 16;
+  static constexpr int kSize = kLightLevels;
   // Linear RGB in [0, 1], index sky * kSize + block (texture x = block level, y = sky level).
   std::array<glm::vec3, kSize * kSize> texels;
 

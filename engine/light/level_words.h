@@ -10,6 +10,8 @@
 #include <emmintrin.h>
 #endif
 
+#include "core/light_level.h"
+#include "light/face_bits.h"
 #include "world/nibble_array.h"
 
 namespace terrasol::light {
@@ -19,7 +21,7 @@ namespace terrasol::light {
 // (kWriteMarks); with eight bands in 16 bits the larger table cost a torch's update more time in
 // cache misses (15.3 against 15.0 us) than the finer packing saved.
 inline constexpr int kLayersPerBand = 8;
-inline constexpr int kBands = 16 / kLayersPerBand;
+inline constexpr int kBands = kChunkSize / kLayersPerBand;
 inline constexpr int kBandNibbleBytes = NibbleArray::kBytes / kBands;
 constexpr unsigned bandMark(int band) {
   return 0x40u << band;
@@ -50,25 +52,25 @@ static_assert(lowerBytes(0x0F00, 0x0E0F) == 0x8000 && changedBytes(0x0F00, 0x0E0
 // The cells of byte word q on a face of the section (bit 7 of their bytes): the whole row at y or z =
 // 0 or 15, else its first cell (x = 0) or last (x = 15).
 constexpr std::uint64_t faceBytes(int q) {
-  const int row = q >> 1, y = row >> 4, z = row & 15;
-  if (y == 0 || y == 15 || z == 0 || z == 15) return kByteHighBits;
+  const int row = q >> 1, y = row >> kChunkShift, z = row & kLastCell;
+  if (y == 0 || y == kLastCell || z == 0 || z == kLastCell) return kByteHighBits;
   return q & 1 ? std::uint64_t{0x80} << 56 : 0x80;
 }
 
 // The kWriteMarks bits (light_frame.h) of the cells `changed` marks in byte word q.
 constexpr unsigned writeMarksOfBytes(int q, std::uint64_t changed) {
   if (changed == 0) return 0;
-  const int row = q >> 1, y = row >> 4, z = row & 15;
+  const int row = q >> 1, y = row >> kChunkShift, z = row & kLastCell;
   const bool west = !(q & 1) && (changed & 0x80), east = (q & 1) && (changed >> 63);
-  return bandMark(y / kLayersPerBand) | west | east << 1 | (y == 0) << 2 | (y == 15) << 3 | (z == 0) << 4 |
-         (z == 15) << 5;
+  return bandMark(y / kLayersPerBand) | west * kWestFace | east * kEastFace | (y == 0) * kDownFace |
+         (y == kLastCell) * kUpFace | (z == 0) * kNorthFace | (z == kLastCell) * kSouthFace;
 }
 
 // Levels (4096, one a byte) from NibbleArray bytes, and back. SSE2 where there is SSE2 (every x86-64);
 // the plain loops elsewhere.
 inline void unpackNibbles(const std::uint8_t* nibbles, std::uint8_t* levels) {
 #ifdef __SSE2__
-  const __m128i low = _mm_set1_epi8(15);
+  const __m128i low = _mm_set1_epi8(kLightMask);
   for (int i = 0; i < NibbleArray::kBytes; i += 16) {
     const __m128i n = _mm_loadu_si128(reinterpret_cast<const __m128i*>(nibbles + i));
     const __m128i even = _mm_and_si128(n, low), odd = _mm_and_si128(_mm_srli_epi16(n, 4), low);
@@ -77,7 +79,7 @@ inline void unpackNibbles(const std::uint8_t* nibbles, std::uint8_t* levels) {
   }
 #else
   for (int i = 0; i < NibbleArray::kBytes; ++i) {
-    levels[2 * i] = nibbles[i] & 15;
+    levels[2 * i] = nibbles[i] & kLightMask;
     levels[2 * i + 1] = static_cast<std::uint8_t>(nibbles[i] >> 4);
   }
 #endif
@@ -114,7 +116,7 @@ inline int packNibbles(const std::uint8_t* levels, std::uint8_t* nibbles, int be
   }
   const bool sameBytes = any == all;
 #endif
-  const int low = nibbles[begin] & 15;
+  const int low = nibbles[begin] & kLightMask;
   return sameBytes && nibbles[begin] >> 4 == low ? low : -1;
 }
 

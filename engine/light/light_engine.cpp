@@ -26,8 +26,8 @@ const NibbleArray& layerOf(const ChunkLight& light, LightChannel channel, int se
 
 // The cell of a chunk's face in direction `d`, at position (a, y) along the face.
 BlockPos faceCell(ChunkPos pos, int d, int a, int y, int beyond) {
-  const int x = d == 0 ? -beyond : d == 1 ? 15 + beyond : a;
-  const int z = d == 4 ? -beyond : d == 5 ? 15 + beyond : a;
+  const int x = d == 0 ? -beyond : d == 1 ? kLastCell + beyond : a;
+  const int z = d == 4 ? -beyond : d == 5 ? kLastCell + beyond : a;
   return {pos.minBlockX() + x, y, pos.minBlockZ() + z};
 }
 
@@ -78,7 +78,7 @@ light::Propagator LightEngine::propagator(const light::ChunkWindow& window, Ligh
 }
 
 std::uint8_t LightEngine::lightAt(const BlockPos& pos, LightChannel channel) const {
-  if (pos.y >= kMaxY) return channel == LightChannel::Sky ? 15 : 0;
+  if (pos.y >= kMaxY) return channel == LightChannel::Sky ? kMaxLight : 0;
   if (pos.y < kMinY) return 0;
   const Chunk* c = world_.chunk(ChunkPos::of(pos));
   if (!c || !c->light().lit) return 0;
@@ -125,7 +125,7 @@ void LightEngine::seedEmitters(light::Propagator& p, Chunk& chunk) {
     for (int i = 0; i < Section::kVolume; ++i) {
       const std::uint8_t e = emission_[section.at(i)];
       if (e == 0) continue;
-      const int x = x0 + (i & 15), y = kMinY + s * 16 + (i >> 8), z = z0 + ((i >> 4) & 15);
+      const int x = x0 + Section::xOf(i), y = sectionMinY(s) + Section::yOf(i), z = z0 + Section::zOf(i);
       p.locate(x, y, z, cell);
       p.setLight(cell, e);
       p.increase(x, y, z, e, kAllDirections);
@@ -160,10 +160,10 @@ void LightEngine::seedOpenSky(light::Propagator& p, const Chunk& chunk) {
   const int x0 = chunk.pos().minBlockX(), z0 = chunk.pos().minBlockZ();
   const auto tops = spreadTops(world_, chunk);
   Cell cell;
-  for (int i = 0; i < 256; ++i) {
-    const int x = x0 + (i & 15), z = z0 + (i >> 4), top = light.skyTop[static_cast<std::size_t>(i)];
+  for (int i = 0; i < kChunkArea; ++i) {
+    const int x = x0 + (i & kLastCell), z = z0 + (i >> kChunkShift), top = light.skyTop[static_cast<std::size_t>(i)];
     for (int y = top + 1; y <= std::min(tops[static_cast<std::size_t>(i)], kMaxY - 1); ++y) {
-      p.increase(x, y, z, 15, kAllDirections);
+      p.increase(x, y, z, kMaxLight, kAllDirections);
     }
     if (top == kMaxY - 1 && p.locate(x, top, z, cell)) {
       const std::uint8_t level = p.source(cell);
@@ -179,14 +179,14 @@ void LightEngine::seedFromNeighbours(light::Propagator& p, ChunkPos pos, LightCh
     const BlockPos& o = kDirectionOffsets[d];
     const Chunk* neighbour = world_.chunk({pos.x + o.x, pos.z + o.z});
     if (!neighbour || !neighbour->light().lit) continue;
-    const auto toward = static_cast<std::uint8_t>(1 << light::opposite(d));
+    const auto toward = static_cast<std::uint8_t>(light::faceBit(light::opposite(d)));
     for (int s = 0; s < kSectionCount; ++s) {
       const NibbleArray& layer = layerOf(neighbour->light(), channel, s);
       if (layer.isUniform() && layer.uniformLevel() <= 1) continue;
-      for (int ly = 0; ly < 16; ++ly)
-        for (int a = 0; a < 16; ++a) {
-          const BlockPos c = faceCell(pos, d, a, kMinY + s * 16 + ly, 1);
-          const std::uint8_t level = layer.get(Section::index(c.x & 15, ly, c.z & 15));
+      for (int ly = 0; ly < kChunkSize; ++ly)
+        for (int a = 0; a < kChunkSize; ++a) {
+          const BlockPos c = faceCell(pos, d, a, sectionMinY(s) + ly, 1);
+          const std::uint8_t level = layer.get(Section::index(localOf(c.x), ly, localOf(c.z)));
           if (level > 1) p.increase(c.x, c.y, c.z, level, toward);
         }
     }
@@ -209,11 +209,11 @@ void LightEngine::chunkUnloading(ChunkPos pos) {
       for (int s = 0; s < kSectionCount; ++s) {
         const NibbleArray& layer = layerOf(chunk->light(), channel, s);
         if (layer.isUniform() && layer.uniformLevel() == 0) continue;
-        for (int ly = 0; ly < 16; ++ly)
-          for (int a = 0; a < 16; ++a) {
-            const BlockPos c = faceCell(pos, d, a, kMinY + s * 16 + ly, 0);
-            const std::uint8_t level = layer.get(Section::index(c.x & 15, ly, c.z & 15));
-            if (level > 0) p.decrease(c.x, c.y, c.z, level, static_cast<std::uint8_t>(1 << d));
+        for (int ly = 0; ly < kChunkSize; ++ly)
+          for (int a = 0; a < kChunkSize; ++a) {
+            const BlockPos c = faceCell(pos, d, a, sectionMinY(s) + ly, 0);
+            const std::uint8_t level = layer.get(Section::index(localOf(c.x), ly, localOf(c.z)));
+            if (level > 0) p.decrease(c.x, c.y, c.z, level, static_cast<std::uint8_t>(light::faceBit(d)));
           }
       }
     }
@@ -232,7 +232,7 @@ void LightEngine::blockChanged(const BlockChange& change) {
   if (sameLight || !chunk || !chunk->light().lit) return;
 
   ChunkLight& light = chunk->light();
-  const int oldTop = light.skyTop[static_cast<std::size_t>(localOf(at.z) * 16 + localOf(at.x))];
+  const int oldTop = light.skyTop[static_cast<std::size_t>(columnIndex(localOf(at.x), localOf(at.z)))];
   const int newTop = updateSkyTop(*chunk, change);
   auto& emitters = light.emitters[static_cast<std::size_t>(sectionOf(at.y))];
   emitters =
@@ -259,7 +259,7 @@ void LightEngine::blockChanged(const BlockChange& change) {
 // returned.
 int LightEngine::updateSkyTop(Chunk& chunk, const BlockChange& change) {
   const BlockPos& at = change.pos;
-  auto& top = chunk.light().skyTop[static_cast<std::size_t>(localOf(at.z) * 16 + localOf(at.x))];
+  auto& top = chunk.light().skyTop[static_cast<std::size_t>(columnIndex(localOf(at.x), localOf(at.z)))];
   int newTop = top;
   if (columnStop_[change.after] && at.y > top) newTop = at.y;
   if (!columnStop_[change.after] && at.y == top) {
@@ -289,17 +289,17 @@ void LightEngine::seedChangedCell(light::Propagator& p, const BlockPos& at) {
     Cell near;
     if (!p.locate(n.x, n.y, n.z, near)) continue;
     const std::uint8_t level = p.light(near);
-    if (level > 1) p.increase(n.x, n.y, n.z, level, static_cast<std::uint8_t>(1 << light::opposite(d)));
+    if (level > 1) p.increase(n.x, n.y, n.z, level, static_cast<std::uint8_t>(light::faceBit(light::opposite(d))));
   }
 }
 
-// The open sky column got longer (its cells gain their own 15) or shorter (they lose it).
+// The open sky column got longer (its cells gain their own kMaxLight) or shorter (they lose it).
 void LightEngine::seedSkyColumn(light::Propagator& p, const BlockPos& at, int oldTop, int newTop) {
   Cell cell;
   for (int y = newTop + 1; y <= oldTop && y < kMaxY; ++y) {
     if (y == at.y || !p.locate(at.x, y, at.z, cell)) continue;
-    p.setLight(cell, 15);
-    p.increase(at.x, y, at.z, 15, kAllDirections);
+    p.setLight(cell, kMaxLight);
+    p.increase(at.x, y, at.z, kMaxLight, kAllDirections);
   }
   for (int y = oldTop + 1; y <= newTop; ++y) {
     if (y == at.y || !p.locate(at.x, y, at.z, cell)) continue;

@@ -29,9 +29,10 @@ void LightFrame::reset(const ChunkWindow& window, LightChannel channel) {
   depth_ = window.depth;
   stride_ = width_ + 2;
   // Across a face the ref index moves by one section, chunk or row and the cell wraps to the far side.
-  const std::int32_t section = 1 << 12, chunk = kRefSections << 12, row = stride_ * chunk;
-  const std::int32_t steps[6] = {-chunk + 15,        chunk - 15,     -section + 15 * 256,
-                                 section - 15 * 256, -row + 15 * 16, row - 15 * 16};
+  const std::int32_t section = 1 << kIndexBits, chunk = kRefSections << kIndexBits, row = stride_ * chunk;
+  constexpr std::int32_t wrapX = kLastCell, wrapY = kLastCell * kChunkArea, wrapZ = kLastCell * kChunkSize;
+  const std::int32_t steps[6] = {-chunk + wrapX, chunk - wrapX, -section + wrapY,
+                                 section - wrapY, -row + wrapZ,  row - wrapZ};
   std::copy(std::begin(steps), std::end(steps), across_);
   const auto chunks = static_cast<std::size_t>(stride_ * (depth_ + 2));
   if (refs_.size() < chunks * kRefSections) refs_.resize(chunks * kRefSections);
@@ -65,7 +66,7 @@ void LightFrame::resolve(int index) {
     r.emitters = &light.emitters[static_cast<std::size_t>(s)];
     r.shaped = &light.shaped[static_cast<std::size_t>(s)];
     r.skyTop = light.skyTop.data();
-    r.minY = kMinY + s * 16;
+    r.minY = sectionMinY(s);
   }
 }
 

@@ -28,6 +28,8 @@ namespace terrasol::light {
 
 inline constexpr int kMaxFrameChunks = 16;  // a side; with the ring, ref indices stay far below 2^20
 inline constexpr int kRefSections = kSectionCount + 2;  // sections per chunk, with the empty ones
+inline constexpr int kIndexBits = 12;  // a frame position's low bits: the Section::index
+static_assert(1 << kIndexBits == Section::kVolume);
 
 // A level in an update's slab. An enum, not std::uint8_t: a store through unsigned char may alias
 // anything, so the compiler would reload every pointer and counter after each level written.
@@ -56,10 +58,8 @@ struct SectionRef {
 inline const std::array<std::uint8_t, Section::kVolume> kWriteMarks = [] {
   std::array<std::uint8_t, Section::kVolume> marks{};
   for (int i = 0; i < Section::kVolume; ++i) {
-    const int x = i & 15, y = i >> 8, z = (i >> 4) & 15;
-    marks[static_cast<std::size_t>(i)] =
-        static_cast<std::uint8_t>(bandMark(y / kLayersPerBand) | (x == 0) | (x == 15) << 1 | (y == 0) << 2 |
-                                  (y == 15) << 3 | (z == 0) << 4 | (z == 15) << 5);
+    const int x = Section::xOf(i), y = Section::yOf(i), z = Section::zOf(i);
+    marks[static_cast<std::size_t>(i)] = static_cast<std::uint8_t>(bandMark(y / kLayersPerBand) | sectionFaces(x, y, z));
   }
   return marks;
 }();
@@ -81,18 +81,19 @@ class LightFrame {
 
   // Frame position of a world cell; false outside the frame or the world height.
   bool toFrame(int x, int y, int z, std::uint32_t& pos) const {
-    const int fx = x - minX_ * 16, fz = z - minZ_ * 16, fy = y - kMinY;
-    if (static_cast<unsigned>(fx) >= static_cast<unsigned>(width_ * 16) ||
-        static_cast<unsigned>(fz) >= static_cast<unsigned>(depth_ * 16) ||
+    const int fx = x - minX_ * kChunkSize, fz = z - minZ_ * kChunkSize, fy = y - kMinY;
+    if (static_cast<unsigned>(fx) >= static_cast<unsigned>(width_ * kChunkSize) ||
+        static_cast<unsigned>(fz) >= static_cast<unsigned>(depth_ * kChunkSize) ||
         static_cast<unsigned>(fy) >= static_cast<unsigned>(kMaxY - kMinY)) {
       return false;
     }
-    const int ref = (((fz >> 4) + 1) * stride_ + (fx >> 4) + 1) * kRefSections + (fy >> 4) + 1;
-    pos = static_cast<std::uint32_t>(ref << 12 | Section::index(fx & 15, fy & 15, fz & 15));
+    const int ref =
+        (((fz >> kChunkShift) + 1) * stride_ + (fx >> kChunkShift) + 1) * kRefSections + (fy >> kChunkShift) + 1;
+    pos = static_cast<std::uint32_t>(ref << kIndexBits | Section::index(fx & kLastCell, fy & kLastCell, fz & kLastCell));
     return true;
   }
-  static int refIndex(std::uint32_t pos) { return static_cast<int>(pos >> 12); }
-  static int local(std::uint32_t pos) { return static_cast<int>(pos & 4095); }
+  static int refIndex(std::uint32_t pos) { return static_cast<int>(pos >> kIndexBits); }
+  static int local(std::uint32_t pos) { return static_cast<int>(pos & (Section::kVolume - 1)); }
   // The position one step across the section's face in Direction d.
   std::uint32_t across(std::uint32_t pos, int d) const {
     return pos + static_cast<std::uint32_t>(across_[d]);
@@ -144,7 +145,7 @@ class LightFrame {
   using Slab = std::array<Level, Section::kVolume>;
   std::vector<std::unique_ptr<Slab>> slabs_;  // kept between updates
   std::size_t slabsUsed_ = 0;
-  std::array<std::unique_ptr<Slab>, 16> levelSlabs_;  // read-only, one per level, filled on first use
+  std::array<std::unique_ptr<Slab>, kLightLevels> levelSlabs_;  // read-only, one per level, filled on first use
   static constexpr std::size_t kMaxSpareBytes = 64;   // 128 KiB
   std::vector<std::unique_ptr<NibbleArray::Bytes>> spareBytes_;  // layers' bytes freed by pack(), for reuse
 };

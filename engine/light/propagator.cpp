@@ -60,9 +60,9 @@ void Propagator::writeBack() {
     for (int s = 0; s < kSectionCount; ++s) {
       const int m = static_cast<int>(frame_.pack(refs[s + 1]));
       if (!m) continue;
-      const int y0 = (m & 4) && s > 0 ? -1 : 0, y1 = (m & 8) && s < kSectionCount - 1 ? 1 : 0;
-      for (int dz = -(m >> 4 & 1); dz <= (m >> 5 & 1); ++dz)
-        for (int dx = -(m & 1); dx <= (m >> 1 & 1); ++dx)
+      const int y0 = (m & kDownFace) && s > 0 ? -1 : 0, y1 = (m & kUpFace) && s < kSectionCount - 1 ? 1 : 0;
+      for (int dz = -hasFace(m, Direction::North); dz <= hasFace(m, Direction::South); ++dz)
+        for (int dx = -hasFace(m, Direction::West); dx <= hasFace(m, Direction::East); ++dx)
           for (int dy = y0; dy <= y1; ++dy) changed_.add(cx + dx, s + dy, cz + dz);
     }
   }
@@ -85,12 +85,13 @@ void Propagator::forNeighbours(SectionRef& r, Cursor& own, CellIndex index, std:
   // direction, which costs less than a loop over the bits (and nothing where `near` is a constant).
   auto visitInSection = [&](unsigned near) {
     Cursor& c = own;
-    if (near & 1) visit(c, index - 1, pos - 1, 0);
-    if (near & 2) visit(c, index + 1, pos + 1, 1);
-    if (near & 4) visit(c, index - 256, pos - 256, 2);
-    if (near & 8) visit(c, index + 256, pos + 256, 3);
-    if (near & 16) visit(c, index - 16, pos - 16, 4);
-    if (near & 32) visit(c, index + 16, pos + 16, 5);
+    constexpr int kRow = kChunkSize, kLayer = kChunkArea;  // index steps along z and y
+    if (near & kWestFace) visit(c, index - 1, pos - 1, 0);
+    if (near & kEastFace) visit(c, index + 1, pos + 1, 1);
+    if (near & kDownFace) visit(c, index - kLayer, pos - kLayer, 2);
+    if (near & kUpFace) visit(c, index + kLayer, pos + kLayer, 3);
+    if (near & kNorthFace) visit(c, index - kRow, pos - kRow, 4);
+    if (near & kSouthFace) visit(c, index + kRow, pos + kRow, 5);
   };
   if ((inSection & kInterior) && r.layer) {
     // All six, the direction the entry came from too (it cannot change: it is at least as bright).

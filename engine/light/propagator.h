@@ -12,9 +12,9 @@
 
 namespace terrasol::light {
 
-inline constexpr std::uint8_t kAllDirections = 0x3F;
+inline constexpr std::uint8_t kAllDirections = kAllFaces;
 constexpr std::uint8_t allBut(int direction) {
-  return static_cast<std::uint8_t>(kAllDirections & ~(1 << direction));
+  return static_cast<std::uint8_t>(kAllDirections & ~faceBit(direction));
 }
 constexpr int opposite(int direction) {
   return direction ^ 1;
@@ -41,11 +41,11 @@ inline std::vector<std::uint8_t> floodAttenuations(const std::vector<std::uint8_
 // Sky light of a cell in the top layer of the world that is not open sky: lit from above, through
 // its own block (`attenuation`: see attenuations()).
 constexpr std::uint8_t topLayerSky(std::uint8_t attenuation) {
-  return static_cast<std::uint8_t>(15 - attenuation);
+  return static_cast<std::uint8_t>(kMaxLight - attenuation);
 }
 
 // Steps per Direction of Section::index within a section, and so of a frame position there.
-inline constexpr int kIndexStep[6] = {-1, 1, -256, 256, -16, 16};
+inline constexpr int kIndexStep[6] = {-1, 1, -kChunkArea, kChunkArea, -kChunkSize, kChunkSize};
 
 // Per Section::index: bit d set when the neighbour in Direction d is in the same section; kInterior
 // when the cell is on no face of the section.
@@ -53,9 +53,8 @@ inline constexpr std::uint8_t kInterior = 0x40;
 inline const std::array<std::uint8_t, Section::kVolume> kInSection = [] {
   std::array<std::uint8_t, Section::kVolume> masks{};
   for (int i = 0; i < Section::kVolume; ++i) {
-    const int x = i & 15, y = i >> 8, z = (i >> 4) & 15;
-    const int m = (x != 0) | (x != 15) << 1 | (y != 0) << 2 | (y != 15) << 3 | (z != 0) << 4 | (z != 15) << 5;
-    masks[static_cast<std::size_t>(i)] = static_cast<std::uint8_t>(m | (m == 0x3F) << 6);
+    const unsigned m = kAllFaces & ~sectionFaces(Section::xOf(i), Section::yOf(i), Section::zOf(i));
+    masks[static_cast<std::size_t>(i)] = static_cast<std::uint8_t>(m | (m == kAllFaces) * kInterior);
   }
   return masks;
 }();
@@ -180,7 +179,7 @@ class Propagator {
   }
   std::uint8_t light(const Cell& c) const { return light(*c.ref, c.index); }
   void setLight(const Cell& c, std::uint8_t level) { setLight(*c.ref, c.index, level); }
-  // The level a cell has by itself: its emission (block light) or 15 in the open sky column (sky light).
+  // The level a cell has by itself: its emission (block light) or kMaxLight in the open sky column (sky light).
   std::uint8_t source(const Cell& c) { return source(*c.ref, c.index); }
 
   void decrease(int x, int y, int z, std::uint8_t level, std::uint8_t directions) {
@@ -212,8 +211,8 @@ class Propagator {
       ++reads;
       return emission_[c.block(index)];
     }
-    const int y = c.minY + static_cast<int>(index >> 8);
-    if (y > c.skyTop[index & 255]) return 15;
+    const int y = c.minY + static_cast<int>(index >> Section::kYShift);
+    if (y > c.skyTop[index & Section::kColumnMask]) return kMaxLight;
     // The top layer of the world is lit from the sky above it, through its own opacity.
     if (y == kMaxY - 1) {
       ++reads;

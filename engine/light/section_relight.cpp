@@ -19,7 +19,7 @@ using light::Propagator;
 using light::spreadTops;
 
 // The levels a section's cells have by themselves, a byte each: their emission, or the open sky
-// column's 15 (and the top layer of the world, lit from the sky above through its own opacity).
+// column's kMaxLight (and the top layer of the world, lit from the sky above through its own opacity).
 void LightEngine::ownLevels(const Chunk& chunk, int section, LightChannel channel,
                             std::uint8_t* levels) const {
   const Section& blocks = chunk.section(section);
@@ -32,16 +32,17 @@ void LightEngine::ownLevels(const Chunk& chunk, int section, LightChannel channe
     return;
   }
   const auto& tops = chunk.light().skyTop;
-  const int y0 = kMinY + section * 16;
-  for (int ly = 0; ly < 16; ++ly) {
+  const int y0 = sectionMinY(section);
+  for (int ly = 0; ly < kChunkSize; ++ly) {
     const int y = y0 + ly;
-    for (std::size_t column = 0; column < 256; ++column)
-      levels[ly * 256 + column] = y > tops[column] ? 15 : 0;
+    for (std::size_t column = 0; column < kChunkArea; ++column)
+      levels[ly * kChunkArea + column] = y > tops[column] ? kMaxLight : 0;
   }
-  if (y0 + 15 != kMaxY - 1) return;
-  for (int column = 0; column < 256; ++column) {
-    std::uint8_t& level = levels[15 * 256 + column];
-    if (level == 0) level = light::topLayerSky(attenuation_[blocks.at(15 * 256 + column)]);
+  if (y0 + kLastCell != kMaxY - 1) return;
+  constexpr int kTopLayer = kLastCell * kChunkArea;
+  for (int column = 0; column < kChunkArea; ++column) {
+    std::uint8_t& level = levels[kTopLayer + column];
+    if (level == 0) level = light::topLayerSky(attenuation_[blocks.at(kTopLayer + column)]);
   }
 }
 
@@ -60,10 +61,10 @@ bool faceLosesLight(const std::uint8_t* current, const light::SectionSolver::Lev
 
 // Calls fn(index) for each cell of a section whose own level (`levels`) must spread: emitters, and
 // open-sky cells up to the highest neighbouring column top (spreadTops); the rest of the open sky only
-// has 15s around it.
+// has kMaxLight around it.
 template <class Fn>
 void forSources(const std::uint8_t* levels, LightChannel channel, bool emitters,
-                const std::array<int, 256>& tops, const std::array<std::int16_t, 256>& skyTop, int y0,
+                const std::array<int, kChunkArea>& tops, const std::array<std::int16_t, kChunkArea>& skyTop, int y0,
                 Fn&& fn) {
   if (channel == LightChannel::Block) {
     if (!emitters) return;
@@ -72,14 +73,14 @@ void forSources(const std::uint8_t* levels, LightChannel channel, bool emitters,
     }
     return;
   }
-  for (int column = 0; column < 256; ++column) {
+  for (int column = 0; column < kChunkArea; ++column) {
     const int lo = std::max<int>(skyTop[static_cast<std::size_t>(column)] + 1, y0);
-    const int hi = std::min(tops[static_cast<std::size_t>(column)], y0 + 15);
-    for (int y = lo; y <= hi; ++y) fn((y - y0) * 256 + column);
+    const int hi = std::min(tops[static_cast<std::size_t>(column)], y0 + kLastCell);
+    for (int y = lo; y <= hi; ++y) fn((y - y0) * kChunkArea + column);
   }
-  if (y0 + 15 != kMaxY - 1) return;
-  for (int i = 15 * 256; i < Section::kVolume; ++i) {
-    if (levels[i] > 1 && levels[i] < 15) fn(i);  // the top layer under the sky (topLayerSky)
+  if (y0 + kLastCell != kMaxY - 1) return;
+  for (int i = kLastCell * kChunkArea; i < Section::kVolume; ++i) {
+    if (levels[i] > 1 && levels[i] < kMaxLight) fn(i);  // the top layer under the sky (topLayerSky)
   }
 }
 
@@ -92,7 +93,7 @@ void forSources(const std::uint8_t* levels, LightChannel channel, bool emitters,
 void LightEngine::relightSection(const SectionPos& s) {
   Chunk* chunk = world_.chunk({s.x, s.z});
   if (!chunk || !chunk->light().lit || s.section < 0 || s.section >= kSectionCount) return;
-  const int x0 = s.x * 16, y0 = kMinY + s.section * 16, z0 = s.z * 16;
+  const int x0 = s.x * kChunkSize, y0 = s.minBlockY(), z0 = s.z * kChunkSize;
   const auto tops = spreadTops(world_, *chunk);
   const light::ChunkWindow window(world_, {s.x - kReach, s.z - kReach}, {s.x + kReach, s.z + kReach});
   const Section& blocks = chunk->section(s.section);
@@ -109,7 +110,8 @@ void LightEngine::relightSection(const SectionPos& s) {
     bool shaped = chunk->light().shaped[static_cast<std::size_t>(s.section)] > 0;
     for (int d = 0; d < 6; ++d) {
       const BlockPos& o = kDirectionOffsets[d];
-      if (!p.locatePacked(x0 + o.x * 16, y0 + o.y * 16, z0 + o.z * 16, beyond[d])) beyond[d].ref = nullptr;
+      if (!p.locatePacked(x0 + o.x * kChunkSize, y0 + o.y * kChunkSize, z0 + o.z * kChunkSize, beyond[d]))
+        beyond[d].ref = nullptr;
       shaped = shaped || (beyond[d].ref && *beyond[d].ref->shaped > 0);
     }
     if (shaped) {
@@ -119,8 +121,8 @@ void LightEngine::relightSection(const SectionPos& s) {
       continue;
     }
 
-    // Every source offers its light. Open-sky cells above the neighbouring columns only have 15s
-    // around them and are left out.
+    // Every source offers its light. Open-sky cells above the neighbouring columns only have
+    // kMaxLight around them and are left out.
     auto& levels = solver.levels();
     ownLevels(*chunk, s.section, channel, levels.data());
     const bool emitters = chunk->light().emitters[static_cast<std::size_t>(s.section)] > 0;
@@ -145,11 +147,11 @@ void LightEngine::relightSection(const SectionPos& s) {
       for (int d = 0; d < 6; ++d) {
         if (!beyond[d].ref) continue;
         const NibbleArray& n = *beyond[d].ref->layer;
-        if (n.isUniform() && n.uniformLevel() >= 14) continue;
+        if (n.isUniform() && n.uniformLevel() >= kMaxLight - 1) continue;  // no face cell is two brighter
         for (const light::FaceCell& c : light::kFaceCells[static_cast<std::size_t>(d)]) {
           const std::uint8_t level = levels[c.ours];
           if (level > 1 && n.get(c.theirs) + 1 < level) {
-            p.increase(Propagator::posOf(origin.pos, c.ours), level, static_cast<std::uint8_t>(1 << d));
+            p.increase(Propagator::posOf(origin.pos, c.ours), level, static_cast<std::uint8_t>(light::faceBit(d)));
           }
         }
       }
@@ -163,9 +165,9 @@ void LightEngine::relightSection(const SectionPos& s) {
 // removed outside. Then every source inside and the light just outside each face offer their light
 // again, through the general flood fill, which crosses the faces both ways.
 void LightEngine::relightGeneral(light::Propagator& p, const Chunk& chunk, const SectionPos& s,
-                                 const Cell& origin, const Cell* beyond, const std::array<int, 256>& tops,
+                                 const Cell& origin, const Cell* beyond, const std::array<int, kChunkArea>& tops,
                                  LightChannel channel) {
-  const int y0 = kMinY + s.section * 16;
+  const int y0 = s.minBlockY();
   auto& levels = solver_->levels();
   ownLevels(chunk, s.section, channel, levels.data());
   p.replaceLevels(*origin.ref, origin.pos, levels.data());
@@ -176,7 +178,7 @@ void LightEngine::relightGeneral(light::Propagator& p, const Chunk& chunk, const
   for (int d = 0; d < 6; ++d) {
     if (!beyond[d].ref) continue;
     const NibbleArray& n = *beyond[d].ref->layer;
-    const auto toward = static_cast<std::uint8_t>(1 << light::opposite(d));
+    const auto toward = static_cast<std::uint8_t>(light::faceBit(light::opposite(d)));
     for (const light::FaceCell& c : light::kFaceCells[static_cast<std::size_t>(d)]) {
       const std::uint8_t level = n.get(c.theirs);
       if (level > 1 && levels[c.ours] + 1 < level)

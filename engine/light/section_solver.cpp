@@ -17,7 +17,7 @@ void SectionSolver::begin(const BlockId* blocks, int mask, const std::uint8_t* a
 void SectionSolver::solve() {
   // Highest level first: a cell raised while its bucket waits is skipped there, it spreads from its
   // higher bucket. Spreading only fills lower buckets, so each bucket is final when its turn comes.
-  for (int level = 15; level >= 2; --level) {
+  for (int level = kMaxLight; level >= 2; --level) {
     const std::uint16_t* bucket = buckets_[static_cast<std::size_t>(level)].data();
     for (int k = 0; k < counts_[level]; ++k) {
       const int i = bucket[k];
@@ -26,10 +26,10 @@ void SectionSolver::solve() {
       if (inside & kInterior) {
         enter(i - 1, level);
         enter(i + 1, level);
-        enter(i - 256, level);
-        enter(i + 256, level);
-        enter(i - 16, level);
-        enter(i + 16, level);
+        enter(i - kChunkArea, level);
+        enter(i + kChunkArea, level);
+        enter(i - kChunkSize, level);
+        enter(i + kChunkSize, level);
         continue;
       }
       for (unsigned dirs = inside & kAllDirections; dirs != 0; dirs &= dirs - 1) {

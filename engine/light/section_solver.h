@@ -8,28 +8,29 @@
 #include <array>
 #include <cstdint>
 
+#include "core/light_level.h"
 #include "world/section.h"
 
 namespace terrasol::light {
 
-// Per Direction d, the 256 cells on a section's face in d: each one's index, and the index of the cell
+// Per Direction d, the kChunkArea cells on a section's face in d: each one's index, and the index of the cell
 // beyond it in the neighbouring section.
 struct FaceCell {
   std::uint16_t ours, theirs;
 };
-inline const std::array<std::array<FaceCell, 256>, 6> kFaceCells = [] {
-  std::array<std::array<FaceCell, 256>, 6> faces{};
+inline const std::array<std::array<FaceCell, kChunkArea>, 6> kFaceCells = [] {
+  std::array<std::array<FaceCell, kChunkArea>, 6> faces{};
   for (int d = 0; d < 6; ++d)
-    for (int a = 0; a < 16; ++a)
-      for (int b = 0; b < 16; ++b) {
-        const int axis = d >> 1, near = d & 1 ? 15 : 0, far = 15 - near;
+    for (int a = 0; a < kChunkSize; ++a)
+      for (int b = 0; b < kChunkSize; ++b) {
+        const int axis = d >> 1, near = d & 1 ? kLastCell : 0, far = kLastCell - near;
         const int x = axis == 0 ? near : a,
                   y = axis == 1   ? near
                       : axis == 0 ? a
                                   : b,
                   z = axis == 2 ? near : b;
         const int fx = axis == 0 ? far : x, fy = axis == 1 ? far : y, fz = axis == 2 ? far : z;
-        faces[static_cast<std::size_t>(d)][static_cast<std::size_t>(a * 16 + b)] = {
+        faces[static_cast<std::size_t>(d)][static_cast<std::size_t>(a * kChunkSize + b)] = {
             static_cast<std::uint16_t>(Section::index(x, y, z)),
             static_cast<std::uint16_t>(Section::index(fx, fy, fz))};
       }
@@ -85,8 +86,8 @@ class SectionSolver {
   Levels attenuation_{};  // 0 until read
   // Cells waiting to spread, by level. A cell enters a level's bucket at most once (it only rises),
   // so a bucket never holds more than a section's cells.
-  std::array<std::array<std::uint16_t, Section::kVolume>, 16> buckets_{};
-  int counts_[16] = {};
+  std::array<std::array<std::uint16_t, Section::kVolume>, kLightLevels> buckets_{};
+  int counts_[kLightLevels] = {};
 };
 
 }  // namespace terrasol::light

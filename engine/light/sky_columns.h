@@ -16,11 +16,11 @@ inline constexpr int kHorizontal[4] = {0, 1, 4, 5};  // West, East, North, South
 // Highest block in each column where `stops` (by block id) is not 0: where the open sky column ends.
 // Uniform sections are skipped whole.
 void computeSkyTops(const Chunk& chunk, const std::uint8_t* stops, ChunkLight& light);
-// Sky light 15 above each column's top, 0 elsewhere; whole sections stay uniform where they can.
+// Sky light kMaxLight above each column's top, 0 elsewhere; whole sections stay uniform where they can.
 void fillOpenSky(ChunkLight& light);
 // For each column of a chunk: the highest sky top among its four horizontal neighbours (in this
 // chunk or the next; unlit neighbours do not count, they take no light), at least its own top + 1.
 // Open-sky cells up to that height border a darker cell, so sky light spreads from them.
-std::array<int, 256> spreadTops(const World& world, const Chunk& chunk);
+std::array<int, kChunkArea> spreadTops(const World& world, const Chunk& chunk);
 
 }  // namespace terrasol::light

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <memory>
 
+#include "core/light_level.h"
 #include "mesh/section_snapshot.h"
 
 namespace terrasol {
@@ -13,13 +14,13 @@ SectionMesh iconMesh(const BlockMeshTable& table, const BlockRegistry& blocks, B
   snapshot->pos = {0, 0, 0};
   snapshot->blocks.fill(kAir);
   snapshot->opaque.fill(0);
-  snapshot->light.fill(SectionSnapshot::lightTerm(false, 0, 15));
+  snapshot->light.fill(SectionSnapshot::lightTerm(false, 0, kMaxLight));
   snapshot->tints.fill(kPlainsTint);
   const auto cell = static_cast<std::size_t>(SectionSnapshot::index(kIconCell, kIconCell, kIconCell));
   const bool opaque = blocks.opaqueCubes()[state] != 0;
   snapshot->blocks[cell] = state;
   snapshot->opaque[cell] = opaque ? 1 : 0;
-  snapshot->light[cell] = SectionSnapshot::lightTerm(opaque, 0, 15);
+  snapshot->light[cell] = SectionSnapshot::lightTerm(opaque, 0, kMaxLight);
   return meshSection(*snapshot, table);
 }
 

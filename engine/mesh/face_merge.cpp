@@ -5,6 +5,9 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/model_units.h"
+#include "world/coords.h"
+
 namespace terrasol {
 namespace {
 
@@ -33,7 +36,7 @@ int coordinate(const PackedVertex& v, int axis) {
 
 // The UV the mesher gives corner c of a full face, and a merged quad w x h faces across.
 std::uint32_t cornerUv(int c, int w, int h) {
-  return PackedVertex::packUv(kCornerSigns[c][0] > 0 ? 16 * w : 0, kCornerSigns[c][1] > 0 ? 0 : 16 * h);
+  return PackedVertex::packUv(kCornerSigns[c][0] > 0 ? kModelUnits * w : 0, kCornerSigns[c][1] > 0 ? 0 : kModelUnits * h);
 }
 
 // A face that can merge, where it lies: its plane (face and height along the normal) and its cell in
@@ -106,13 +109,14 @@ std::size_t mergeFaces(PackedVertices& quads) {
   constexpr std::uint32_t kNone = ~0u;
   // Quad per cell of one plane, kNone where none is (left): every quad placed is taken out again, so
   // the grid is empty between planes.
-  std::array<std::uint32_t, 256> grid;
+  std::array<std::uint32_t, kChunkArea> grid;
   grid.fill(kNone);
-  const auto at = [&](int i, int j) { return grid[static_cast<std::size_t>(j * 16 + i)]; };
+  const auto cell = [](int i, int j) { return static_cast<std::size_t>(j * kChunkSize + i); };
+  const auto at = [&](int i, int j) { return grid[cell(i, j)]; };
   std::size_t facesMerged = 0;
   for (std::size_t first = 0, last = 0; first < candidates.size(); first = last) {
     for (; last < candidates.size() && candidates[last].plane == candidates[first].plane; ++last) {
-      grid[static_cast<std::size_t>(candidates[last].j * 16 + candidates[last].i)] = candidates[last].quad;
+      grid[cell(candidates[last].i, candidates[last].j)] = candidates[last].quad;
     }
     const Axes& a = kAxes[static_cast<std::size_t>(candidates[first].plane / 1024)];
     for (std::size_t k = first; k < last; ++k) {
@@ -126,16 +130,16 @@ std::size_t mergeFaces(PackedVertices& quads) {
       };
       // The widest run along i, then as many rows of it along j as match whole.
       int w = 1, h = 1;
-      while (i + w < 16 && same(i + w, j)) ++w;
+      while (i + w < kChunkSize && same(i + w, j)) ++w;
       const auto rowMatches = [&](int y) {
         for (int x = i; x < i + w; ++x)
           if (!same(x, y)) return false;
         return true;
       };
-      while (j + h < 16 && rowMatches(j + h)) ++h;
+      while (j + h < kChunkSize && rowMatches(j + h)) ++h;
       if (w * h == 1) {
         append(both, &quads[q * 4], QuadRole::Both);
-        grid[static_cast<std::size_t>(j * 16 + i)] = kNone;
+        grid[cell(i, j)] = kNone;
         continue;
       }
       PackedVertex out[4];
@@ -150,7 +154,7 @@ std::size_t mergeFaces(PackedVertices& quads) {
       for (int y = j; y < j + h; ++y)
         for (int x = i; x < i + w; ++x) {
           append(faces, &quads[at(x, y) * 4], QuadRole::Faces);
-          grid[static_cast<std::size_t>(y * 16 + x)] = kNone;
+          grid[cell(x, y)] = kNone;
         }
       facesMerged += static_cast<std::size_t>(w * h);
     }

@@ -6,6 +6,7 @@
 #include <array>
 #include <cstdint>
 
+#include "core/model_units.h"
 #include "mesh/mesh_data.h"
 #include "mesh/section_snapshot.h"
 
@@ -67,7 +68,7 @@ constexpr auto kCorners = [] {
           offset(a.x + b.x, a.y + b.y, a.z + b.z),
           PackedVertex::packPosition(16 + 16 * (f.n.x + a.x + b.x), y32, 16 + 16 * (f.n.z + a.z + b.z)),
           y32 == 32,
-          PackedVertex::packUv(su > 0 ? 16 : 0, sv > 0 ? 0 : 16)};
+          PackedVertex::packUv(su > 0 ? kModelUnits : 0, sv > 0 ? 0 : kModelUnits)};
     }
   return table;
 }();

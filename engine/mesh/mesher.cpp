@@ -5,6 +5,7 @@
 #include <cstring>
 #include <utility>
 
+#include "core/model_units.h"
 #include "core/position_random.h"
 #include "mesh/face_merge.h"
 #include "mesh/mesh_tables.h"
@@ -16,6 +17,9 @@ namespace terrasol {
 namespace {
 
 using namespace mesh_tables;
+
+// A row's cells along x, one bit each, in a row mask (bit x + 1) shifted down by one.
+constexpr std::uint32_t kRowCells = (1u << kChunkSize) - 1;
 
 class Mesher {
  public:
@@ -31,14 +35,14 @@ class Mesher {
 
   SectionMesh run() {
     buildOpaqueRows();
-    for (int y = 0; y < 16; ++y)
-      for (int z = 0; z < 16; ++z) {
+    for (int y = 0; y < kChunkSize; ++y)
+      for (int z = 0; z < kChunkSize; ++z) {
         // Opaque cubes by bit arithmetic on the row masks: a face shows where the neighbour is not opaque.
-        const std::uint32_t self = row(y, z) >> 1 & 0xFFFF;
+        const std::uint32_t self = row(y, z) >> 1 & kRowCells;
         const std::uint32_t visible[6] = {
-            self & ~(row(y, z) & 0xFFFF),          self & ~(row(y, z) >> 2 & 0xFFFF),
-            self & ~(row(y - 1, z) >> 1 & 0xFFFF), self & ~(row(y + 1, z) >> 1 & 0xFFFF),
-            self & ~(row(y, z - 1) >> 1 & 0xFFFF), self & ~(row(y, z + 1) >> 1 & 0xFFFF),
+            self & ~(row(y, z) & kRowCells),          self & ~(row(y, z) >> 2 & kRowCells),
+            self & ~(row(y - 1, z) >> 1 & kRowCells), self & ~(row(y + 1, z) >> 1 & kRowCells),
+            self & ~(row(y, z - 1) >> 1 & kRowCells), self & ~(row(y, z + 1) >> 1 & kRowCells),
         };
         std::uint32_t models = 0;  // opaque model blocks not drawn as cubes (a log on its side)
         forEachDirection([&](auto d) {
@@ -59,7 +63,7 @@ class Mesher {
           model(x, y, z, table_[block(x, y, z)]);
         }
         // Everything else that is not air, cell by cell.
-        for (std::uint32_t bits = ~self & 0xFFFF; bits != 0; bits &= bits - 1) {
+        for (std::uint32_t bits = ~self & kRowCells; bits != 0; bits &= bits - 1) {
           const int x = std::countr_zero(bits);
           const BlockId id = block(x, y, z);
           if (id == kAir) continue;
@@ -94,14 +98,15 @@ class Mesher {
  private:
   // Row masks of opaque cells, bit x + 1 for x in -1..16, for y and z in -1..16.
   void buildOpaqueRows() {
+    static_assert(kChunkSize == 16, "a row is two groups of eight cells and the halo's two");
     // Eight 0/1 bytes to eight bits at once: the multiply gathers each byte's bit into the top byte.
     const auto bits8 = [](const std::uint8_t* bytes) {
       std::uint64_t word;
       std::memcpy(&word, bytes, 8);
       return static_cast<std::uint32_t>((word * 0x0102040810204080ull) >> 56);
     };
-    for (int y = -1; y <= 16; ++y)
-      for (int z = -1; z <= 16; ++z) {
+    for (int y = -1; y <= kChunkSize; ++y)
+      for (int z = -1; z <= kChunkSize; ++z) {
         const std::uint8_t* cells = &s_.opaque[static_cast<std::size_t>(SectionSnapshot::index(-1, y, z))];
         rows_[static_cast<std::size_t>((y + 1) * SectionSnapshot::kSide + z + 1)] =
             bits8(cells) | bits8(cells + 8) << 8 | static_cast<std::uint32_t>(cells[16]) << 16 |
@@ -167,7 +172,7 @@ class Mesher {
   bool deepInFoliage(int x, int y, int z) const {
     constexpr Vec n = kFaces[D].n;
     const int bx = x + 2 * n.x, by = y + 2 * n.y, bz = z + 2 * n.z;
-    if (std::min({bx, by, bz}) < -1 || std::max({bx, by, bz}) > 16) return false;
+    if (std::min({bx, by, bz}) < -1 || std::max({bx, by, bz}) > kChunkSize) return false;  // beyond the halo
     const int next = SectionSnapshot::index(x + n.x, y + n.y, z + n.z);
     const int far = SectionSnapshot::index(bx, by, bz);
     return table_[s_.blocks[static_cast<std::size_t>(next)]].foliage &&
@@ -250,8 +255,9 @@ class Mesher {
     const int x0 = x * 32 + 5, x1 = x * 32 + 27, y0 = y * 32, y1 = y * 32 + 32, z0 = z * 32 + 5,
               z1 = z * 32 + 27;
     const std::uint32_t light = ownLight(x, y, z);
-    const std::array<std::array<int, 2>, 4> uvs = {{{0, 16}, {16, 16}, {16, 0}, {0, 0}}};
-    const std::array<std::array<int, 2>, 4> back = {{{16, 16}, {0, 16}, {0, 0}, {16, 0}}};
+    constexpr int u = kModelUnits;
+    const std::array<std::array<int, 2>, 4> uvs = {{{0, u}, {u, u}, {u, 0}, {0, 0}}};
+    const std::array<std::array<int, 2>, 4> back = {{{u, u}, {0, u}, {0, 0}, {u, 0}}};
     auto& out = layer(e);
     flatQuad(out, {{{x0, y0, z0}, {x1, y0, z1}, {x1, y1, z1}, {x0, y1, z0}}}, e, 6, uvs, light);
     flatQuad(out, {{{x1, y0, z1}, {x0, y0, z0}, {x0, y1, z0}, {x1, y1, z1}}}, e, 7, back, light);
@@ -286,8 +292,8 @@ class Mesher {
         e.choices.empty()
             ? e.quads
             : e.choices[weightedPick(e.weights,
-                                     positionSeed({s_.pos.x * 16 + x, kMinY + s_.pos.section * 16 + y,
-                                                   s_.pos.z * 16 + z}))]
+                                     positionSeed({s_.pos.x * kChunkSize + x, s_.pos.minBlockY() + y,
+                                                   s_.pos.z * kChunkSize + z}))]
                   .quads;
     for (const ModelQuad& m : quads) {
       int lit = here;

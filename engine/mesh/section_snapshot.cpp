@@ -13,12 +13,12 @@ namespace {
 // section we are meshing) is an opaque cube. Uniform sections answer without looking at cells.
 bool faceIsOpaque(const Section& section, const std::vector<std::uint8_t>& opaque, int d) {
   if (section.isUniform()) return opaque[section.uniformBlock()] != 0;
-  for (int a = 0; a < 16; ++a)
-    for (int b = 0; b < 16; ++b) {
+  for (int a = 0; a < kChunkSize; ++a)
+    for (int b = 0; b < kChunkSize; ++b) {
       // The layer of `section` that touches ours: its opposite side in direction d.
-      const int x = d == 0 ? 15 : d == 1 ? 0 : a;
-      const int y = d == 2 ? 15 : d == 3 ? 0 : (d < 2 ? a : b);
-      const int z = d == 4 ? 15 : d == 5 ? 0 : b;
+      const int x = d == 0 ? kLastCell : d == 1 ? 0 : a;
+      const int y = d == 2 ? kLastCell : d == 3 ? 0 : (d < 2 ? a : b);
+      const int z = d == 4 ? kLastCell : d == 5 ? 0 : b;
       if (!opaque[section.get(x, y, z)]) return false;
     }
   return true;
@@ -42,7 +42,7 @@ bool buried(const World& world, const Chunk& chunk, SectionPos pos) {
 // sixteen 0/1 opaque flags. Every term fits in 16 bits (kOpen is bit 12), so the sum is
 // built in 16-bit lanes and widened at the end.
 void lightRow(const std::uint8_t* block, const std::uint8_t* sky, const std::uint8_t* opaque, std::uint32_t* out) {
-  const __m128i low = _mm_set1_epi8(15);
+  const __m128i low = _mm_set1_epi8(kLightMask);
   auto levels = [&](const std::uint8_t* bytes) {  // 16 levels, one per byte, in cell order
     const __m128i packed = _mm_loadl_epi64(reinterpret_cast<const __m128i*>(bytes));
     return _mm_unpacklo_epi8(_mm_and_si128(packed, low), _mm_and_si128(_mm_srli_epi16(packed, 4), low));
@@ -64,21 +64,21 @@ void lightRow(const std::uint8_t* block, const std::uint8_t* sky, const std::uin
 #endif
 
 // Copies `count` cells along x, from local (x0, y, z) of `chunk`, to `out` starting at index `dst`.
-// Outside the world or without a chunk: air, no light (sky 15 above the world).
+// Outside the world or without a chunk: air, no light (sky kMaxLight above the world).
 void copyRun(const Chunk* chunk, int y, int z, int x0, int count, const std::uint8_t* opaqueCube,
              SectionSnapshot& out, int dst) {
   const auto d = static_cast<std::size_t>(dst);
   if (!chunk || !inWorldHeight(y)) {
     std::fill_n(&out.blocks[d], count, kAir);
     std::fill_n(&out.opaque[d], count, std::uint8_t{0});
-    std::fill_n(&out.light[d], count, SectionSnapshot::lightTerm(false, 0, y >= kMaxY ? 15 : 0));
+    std::fill_n(&out.light[d], count, SectionSnapshot::lightTerm(false, 0, y >= kMaxY ? kMaxLight : 0));
     return;
   }
-  const int s = sectionOf(y), first = Section::index(x0, y & 15, z);
+  const int s = sectionOf(y), first = Section::index(x0, localOf(y), z);
   const Section& section = chunk->section(s);
   if (const auto* dense = section.blocks()) {
-    if (count == 16) {
-      std::copy_n(dense->data() + first, 16, &out.blocks[d]);  // a constant size: inlined
+    if (count == kChunkSize) {
+      std::copy_n(dense->data() + first, kChunkSize, &out.blocks[d]);  // a constant size: inlined
     } else {
       for (int i = 0; i < count; ++i) out.blocks[d + static_cast<std::size_t>(i)] = (*dense)[static_cast<std::size_t>(first + i)];
     }
@@ -94,7 +94,7 @@ void copyRun(const Chunk* chunk, int y, int z, int x0, int count, const std::uin
   const std::uint8_t* sky = light.lit ? light.sky[static_cast<std::size_t>(s)].bytes() : kDark.data();
   std::uint32_t* terms = &out.light[d];
 #if defined(__SSE2__)
-  if (count == 16) {  // a whole row, starting on a byte: sixteen terms in a few vector steps
+  if (count == kChunkSize) {  // a whole row, starting on a byte: sixteen terms in a few vector steps
     lightRow(block + first / 2, sky + first / 2, opaque, terms);
     return;
   }
@@ -119,22 +119,26 @@ CaptureResult captureSection(const World& world, SectionPos pos, SectionSnapshot
   const Chunk* columns[3][3];
   for (int dz = -1; dz <= 1; ++dz)
     for (int dx = -1; dx <= 1; ++dx) columns[dz + 1][dx + 1] = world.chunk({pos.x + dx, pos.z + dz});
-  for (int lz = -1; lz <= 16; ++lz)
-    for (int lx = -1; lx <= 16; ++lx) {
-      const Chunk* owner = columns[(lz + 16) / 16][(lx + 16) / 16];
+  // columns[] of a local x or z from -1 to kChunkSize: 0 west or north, 1 this chunk, 2 east or south.
+  const auto column = [](int local) { return (local + kChunkSize) / kChunkSize; };
+  for (int lz = -1; lz <= kChunkSize; ++lz)
+    for (int lx = -1; lx <= kChunkSize; ++lx) {
+      const Chunk* owner = columns[column(lz)][column(lx)];
       out.tints[static_cast<std::size_t>((lz + 1) * SectionSnapshot::kSide + lx + 1)] =
-          owner ? owner->tint(lx & 15, lz & 15) : chunk->tint(std::clamp(lx, 0, 15), std::clamp(lz, 0, 15));
+          owner ? owner->tint(localOf(lx), localOf(lz))
+                : chunk->tint(std::clamp(lx, 0, kLastCell), std::clamp(lz, 0, kLastCell));
     }
   const std::uint8_t* opaqueCube = world.opaqueCubes().data();
-  const int y0 = kMinY + pos.section * 16;
-  for (int ly = -1; ly <= 16; ++ly) {
+  const int y0 = pos.minBlockY();
+  for (int ly = -1; ly <= kChunkSize; ++ly) {
     const int y = y0 + ly;
-    for (int lz = -1; lz <= 16; ++lz) {
+    for (int lz = -1; lz <= kChunkSize; ++lz) {
       // Each row is three runs: one cell from the west chunk, 16 from this column, one from the east.
       const int row = SectionSnapshot::index(-1, ly, lz);
-      copyRun(columns[(lz + 16) / 16][0], y, lz & 15, 15, 1, opaqueCube, out, row);
-      copyRun(columns[(lz + 16) / 16][1], y, lz & 15, 0, 16, opaqueCube, out, row + 1);
-      copyRun(columns[(lz + 16) / 16][2], y, lz & 15, 0, 1, opaqueCube, out, row + 17);
+      const Chunk* const* along = columns[column(lz)];
+      copyRun(along[0], y, localOf(lz), kLastCell, 1, opaqueCube, out, row);
+      copyRun(along[1], y, localOf(lz), 0, kChunkSize, opaqueCube, out, row + 1);
+      copyRun(along[2], y, localOf(lz), 0, 1, opaqueCube, out, row + 1 + kChunkSize);
     }
   }
   return CaptureResult::Captured;

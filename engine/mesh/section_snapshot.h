@@ -14,7 +14,7 @@ namespace terrasol {
 
 class SectionSnapshot {
  public:
-  static constexpr int kSide = 18;
+  static constexpr int kSide = kChunkSize + 2;  // the section and its halo
   // Index of local cell (x, y, z), each -1..16.
   static constexpr int index(int x, int y, int z) { return ((y + 1) * kSide + (z + 1)) * kSide + (x + 1); }
 

@@ -6,9 +6,13 @@
 namespace terrasol {
 
 FaceLinks sectionFaceLinks(const SectionSnapshot& snapshot) {
-  constexpr int kCells = 16 * 16 * 16;
-  const auto open = [&](int i) { return !snapshot.opaque[static_cast<std::size_t>(
-                                     SectionSnapshot::index(i & 15, i >> 8, (i >> 4) & 15))]; };
+  constexpr int kCells = Section::kVolume;  // by Section::index
+  const auto open = [&](int i) {
+    return !snapshot.opaque[static_cast<std::size_t>(
+        SectionSnapshot::index(Section::xOf(i), Section::yOf(i), Section::zOf(i)))];
+  };
+  // Bit d of `faces` for Direction d.
+  const auto on = [](bool onFace, Direction d) { return onFace ? 1u << static_cast<int>(d) : 0u; };
   std::bitset<kCells> seen;
   std::array<std::uint16_t, kCells> stack;
   FaceLinks links = kNoFacesLinked;
@@ -21,9 +25,9 @@ FaceLinks sectionFaceLinks(const SectionSnapshot& snapshot) {
     seen.set(static_cast<std::size_t>(start));
     while (top > 0) {
       const int i = stack[static_cast<std::size_t>(--top)];
-      const int x = i & 15, z = (i >> 4) & 15, y = i >> 8;
-      faces |= (x == 0 ? 1u : 0u) | (x == 15 ? 2u : 0u) | (y == 0 ? 4u : 0u) | (y == 15 ? 8u : 0u) |
-               (z == 0 ? 16u : 0u) | (z == 15 ? 32u : 0u);
+      const int x = Section::xOf(i), z = Section::zOf(i), y = Section::yOf(i);
+      faces |= on(x == 0, Direction::West) | on(x == kLastCell, Direction::East) | on(y == 0, Direction::Down) |
+               on(y == kLastCell, Direction::Up) | on(z == 0, Direction::North) | on(z == kLastCell, Direction::South);
       const auto visit = [&](bool inside, int j) {
         if (inside && !seen[static_cast<std::size_t>(j)] && open(j)) {
           seen.set(static_cast<std::size_t>(j));
@@ -31,11 +35,11 @@ FaceLinks sectionFaceLinks(const SectionSnapshot& snapshot) {
         }
       };
       visit(x > 0, i - 1);
-      visit(x < 15, i + 1);
-      visit(z > 0, i - 16);
-      visit(z < 15, i + 16);
-      visit(y > 0, i - 256);
-      visit(y < 15, i + 256);
+      visit(x < kLastCell, i + 1);
+      visit(z > 0, i - kChunkSize);
+      visit(z < kLastCell, i + kChunkSize);
+      visit(y > 0, i - kChunkArea);
+      visit(y < kLastCell, i + kChunkArea);
     }
     for (int a = 0; a < 6; ++a)
       for (int b = 0; b < 6; ++b)

@@ -22,13 +22,15 @@ void applyTints(PackedVertices& vertices, const SectionSnapshot& s) {
                               lanes(i + 1, j + 1) * static_cast<std::uint64_t>(fx * fz) + (512ull | 512ull << 32);
     return PackedVertex::packTintClimate(static_cast<int>((sum & 0xFFFFFFFF) >> 10), static_cast<int>(sum >> 42));
   };
-  std::array<std::uint32_t, 17 * 17> corners;
-  for (int z = 0; z <= 16; ++z)
-    for (int x = 0; x <= 16; ++x) corners[static_cast<std::size_t>(z * 17 + x)] = bilinear(x * 32 + 16, z * 32 + 16);
+  constexpr int kCorners = kChunkSize + 1;  // block corners along a section's side
+  std::array<std::uint32_t, kCorners * kCorners> corners;
+  for (int z = 0; z < kCorners; ++z)
+    for (int x = 0; x < kCorners; ++x)
+      corners[static_cast<std::size_t>(z * kCorners + x)] = bilinear(x * 32 + 16, z * 32 + 16);
   for (PackedVertex& v : vertices) {
     if (!tintedByBiome(static_cast<Tint>(v.tint()))) continue;
     const int x32 = v.x32(), z32 = v.z32();
-    const std::uint32_t bits = (x32 | z32) % 32 == 0 ? corners[static_cast<std::size_t>(z32 / 32 * 17 + x32 / 32)]
+    const std::uint32_t bits = (x32 | z32) % 32 == 0 ? corners[static_cast<std::size_t>(z32 / 32 * kCorners + x32 / 32)]
                                                      : bilinear(x32 + 16, z32 + 16);
     v.light = (v.light & ~PackedVertex::kTintClimateBits) | bits;
   }

@@ -6,6 +6,7 @@
 #include <glm/gtc/matrix_inverse.hpp>
 
 #include "core/camera.h"
+#include "core/render_scale.h"
 #include "render/cave_culling.h"
 #include "render/frame_graph.h"
 #include "render/prop_draw.h"
@@ -27,7 +28,7 @@ DeferredRenderer::DeferredRenderer(const ShaderPreprocessor& shaders, const Atla
       gpuTimer_(!softwareRenderer()) {}
 
 glm::ivec2 scaledRenderSize(glm::ivec2 size, float scale) {
-  const float s = std::isfinite(scale) ? std::clamp(scale, 0.25f, 1.0f) : 1.0f;
+  const float s = std::isfinite(scale) ? std::clamp(scale, kMinRenderScale, kMaxRenderScale) : 1.0f;
   if (s >= 1.0f) return size;
   return glm::max(glm::ivec2(glm::round(glm::vec2(size) * s)), glm::ivec2(1));
 }

@@ -10,6 +10,7 @@
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
+#include "core/day_cycle.h"
 #include "core/render_settings.h"
 #include "render/props.h"
 
@@ -32,7 +33,7 @@ struct FrameInputs {
   glm::dvec3 cameraLookAt{0.0, 0.0, -1.0};
   glm::dvec3 cameraUp{0.0, 1.0, 0.0};  // screen-up hint (camera paths roll it continuously)
   float fovDegrees = 70.0f;
-  std::int64_t ticks = 6000;      // world time
+  std::int64_t ticks = kNoon;     // world time
   float sunPathRotation = 0.0f;   // degrees
   float viewDistance = 64.0f;     // blocks: fog ends here
   DebugView debugView = DebugView::None;

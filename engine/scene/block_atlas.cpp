@@ -9,6 +9,7 @@
 #include "assets/block_states.h"
 #include "assets/model_bake.h"
 #include "core/error.h"
+#include "core/model_units.h"
 #include "core/paths.h"
 
 namespace terrasol {
@@ -28,7 +29,7 @@ BlockModel missingModel() {
   ModelElement& e = m.elements.emplace_back();
   for (int f = 0; f < 6; ++f) {
     ElementFace face;
-    face.uv = {0.0f, 0.0f, 16.0f, 16.0f};
+    face.uv = {0.0f, 0.0f, kModelUnits, kModelUnits};
     face.texture = kMissingTexture;
     face.cullface = static_cast<ModelFace>(f);
     e.faces[static_cast<std::size_t>(f)] = face;
@@ -144,8 +145,8 @@ ModelQuad meshQuad(const BakedQuad& q, std::uint16_t texture) {
       m.corners32[c][static_cast<std::size_t>(a)] =
           std::clamp(static_cast<int>(std::lround(q.corners[c][a] * 32.0f)), 0, 32);
     }
-    m.uvs16[c] = {static_cast<int>(std::lround(q.uvs[c].x * 16.0f)),
-                  static_cast<int>(std::lround(q.uvs[c].y * 16.0f))};
+    m.uvs16[c] = {static_cast<int>(std::lround(q.uvs[c].x * kModelUnits)),
+                  static_cast<int>(std::lround(q.uvs[c].y * kModelUnits))};
   }
   m.texture = texture;
   m.face = basisOf(q.normal);

@@ -17,7 +17,7 @@ struct CameraState {
   glm::dvec3 forward{0.0, 0.0, -1.0};  // unit
   glm::dvec3 up{0.0, 1.0, 0.0};        // unit, perpendicular to forward
   float fov = 70.0f;
-  std::int64_t time = 6000;
+  std::int64_t time = kNoon;
 };
 
 // `t` is clamped to [0, 1]; keyframes must be as parseScene leaves them (at least one, t increasing).

@@ -5,6 +5,8 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "core/light_level.h"
+
 namespace terrasol {
 
 PropTransform propTransform(const SceneProp& prop) { return propTransform(prop.position, prop.rotation, prop.scale); }
@@ -50,12 +52,12 @@ std::vector<glm::vec2> smoothLightAt(const World& world, const LightEngine& ligh
     for (int corner = 0; corner < 8; ++corner) {
       const BlockPos cell{static_cast<int>(base.x) + (corner & 1), static_cast<int>(base.y) + (corner >> 1 & 1),
                           static_cast<int>(base.z) + (corner >> 2 & 1)};
-      if (opacity[world.getBlock(cell)] >= 15) continue;
+      if (opacity[world.getBlock(cell)] >= kMaxLight) continue;  // stops all light
       const double w = (corner & 1 ? f.x : 1.0 - f.x) * (corner & 2 ? f.y : 1.0 - f.y) * (corner & 4 ? f.z : 1.0 - f.z);
       sum += static_cast<float>(w) * glm::vec2(light.lightAt(cell, LightChannel::Block), light.lightAt(cell, LightChannel::Sky));
       weights += w;
     }
-    out.push_back(weights > 1e-9 ? sum / static_cast<float>(weights * 15.0) : glm::vec2(0.0f));
+    out.push_back(weights > 1e-9 ? sum / static_cast<float>(weights * kMaxLight) : glm::vec2(0.0f));
   }
   return out;
 }

@@ -13,6 +13,7 @@
 #include "core/error.h"
 #include "core/paths.h"
 #include "core/json_check.h"
+#include "core/render_scale.h"
 
 namespace terrasol {
 namespace {
@@ -172,7 +173,7 @@ void parseReflections(const nlohmann::json& value, const std::string& key, Refle
   if (const json* v = field(value, "max_steps")) r.maxSteps = static_cast<int>(wholeNumber(*v, member(key, "max_steps"), 1, 256));
   if (const json* v = field(value, "thickness")) r.thickness = numberIn(*v, member(key, "thickness"), 0.01, 16.0, false);
   if (const json* v = field(value, "resolution_scale")) {
-    r.resolutionScale = numberIn(*v, member(key, "resolution_scale"), 0.25, 1.0, false);
+    r.resolutionScale = numberIn(*v, member(key, "resolution_scale"), kMinRenderScale, kMaxRenderScale, false);
   }
   if (const json* v = field(value, "min_smoothness")) {
     r.minSmoothness = numberIn(*v, member(key, "min_smoothness"), 0.0, 1.0, false);
@@ -214,7 +215,7 @@ void parseRender(const json& render, SceneFile& scene) {
     scene.height = static_cast<int>(wholeNumber(*v, "render.height", 1, 8192));
   }
   if (const json* v = field(render, "scale")) {
-    scene.renderScale = static_cast<float>(numberIn(*v, "render.scale", 0.25, 1.0, false));
+    scene.renderScale = static_cast<float>(numberIn(*v, "render.scale", kMinRenderScale, kMaxRenderScale, false));
   }
   if (const json* v = field(render, "target_fps")) {
     scene.targetFps = static_cast<int>(wholeNumber(*v, "render.target_fps", 0, 1000));

@@ -13,6 +13,7 @@
 #include <string_view>
 #include <vector>
 
+#include "core/day_cycle.h"
 #include "core/render_settings.h"
 
 namespace terrasol {
@@ -31,7 +32,7 @@ struct CameraKeyframe {
   double t = 0.0;  // 0..1, strictly increasing along the path
   glm::dvec3 position{0.0}, lookAt{0.0, 0.0, -1.0};
   float fov = 70.0f;         // defaults to camera.fov
-  std::int64_t time = 6000;  // defaults to the scene's time
+  std::int64_t time = kNoon;  // defaults to the scene's time
 };
 struct CameraPath {
   int frames = 1;  // 1..100000
@@ -61,7 +62,7 @@ struct SceneFile {
   // Bottom to top. "default" becomes resourcePackDir()/"default"; relative paths are resolved against
   // the scene file's directory. When the key is absent: just the default pack.
   std::vector<std::filesystem::path> packs;
-  std::int64_t time = 6000;        // ticks, >= 0: 0 sunrise, 6000 noon, 12000 sunset, 18000 midnight
+  std::int64_t time = kNoon;       // ticks, >= 0: core/day_cycle.h (kSunrise, kNoon, kSunset, kMidnight)
   float sunPathRotation = 0.0f;    // degrees in [-90, 90], tilts the sun and moon path
   int width = 320, height = 180;   // pixels, 1..8192 each
   int viewDistance = 4;            // chunks, 0..32

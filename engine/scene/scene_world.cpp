@@ -88,8 +88,8 @@ void SceneWorld::forEachCell(const SceneEdit& edit, F&& f) const {
   for (const ChunkPos& c : loaded_) {
     const glm::ivec3 lo(std::max(edit.from.x, c.minBlockX()), std::max(edit.from.y, kMinY),
                         std::max(edit.from.z, c.minBlockZ()));
-    const glm::ivec3 hi(std::min(edit.to.x, c.minBlockX() + 15), std::min(edit.to.y, kMaxY - 1),
-                        std::min(edit.to.z, c.minBlockZ() + 15));
+    const glm::ivec3 hi(std::min(edit.to.x, c.minBlockX() + kLastCell), std::min(edit.to.y, kMaxY - 1),
+                        std::min(edit.to.z, c.minBlockZ() + kLastCell));
     for (int z = lo.z; z <= hi.z; ++z)
       for (int y = lo.y; y <= hi.y; ++y)
         for (int x = lo.x; x <= hi.x; ++x) f(BlockPos{x, y, z});

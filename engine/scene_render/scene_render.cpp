@@ -127,7 +127,7 @@ FrameInputs SceneRenderer::inputsFor(int frame) const {
   inputs.fovDegrees = camera.fov;
   inputs.ticks = camera.time;
   inputs.sunPathRotation = scene_.sunPathRotation;
-  inputs.viewDistance = static_cast<float>(scene_.viewDistance * 16);
+  inputs.viewDistance = static_cast<float>(scene_.viewDistance * kChunkSize);  // chunks to blocks
   inputs.renderScale = scene_.renderScale;  // with render.target_fps, the most renderFrame uses
   inputs.debugView = debugView_;
   inputs.materialAo = scene_.materialAo;

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "core/light_level.h"
 #include "world/liquid.h"
 
 namespace terrasol {
@@ -11,7 +12,7 @@ std::optional<UnderWater> underWaterAt(const World& world, const LightEngine& li
   if (!surface) return std::nullopt;
   const BlockPos cell{static_cast<int>(std::floor(eye.x)), static_cast<int>(std::floor(eye.y)),
                       static_cast<int>(std::floor(eye.z))};
-  return UnderWater{*surface, static_cast<float>(light.lightAt(cell, LightChannel::Sky)) / 15.0f};
+  return UnderWater{*surface, static_cast<float>(light.lightAt(cell, LightChannel::Sky)) / kMaxLight};
 }
 
 }  // namespace terrasol

@@ -43,7 +43,7 @@ void BlockShapes::setBoxes(BlockId state, std::vector<ShapeBox> boxes) {
   if (shapeOccludesLight_[state]) {
     const FaceCoverage coverage = FaceCoverage::of(boxes_[state]);
     for (int d = 0; d < 6; ++d) {
-      const std::bitset<256>& mask = coverage.side(static_cast<Direction>(d));
+      const SideMask& mask = coverage.side(static_cast<Direction>(d));
       sides |= mask.all() ? 1u << d : 0u;
       auto known = std::find(faceMasks_.begin(), faceMasks_.end(), mask);
       if (known == faceMasks_.end()) {

@@ -35,7 +35,7 @@ class BlockShapes {
   // Per state and side (Direction order), its covered part as an index into lightFaceMasks(); 0 is
   // nothing covered.
   const std::vector<std::array<std::uint8_t, 6>>& lightFaces() const { return lightFaces_; }
-  const std::vector<std::bitset<256>>& lightFaceMasks() const { return faceMasks_; }
+  const std::vector<SideMask>& lightFaceMasks() const { return faceMasks_; }
   // Per state, the sides covered whole (bits by Direction), which stop light on their own.
   const std::vector<std::uint8_t>& lightSides() const { return lightSides_; }
   // Per state, 1 for an opaque cube: BlockRegistry::opaqueCubes, and the states of opaque model
@@ -49,7 +49,7 @@ class BlockShapes {
   std::vector<bool> shapeOccludesLight_, opaqueModel_;
   std::vector<std::uint8_t> lightSides_, opaqueCubes_;
   std::vector<std::array<std::uint8_t, 6>> lightFaces_;
-  std::vector<std::bitset<256>> faceMasks_{std::bitset<256>{}};  // index 0: nothing covered
+  std::vector<SideMask> faceMasks_{SideMask{}};  // index 0: nothing covered
 };
 
 }  // namespace terrasol

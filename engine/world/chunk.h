@@ -39,16 +39,16 @@ class Chunk {
 
   // Each column's grass and foliage colour, blended over its neighbourhood by the generator. Not
   // saved: a loaded chunk asks its generator again (ChunkGenerator::fillTints).
-  TintClimate tint(int x, int z) const { return tints_[static_cast<std::size_t>(z * 16 + x)]; }
-  void setTint(int x, int z, TintClimate tint) { tints_[static_cast<std::size_t>(z * 16 + x)] = tint; }
+  TintClimate tint(int x, int z) const { return tints_[static_cast<std::size_t>(columnIndex(x, z))]; }
+  void setTint(int x, int z, TintClimate tint) { tints_[static_cast<std::size_t>(columnIndex(x, z))] = tint; }
 
   // Edited since load or generation: must be saved before unloading.
   bool modified() const { return modified_; }
   void setModified(bool modified) { modified_ = modified; }
 
  private:
-  static constexpr std::array<TintClimate, 256> filledTints() {
-    std::array<TintClimate, 256> tints{};
+  static constexpr std::array<TintClimate, kChunkArea> filledTints() {
+    std::array<TintClimate, kChunkArea> tints{};
     tints.fill(kPlainsTint);
     return tints;
   }
@@ -56,7 +56,7 @@ class Chunk {
   ChunkPos pos_;
   std::array<Section, kSectionCount> sections_;
   ChunkLight light_;
-  std::array<TintClimate, 256> tints_ = filledTints();
+  std::array<TintClimate, kChunkArea> tints_ = filledTints();
   bool modified_ = false;
 };
 

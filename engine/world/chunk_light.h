@@ -13,9 +13,9 @@ namespace terrasol {
 struct ChunkLight {
   std::array<NibbleArray, kSectionCount> block;
   std::array<NibbleArray, kSectionCount> sky;
-  // Per column (index z * 16 + x): y of the highest block with light opacity >= 1 or a light side
+  // Per column (columnIndex): y of the highest block with light opacity >= 1 or a light side
   // up or down, or kMinY - 1. Every cell above it is in the open sky column and has sky light 15.
-  std::array<std::int16_t, 256> skyTop{};
+  std::array<std::int16_t, kChunkArea> skyTop{};
   // Light-emitting blocks per section, so sections without any skip the search for sources.
   std::array<std::uint16_t, kSectionCount> emitters{};
   // Cells whose block has light sides (BlockShapes::lightSides) per section: where the flood fill

@@ -10,6 +10,10 @@
 namespace terrasol {
 
 inline constexpr int kChunkSize = 16;  // blocks per chunk and per section along each axis
+inline constexpr int kChunkShift = 4;  // block >> kChunkShift is its chunk (or section)
+inline constexpr int kLastCell = kChunkSize - 1;  // the last local coordinate, and the mask that gives it
+inline constexpr int kChunkArea = kChunkSize * kChunkSize;  // columns per chunk, cells per section layer
+static_assert(kChunkSize == 1 << kChunkShift);
 inline constexpr int kMinY = -64;      // lowest block (inclusive)
 inline constexpr int kMaxY = 320;      // one above the highest block
 inline constexpr int kSectionCount = (kMaxY - kMinY) / kChunkSize;
@@ -17,9 +21,11 @@ inline constexpr int kWorldBorder = 30'000'000;
 static_assert(kSectionCount == 24);
 static_assert((kMaxY - kMinY) % kChunkSize == 0);
 
-// Floor division by 16 for negative values too (-1 -> chunk -1, local 15).
-constexpr int chunkOf(int block) { return block >> 4; }
-constexpr int localOf(int block) { return block & 15; }
+// Floor division by kChunkSize for negative values too (-1 -> chunk -1, local 15).
+constexpr int chunkOf(int block) { return block >> kChunkShift; }
+constexpr int localOf(int block) { return block & kLastCell; }
+// A chunk's column (x, z local), numbered z * kChunkSize + x: the order of every per-column array.
+constexpr int columnIndex(int x, int z) { return z * kChunkSize + x; }
 
 struct BlockPos {
   int x = 0, y = 0, z = 0;
@@ -35,14 +41,18 @@ struct ChunkPos {
   constexpr int minBlockZ() const { return z * kChunkSize; }
 };
 
+// The y of section `section`'s bottom layer.
+constexpr int sectionMinY(int section) { return kMinY + section * kChunkSize; }
+
 // A section by chunk coordinates and section index (0 = the bottom section, y -64..-49).
 struct SectionPos {
   int x = 0, section = 0, z = 0;
   friend constexpr auto operator<=>(const SectionPos&, const SectionPos&) = default;
+  constexpr int minBlockY() const { return sectionMinY(section); }
 };
 
 constexpr bool inWorldHeight(int y) { return y >= kMinY && y < kMaxY; }
-constexpr int sectionOf(int y) { return (y - kMinY) >> 4; }  // valid for y in world height
+constexpr int sectionOf(int y) { return (y - kMinY) >> kChunkShift; }  // valid for y in world height
 
 // The six face directions, in the order neighbours and faces are numbered everywhere.
 enum class Direction : std::uint8_t { West, East, Down, Up, North, South };  // -x +x -y +y -z +z

@@ -43,7 +43,7 @@ FaceCoverage FaceCoverage::of(std::span<const ShapeBox> boxes) {
     for (int d = 0; d < 6; ++d) {
       const SideAxes s = axesOf(static_cast<Direction>(d));
       const auto at = [](const std::array<int, 3>& v, int axis) { return v[static_cast<std::size_t>(axis)]; };
-      const bool touches = s.atMax ? at(box.to, s.across) >= 16 : at(box.from, s.across) <= 0;
+      const bool touches = s.atMax ? at(box.to, s.across) >= kModelUnits : at(box.from, s.across) <= 0;
       if (!touches) continue;
       c.add(static_cast<Direction>(d),
             {at(box.from, s.a), at(box.from, s.b), at(box.to, s.a), at(box.to, s.b)});
@@ -54,17 +54,17 @@ FaceCoverage FaceCoverage::of(std::span<const ShapeBox> boxes) {
 
 void FaceCoverage::add(Direction side, const SideRect& rect) {
   auto& bits = sides_[static_cast<std::size_t>(side)];
-  for (int a = std::max(rect.a0, 0); a < std::min(rect.a1, 16); ++a)
-    for (int b = std::max(rect.b0, 0); b < std::min(rect.b1, 16); ++b)
-      bits.set(static_cast<std::size_t>(a * 16 + b));
+  for (int a = std::max(rect.a0, 0); a < std::min(rect.a1, kModelUnits); ++a)
+    for (int b = std::max(rect.b0, 0); b < std::min(rect.b1, kModelUnits); ++b)
+      bits.set(static_cast<std::size_t>(a * kModelUnits + b));
 }
 
 bool FaceCoverage::covers(Direction side, const SideRect& rect) const {
   const auto& bits = sides_[static_cast<std::size_t>(side)];
   if (bits.all()) return true;
-  for (int a = std::max(rect.a0, 0); a < std::min(rect.a1, 16); ++a)
-    for (int b = std::max(rect.b0, 0); b < std::min(rect.b1, 16); ++b) {
-      if (!bits.test(static_cast<std::size_t>(a * 16 + b))) return false;
+  for (int a = std::max(rect.a0, 0); a < std::min(rect.a1, kModelUnits); ++a)
+    for (int b = std::max(rect.b0, 0); b < std::min(rect.b1, kModelUnits); ++b) {
+      if (!bits.test(static_cast<std::size_t>(a * kModelUnits + b))) return false;
     }
   return true;
 }

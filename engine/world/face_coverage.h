@@ -9,20 +9,24 @@
 #include <cstdint>
 #include <span>
 
+#include "core/model_units.h"
 #include "world/coords.h"
 
 namespace terrasol {
 
+// The 1/16 cells of a side, a * kModelUnits + b in its two axes.
+using SideMask = std::bitset<kModelUnits * kModelUnits>;
+
 // A box in 1/16 of a block: from <= to on each axis, 0..16.
 struct ShapeBox {
-  std::array<int, 3> from{0, 0, 0}, to{16, 16, 16};
+  std::array<int, 3> from{0, 0, 0}, to{kModelUnits, kModelUnits, kModelUnits};
   friend bool operator==(const ShapeBox&, const ShapeBox&) = default;
 };
 
 // A rectangle on a side, in its two other axes in x, y, z order (west/east: y, z; down/up: x, z;
 // north/south: x, y), in 1/16: [a0, a1) x [b0, b1).
 struct SideRect {
-  int a0 = 0, b0 = 0, a1 = 16, b1 = 16;
+  int a0 = 0, b0 = 0, a1 = kModelUnits, b1 = kModelUnits;
 };
 
 class FaceCoverage {
@@ -41,10 +45,10 @@ class FaceCoverage {
   bool full(Direction side) const { return sides_[static_cast<std::size_t>(side)].all(); }
   bool empty(Direction side) const { return sides_[static_cast<std::size_t>(side)].none(); }
   // The side's 16 x 16 cells, a * 16 + b in its two axes: neighbours' touching sides line up.
-  const std::bitset<256>& side(Direction side) const { return sides_[static_cast<std::size_t>(side)]; }
+  const SideMask& side(Direction side) const { return sides_[static_cast<std::size_t>(side)]; }
 
  private:
-  std::array<std::bitset<256>, 6> sides_;
+  std::array<SideMask, 6> sides_;
 };
 
 // Whether a face on this cell's side `side`, spanning `rect`, is hidden by the neighbour there.

@@ -25,7 +25,7 @@ class FlatGenerator final : public ChunkGenerator {
       for (int i = 0; i < layer.thickness && y < kMaxY; ++i, ++y) {
         auto& blocks = chunk.section(sectionOf(y)).mutableBlocks();
         const auto base = blocks.begin() + Section::index(0, localOf(y), 0);
-        std::fill(base, base + 256, layer.block);
+        std::fill(base, base + kChunkArea, layer.block);  // one layer
       }
     }
     chunk.compact();

@@ -7,11 +7,15 @@
 #include <cstdint>
 #include <memory>
 
+#include "core/light_level.h"
+#include "world/coords.h"
+
 namespace terrasol {
 
 class NibbleArray {
  public:
-  static constexpr int kBytes = 2048;
+  static constexpr int kBytes = kChunkSize * kChunkArea / 2;  // two levels a byte
+  static_assert(kBytes == 2048);
   using Bytes = std::array<std::uint8_t, kBytes>;
 
   explicit NibbleArray(std::uint8_t uniform = 0) : read_(uniformBytes(uniform)), uniform_(uniform) {}
@@ -43,13 +47,13 @@ class NibbleArray {
   }
   // Reads a level from bytes() or writableBytes(): for loops that read many levels.
   static std::uint8_t get(const std::uint8_t* bytes, int index) {
-    return static_cast<std::uint8_t>((bytes[index >> 1] >> ((index & 1) * 4)) & 15);
+    return static_cast<std::uint8_t>((bytes[index >> 1] >> ((index & 1) * 4)) & kLightMask);
   }
   // Sets a level in bytes from writableBytes(): for loops that write many levels.
   static void set(std::uint8_t* bytes, int index, std::uint8_t level) {
     std::uint8_t& byte = bytes[index >> 1];
     const int shift = (index & 1) * 4;
-    byte = static_cast<std::uint8_t>((byte & ~(15 << shift)) | (level << shift));
+    byte = static_cast<std::uint8_t>((byte & ~(kLightMask << shift)) | (level << shift));
   }
   // The bytes to write through, allocated (holding the uniform level) on first use; valid until the
   // next fill().
@@ -89,14 +93,14 @@ class NibbleArray {
   std::size_t memoryBytes() const { return owned_ ? kBytes : 0; }
 
  private:
-  // 16 shared read-only buffers, one per level: 32 KiB for the whole process.
+  // A shared read-only buffer per level: 32 KiB for the whole process.
   static const std::uint8_t* uniformBytes(std::uint8_t level) {
     static const auto buffers = [] {
-      std::array<Bytes, 16> all;
-      for (int l = 0; l < 16; ++l) all[static_cast<std::size_t>(l)].fill(static_cast<std::uint8_t>(l * 0x11));
+      std::array<Bytes, kLightLevels> all;
+      for (int l = 0; l < kLightLevels; ++l) all[static_cast<std::size_t>(l)].fill(static_cast<std::uint8_t>(l * 0x11));
       return all;
     }();
-    return buffers[level & 15].data();
+    return buffers[level & kLightMask].data();
   }
 
   std::unique_ptr<Bytes> owned_;

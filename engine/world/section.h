@@ -12,13 +12,20 @@
 #include <memory>
 
 #include "world/block.h"
+#include "world/coords.h"
 
 namespace terrasol {
 
 class Section {
  public:
-  static constexpr int kVolume = 16 * 16 * 16;
-  static constexpr int index(int x, int y, int z) { return (y * 16 + z) * 16 + x; }
+  static constexpr int kVolume = kChunkSize * kChunkSize * kChunkSize;
+  static constexpr int index(int x, int y, int z) { return (y * kChunkSize + z) * kChunkSize + x; }
+  static constexpr int kYShift = 2 * kChunkShift;        // index >> kYShift: the cell's y
+  static constexpr int kColumnMask = kChunkArea - 1;     // index & kColumnMask: its column (columnIndex)
+  // Local coordinates of an index.
+  static constexpr int xOf(int index) { return index & kLastCell; }
+  static constexpr int yOf(int index) { return index >> kYShift; }
+  static constexpr int zOf(int index) { return (index >> kChunkShift) & kLastCell; }
   using Blocks = std::array<BlockId, kVolume>;
   static_assert(sizeof(Blocks) == 8192);
 
@@ -54,7 +61,10 @@ class Section {
   BlockId uniform_ = kAir;
 };
 
-static_assert(Section::index(15, 15, 15) == Section::kVolume - 1);
-static_assert(Section::index(1, 0, 0) == 1 && Section::index(0, 0, 1) == 16 && Section::index(0, 1, 0) == 256);
+static_assert(Section::index(kLastCell, kLastCell, kLastCell) == Section::kVolume - 1);
+static_assert(Section::index(1, 0, 0) == 1 && Section::index(0, 0, 1) == kChunkSize &&
+              Section::index(0, 1, 0) == kChunkArea);
+static_assert(Section::xOf(Section::index(3, 5, 7)) == 3 && Section::yOf(Section::index(3, 5, 7)) == 5 &&
+              Section::zOf(Section::index(3, 5, 7)) == 7);
 
 }  // namespace terrasol

@@ -6,59 +6,46 @@
 // noise caves (tunnels and caverns, open to the surface on land), lava below y = -54; ores by depth
 // (in deepslate, their deepslate forms), glowstone clusters on deep cave ceilings.
 
-#include <array>
 #include <cstdint>
 
 #include "world/biomes.h"
 #include "world/generator.h"
-#include "world/noise.h"
+#include "world/terrain_blocks.h"
+#include "world/terrain_caves.h"
+#include "world/terrain_shape.h"
+#include "world/terrain_stages.h"
+#include "world/terrain_trees.h"
 
 namespace terrasol {
 
+// Runs the stages of world/terrain_*.h in order; holds what they share.
 class TerrainGenerator final : public ChunkGenerator {
  public:
-  static constexpr int kSeaLevel = 62;  // highest water block
-  static constexpr int kLavaLevel = -54;  // caves at or below fill with lava
-  static constexpr int kDeepslateTop = 8;  // stone from here up; below y = 0 deepslate; a blend between
+  static constexpr int kSeaLevel = TerrainShape::kSeaLevel;
+  static constexpr int kLavaLevel = TerrainCaves::kLavaLevel;
+  static constexpr int kDeepslateTop = terrasol::kDeepslateTop;
 
   TerrainGenerator(std::uint64_t seed, const BlockRegistry& blocks);
 
   void generate(Chunk& chunk) const override;
-  int surfaceHeight(int x, int z) const override;
-  void fillTints(Chunk& chunk) const override;
+  int surfaceHeight(int x, int z) const override { return shape_.surfaceHeight(x, z); }
+  void fillTints(Chunk& chunk) const override { blendTints(chunk, context()); }
 
   // Cave density at a block: negative inside a cave. Pure; the same value generate() uses.
-  double caveDensity(int x, int y, int z) const;
+  double caveDensity(int x, int y, int z) const { return caves_.density(x, y, z); }
   // The biome of a column.
-  Biome biomeAt(int x, int z) const { return biomes_.biomeAt(x, z, surfaceHeight(x, z)); }
+  Biome biomeAt(int x, int z) const { return context().biomeAt(x, z); }
   const BiomeSource& biomes() const { return biomes_; }
 
-  struct Blocks {
-    BlockId stone, dirt, grass, sand, gravel, bedrock, water, lava, snow, log, leaves, shortGrass, dandelion,
-        poppy, coalOre, ironOre, goldOre, glowstone, deepslate, deepslateCoalOre, deepslateIronOre,
-        deepslateGoldOre, copperOre, deepslateCopperOre, lapisOre, deepslateLapisOre, diamondOre,
-        deepslateDiamondOre, emeraldOre, sandstone, ice, snowLayer, birchLog, birchLeaves, spruceLog, spruceLeaves,
-        acaciaLog, acaciaLeaves, cactus, deadBush, fern;
-  };
-
  private:
-  // Cave density is evaluated on a lattice of 4 x 8 x 4 blocks and interpolated in between.
-  static constexpr int kCaveCellXZ = 4;
-  static constexpr int kCaveCellY = 8;
-
-  double caveLattice(std::int64_t cx, std::int64_t cy, std::int64_t cz) const;
-  bool carveAllowed(int y, int surface) const;
-
-  void placeOres(Chunk& chunk) const;
-  void placeGlowstone(Chunk& chunk) const;
-  void placeTrees(Chunk& chunk) const;
-  void placeTree(Chunk& chunk, Biome biome, int tx, int ground, int tz, std::uint64_t h) const;
-  void placePlants(Chunk& chunk) const;
+  TerrainContext context() const { return {seed_, blocks_, shape_, caves_, biomes_}; }
 
   std::uint64_t seed_;
-  Blocks b_;
+  TerrainBlocks blocks_;
   BiomeSource biomes_;
-  Noise continents_, hills_, mountains_, ridges_, tunnelA_, tunnelB_, caverns_, forests_;
+  TerrainShape shape_;
+  TerrainCaves caves_;
+  TerrainTrees trees_;
 };
 
 }  // namespace terrasol

@@ -9,6 +9,8 @@
 
 #include <glm/vec3.hpp>
 
+#include "core/model_units.h"
+
 namespace terrasol {
 
 struct VoxelStep {
@@ -83,8 +85,9 @@ std::optional<BoxHit> firstBoxHit(const Boxes& boxes, glm::ivec3 cell, glm::dvec
   std::optional<BoxHit> best;
   const glm::dvec3 corner(cell);
   for (const auto& b : boxes) {
-    const auto hit = rayBox(origin, dir, corner + glm::dvec3(b.from[0], b.from[1], b.from[2]) / 16.0,
-                            corner + glm::dvec3(b.to[0], b.to[1], b.to[2]) / 16.0);
+    constexpr double kUnits = kModelUnits;
+    const auto hit = rayBox(origin, dir, corner + glm::dvec3(b.from[0], b.from[1], b.from[2]) / kUnits,
+                            corner + glm::dvec3(b.to[0], b.to[1], b.to[2]) / kUnits);
     if (hit && (!best || hit->t < best->t)) best = hit;
   }
   return best;

@@ -6,6 +6,7 @@
 #include <initializer_list>
 
 #include "core/error.h"
+#include "core/render_scale.h"
 #include "render/frame_uniforms.h"
 #include "render/gl/render_target.h"
 #include "render/gl/uniforms.h"
@@ -113,7 +114,7 @@ void ReflectionPass::setUniforms(const Frame& frame) const {
 
 void ReflectionPass::execute(Frame& frame) {
   const GBuffer& gbuffer = *frame.gbuffer;
-  const float scale = std::clamp(shared_.options.reflections.resolutionScale, 0.25f, 1.0f);
+  const float scale = std::clamp(shared_.options.reflections.resolutionScale, kMinRenderScale, kMaxRenderScale);
   const glm::ivec2 size = glm::max(glm::ivec2(glm::round(glm::vec2(gbuffer.size()) * scale)), glm::ivec2(1));
   ensureTargets(size);
   setUniforms(frame);

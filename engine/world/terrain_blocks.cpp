@@ -1,0 +1,48 @@
+#include "world/terrain_blocks.h"
+
+namespace terrasol {
+
+TerrainBlocks::TerrainBlocks(const BlockRegistry& r)
+    : stone(r.id("stone")),
+      dirt(r.id("dirt")),
+      grass(r.id("grass_block")),
+      sand(r.id("sand")),
+      gravel(r.id("gravel")),
+      bedrock(r.id("bedrock")),
+      water(r.id("water")),
+      lava(r.id("lava")),
+      snow(r.id("snow")),
+      log(r.id("oak_log")),
+      leaves(r.id("oak_leaves")),
+      shortGrass(r.id("short_grass")),
+      dandelion(r.id("dandelion")),
+      poppy(r.id("poppy")),
+      coalOre(r.id("coal_ore")),
+      ironOre(r.id("iron_ore")),
+      goldOre(r.id("gold_ore")),
+      glowstone(r.id("glowstone")),
+      deepslate(r.id("deepslate")),
+      deepslateCoalOre(r.id("deepslate_coal_ore")),
+      deepslateIronOre(r.id("deepslate_iron_ore")),
+      deepslateGoldOre(r.id("deepslate_gold_ore")),
+      copperOre(r.id("copper_ore")),
+      deepslateCopperOre(r.id("deepslate_copper_ore")),
+      lapisOre(r.id("lapis_ore")),
+      deepslateLapisOre(r.id("deepslate_lapis_ore")),
+      diamondOre(r.id("diamond_ore")),
+      deepslateDiamondOre(r.id("deepslate_diamond_ore")),
+      emeraldOre(r.id("emerald_ore")),
+      sandstone(r.id("sandstone")),
+      ice(r.id("ice")),
+      snowLayer(r.id("snow_layer")),
+      birchLog(r.id("birch_log")),
+      birchLeaves(r.id("birch_leaves")),
+      spruceLog(r.id("spruce_log")),
+      spruceLeaves(r.id("spruce_leaves")),
+      acaciaLog(r.id("acacia_log")),
+      acaciaLeaves(r.id("acacia_leaves")),
+      cactus(r.id("cactus")),
+      deadBush(r.id("dead_bush")),
+      fern(r.id("fern")) {}
+
+}  // namespace terrasol
