@@ -89,54 +89,58 @@ std::vector<Placement> placementOf(const World& world, BlockId held, const Targe
   const bool same = &blocks[there] == &type;
   // The upper half: against a ceiling, or clicked above a side's middle.
   const bool upper = target.normal.y == -1 || (target.normal.y == 0 && hit.y - std::floor(hit.y) > 0.5);
-  const std::string& rule = type.placement;
+  const PlacementRule rule = type.placement;
   const std::string side = sideOf(target.normal);
-  if (rule == "slab") {
-    // A slab clicked on its open side becomes a double slab where it is.
-    const std::string half = valueOf(blocks, there, "type");
-    if (same && ((half == "bottom" && target.normal.y == 1) || (half == "top" && target.normal.y == -1))) {
-      return {{target.block, with(blocks, there, {{"type", "double"}})}};
+  switch (rule) {
+    case PlacementRule::Slab: {
+      // A slab clicked on its open side becomes a double slab where it is.
+      const std::string half = valueOf(blocks, there, "type");
+      if (same && ((half == "bottom" && target.normal.y == 1) || (half == "top" && target.normal.y == -1))) {
+        return {{target.block, with(blocks, there, {{"type", "double"}})}};
+      }
+      return {{at, with(blocks, held, {{"type", upper ? "top" : "bottom"}})}};
     }
-    return {{at, with(blocks, held, {{"type", upper ? "top" : "bottom"}})}};
-  }
-  if (rule == "layers") {
-    if (const std::string n = valueOf(blocks, there, "layers"); same && target.normal.y == 1 && n != "8") {
-      return {{target.block, with(blocks, there, {{"layers", std::to_string(std::stoi(n) + 1)}})}};
+    case PlacementRule::Layers:
+      if (const std::string n = valueOf(blocks, there, "layers"); same && target.normal.y == 1 && n != "8") {
+        return {{target.block, with(blocks, there, {{"layers", std::to_string(std::stoi(n) + 1)}})}};
+      }
+      return {{at, held}};
+    case PlacementRule::Stairs:
+      return {{at, with(blocks, held, {{"half", upper ? "top" : "bottom"}, {"facing", facingOf(look)}})}};
+    case PlacementRule::Axis: {
+      const char* axis = target.normal.x != 0 ? "x" : target.normal.z != 0 ? "z" : "y";
+      return {{at, with(blocks, held, {{"axis", axis}})}};
     }
-    return {{at, held}};
-  }
-  if (rule == "stairs")
-    return {{at, with(blocks, held, {{"half", upper ? "top" : "bottom"}, {"facing", facingOf(look)}})}};
-  if (rule == "axis") {
-    const char* axis = target.normal.x != 0 ? "x" : target.normal.z != 0 ? "z" : "y";
-    return {{at, with(blocks, held, {{"axis", axis}})}};
-  }
-  if (rule == "facing") return {{at, with(blocks, held, {{"facing", facingOf(look)}})}};
-  if (rule == "facing_back") return {{at, with(blocks, held, {{"facing", opposite(facingOf(look))}})}};
-  if (rule == "trapdoor") {
-    // On a side it hangs from that side, at the half clicked; on a top or bottom it faces the player.
-    if (!side.empty())
-      return {{at, with(blocks, held, {{"facing", side}, {"half", upper ? "top" : "bottom"}})}};
-    return {
-        {at, with(blocks, held, {{"facing", opposite(facingOf(look))}, {"half", upper ? "top" : "bottom"}})}};
-  }
-  if (rule == "wall" || rule == "torch") {
-    // Against a wall's whole side; a torch stands on a floor too.
-    if (!side.empty() && wholeBlock(world, target.block)) {
-      const BlockId wall = rule == "torch" ? blocks.id(type.wallVariant) : held;
-      return {{at, with(blocks, wall, {{"facing", side}})}};
+    case PlacementRule::Facing:
+      return {{at, with(blocks, held, {{"facing", facingOf(look)}})}};
+    case PlacementRule::FacingBack:
+      return {{at, with(blocks, held, {{"facing", opposite(facingOf(look))}})}};
+    case PlacementRule::Trapdoor:
+      // On a side it hangs from that side, at the half clicked; on a top or bottom it faces the player.
+      if (!side.empty())
+        return {{at, with(blocks, held, {{"facing", side}, {"half", upper ? "top" : "bottom"}})}};
+      return {
+          {at, with(blocks, held, {{"facing", opposite(facingOf(look))}, {"half", upper ? "top" : "bottom"}})}};
+    case PlacementRule::Wall:
+    case PlacementRule::Torch:
+      // Against a wall's whole side; a torch stands on a floor too.
+      if (!side.empty() && wholeBlock(world, target.block)) {
+        const BlockId wall = rule == PlacementRule::Torch ? type.wallVariant : held;
+        return {{at, with(blocks, wall, {{"facing", side}})}};
+      }
+      if (rule == PlacementRule::Torch && target.normal.y == 1) return {{at, held}};
+      return {};
+    case PlacementRule::Door: {
+      const std::string facing = facingOf(look);
+      const BlockId lower = with(blocks, held,
+                                 {{"facing", facing},
+                                  {"half", "lower"},
+                                  {"hinge", hingeOf(world, held, at, facing, hit)},
+                                  {"open", "false"}});
+      return {{at, lower}, {at.offset(0, 1, 0), with(blocks, lower, {{"half", "upper"}})}};
     }
-    if (rule == "torch" && target.normal.y == 1) return {{at, held}};
-    return {};
-  }
-  if (rule == "door") {
-    const std::string facing = facingOf(look);
-    const BlockId lower = with(blocks, held,
-                               {{"facing", facing},
-                                {"half", "lower"},
-                                {"hinge", hingeOf(world, held, at, facing, hit)},
-                                {"open", "false"}});
-    return {{at, lower}, {at.offset(0, 1, 0), with(blocks, lower, {{"half", "upper"}})}};
+    case PlacementRule::None:
+      break;
   }
   return {{at, held}};
 }
@@ -149,11 +153,12 @@ std::vector<Placement> useOf(const World& world, const BlockPos& pos, glm::dvec3
   const bool open = valueOf(blocks, state, "open") != "true";
   BlockId toggled = with(blocks, state, {{"open", open ? "true" : "false"}});
   // A gate opened from its far side turns to swing away from the player, as Minecraft's does.
-  if (open && type.placement == "facing" && valueOf(blocks, state, "facing") == opposite(facingOf(look))) {
+  if (open && type.placement == PlacementRule::Facing &&
+      valueOf(blocks, state, "facing") == opposite(facingOf(look))) {
     toggled = with(blocks, toggled, {{"facing", facingOf(look)}});
   }
   std::vector<Placement> cells = {{pos, toggled}};
-  if (type.placement == "door") {
+  if (type.placement == PlacementRule::Door) {
     const BlockPos other = pos.offset(0, valueOf(blocks, state, "half") == "lower" ? 1 : -1, 0);
     const BlockId o = world.getBlock(other);
     if (&blocks[o] == &type) cells.push_back({other, with(blocks, o, {{"open", open ? "true" : "false"}})});
@@ -165,7 +170,8 @@ BlockId pickedBy(const World& world, const BlockPos& pos) {
   const BlockRegistry& blocks = world.blocks();
   const BlockType& type = blocks[world.getBlock(pos)];
   for (std::size_t i = 0; i < blocks.blockCount(); ++i) {
-    if (blocks.block(i).wallVariant == type.name) return blocks.block(i).defaultState;
+    const BlockId wall = blocks.block(i).wallVariant;
+    if (wall != kAir && &blocks[wall] == &type) return blocks.block(i).defaultState;
   }
   return type.defaultState;
 }
@@ -174,7 +180,7 @@ std::vector<BlockPos> brokenBy(const World& world, const BlockPos& pos) {
   const BlockRegistry& blocks = world.blocks();
   const BlockId state = world.getBlock(pos);
   std::vector<BlockPos> cells = {pos};
-  if (blocks[state].placement == "door") {
+  if (blocks[state].placement == PlacementRule::Door) {
     const BlockPos other = pos.offset(0, valueOf(blocks, state, "half") == "lower" ? 1 : -1, 0);
     if (&blocks[world.getBlock(other)] == &blocks[state]) cells.push_back(other);
   }

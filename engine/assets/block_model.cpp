@@ -16,13 +16,12 @@ using namespace json_check;
 
 namespace {
 
-constexpr std::string_view kFaceKeys[] = {"down", "up", "north", "south", "west", "east"};
 constexpr int kMaxModelDepth = 64;  // parents; references between textures ("#a" -> "#b") likewise
 
 ModelFace faceOf(const json& value, const std::string& key) {
   // Minecraft also accepts "bottom" for down in cullface.
   if (value.is_string() && value.get<std::string>() == "bottom") return ModelFace::Down;
-  return enumOf<ModelFace>(value, key, kFaceKeys);
+  return enumOf(value, key, kModelFaceNames);
 }
 
 glm::vec3 boxCorner(const json& value, const std::string& key) {

@@ -16,14 +16,15 @@
 #include <string>
 #include <vector>
 
+#include "core/enum_names.h"
+
 namespace terrasol {
 
 class PackStack;
 
 // Minecraft's face names, in its order.
 enum class ModelFace : std::uint8_t { Down, Up, North, South, West, East };
-inline constexpr std::array<const char*, 6> kModelFaceNames = {"down",  "up",   "north",
-                                                               "south", "west", "east"};
+inline constexpr EnumNames<ModelFace, 6> kModelFaceNames{{"down", "up", "north", "south", "west", "east"}};
 // The unit vector out of a face (north is -z, east +x).
 glm::vec3 faceNormal(ModelFace face);
 

@@ -1,48 +1,56 @@
 #include "assets/resource_pack.h"
 
-#include <nlohmann/json.hpp>
+#include <limits>
 
 #include "core/error.h"
+#include "core/json_check.h"
+#include "core/log.h"
 
 namespace terrasol {
 namespace {
 
-using nlohmann::json;
+using namespace json_check;
 
 constexpr const char* kBlockDirs[] = {"assets/minecraft/textures/block", "assets/minecraft/textures/blocks"};
 
-PackInfo parseMcmeta(const std::vector<std::uint8_t>& bytes, const std::string& file) {
-  json root;
-  try {
-    root = json::parse(bytes.begin(), bytes.end());
-  } catch (const json::parse_error& e) {
-    throw Error(file + ": invalid JSON: " + e.what());
-  }
-  if (!root.is_object() || !root.contains("pack") || !root["pack"].is_object()) {
-    throw Error(file + ": expected {\"pack\": {\"pack_format\": N, \"description\": ...}}");
-  }
-  const json& pack = root["pack"];
+enum class NormalConvention { DirectX, OpenGl };
+constexpr EnumNames<NormalConvention, 2> kNormalConventions{{"directx", "opengl"}};
+
+// pack.mcmeta is Minecraft's: keys Terrasol does not read (supported_formats, overlays, filter,
+// language...) are other readers' and pass unremarked. Only the "terrasol" section is Terrasol's, and a
+// key it does not know there is probably a typo: a warning, as the pack loaded before it was checked.
+PackInfo parsePack(const json& root, const std::string& file) {
+  if (!root.is_object()) expected("", "an object", root);
+  const json& pack = required(root, "", "pack");
+  if (!pack.is_object()) expected("pack", "an object", pack);
   PackInfo info;
-  if (!pack.contains("pack_format") || !pack["pack_format"].is_number_integer()) {
-    throw Error(file + ": pack.pack_format must be an integer");
-  }
-  info.packFormat = pack["pack_format"].get<int>();
-  if (pack.contains("description")) {
+  constexpr std::int64_t kMinInt = std::numeric_limits<int>::min(), kMaxInt = std::numeric_limits<int>::max();
+  info.packFormat =
+      static_cast<int>(wholeNumber(required(pack, "pack", "pack_format"), "pack.pack_format", kMinInt, kMaxInt));
+  if (const json* d = field(pack, "description")) {
     // A plain string, or a JSON text component (kept as its JSON text).
-    info.description = pack["description"].is_string() ? pack["description"].get<std::string>() : pack["description"].dump();
+    info.description = d->is_string() ? d->get<std::string>() : d->dump();
   }
-  if (root.contains("terrasol")) {
-    const json& t = root["terrasol"];
-    if (!t.is_object()) throw Error(file + ": \"terrasol\" must be an object");
-    if (t.contains("normal_map_convention")) {
-      const json& c = t["normal_map_convention"];
-      if (!c.is_string() || (c != "directx" && c != "opengl")) {
-        throw Error(file + ": terrasol.normal_map_convention must be \"directx\" or \"opengl\"");
-      }
-      info.openGlNormals = c == "opengl";
+  if (const json* t = field(root, "terrasol")) {
+    for (const std::string& key : unknownKeys(*t, "terrasol", {"normal_map_convention"})) {
+      logWarning(withFile(file, join({key, ": unknown key, ignored; expected \"normal_map_convention\""})));
+    }
+    if (const json* c = field(*t, "normal_map_convention")) {
+      const NormalConvention convention = enumOf(*c, "terrasol.normal_map_convention", kNormalConventions);
+      info.openGlNormals = convention == NormalConvention::OpenGl;
     }
   }
   return info;
+}
+
+PackInfo parseMcmeta(const std::vector<std::uint8_t>& bytes, const std::string& file) {
+  const std::string_view text(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+  const json root = parseJson(text, file);
+  try {
+    return parsePack(root, file);
+  } catch (const Error& e) {
+    throw Error(withFile(file, e.what()));
+  }
 }
 
 }  // namespace

@@ -1,22 +1,61 @@
 #include "assets/texture_meta.h"
 
 #include <algorithm>
-#include <nlohmann/json.hpp>
 
 #include "core/error.h"
+#include "core/json_check.h"
 
 namespace terrasol {
 namespace {
 
-using nlohmann::json;
+using namespace json_check;
 
-int positiveInt(const json& object, const char* key, int fallback, const std::string& where) {
-  if (!object.contains(key)) return fallback;
-  const json& v = object[key];
-  if (!v.is_number_integer() || v.get<long long>() < 1 || v.get<long long>() > 1'000'000) {
-    throw Error(where + "." + key + " must be a positive integer");
+int positiveInt(const json& object, const char* name, int fallback, const std::string& key) {
+  const json* v = field(object, name);
+  return v ? static_cast<int>(wholeNumber(*v, member(key, name), 1, 1'000'000)) : fallback;
+}
+
+// One entry of "frames": a frame index, or {"index": N, "time": T}.
+AnimationFrame parseFrame(const json& f, int frametime, int stripFrames, const std::string& key) {
+  AnimationFrame frame{0, frametime};
+  const json* index = f.is_object() ? field(f, "index") : &f;
+  if (!index || !index->is_number_integer()) expected(key, "a frame index or {\"index\": N, \"time\": T}", f);
+  const std::int64_t i = index->get<std::int64_t>();
+  if (i < 0 || i >= stripFrames) {
+    fail(key, join({"is frame ", std::to_string(i), ", but the strip has ", std::to_string(stripFrames)}));
   }
-  return v.get<int>();
+  frame.index = static_cast<int>(i);
+  if (f.is_object()) frame.ticks = positiveInt(f, "time", frametime, key);
+  return frame;
+}
+
+// The "animation" section. The file is Minecraft's: keys it does not read (and the "texture",
+// "villager" or "gui" sections beside it) are other readers' and pass unremarked.
+Animation parseSection(const json& a, int width, int height) {
+  if (!a.is_object()) expected("animation", "an object", a);
+  Animation anim;
+  anim.frameWidth = positiveInt(a, "width", width, "animation");
+  anim.frameHeight = positiveInt(a, "height", anim.frameWidth, "animation");
+  if (anim.frameWidth != width || height % anim.frameHeight != 0) {
+    fail("animation", join({"the strip is ", std::to_string(width), "x", std::to_string(height),
+                            ", not a stack of ", std::to_string(anim.frameWidth), "x",
+                            std::to_string(anim.frameHeight), " frames"}));
+  }
+  anim.stripFrames = height / anim.frameHeight;
+  const int frametime = positiveInt(a, "frametime", 1, "animation");
+  if (const json* v = field(a, "interpolate")) anim.interpolate = boolean(*v, "animation.interpolate");
+  if (const json* frames = field(a, "frames")) {
+    if (!frames->is_array() || frames->empty()) expected("animation.frames", "a non-empty array", *frames);
+    if (frames->size() > 65536) fail("animation.frames", "has more than 65536 entries");
+    for (std::size_t i = 0; i < frames->size(); ++i) {
+      const std::string key = element("animation.frames", i);
+      anim.sequence.push_back(parseFrame((*frames)[i], frametime, anim.stripFrames, key));
+    }
+  } else {
+    if (anim.stripFrames > 65536) fail("animation", "more than 65536 frames");
+    for (int i = 0; i < anim.stripFrames; ++i) anim.sequence.push_back({i, frametime});
+  }
+  return anim;
 }
 
 }  // namespace
@@ -45,58 +84,15 @@ FrameBlend frameAt(const Animation& animation, std::int64_t ticks, float partial
 bool isSquare(int width, int height) { return width == height; }
 
 std::optional<Animation> parseAnimation(const std::string& text, int width, int height, const std::string& file) {
-  json root;
+  const json root = parseJson(text, file);
   try {
-    root = json::parse(text);
-  } catch (const json::parse_error& e) {
-    throw Error(file + ": invalid JSON: " + e.what());
+    if (!root.is_object()) expected("", "an object", root);
+    const json* a = field(root, "animation");
+    if (!a) return std::nullopt;
+    return parseSection(*a, width, height);
+  } catch (const Error& e) {
+    throw Error(withFile(file, e.what()));
   }
-  if (!root.is_object()) throw Error(file + ": expected a JSON object");
-  if (!root.contains("animation")) return std::nullopt;
-  const json& a = root["animation"];
-  if (!a.is_object()) throw Error(file + ": \"animation\" must be an object");
-  const std::string where = file + ": animation";
-
-  Animation anim;
-  anim.frameWidth = positiveInt(a, "width", width, where);
-  anim.frameHeight = positiveInt(a, "height", anim.frameWidth, where);
-  if (anim.frameWidth != width || height % anim.frameHeight != 0) {
-    throw Error(where + ": the strip is " + std::to_string(width) + "x" + std::to_string(height) +
-                ", not a stack of " + std::to_string(anim.frameWidth) + "x" + std::to_string(anim.frameHeight) +
-                " frames");
-  }
-  anim.stripFrames = height / anim.frameHeight;
-  const int frametime = positiveInt(a, "frametime", 1, where);
-  if (a.contains("interpolate")) {
-    if (!a["interpolate"].is_boolean()) throw Error(where + ".interpolate must be true or false");
-    anim.interpolate = a["interpolate"].get<bool>();
-  }
-  if (a.contains("frames")) {
-    if (!a["frames"].is_array() || a["frames"].empty()) throw Error(where + ".frames must be a non-empty array");
-    for (std::size_t i = 0; i < a["frames"].size(); ++i) {
-      const json& f = a["frames"][i];
-      const std::string at = where + ".frames[" + std::to_string(i) + "]";
-      AnimationFrame frame{0, frametime};
-      if (f.is_number_integer()) {
-        frame.index = f.get<int>();
-      } else if (f.is_object() && f.contains("index") && f["index"].is_number_integer()) {
-        frame.index = f["index"].get<int>();
-        frame.ticks = positiveInt(f, "time", frametime, at);
-      } else {
-        throw Error(at + " must be a frame index or {\"index\": N, \"time\": T}");
-      }
-      if (frame.index < 0 || frame.index >= anim.stripFrames) {
-        throw Error(at + " is frame " + std::to_string(frame.index) + ", but the strip has " +
-                    std::to_string(anim.stripFrames));
-      }
-      anim.sequence.push_back(frame);
-    }
-  } else {
-    if (anim.stripFrames > 65536) throw Error(where + ": more than 65536 frames");
-    for (int i = 0; i < anim.stripFrames; ++i) anim.sequence.push_back({i, frametime});
-  }
-  if (anim.sequence.size() > 65536) throw Error(where + ".frames has more than 65536 entries");
-  return anim;
 }
 
 }  // namespace terrasol

@@ -97,17 +97,29 @@ std::string element(const std::string& parent, std::size_t index) {
 }
 
 void checkObject(const json& value, const std::string& key, std::initializer_list<std::string_view> known) {
+  const std::vector<std::string> unknown = unknownKeys(value, key, known);
+  if (!unknown.empty()) fail(unknown.front(), join({"unknown key; expected one of ", quotedList(known)}));
+}
+
+std::vector<std::string> unknownKeys(const json& value, const std::string& key,
+                                     std::initializer_list<std::string_view> known) {
   if (!value.is_object()) expected(key, "an object", value);
+  std::vector<std::string> unknown;
   for (const auto& [name, unused] : value.items()) {
-    if (std::find(known.begin(), known.end(), name) == known.end()) {
-      fail(member(key, name), join({"unknown key; expected one of ", quotedList(known)}));
-    }
+    if (std::find(known.begin(), known.end(), name) == known.end()) unknown.push_back(member(key, name));
   }
+  return unknown;
 }
 
 const json* field(const json& object, std::string_view name) {
   const auto it = object.find(name);
   return it == object.end() ? nullptr : &*it;
+}
+
+const json& required(const json& object, const std::string& key, std::string_view name) {
+  const json* value = field(object, name);
+  if (!value) fail(key, join({"needs \"", name, "\""}));
+  return *value;
 }
 
 std::int64_t wholeNumber(const json& value, const std::string& key, std::int64_t lo, std::int64_t hi) {

@@ -7,12 +7,16 @@
 #include <cstdint>
 #include <filesystem>
 #include <initializer_list>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include <glm/vec3.hpp>
 #include <nlohmann/json.hpp>
+
+#include "core/enum_names.h"
 
 namespace terrasol::json_check {
 
@@ -31,8 +35,14 @@ std::string element(const std::string& parent, std::size_t index);
 
 // Checks that `value` is an object and that every key in it is one of `known` (catches typos).
 void checkObject(const json& value, const std::string& key, std::initializer_list<std::string_view> known);
+// The key paths of the members of object `value` that are not in `known`: for files whose other keys
+// belong to someone else (Minecraft's pack.mcmeta), where the caller warns instead of failing.
+std::vector<std::string> unknownKeys(const json& value, const std::string& key,
+                                     std::initializer_list<std::string_view> known);
 // The member `name` of an object already checked, or null when absent.
 const json* field(const json& object, std::string_view name);
+// The same, failing with `needs "name"` when absent.
+const json& required(const json& object, const std::string& key, std::string_view name);
 
 // Integers, and floats with no fraction (1e9 is a float to nlohmann), within [lo, hi].
 std::int64_t wholeNumber(const json& value, const std::string& key, std::int64_t lo, std::int64_t hi);
@@ -42,11 +52,12 @@ double finiteNumber(const json& value, const std::string& key);
 float numberIn(const json& value, const std::string& key, double lo, double hi, bool open);
 std::string nonEmptyString(const json& value, const std::string& key);
 std::string oneOf(const json& value, const std::string& key, std::span<const std::string_view> names);
-// The enum value whose name (in `names`, in the enum's order) the string is.
-template <class E>
-E enumOf(const json& value, const std::string& key, std::span<const std::string_view> names) {
-  const std::string name = oneOf(value, key, names);
-  return static_cast<E>(std::find(names.begin(), names.end(), name) - names.begin());
+// The enum value the string names in `names`.
+template <class E, std::size_t N>
+E enumOf(const json& value, const std::string& key, const EnumNames<E, N>& names) {
+  const std::optional<E> e = value.is_string() ? names.find(value.get<std::string>()) : std::nullopt;
+  if (!e) expected(key, join({"one of ", names.list()}), value);
+  return *e;
 }
 glm::dvec3 vec3(const json& value, const std::string& key);
 bool boolean(const json& value, const std::string& key);

@@ -8,38 +8,34 @@
 #include <cstddef>
 #include <string_view>
 
+#include "core/enum_names.h"
+
 namespace terrasol {
 
 // Each enum's names in files (scene "render", the game's settings), in the enum's order.
 enum class ShadowMode { Warped, Cascaded };
-inline constexpr std::array<std::string_view, 2> kShadowModes = {"warped", "cascaded"};
+inline constexpr EnumNames<ShadowMode, 2> kShadowModes{{"warped", "cascaded"}};
 enum class ShadowWarp { None, Square, Radial };
-inline constexpr std::array<std::string_view, 3> kShadowWarps = {"none", "square", "radial"};
+inline constexpr EnumNames<ShadowWarp, 3> kShadowWarps{{"none", "square", "radial"}};
 enum class PcfPattern { Grid, Disk, Tent };
-inline constexpr std::array<std::string_view, 3> kPcfPatterns = {"grid", "disk", "tent"};
-inline constexpr std::array<std::string_view, 2> kPcfRadiusUnits = {"texels", "blocks"};  // pcfRadiusInBlocks
+inline constexpr EnumNames<PcfPattern, 3> kPcfPatterns{{"grid", "disk", "tent"}};
+inline constexpr EnumNames<bool, 2> kPcfRadiusUnits{{"texels", "blocks"}};  // pcfRadiusInBlocks
 inline constexpr int kMaxShadowCascades = 4;
 
 // Specular lobes of the lighting: energy-conserving Blinn-Phong or GGX with Smith visibility.
 enum class SpecularModel { BlinnPhong, Ggx };
-inline constexpr std::array<std::string_view, 2> kSpecularModels = {"blinn_phong", "ggx"};
+inline constexpr EnumNames<SpecularModel, 2> kSpecularModels{{"blinn_phong", "ggx"}};
 
 // What the debug views show, in this order ("none" = the lit image): G-buffer channels, then the
 // reflection pass's hit mask and what it added (black when the pass did not run).
 enum class DebugView {
   None, Albedo, Normal, VertexNormal, Specular, Lightmap, Depth, Ao, Emission, ReflectionHits, Reflection
 };
-inline constexpr std::array<std::string_view, 11> kDebugViews = {
+inline constexpr EnumNames<DebugView, 11> kDebugViews{{
     "none", "albedo", "normal", "vertex_normal", "specular", "lightmap", "depth", "ao", "emission",
-    "reflection_hits", "reflection"};
+    "reflection_hits", "reflection"}};
 inline constexpr bool showsReflections(DebugView v) {
   return v == DebugView::ReflectionHits || v == DebugView::Reflection;
-}
-
-// The file name of an enum value.
-template <class E, std::size_t N>
-constexpr std::string_view nameOf(E value, const std::array<std::string_view, N>& names) {
-  return names[static_cast<std::size_t>(value)];
 }
 
 // "render.shadow": the shadow map (render/passes/shadow_pass.h draws it, render/shadow_map.h holds it).

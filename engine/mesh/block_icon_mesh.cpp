@@ -31,13 +31,13 @@ std::vector<BlockId> iconStates(const BlockRegistry& blocks) {
     if (type.defaultState == kAir || type.shape == BlockShape::None) continue;
     const bool wallVariant = [&] {
       for (std::size_t j = 0; j < blocks.blockCount(); ++j)
-        if (blocks.block(j).wallVariant == type.name) return true;
+        if (blocks.block(j).wallVariant != kAir && &blocks[blocks.block(j).wallVariant] == &type) return true;
       return false;
     }();
     if (wallVariant) continue;
     // Fences, panes and walls show a piece running across, not their lone post.
     BlockId state = type.defaultState;
-    if (!type.connects.empty() && type.connects != "gate") {
+    if (type.connects != Connects::None && type.connects != Connects::Gate) {
       for (const char* side : {"east", "west"}) {
         state = blocks.with(state, side, "true").value_or(blocks.with(state, side, "low").value_or(state));
       }

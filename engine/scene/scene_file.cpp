@@ -133,9 +133,9 @@ void parsePcf(const json& pcf, const std::string& key, ShadowSettings& shadow) {
   checkObject(pcf, key, {"samples", "radius", "radius_unit", "pattern"});
   if (const json* v = field(pcf, "samples")) shadow.pcfSamples = static_cast<int>(wholeNumber(*v, member(key, "samples"), 0, 8));
   if (const json* v = field(pcf, "radius")) shadow.pcfRadius = numberIn(*v, member(key, "radius"), 0.0, 32.0, false);
-  if (const json* v = field(pcf, "pattern")) shadow.pcfPattern = enumOf<PcfPattern>(*v, member(key, "pattern"), kPcfPatterns);
+  if (const json* v = field(pcf, "pattern")) shadow.pcfPattern = enumOf(*v, member(key, "pattern"), kPcfPatterns);
   if (const json* v = field(pcf, "radius_unit")) {
-    shadow.pcfRadiusInBlocks = oneOf(*v, member(key, "radius_unit"), kPcfRadiusUnits) == "blocks";
+    shadow.pcfRadiusInBlocks = enumOf(*v, member(key, "radius_unit"), kPcfRadiusUnits);
   }
 }
 
@@ -146,7 +146,7 @@ void parseShadow(const nlohmann::json& value, const std::string& key, ShadowSett
               {"enabled", "mode", "cascades", "resolution", "distance", "warp", "warp_strength", "pcf", "shift_ahead",
                "update_frames"});
   if (const json* v = field(value, "enabled")) shadow.enabled = boolean(*v, member(key, "enabled"));
-  if (const json* v = field(value, "mode")) shadow.mode = enumOf<ShadowMode>(*v, member(key, "mode"), kShadowModes);
+  if (const json* v = field(value, "mode")) shadow.mode = enumOf(*v, member(key, "mode"), kShadowModes);
   if (const json* v = field(value, "cascades")) {
     shadow.cascades = static_cast<int>(wholeNumber(*v, member(key, "cascades"), 2, 4));
   }
@@ -154,7 +154,7 @@ void parseShadow(const nlohmann::json& value, const std::string& key, ShadowSett
     shadow.resolution = static_cast<int>(wholeNumber(*v, member(key, "resolution"), 16, 16384));
   }
   if (const json* v = field(value, "distance")) shadow.distance = numberIn(*v, member(key, "distance"), 1.0, 4096.0, false);
-  if (const json* v = field(value, "warp")) shadow.warp = enumOf<ShadowWarp>(*v, member(key, "warp"), kShadowWarps);
+  if (const json* v = field(value, "warp")) shadow.warp = enumOf(*v, member(key, "warp"), kShadowWarps);
   if (const json* v = field(value, "warp_strength")) {
     const double a = finiteNumber(*v, member(key, "warp_strength"));
     if (a < 0.0 || a >= 1.0) expected(member(key, "warp_strength"), "a number from 0 up to (not including) 1", *v);
@@ -197,7 +197,7 @@ nlohmann::json shadowJson(const ShadowSettings& s) {
           {"shift_ahead", s.shiftAhead},
           {"update_frames", s.updateFrames},
           {"pcf", {{"samples", s.pcfSamples}, {"radius", s.pcfRadius},
-                   {"radius_unit", nameOf(s.pcfRadiusInBlocks ? 1 : 0, kPcfRadiusUnits)},
+                   {"radius_unit", kPcfRadiusUnits.nameOf(s.pcfRadiusInBlocks)},
                    {"pattern", nameOf(s.pcfPattern, kPcfPatterns)}}}};
 }
 
@@ -224,9 +224,9 @@ void parseRender(const json& render, SceneFile& scene) {
     scene.viewDistance = static_cast<int>(wholeNumber(*v, "render.view_distance", 0, 32));
   }
   if (const json* v = field(render, "debug_view")) {
-    scene.debugView = enumOf<DebugView>(*v, "render.debug_view", kDebugViews);
+    scene.debugView = enumOf(*v, "render.debug_view", kDebugViews);
   }
-  if (const json* v = field(render, "specular")) scene.specular = enumOf<SpecularModel>(*v, "render.specular", kSpecularModels);
+  if (const json* v = field(render, "specular")) scene.specular = enumOf(*v, "render.specular", kSpecularModels);
   if (const json* v = field(render, "material_ao")) scene.materialAo = boolean(*v, "render.material_ao");
   if (const json* v = field(render, "cave_culling")) scene.caveCulling = boolean(*v, "render.cave_culling");
   if (const json* v = field(render, "shadow_caster_culling")) {

@@ -2,15 +2,16 @@
 
 #include <algorithm>
 
+#include "core/enum_names.h"
 #include "world/terrain_generator.h"
 
 namespace terrasol {
 
 std::string_view biomeName(Biome biome) {
-  static constexpr std::string_view kNames[kBiomeCount] = {
-      "ocean", "beach",        "plains", "forest",  "birch_forest",
-      "taiga", "snowy_plains", "desert", "savanna", "stony_peaks"};
-  return kNames[static_cast<int>(biome)];
+  static constexpr EnumNames<Biome, kBiomeCount> kNames{{"ocean", "beach", "plains", "forest", "birch_forest",
+                                                         "taiga", "snowy_plains", "desert", "savanna",
+                                                         "stony_peaks"}};
+  return kNames.nameOf(biome);
 }
 
 TintClimate biomeTint(Biome biome) {

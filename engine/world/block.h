@@ -3,9 +3,11 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "core/enum_names.h"
 #include "core/tint.h"
 
 namespace terrasol {
@@ -18,6 +20,24 @@ inline constexpr BlockId kAir = 0;
 // Model: drawn by the models its blockstates file names (assets/minecraft/blockstates/<name>.json).
 enum class BlockShape : std::uint8_t { None, Cube, Cross, Liquid, Torch, Model };
 enum class RenderLayer : std::uint8_t { None, Opaque, Cutout, Translucent };
+
+// blocks.json's "placement": the rule a placed state follows (game/placement.h); None, the key
+// absent, keeps the held state.
+enum class PlacementRule : std::uint8_t {
+  None, Stairs, Slab, Axis, Facing, FacingBack, Door, Trapdoor, Wall, Torch, Layers
+};
+inline constexpr EnumNames<PlacementRule, 11> kPlacementRules{
+    {"", "stairs", "slab", "axis", "facing", "facing_back", "door", "trapdoor", "wall", "torch", "layers"}};
+
+// blocks.json's "connects" (world/connected_states.h): fences, panes and walls join their neighbours;
+// a gate is what fences and walls join across its bars.
+enum class Connects : std::uint8_t { None, Fence, Pane, Wall, Gate };
+inline constexpr EnumNames<Connects, 5> kConnects{{"", "fence", "pane", "wall", "gate"}};
+
+// A state's property has a value: "none_when": "open=true".
+struct PropertyValue {
+  std::string property, value;
+};
 
 // Texture names per face in Direction order (west, east, down, up, north, south). Each face lists
 // candidates, first found in the packs wins (e.g. "short_grass" then its pre-1.20.3 name "grass").
@@ -43,17 +63,17 @@ struct BlockType {
   // Light stops at the sides its shape covers whole (vanilla's useShapeForLightOcclusion): a bottom
   // slab keeps sky light from the cell below it but lets it in through its open top half.
   bool shapeOccludesLight = false;
-  // Gameplay. `placement`: the rule a placed state follows (game/placement.h; "" keeps the held
-  // state); `wallVariant`: the block placed instead against a wall (a torch's wall torch);
-  // `connects`: "fence", "pane" or "wall", joining its neighbours, or "gate", which fences and walls
-  // join (world/connected_states.h);
-  // `opens`: using it toggles its "open" property.
-  std::string placement, wallVariant, connects;
+  // Gameplay. `placement`: the rule a placed state follows; `wallVariant`: the default state of the
+  // block placed instead against a wall (a torch's wall torch), kAir for none; `connects`: how it
+  // joins its neighbours; `opens`: using it toggles its "open" property.
+  PlacementRule placement = PlacementRule::None;
+  BlockId wallVariant = kAir;
+  Connects connects = Connects::None;
   bool opens = false;
   // Collision (world/block_shapes.h): boxes reach up to `collisionHeight` (1/16, 0 keeps the shape's;
   // fences and walls 24), and none in states with `passableWhen` ("open=true": an open gate).
   std::uint8_t collisionHeight = 0;
-  std::string passableWhen;
+  std::optional<PropertyValue> passableWhen;
   Tint tint = Tint::None;
   FaceTextures textures;
 

@@ -1,43 +1,34 @@
 #include "world/block_registry.h"
 
 #include <algorithm>
-#include <nlohmann/json.hpp>
 
 #include "core/error.h"
+#include "core/json_check.h"
 
 namespace terrasol {
 namespace {
 
-using nlohmann::json;
+using namespace json_check;
 
-template <class Enum, std::size_t N>
-Enum parseEnum(const json& value, const std::array<std::pair<const char*, Enum>, N>& names,
-               const std::string& where) {
-  if (!value.is_string()) throw Error(where + " must be a string");
-  for (const auto& [name, e] : names) {
-    if (value.get<std::string>() == name) return e;
-  }
-  std::string list;
-  for (const auto& [name, e] : names) list += (list.empty() ? "" : ", ") + std::string(name);
-  throw Error(where + " is '" + value.get<std::string>() + "', expected one of " + list);
-}
+constexpr EnumNames<BlockShape, 6> kShapes{{"none", "cube", "cross", "liquid", "torch", "model"}};
+constexpr EnumNames<RenderLayer, 4> kLayers{{"", "opaque", "cutout", "translucent"}};  // None: shape none's
+constexpr EnumNames<Tint, kTintCount> kTints{{"none", "grass", "foliage", "water", "birch", "spruce"}};
 
-std::vector<std::string> textureCandidates(const json& value, const std::string& where) {
+std::vector<std::string> textureCandidates(const json& value, const std::string& key) {
+  if (value.is_string()) return {value.get<std::string>()};
+  if (!value.is_array() || value.empty()) expected(key, "a texture name or a non-empty list of names", value);
   std::vector<std::string> names;
-  if (value.is_string()) names.push_back(value.get<std::string>());
-  if (value.is_array()) {
-    for (const auto& v : value) {
-      if (!v.is_string()) throw Error(where + " must list texture names as strings");
-      names.push_back(v.get<std::string>());
-    }
+  for (std::size_t i = 0; i < value.size(); ++i) {
+    if (!value[i].is_string()) expected(element(key, i), "a texture name", value[i]);
+    names.push_back(value[i].get<std::string>());
   }
-  if (names.empty()) throw Error(where + " must be a texture name or a non-empty list of names");
   return names;
 }
 
 // "all", then "side"/"end", then "top"/"bottom", then single faces: later keys refine earlier ones.
-FaceTextures parseTextures(const json& textures, const std::string& where) {
-  if (!textures.is_object()) throw Error(where + " must be an object");
+FaceTextures parseTextures(const json& textures, const std::string& key) {
+  checkObject(textures, key,
+              {"all", "side", "end", "top", "bottom", "west", "east", "down", "up", "north", "south"});
   static const std::vector<std::pair<const char*, std::vector<int>>> kKeys = {
       {"all", {0, 1, 2, 3, 4, 5}},
       {"side", {0, 1, 4, 5}},
@@ -51,60 +42,56 @@ FaceTextures parseTextures(const json& textures, const std::string& where) {
       {"north", {4}},
       {"south", {5}},
   };
-  for (const auto& [key, value] : textures.items()) {
-    const bool known = std::any_of(kKeys.begin(), kKeys.end(), [&](const auto& k) { return key == k.first; });
-    if (!known) throw Error(where + " has unknown face '" + key + "'");
-  }
   FaceTextures faces;
-  for (const auto& [key, indices] : kKeys) {
-    if (!textures.contains(key)) continue;
-    const auto names = textureCandidates(textures[key], where + "." + key);
+  for (const auto& [name, indices] : kKeys) {
+    const json* value = field(textures, name);
+    if (!value) continue;
+    const auto names = textureCandidates(*value, member(key, name));
     for (int i : indices) faces[static_cast<std::size_t>(i)] = names;
   }
   for (std::size_t i = 0; i < faces.size(); ++i) {
-    if (faces[i].empty())
-      throw Error(where + " leaves a face without a texture (give \"all\" or every face)");
+    if (faces[i].empty()) fail(key, "leaves a face without a texture (give \"all\" or every face)");
   }
   return faces;
 }
 
-int parseLevel(const json& block, const char* key, int fallback, const std::string& where) {
-  if (!block.contains(key)) return fallback;
-  const json& v = block[key];
-  if (!v.is_number_integer() || v.get<int>() < 0 || v.get<int>() > 15) {
-    throw Error(where + "." + key + " must be an integer 0..15");
+int parseLevel(const json& block, const char* name, int fallback, const std::string& at) {
+  const json* value = field(block, name);
+  return value ? static_cast<int>(wholeNumber(*value, member(at, name), 0, 15)) : fallback;
+}
+
+// Property names and values go into state names ("oak_log[axis=x]") unquoted.
+void checkStateWord(const std::string& word, const std::string& key) {
+  if (word.find_first_of("[],=") != std::string::npos) {
+    fail(key, join({"\"", word, "\": names and values may not contain '[', ']', ',' or '='"}));
   }
-  return v.get<int>();
 }
 
 // "properties": {"axis": ["y", "x", "z"]} and "default": {"axis": "y"}: the block's states.
-void parseProperties(const json& block, BlockType& type, const std::string& where) {
-  if (!block.contains("properties")) {
-    if (block.contains("default")) throw Error(where + ".default needs \"properties\"");
+void parseProperties(const json& block, BlockType& type, const std::string& at) {
+  const json* props = field(block, "properties");
+  if (!props) {
+    if (field(block, "default")) fail(member(at, "default"), "needs \"properties\"");
     return;
   }
-  const json& props = block["properties"];
-  if (!props.is_object() || props.empty()) throw Error(where + ".properties must be a non-empty object");
+  const std::string key = member(at, "properties");
+  if (!props->is_object() || props->empty()) expected(key, "a non-empty object", *props);
   std::size_t states = 1;
-  for (const auto& [name, values] : props.items()) {
-    const std::string at = where + ".properties." + name;
-    if (!values.is_array() || values.empty()) throw Error(at + " must be a non-empty array of values");
+  for (const auto& [name, values] : props->items()) {
+    const std::string k = member(key, name);
+    if (!values.is_array() || values.empty()) expected(k, "a non-empty array of values", values);
+    checkStateWord(name, k);
     BlockProperty p{name, {}};
-    for (const json& v : values) {
-      if (!v.is_string() || v.get<std::string>().empty())
-        throw Error(at + " must list values as non-empty strings");
-      const std::string value = v.get<std::string>();
-      if (value.find_first_of("[],=") != std::string::npos ||
-          name.find_first_of("[],=") != std::string::npos) {
-        throw Error(at + ": names and values may not contain '[', ']', ',' or '='");
-      }
+    for (std::size_t i = 0; i < values.size(); ++i) {
+      const std::string value = nonEmptyString(values[i], element(k, i));
+      checkStateWord(value, element(k, i));
       if (std::find(p.values.begin(), p.values.end(), value) != p.values.end()) {
-        throw Error(at + " lists '" + value + "' twice");
+        fail(element(k, i), join({"lists \"", value, "\" twice"}));
       }
       p.values.push_back(value);
     }
     states *= p.values.size();
-    if (states > 4096) throw Error(where + ".properties make more than 4096 states");
+    if (states > 4096) fail(key, "make more than 4096 states");
     type.properties.push_back(std::move(p));
   }
   type.stateCount = static_cast<std::uint16_t>(states);
@@ -133,124 +120,90 @@ std::size_t valueIndex(const BlockProperty& p, std::string_view value) {
 }
 
 // The default state's offset: "default" names values, the rest take their first.
-std::size_t defaultOffset(const json& block, const BlockType& type, const std::string& where) {
+std::size_t defaultOffset(const json& block, const BlockType& type, const std::string& at) {
   std::vector<std::size_t> indices(type.properties.size(), 0);
-  if (!block.contains("default")) return 0;
-  const json& d = block["default"];
-  if (!d.is_object()) throw Error(where + ".default must be an object");
-  for (const auto& [name, value] : d.items()) {
+  const json* d = field(block, "default");
+  if (!d) return 0;
+  const std::string key = member(at, "default");
+  if (!d->is_object()) expected(key, "an object", *d);
+  for (const auto& [name, value] : d->items()) {
     const auto p = std::find_if(type.properties.begin(), type.properties.end(),
                                 [&](const BlockProperty& q) { return q.name == name; });
-    if (p == type.properties.end()) throw Error(where + ".default." + name + " is not one of its properties");
+    if (p == type.properties.end()) fail(member(key, name), "is not one of its properties");
     if (!value.is_string() || valueIndex(*p, value.get<std::string>()) == p->values.size()) {
-      throw Error(where + ".default." + name + " must be one of the property's values");
+      expected(member(key, name), "one of the property's values", value);
     }
     indices[static_cast<std::size_t>(p - type.properties.begin())] = valueIndex(*p, value.get<std::string>());
   }
   return stateOffset(type, indices);
 }
 
-std::string optionalString(const json& block, const char* key, const std::string& where) {
-  if (!block.contains(key)) return {};
-  if (!block[key].is_string()) throw Error(where + "." + key + " must be a string");
-  return block[key].get<std::string>();
+// "none_when": "property=value", one of the block's own.
+PropertyValue parseCondition(const json& value, const std::string& key, const BlockType& type) {
+  const std::string text = nonEmptyString(value, key);
+  const std::size_t eq = text.find('=');
+  const auto p = std::find_if(type.properties.begin(), type.properties.end(),
+                              [&](const BlockProperty& q) { return q.name == text.substr(0, eq); });
+  if (eq == std::string::npos || p == type.properties.end() ||
+      valueIndex(*p, text.substr(eq + 1)) == p->values.size()) {
+    expected(key, "one of its property=value pairs", value);
+  }
+  return {text.substr(0, eq), text.substr(eq + 1)};
 }
 
+// The rules the game follows; "wall_variant" names a block, resolved once all are read.
 void parseGameplay(const json& block, BlockType& type, const std::string& at) {
-  static constexpr std::array<const char*, 10> kPlacements = {
-      "stairs", "slab", "axis", "facing", "facing_back", "door", "trapdoor", "wall", "torch", "layers"};
-  type.placement = optionalString(block, "placement", at);
-  if (!type.placement.empty() &&
-      std::find(kPlacements.begin(), kPlacements.end(), type.placement) == kPlacements.end()) {
-    throw Error(at + ".placement: unknown rule '" + type.placement +
-                "' (stairs, slab, axis, facing, facing_back, door, trapdoor, wall, torch or layers)");
+  if (const json* v = field(block, "placement")) {
+    type.placement = enumOf(*v, member(at, "placement"), kPlacementRules);
   }
-  type.wallVariant = optionalString(block, "wall_variant", at);
-  type.connects = optionalString(block, "connects", at);
-  if (!type.connects.empty() && type.connects != "fence" && type.connects != "pane" &&
-      type.connects != "wall" && type.connects != "gate") {
-    throw Error(at + ".connects: unknown kind '" + type.connects + "' (fence, pane, wall or gate)");
+  if (const json* v = field(block, "connects")) type.connects = enumOf(*v, member(at, "connects"), kConnects);
+  if (const json* v = field(block, "opens")) type.opens = boolean(*v, member(at, "opens"));
+  const json* collision = field(block, "collision");
+  if (!collision) return;
+  const std::string key = member(at, "collision");
+  checkObject(*collision, key, {"height", "none_when"});
+  if (const json* h = field(*collision, "height")) {
+    type.collisionHeight = static_cast<std::uint8_t>(wholeNumber(*h, member(key, "height"), 1, 32));
   }
-  if (block.contains("opens")) {
-    if (!block["opens"].is_boolean()) throw Error(at + ".opens must be true or false");
-    type.opens = block["opens"].get<bool>();
-  }
-  if (block.contains("collision")) {
-    const json& c = block["collision"];
-    if (!c.is_object()) throw Error(at + ".collision must be an object");
-    if (c.contains("height")) {
-      if (!c["height"].is_number_integer() || c["height"].get<int>() < 1 || c["height"].get<int>() > 32) {
-        throw Error(at + ".collision.height must be a whole number of 1/16 blocks, 1..32");
-      }
-      type.collisionHeight = static_cast<std::uint8_t>(c["height"].get<int>());
-    }
-    type.passableWhen = optionalString(c, "none_when", at + ".collision");
+  if (const json* w = field(*collision, "none_when")) {
+    type.passableWhen = parseCondition(*w, member(key, "none_when"), type);
   }
 }
 
-BlockType parseBlock(const json& block, const std::string& where) {
-  if (!block.is_object()) throw Error(where + " must be an object");
-  if (!block.contains("name") || !block["name"].is_string() || block["name"].get<std::string>().empty()) {
-    throw Error(where + ".name must be a non-empty string");
+// How it looks: shape, layer and textures.
+void parseLooks(const json& block, BlockType& type, const std::string& at) {
+  if (const json* v = field(block, "shape")) type.shape = enumOf(*v, member(at, "shape"), kShapes);
+  if (const json* v = field(block, "tint")) type.tint = enumOf(*v, member(at, "tint"), kTints);
+  if (type.shape == BlockShape::None) return;
+  const bool solid = type.shape == BlockShape::Cube || type.shape == BlockShape::Model;
+  type.layer = solid ? RenderLayer::Opaque : RenderLayer::Cutout;
+  if (const json* v = field(block, "layer")) type.layer = enumOf(*v, member(at, "layer"), kLayers);
+  // A model block's textures come from its models (assets/minecraft/blockstates/<name>.json).
+  if (type.shape != BlockShape::Model) {
+    type.textures = parseTextures(required(block, at, "textures"), member(at, "textures"));
+  } else if (field(block, "textures")) {
+    fail(member(at, "textures"), "a model block takes its textures from its models");
   }
-  BlockType type;
-  type.name = block["name"].get<std::string>();
-  const std::string at = where + " (" + type.name + ")";
-  static constexpr std::array<std::pair<const char*, BlockShape>, 6> kShapes = {
-      {{"none", BlockShape::None},
-       {"cube", BlockShape::Cube},
-       {"cross", BlockShape::Cross},
-       {"liquid", BlockShape::Liquid},
-       {"torch", BlockShape::Torch},
-       {"model", BlockShape::Model}}};
-  static constexpr std::array<std::pair<const char*, RenderLayer>, 3> kLayers = {
-      {{"opaque", RenderLayer::Opaque},
-       {"cutout", RenderLayer::Cutout},
-       {"translucent", RenderLayer::Translucent}}};
-  static constexpr std::array<std::pair<const char*, Tint>, kTintCount> kTints = {{{"none", Tint::None},
-                                                                                  {"grass", Tint::Grass},
-                                                                                  {"foliage", Tint::Foliage},
-                                                                                  {"water", Tint::Water},
-                                                                                  {"birch", Tint::Birch},
-                                                                                  {"spruce", Tint::Spruce}}};
+}
 
-  type.shape = block.contains("shape") ? parseEnum(block["shape"], kShapes, at + ".shape") : BlockShape::Cube;
-  if (type.shape != BlockShape::None) {
-    const RenderLayer defaultLayer = type.shape == BlockShape::Cube || type.shape == BlockShape::Model
-                                         ? RenderLayer::Opaque
-                                         : RenderLayer::Cutout;
-    type.layer = block.contains("layer") ? parseEnum(block["layer"], kLayers, at + ".layer") : defaultLayer;
-    // A model block's textures come from its models (assets/minecraft/blockstates/<name>.json).
-    if (type.shape != BlockShape::Model) {
-      if (!block.contains("textures")) throw Error(at + " needs \"textures\"");
-      type.textures = parseTextures(block["textures"], at + ".textures");
-    } else if (block.contains("textures")) {
-      throw Error(at + ": a model block takes its textures from its models, not \"textures\"");
-    }
-  }
-  type.tint = block.contains("tint") ? parseEnum(block["tint"], kTints, at + ".tint") : Tint::None;
+// `at` names the block by index and name: "blocks[3] (oak_log)".
+BlockType parseBlock(const json& block, const std::string& where) {
+  if (!block.is_object()) expected(where, "an object", block);
+  BlockType type;
+  type.name = nonEmptyString(required(block, where, "name"), member(where, "name"));
+  const std::string at = join({where, " (", type.name, ")"});
+  checkObject(block, at,
+              {"name", "shape", "layer", "textures", "tint", "opacity", "emission", "shape_occludes_light",
+               "properties", "default", "placement", "wall_variant", "connects", "opens", "collision"});
+  type.shape = BlockShape::Cube;
+  parseLooks(block, type, at);
   type.opacity = static_cast<std::uint8_t>(parseLevel(block, "opacity", type.isOpaqueCube() ? 15 : 0, at));
   type.emission = static_cast<std::uint8_t>(parseLevel(block, "emission", 0, at));
-  parseGameplay(block, type, at);
-  if (block.contains("shape_occludes_light")) {
-    if (!block["shape_occludes_light"].is_boolean())
-      throw Error(at + ".shape_occludes_light must be true or false");
-    type.shapeOccludesLight = block["shape_occludes_light"].get<bool>();
+  if (const json* v = field(block, "shape_occludes_light")) {
+    type.shapeOccludesLight = boolean(*v, member(at, "shape_occludes_light"));
   }
   parseProperties(block, type, at);
-  if (!type.passableWhen.empty()) {
-    const auto eq = type.passableWhen.find('=');
-    const auto property =
-        std::find_if(type.properties.begin(), type.properties.end(), [&](const BlockProperty& p) {
-          return eq != std::string::npos && p.name == type.passableWhen.substr(0, eq);
-        });
-    if (property == type.properties.end() ||
-        std::find(property->values.begin(), property->values.end(), type.passableWhen.substr(eq + 1)) ==
-            property->values.end()) {
-      throw Error(at + ".collision.none_when: '" + type.passableWhen +
-                  "' is not one of its property=value pairs");
-    }
-  }
+  parseGameplay(block, type, at);
   type.defaultState = static_cast<BlockId>(defaultOffset(block, type, at));  // made absolute by the registry
   return type;
 }
@@ -262,47 +215,46 @@ BlockRegistry BlockRegistry::fromFile(const std::filesystem::path& file) {
 }
 
 BlockRegistry BlockRegistry::fromJson(std::string_view text, const std::string& fileName) {
-  json root;
+  const json root = parseJson(text, fileName);
   try {
-    root = json::parse(text);
-  } catch (const json::parse_error& e) {
-    throw Error(fileName + ": invalid JSON: " + e.what());
-  }
-  try {
-    if (!root.is_object() || !root.contains("blocks") || !root["blocks"].is_array()) {
-      throw Error("expected an object with a \"blocks\" array");
-    }
+    checkObject(root, "", {"blocks"});
+    const json& blocks = required(root, "", "blocks");
+    if (!blocks.is_array() || blocks.empty()) expected("blocks", "a non-empty array, air first", blocks);
     BlockRegistry registry;
-    const json& blocks = root["blocks"];
+    for (std::size_t i = 0; i < blocks.size(); ++i) registry.add(parseBlock(blocks[i], element("blocks", i)));
+    // "wall_variant" names a block, so it is resolved once all are read.
     for (std::size_t i = 0; i < blocks.size(); ++i) {
-      BlockType type = parseBlock(blocks[i], "blocks[" + std::to_string(i) + "]");
-      if (i == 0 && (type.name != "air" || type.shape != BlockShape::None || type.stateCount != 1)) {
-        throw Error("blocks[0] must be \"air\" with shape \"none\" and no properties");
-      }
-      if (registry.blockOf_.size() + type.stateCount > 65535) throw Error("more than 65535 block states");
-      if (!registry.byName_.emplace(type.name, static_cast<BlockId>(i)).second) {
-        throw Error("blocks[" + std::to_string(i) + "]: duplicate block name '" + type.name + "'");
-      }
-      type.firstState = static_cast<BlockId>(registry.blockOf_.size());
-      type.defaultState = static_cast<BlockId>(type.firstState + type.defaultState);
-      for (std::uint16_t s = 0; s < type.stateCount; ++s) {
-        registry.blockOf_.push_back(static_cast<std::uint16_t>(i));
-        registry.opacity_.push_back(type.opacity);
-        registry.emission_.push_back(type.emission);
-        registry.opaqueCube_.push_back(type.isOpaqueCube() ? 1 : 0);
-      }
-      registry.types_.push_back(std::move(type));
-    }
-    if (registry.types_.empty()) throw Error("\"blocks\" is empty (air must come first)");
-    for (const BlockType& type : registry.types_) {
-      if (!type.wallVariant.empty() && !registry.byName_.contains(type.wallVariant)) {
-        throw Error(type.name + ".wall_variant: no block is named '" + type.wallVariant + "'");
-      }
+      const json* v = field(blocks[i], "wall_variant");
+      if (!v) continue;
+      const std::string key = join({element("blocks", i), " (", registry.types_[i].name, ").wall_variant"});
+      const auto it = registry.byName_.find(nonEmptyString(*v, key));
+      if (it == registry.byName_.end()) expected(key, "the name of a block", *v);
+      registry.types_[i].wallVariant = registry.types_[it->second].defaultState;
     }
     return registry;
   } catch (const Error& e) {
-    throw Error(fileName + ": " + e.what());
+    throw Error(withFile(fileName, e.what()));
   }
+}
+
+void BlockRegistry::add(BlockType type) {
+  const std::size_t i = types_.size();
+  if (i == 0 && (type.name != "air" || type.shape != BlockShape::None || type.stateCount != 1)) {
+    fail("blocks[0]", "must be \"air\" with shape \"none\" and no properties");
+  }
+  if (blockOf_.size() + type.stateCount > 65535) fail("blocks", "more than 65535 block states");
+  if (!byName_.emplace(type.name, static_cast<BlockId>(i)).second) {
+    fail(member(element("blocks", i), "name"), join({"duplicate block name \"", type.name, "\""}));
+  }
+  type.firstState = static_cast<BlockId>(blockOf_.size());
+  type.defaultState = static_cast<BlockId>(type.firstState + type.defaultState);
+  for (std::uint16_t s = 0; s < type.stateCount; ++s) {
+    blockOf_.push_back(static_cast<std::uint16_t>(i));
+    opacity_.push_back(type.opacity);
+    emission_.push_back(type.emission);
+    opaqueCube_.push_back(type.isOpaqueCube() ? 1 : 0);
+  }
+  types_.push_back(std::move(type));
 }
 
 BlockId BlockRegistry::id(std::string_view name) const {
@@ -322,12 +274,12 @@ BlockId BlockRegistry::find(std::string_view name, bool* found, std::string* pro
   const std::size_t open = name.find('[');
   const std::string blockName(name.substr(0, open));
   const auto it = byName_.find(blockName);
-  if (it == byName_.end()) return report(kAir, "unknown block '" + blockName + "'");
+  if (it == byName_.end()) return report(kAir, join({"unknown block '", blockName, "'"}));
   const BlockType& type = types_[it->second];
   if (found) *found = true;
   if (open == std::string_view::npos) return type.defaultState;
   if (name.back() != ']')
-    return report(type.defaultState, "'" + std::string(name) + "': expected ']' at the end");
+    return report(type.defaultState, join({"'", name, "': expected ']' at the end"}));
   std::vector<std::size_t> indices = valueIndicesOf(type, type.defaultState - type.firstState);
   const std::string_view list = name.substr(open + 1, name.size() - open - 2);
   std::size_t start = 0;
@@ -337,21 +289,19 @@ BlockId BlockRegistry::find(std::string_view name, bool* found, std::string* pro
     const std::size_t eq = pair.find('=');
     if (eq == std::string_view::npos || eq == 0 || eq + 1 == pair.size()) {
       return report(type.defaultState,
-                    "'" + std::string(name) + "': expected property=value, not '" + std::string(pair) + "'");
+                    join({"'", name, "': expected property=value, not '", pair, "'"}));
     }
     const std::string_view key = pair.substr(0, eq), value = pair.substr(eq + 1);
     const auto p = std::find_if(type.properties.begin(), type.properties.end(),
                                 [&](const BlockProperty& q) { return q.name == key; });
     if (p == type.properties.end()) {
-      return report(type.defaultState, "'" + std::string(name) + "': " + type.name + " has no property '" +
-                                           std::string(key) + "'");
+      return report(type.defaultState, join({"'", name, "': ", type.name, " has no property '", key, "'"}));
     }
     const std::size_t v = valueIndex(*p, value);
     if (v == p->values.size()) {
       std::string values;
-      for (const std::string& s : p->values) values += (values.empty() ? "" : ", ") + s;
-      return report(type.defaultState,
-                    "'" + std::string(name) + "': " + std::string(key) + " is one of " + values);
+      for (const std::string& s : p->values) values += join({values.empty() ? "" : ", ", s});
+      return report(type.defaultState, join({"'", name, "': ", key, " is one of ", values}));
     }
     indices[static_cast<std::size_t>(p - type.properties.begin())] = v;
     start = comma + 1;

@@ -47,6 +47,9 @@ class BlockRegistry {
   const std::vector<std::uint8_t>& opaqueCubes() const { return opaqueCube_; }
 
  private:
+  // Appends the next block read, its defaultState relative to its first; throws Error for a bad one.
+  void add(BlockType type);
+
   std::vector<BlockType> types_;
   std::vector<std::uint16_t> blockOf_;  // per state: its block's index in types_
   std::unordered_map<std::string, BlockId> byName_;

@@ -20,10 +20,10 @@ BlockShapes::BlockShapes(const BlockRegistry& blocks)
     opaqueModel_[s] = blocks[s].shape == BlockShape::Model && blocks[s].layer == RenderLayer::Opaque;
     const BlockType& type = blocks[s];
     collisionHeight_[s] = type.collisionHeight > 0 ? type.collisionHeight : 255;  // 255: as the shape
-    if (const auto eq = type.passableWhen.find('='); eq != std::string::npos) {
+    if (type.passableWhen) {
       const StateValues values = blocks.stateValues(s);
-      const auto v = values.find(type.passableWhen.substr(0, eq));
-      if (v != values.end() && v->second == type.passableWhen.substr(eq + 1)) collisionHeight_[s] = 0;
+      const auto v = values.find(type.passableWhen->property);
+      if (v != values.end() && v->second == type.passableWhen->value) collisionHeight_[s] = 0;
     }
     if (blocks[s].shape == BlockShape::Cube) setBoxes(s, {ShapeBox{}});
   }

@@ -69,22 +69,33 @@ bool wholeSide(const World& world, BlockId state, Direction side) {
   return world.shapes() && FaceCoverage::of(world.shapes()->boxes(state)).full(side);
 }
 
-// Whether a fence, pane or wall of kind `kind` joins the neighbour `n` on its side `side`.
-bool joins(const World& world, const std::string& kind, BlockId n, Direction side) {
-  const BlockType& type = world.blocks()[n];
-  if (type.connects == kind || (kind != "fence" && (type.connects == "pane" || type.connects == "wall")))
-    return true;
-  if (type.connects == "gate" && kind != "pane") {
-    // A gate joins along its bars: facing north or south, it runs east-west.
-    const StateValues v = world.blocks().stateValues(n);
-    const auto facing = v.find("facing");
-    const bool northSouth = facing != v.end() && (facing->second == "north" || facing->second == "south");
-    return northSouth == (side == Direction::East || side == Direction::West);
+// Whether a fence, pane or wall of kind `kind` joins the neighbour `n` on its side `side`: fences join
+// fences, panes and walls each other, fences and walls gates; anything joins a whole side.
+bool joins(const World& world, Connects kind, BlockId n, Direction side) {
+  switch (world.blocks()[n].connects) {
+    case Connects::Fence:
+      if (kind == Connects::Fence) return true;
+      break;
+    case Connects::Pane:
+    case Connects::Wall:
+      if (kind != Connects::Fence) return true;
+      break;
+    case Connects::Gate:
+      if (kind != Connects::Pane) {
+        // A gate joins along its bars: facing north or south, it runs east-west.
+        const StateValues v = world.blocks().stateValues(n);
+        const auto facing = v.find("facing");
+        const bool northSouth = facing != v.end() && (facing->second == "north" || facing->second == "south");
+        return northSouth == (side == Direction::East || side == Direction::West);
+      }
+      break;
+    case Connects::None:
+      break;
   }
   return wholeSide(world, n, opposite(side));
 }
 
-BlockId connectedSides(const World& world, const BlockPos& pos, BlockId state, const std::string& kind) {
+BlockId connectedSides(const World& world, const BlockPos& pos, BlockId state, Connects kind) {
   const BlockRegistry& blocks = world.blocks();
   static constexpr std::array<std::pair<Direction, const char*>, 4> kSides = {{{Direction::North, "north"},
                                                                                {Direction::East, "east"},
@@ -96,18 +107,19 @@ BlockId connectedSides(const World& world, const BlockPos& pos, BlockId state, c
   for (std::size_t k = 0; k < kSides.size(); ++k) {
     const auto [side, name] = kSides[k];
     joined[k] = joins(world, kind, world.neighbour(pos, side), side);
-    const char* value = kind != "wall" ? (joined[k] ? "true" : "false")
+    const char* value = kind != Connects::Wall ? (joined[k] ? "true" : "false")
                         : !joined[k]   ? "none"
                         : tall         ? "tall"
                                        : "low";
     state = blocks.with(state, name, value).value_or(state);
   }
-  if (kind == "wall") {
+  if (kind == Connects::Wall) {
     // The post shows unless the wall runs straight through (two opposite sides and nothing else), or
     // where a wall's post stands on it.
     const bool straight = (joined[0] && joined[2] && !joined[1] && !joined[3]) ||
                           (joined[1] && joined[3] && !joined[0] && !joined[2]);
-    const bool postAbove = blocks[above].connects == "wall" && blocks.stateValues(above).at("up") == "true";
+    const bool postAbove =
+        blocks[above].connects == Connects::Wall && blocks.stateValues(above).at("up") == "true";
     state = blocks.with(state, "up", straight && !postAbove ? "false" : "true").value_or(state);
   }
   return state;
@@ -118,8 +130,14 @@ BlockId connectedSides(const World& world, const BlockPos& pos, BlockId state, c
 BlockId connectedState(const World& world, const BlockPos& pos, BlockId state) {
   const BlockType& type = world.blocks()[state];
   if (type.properties.empty()) return state;  // most cells: nothing to look up
-  if (type.connects == "fence" || type.connects == "pane" || type.connects == "wall") {
-    return connectedSides(world, pos, state, type.connects);
+  switch (type.connects) {
+    case Connects::Fence:
+    case Connects::Pane:
+    case Connects::Wall:
+      return connectedSides(world, pos, state, type.connects);
+    case Connects::Gate:
+    case Connects::None:
+      break;  // stairs, below
   }
   const auto self = stairOf(world.blocks(), state);
   if (!self) return state;

@@ -1,83 +1,70 @@
 #include "world/level.h"
 
-#include <cmath>
-#include <fstream>
+#include <limits>
 #include <nlohmann/json.hpp>
 
 #include "core/error.h"
+#include "core/json_check.h"
 
 namespace terrasol {
 namespace {
 
-using nlohmann::json;
+using namespace json_check;
 
-template <class T>
-T required(const json& root, const char* key, const std::string& file) {
-  if (!root.contains(key)) throw Error(file + ": missing key \"" + key + "\"");
-  try {
-    return root[key].get<T>();
-  } catch (const json::exception&) {
-    throw Error(file + ": key \"" + key + "\" has the wrong type");
-  }
+constexpr std::int64_t kMinInt64 = std::numeric_limits<std::int64_t>::min();
+constexpr std::int64_t kMaxInt64 = std::numeric_limits<std::int64_t>::max();
+
+float finiteFloat(const json& object, const std::string& key, std::string_view name) {
+  return static_cast<float>(finiteNumber(required(object, key, name), member(key, name)));
 }
 
-glm::dvec3 finite3(const json& value, const std::string& where) {
-  std::vector<double> v;
-  try {
-    v = value.get<std::vector<double>>();
-  } catch (const json::exception&) {
-  }
-  if (v.size() != 3 || !std::isfinite(v[0]) || !std::isfinite(v[1]) || !std::isfinite(v[2])) {
-    throw Error(where + " must be three finite numbers");
-  }
-  return {v[0], v[1], v[2]};
-}
-
-LevelProp parseProp(const json& value, const std::string& where) {
-  if (!value.is_object()) throw Error(where + ": expected an object");
+LevelProp parseProp(const json& value, const std::string& key) {
+  checkObject(value, key, {"model", "position", "rotation", "scale"});
   LevelProp prop;
-  prop.model = required<std::string>(value, "model", where);
-  if (prop.model.empty()) throw Error(where + ": \"model\" is empty");
-  prop.position = finite3(required<json>(value, "position", where), where + ".position");
-  prop.rotation = glm::vec3(finite3(required<json>(value, "rotation", where), where + ".rotation"));
-  prop.scale = required<float>(value, "scale", where);
-  if (!(prop.scale > 0.0f && prop.scale <= 1000.0f)) throw Error(where + ".scale must be in (0, 1000]");
+  prop.model = nonEmptyString(required(value, key, "model"), member(key, "model"));
+  prop.position = vec3(required(value, key, "position"), member(key, "position"));
+  prop.rotation = glm::vec3(vec3(required(value, key, "rotation"), member(key, "rotation")));
+  prop.scale = finiteFloat(value, key, "scale");
+  if (!(prop.scale > 0.0f && prop.scale <= 1000.0f)) {
+    expected(member(key, "scale"), "a number greater than 0 and at most 1000", value["scale"]);
+  }
   return prop;
+}
+
+void parsePlayer(const json& player, Level& level) {
+  checkObject(player, "player", {"position", "yaw", "pitch", "flying"});
+  level.playerPosition = vec3(required(player, "player", "position"), "player.position");
+  level.playerYaw = finiteFloat(player, "player", "yaw");
+  level.playerPitch = finiteFloat(player, "player", "pitch");
+  if (const json* v = field(player, "flying")) level.playerFlying = boolean(*v, "player.flying");
+}
+
+Level parseLevel(const json& root) {
+  // "version" is written for readers to come; this one reads version 1 and files from before it.
+  checkObject(root, "", {"version", "generator", "seed", "time", "player", "props"});
+  Level level;
+  level.generator = nonEmptyString(required(root, "", "generator"), "generator");
+  level.seed = seedNumber(required(root, "", "seed"), "seed");
+  level.time = wholeNumber(required(root, "", "time"), "time", kMinInt64, kMaxInt64);
+  parsePlayer(required(root, "", "player"), level);
+  if (const json* props = field(root, "props")) {
+    if (!props->is_array()) expected("props", "an array", *props);
+    for (std::size_t i = 0; i < props->size(); ++i) {
+      level.props.push_back(parseProp((*props)[i], element("props", i)));
+    }
+  }
+  return level;
 }
 
 }  // namespace
 
 Level loadLevel(const std::filesystem::path& file) {
-  const std::string name = file.string();
-  json root;
+  const json root = parseJson(readTextFile(file), file);
   try {
-    root = json::parse(readTextFile(file));
-  } catch (const json::parse_error& e) {
-    throw Error(name + ": invalid JSON: " + e.what());
+    return parseLevel(root);
+  } catch (const Error& e) {
+    throw Error(withFile(file, e.what()));
   }
-  if (!root.is_object()) throw Error(name + ": expected a JSON object");
-  Level level;
-  level.generator = required<std::string>(root, "generator", name);
-  level.seed = required<std::uint64_t>(root, "seed", name);
-  level.time = required<std::int64_t>(root, "time", name);
-  const json player = required<json>(root, "player", name);
-  const auto position = required<std::vector<double>>(player, "position", name + ": player");
-  if (position.size() != 3 || !std::isfinite(position[0]) || !std::isfinite(position[1]) ||
-      !std::isfinite(position[2])) {
-    throw Error(name + ": player.position must be three finite numbers");
-  }
-  level.playerPosition = {position[0], position[1], position[2]};
-  level.playerYaw = required<float>(player, "yaw", name + ": player");
-  level.playerPitch = required<float>(player, "pitch", name + ": player");
-  if (player.contains("flying")) level.playerFlying = required<bool>(player, "flying", name + ": player");
-  if (root.contains("props")) {
-    const json& props = root["props"];
-    if (!props.is_array()) throw Error(name + ": \"props\" must be an array");
-    for (std::size_t i = 0; i < props.size(); ++i) {
-      level.props.push_back(parseProp(props[i], name + ": props[" + std::to_string(i) + "]"));
-    }
-  }
-  return level;
 }
 
 void saveLevel(const std::filesystem::path& file, const Level& level) {

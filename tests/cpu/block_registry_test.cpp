@@ -60,30 +60,72 @@ std::string errorOf(const std::string& json) {
 TEST(BlockRegistry, BadDataNamesTheFileBlockAndKey) {
   const std::string air = R"({"name":"air","shape":"none"})";
   auto with = [&](const std::string& block) { return R"({"blocks":[)" + air + "," + block + "]}"; };
-  EXPECT_NE(errorOf("{\"blocks\": [\n  {\"name\": \"air\"\n").find("test/blocks.json: invalid JSON"),
-            std::string::npos);
-  EXPECT_NE(errorOf("{\"blocks\": [\n  {\"name\": \"air\"\n").find("line 3"), std::string::npos)
+  EXPECT_NE(errorOf("{\"blocks\": [\n  {\"name\": \"air\"\n").find("test/blocks.json:3:1: invalid JSON"),
+            std::string::npos)
       << errorOf("{\"blocks\": [\n  {\"name\": \"air\"\n");
   EXPECT_NE(errorOf(with(R"({"name":"x","opacity":16,"textures":{"all":"x"}})"))
-                .find("blocks[1] (x).opacity must be"),
+                .find("blocks[1] (x).opacity: expected a whole number from 0 to 15, got 16"),
             std::string::npos);
   EXPECT_NE(errorOf(with(R"({"name":"x","shape":"sphere","textures":{"all":"x"}})"))
-                .find("blocks[1] (x).shape is 'sphere'"),
+                .find("blocks[1] (x).shape: expected one of \"none\", \"cube\", \"cross\", \"liquid\", \"torch\", \"model\", got \"sphere\""),
             std::string::npos);
   EXPECT_NE(errorOf(with(R"({"name":"x","textures":{"top":"x"}})")).find("leaves a face without a texture"),
             std::string::npos);
-  EXPECT_NE(errorOf(with(R"({"name":"x","textures":{"al":"x"}})")).find("unknown face 'al'"),
+  EXPECT_NE(errorOf(with(R"({"name":"x","textures":{"al":"x"}})")).find("blocks[1] (x).textures.al: unknown key"),
             std::string::npos);
-  EXPECT_NE(errorOf(with(R"({"name":"x"})")).find("blocks[1] (x) needs \"textures\""), std::string::npos);
-  EXPECT_NE(errorOf(with(R"({"name":"air","shape":"none"})")).find("duplicate block name 'air'"),
+  EXPECT_NE(errorOf(with(R"({"name":"x"})")).find("blocks[1] (x): needs \"textures\""), std::string::npos);
+  EXPECT_NE(errorOf(with(R"({"name":"air","shape":"none"})")).find("blocks[1].name: duplicate block name \"air\""),
             std::string::npos);
   EXPECT_NE(errorOf(R"({"blocks":[{"name":"stone","textures":{"all":"stone"}}]})")
-                .find("blocks[0] must be \"air\""),
+                .find("blocks[0]: must be \"air\""),
             std::string::npos);
-  EXPECT_NE(errorOf(R"([1,2])").find("\"blocks\" array"), std::string::npos);
+  EXPECT_NE(errorOf(R"([1,2])").find("test/blocks.json: expected an object, got an array of 2"), std::string::npos);
   EXPECT_NE(
-      errorOf(with(R"({"name":"x","emission":"bright","textures":{"all":"x"}})")).find("emission must be"),
+      errorOf(with(R"({"name":"x","emission":"bright","textures":{"all":"x"}})")).find("emission: expected a whole number"),
       std::string::npos);
+}
+
+// blocks.json is Terrasol's own: an unknown key is a typo, named with its key path. The gameplay rules
+// are read once into enums; an unknown one names the file, the block, the key and the valid rules.
+TEST(BlockRegistry, UnknownKeysAndRulesAreNamedWithTheirKeyPath) {
+  const std::string air = R"({"name":"air","shape":"none"})";
+  auto with = [&](const std::string& block) { return R"({"blocks":[)" + air + "," + block + "]}"; };
+  EXPECT_EQ(errorOf(R"({"blocks":[)" + air + R"(],"version":2})"),
+            "test/blocks.json: version: unknown key; expected one of \"blocks\"");
+  EXPECT_NE(errorOf(with(R"({"name":"x","textures":{"all":"x"},"emision":3})"))
+                .find("test/blocks.json: blocks[1] (x).emision: unknown key; expected one of \"name\", \"shape\""),
+            std::string::npos)
+      << errorOf(with(R"({"name":"x","textures":{"all":"x"},"emision":3})"));
+  EXPECT_EQ(errorOf(with(R"({"name":"x","textures":{"all":"x"},"collision":{"hieght":24}})")),
+            "test/blocks.json: blocks[1] (x).collision.hieght: unknown key; expected one of \"height\", \"none_when\"");
+  EXPECT_EQ(errorOf(with(R"({"name":"x","textures":{"all":"x"},"placement":"stair"})")),
+            "test/blocks.json: blocks[1] (x).placement: expected one of \"stairs\", \"slab\", \"axis\", \"facing\", "
+            "\"facing_back\", \"door\", \"trapdoor\", \"wall\", \"torch\", \"layers\", got \"stair\"");
+  EXPECT_EQ(errorOf(with(R"({"name":"x","textures":{"all":"x"},"connects":"fences"})")),
+            "test/blocks.json: blocks[1] (x).connects: expected one of \"fence\", \"pane\", \"wall\", \"gate\", got "
+            "\"fences\"");
+  EXPECT_EQ(errorOf(with(R"({"name":"x","textures":{"all":"x"},"properties":{"open":["false","true"]},
+                            "collision":{"none_when":"open=yes"}})")),
+            "test/blocks.json: blocks[1] (x).collision.none_when: expected one of its property=value pairs, got "
+            "\"open=yes\"");
+  EXPECT_EQ(errorOf(with(R"({"name":"x","textures":{"all":"x"},"wall_variant":"nothing"})")),
+            "test/blocks.json: blocks[1] (x).wall_variant: expected the name of a block, got \"nothing\"");
+  EXPECT_EQ(errorOf(with(R"({"name":"x","layer":"none","textures":{"all":"x"}})")),
+            "test/blocks.json: blocks[1] (x).layer: expected one of \"opaque\", \"cutout\", \"translucent\", got "
+            "\"none\"");
+  // The shipped rules, as read.
+  const BlockRegistry& blocks = defaultBlocks();
+  auto b = [&](const char* n) -> const BlockType& { return blocks[blocks.id(n)]; };
+  EXPECT_EQ(b("torch").placement, PlacementRule::Torch);
+  EXPECT_EQ(b("torch").wallVariant, blocks.id("wall_torch"));
+  EXPECT_EQ(b("stone").placement, PlacementRule::None);
+  EXPECT_EQ(b("stone").wallVariant, kAir);
+  EXPECT_EQ(b("oak_fence").connects, Connects::Fence);
+  EXPECT_EQ(b("oak_fence_gate").connects, Connects::Gate);
+  ASSERT_TRUE(b("oak_fence_gate").passableWhen);
+  EXPECT_EQ(b("oak_fence_gate").passableWhen->property, "open");
+  EXPECT_EQ(b("oak_fence_gate").passableWhen->value, "true");
+  EXPECT_FALSE(b("oak_fence").passableWhen);
 }
 
 // Blocks with properties: one state per combination, numbered after the states before them, the last
@@ -147,23 +189,23 @@ TEST(BlockRegistry, BadPropertiesNameTheBlockAndKey) {
   auto with = [&](const std::string& block) { return R"({"blocks":[)" + air + "," + block + "]}"; };
   const auto error = [&](const std::string& block) { return errorOf(with(block)); };
   EXPECT_NE(error(R"({"name":"x","textures":{"all":"x"},"properties":{"axis":[]}})")
-                .find("blocks[1] (x).properties.axis must be a non-empty array"),
+                .find("blocks[1] (x).properties.axis: expected a non-empty array of values"),
             std::string::npos);
   EXPECT_NE(
-      error(R"({"name":"x","textures":{"all":"x"},"properties":{"axis":["y","y"]}})").find("lists 'y' twice"),
+      error(R"({"name":"x","textures":{"all":"x"},"properties":{"axis":["y","y"]}})").find("properties.axis[1]: lists \"y\" twice"),
       std::string::npos);
   EXPECT_NE(
       error(R"({"name":"x","textures":{"all":"x"},"properties":{"axis":["a=b"]}})").find("may not contain"),
       std::string::npos);
   EXPECT_NE(error(R"({"name":"x","textures":{"all":"x"},"properties":{"axis":["y"]},"default":{"axis":"x"}})")
-                .find("blocks[1] (x).default.axis must be one of the property's values"),
+                .find("blocks[1] (x).default.axis: expected one of the property's values, got \"x\""),
             std::string::npos);
   EXPECT_NE(
       error(R"({"name":"x","textures":{"all":"x"},"properties":{"axis":["y"]},"default":{"facing":"x"}})")
-          .find("default.facing is not one of its properties"),
+          .find("default.facing: is not one of its properties"),
       std::string::npos);
   EXPECT_NE(
-      error(R"({"name":"x","textures":{"all":"x"},"default":{"axis":"x"}})").find("needs \"properties\""),
+      error(R"({"name":"x","textures":{"all":"x"},"default":{"axis":"x"}})").find("default: needs \"properties\""),
       std::string::npos);
   EXPECT_NE(error(R"({"name":"x","textures":{"all":"x"},"properties":{"a":["0","1","2","3","4","5","6","7"],
       "b":["0","1","2","3","4","5","6","7"],"c":["0","1","2","3","4","5","6","7"],"d":["0","1","2","3","4","5","6","7"],

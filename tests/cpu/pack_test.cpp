@@ -192,8 +192,8 @@ TEST(ResourcePack, BadInputGivesClearErrorsNamingTheFile) {
       {"huge", "100000x100000"},
       {"strip", "not a stack of 16x16 frames"},
       {"oblong", "not square and has no .mcmeta"},
-      {"meta", "meta.png.mcmeta: invalid JSON"},
-      {"frames", "frames[1] is frame 5, but the strip has 2"},
+      {"meta", "meta.png.mcmeta:1:29: invalid JSON"},
+      {"frames", "frames.png.mcmeta: animation.frames[1]: is frame 5, but the strip has 2"},
       {"truncated", "truncated.png"},
   };
   for (const auto& [name, expected] : cases) {
@@ -285,7 +285,8 @@ TEST(ResourcePack, ZipPacksLoadAndUnsafeEntriesAreRefused) {
 TEST(ResourcePack, MalformedPackMcmetaIsNamed) {
   for (const auto& [text, expected] : std::vector<std::pair<std::string, std::string>>{
            {"{", "invalid JSON"},
-           {R"({"pack": {"description": "x"}})", "pack_format must be an integer"},
+           {R"({"pack": {"description": "x"}})", "pack.mcmeta: pack: needs \"pack_format\""},
+           {R"({"pack": {"pack_format": "15"}})", "pack.mcmeta: pack.pack_format: expected a whole number"},
            {R"({"pack": {"pack_format": 15}, "terrasol": {"normal_map_convention": "up"}})",
             "normal_map_convention"}}) {
     PackBuilder pack("pack_mcmeta", "block", text);
@@ -304,6 +305,32 @@ TEST(ResourcePack, MalformedPackMcmetaIsNamed) {
 }
 
 // The real third-party pack: palette PNGs of several bit depths with tRNS, animations, colormaps.
+// pack.mcmeta and .png.mcmeta are Minecraft's: keys Terrasol does not read are other readers' and load
+// as before, and a key the "terrasol" section does not know is only a warning.
+TEST(ResourcePack, MinecraftsOtherKeysLoad) {
+  PackBuilder pack("pack_mc_keys", "block", R"({
+      "pack": {"pack_format": 34, "supported_formats": [15, 34], "description": {"text": "x"}},
+      "overlays": {"entries": [{"formats": [18, 34], "directory": "new"}]},
+      "filter": {"block": [{"namespace": "realms"}]},
+      "language": {"xx_yy": {"name": "X", "region": "Y", "bidirectional": false}},
+      "features": {"enabled": []},
+      "terrasol": {"normal_map_convention": "opengl", "normal_maps": "on"}})");
+  pack.image("anim.png", solidImage(16, 32, 1, 1, 1));
+  pack.text("anim.png.mcmeta", R"({"animation": {"frametime": 2, "frames": [1, {"index": 0, "time": 3, "x": 1}],
+                                                "mode": "x"},
+                                  "texture": {"blur": true, "clamp": false}, "villager": {"hat": "full"},
+                                  "gui": {"scaling": {"type": "stretch"}}})");
+  const ResourcePack opened = ResourcePack::open(pack.dir());
+  EXPECT_EQ(opened.info().packFormat, 34);
+  EXPECT_TRUE(opened.info().openGlNormals);
+  std::vector<PackProblem> problems;
+  const auto t = load(stackOf({pack.dir()}), {"anim"}, problems);
+  EXPECT_TRUE(problems.empty()) << problemsText(problems);
+  ASSERT_TRUE(t.animation);
+  ASSERT_EQ(t.animation->sequence.size(), 2u);
+  EXPECT_EQ(t.animation->sequence[1].ticks, 3);
+}
+
 TEST(ResourcePack, PixelPerfectionLoadsWithoutErrorsOverTheDefaultPack) {
   TERRASOL_SKIP_WITHOUT_TEST_DATA();
   const PackStack stack = stackOf({resourcePackDir() / "default", pixelPerfection()});

@@ -233,23 +233,35 @@ TEST(Level, RoundTripsAndBadFilesNameTheKey) {
     }
     return std::string("no error");
   };
-  EXPECT_NE(error("{\"seed\": 1").find("bad.json: invalid JSON"), std::string::npos);
-  EXPECT_NE(error(R"({"generator":"terrain","seed":1,"time":0})").find("missing key \"player\""), std::string::npos);
-  EXPECT_NE(error(R"({"generator":"terrain","seed":"x","time":0})").find("\"seed\" has the wrong type"),
+  EXPECT_NE(error("{\"seed\": 1").find("bad.json:1:11: invalid JSON"), std::string::npos);
+  EXPECT_NE(error(R"({"generator":"terrain","seed":1,"time":0})").find("bad.json: needs \"player\""), std::string::npos);
+  EXPECT_NE(error(R"({"generator":"terrain","seed":"x","time":0})").find("bad.json: seed: expected a whole number from 0 to 18446744073709551615, got \"x\""),
             std::string::npos);
   EXPECT_NE(error(R"({"generator":"terrain","seed":1,"time":0,"player":{"position":[1,2],"yaw":0,"pitch":0}})")
-                .find("player.position must be three"),
+                .find("bad.json: player.position: expected an array of 3 numbers"),
             std::string::npos);
   const std::string player = R"("generator":"terrain","seed":1,"time":0,"player":{"position":[1,2,3],"yaw":0,"pitch":0})";
   EXPECT_NE(error("{" + player + R"(,"props":[{"model":"a.glb","position":[0,0,0],"rotation":[0,0,0],"scale":-1}]})")
-                .find("bad.json: props[0].scale must be in (0, 1000]"),
+                .find("bad.json: props[0].scale: expected a number greater than 0 and at most 1000, got -1"),
             std::string::npos);
-  EXPECT_NE(error("{" + player + R"(,"props":[{"position":[0,0,0]}]})").find("props[0]: missing key \"model\""),
+  EXPECT_NE(error("{" + player + R"(,"props":[{"position":[0,0,0]}]})").find("bad.json: props[0]: needs \"model\""),
             std::string::npos);
   EXPECT_NE(error("{" + player + R"(,"props":[{"model":"a","position":[0,"x",0],"rotation":[0,0,0],"scale":1}]})")
-                .find("props[0].position must be three finite numbers"),
+                .find("bad.json: props[0].position[1]: expected a number, got \"x\""),
             std::string::npos);
   EXPECT_EQ(error("{" + player + "}"), "no error") << "older files without props load";
+  // level.json is Terrasol's own: an unknown key is a typo, named with its key path.
+  const std::string root = R"({"version":1,"generator":"terrain","seed":1,"time":0,)";
+  EXPECT_EQ(error(root + R"("player":{"position":[1,2,3],"yaw":0,"pitch":0,"flyng":true}})"),
+            (dir / "bad.json").string() +
+                ": player.flyng: unknown key; expected one of \"position\", \"yaw\", \"pitch\", \"flying\"");
+  EXPECT_EQ(error("{" + player + R"(,"weather":"rain"})"),
+            (dir / "bad.json").string() +
+                ": weather: unknown key; expected one of \"version\", \"generator\", \"seed\", \"time\", \"player\", "
+                "\"props\"");
+  EXPECT_NE(error("{" + player + R"(,"props":[{"model":"a","position":[0,0,0],"rotation":[0,0,0],"scale":1,"tint":2}]})")
+                .find("bad.json: props[0].tint: unknown key"),
+            std::string::npos);
 }
 
 // Random edits all over a 4 x 4 chunk area, saved through WorldStorage and read back into a new world.
