@@ -42,8 +42,6 @@ FrameBlend frameAt(const Animation& animation, std::int64_t ticks, float partial
   return out;
 }
 
-bool isSquare(int width, int height) { return width == height; }
-
 std::optional<Animation> parseAnimation(const std::string& text, int width, int height, const std::string& file) {
   json root;
   try {
