@@ -28,6 +28,8 @@ namespace terrasol::light {
 
 inline constexpr int kMaxFrameChunks = 16;  // a side; with the ring, ref indices stay far below 2^20
 inline constexpr int kRefSections = kSectionCount + 2;  // sections per chunk, with the empty ones
+static_assert((kMaxFrameChunks + 2) * (kMaxFrameChunks + 2) * kRefSections < (1 << 20),
+              "a frame position keeps its ref index in 20 bits");
 
 // A level in an update's slab. An enum, not std::uint8_t: a store through unsigned char may alias
 // anything, so the compiler would reload every pointer and counter after each level written.
