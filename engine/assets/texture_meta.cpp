@@ -81,8 +81,6 @@ FrameBlend frameAt(const Animation& animation, std::int64_t ticks, float partial
   return out;
 }
 
-bool isSquare(int width, int height) { return width == height; }
-
 std::optional<Animation> parseAnimation(const std::string& text, int width, int height, const std::string& file) {
   const json root = parseJson(text, file);
   try {

@@ -38,8 +38,4 @@ FrameBlend frameAt(const Animation& animation, std::int64_t ticks, float partial
 // is not a multiple of the frame height, frame indices out of range or times below 1.
 std::optional<Animation> parseAnimation(const std::string& json, int width, int height, const std::string& file);
 
-// A plain texture whose height is a whole multiple of its width is treated as a strip only with an
-// .mcmeta; without one, this says whether the shape is still valid (square).
-bool isSquare(int width, int height);
-
 }  // namespace terrasol

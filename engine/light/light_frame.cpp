@@ -1,16 +1,18 @@
 #include "light/light_frame.h"
 
 #include <algorithm>
-#include <cassert>
 #include <cstring>
+#include <string>
 
+#include "core/assert.h"
 #include "light/level_words.h"
 
 namespace terrasol::light {
 
 ChunkWindow::ChunkWindow(World& world, ChunkPos lo, ChunkPos hi, const Chunk* excluded)
     : min(lo), width(hi.x - lo.x + 1), depth(hi.z - lo.z + 1) {
-  assert(width <= kMaxFrameChunks && depth <= kMaxFrameChunks);
+  TERRASOL_ASSERT(width >= 1 && depth >= 1 && width <= kMaxFrameChunks && depth <= kMaxFrameChunks,
+                  "light: a window of " + std::to_string(width) + " x " + std::to_string(depth) + " chunks");
   chunks.resize(static_cast<std::size_t>(width * depth));
   for (int z = 0; z < depth; ++z)
     for (int x = 0; x < width; ++x) {
@@ -100,7 +102,7 @@ unsigned LightFrame::pack(SectionRef& r) {
   const unsigned marks = r.marks;
   r.marks = 0;
   if (!marks) return 0;
-  assert(!r.shared);
+  TERRASOL_ASSERT(!r.shared, "light: cells written into a shared slab");
   NibbleArray& layer = *r.layer;
   const bool wasUniform = layer.isUniform();
   // The bytes a section gave up when its light became uniform wait here for the next that needs

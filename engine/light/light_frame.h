@@ -30,6 +30,8 @@ inline constexpr int kMaxFrameChunks = 16;  // a side; with the ring, ref indice
 inline constexpr int kRefSections = kSectionCount + 2;  // sections per chunk, with the empty ones
 inline constexpr int kIndexBits = 12;  // a frame position's low bits: the Section::index
 static_assert(1 << kIndexBits == Section::kVolume);
+static_assert((kMaxFrameChunks + 2) * (kMaxFrameChunks + 2) * kRefSections < (1 << (32 - kIndexBits)),
+              "a frame position keeps its ref index in the bits above the cell index");
 
 // A level in an update's slab. An enum, not std::uint8_t: a store through unsigned char may alias
 // anything, so the compiler would reload every pointer and counter after each level written.

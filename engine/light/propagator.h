@@ -6,6 +6,7 @@
 #include <array>
 #include <vector>
 
+#include "core/assert.h"
 #include "light/changed_sections.h"
 #include "light/light_faces.h"
 #include "light/light_frame.h"
@@ -190,12 +191,15 @@ class Propagator {
     std::uint32_t pos;
     if (frame_.toFrame(x, y, z, pos)) increase(pos, level, directions);
   }
-  // The loops take a queued position's ref as it is (LightFrame::queuedRef): resolve it now.
+  // The loops take a queued position's ref as it is (LightFrame::queuedRef): resolve it now. The loops
+  // trust a seed's level (a byte) to be a light level: one above 15 would spread wrong light.
   void decrease(std::uint32_t pos, std::uint8_t level, std::uint8_t directions) {
+    TERRASOL_ASSERT(level <= 15 && directions <= kAllDirections, "light: a decrease seeded out of range");
     frame_.ref(LightFrame::refIndex(pos));
     decrease_.push({pos, level, directions});
   }
   void increase(std::uint32_t pos, std::uint8_t level, std::uint8_t directions) {
+    TERRASOL_ASSERT(level <= 15 && directions <= kAllDirections, "light: an increase seeded out of range");
     frame_.ref(LightFrame::refIndex(pos));
     increase_.push({pos, level, directions});
   }

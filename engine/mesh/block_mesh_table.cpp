@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <string>
+
+#include "core/assert.h"
 
 #include "core/model_units.h"
 
@@ -133,7 +136,8 @@ BlockMeshTable::BlockMeshTable(const BlockRegistry& blocks,
       if (modelChoicesOf) e.choices = modelChoicesOf(id);
       for (ModelChoice& c : e.choices) {
         for (ModelQuad& q : c.quads) describeModelQuad(q, nullptr);  // coverage is the origin pick's
-        e.weights.push_back(c.weight);
+        TERRASOL_ASSERT(c.weight >= 1, "mesh table: a model choice of weight " + std::to_string(c.weight));
+        e.weights.push_back(c.weight);  // weightedPick's every weight >= 1 keeps its pick among the choices
       }
       for (int d = 0; d < 6; ++d) e.fullSides |= e.coverage.full(static_cast<Direction>(d)) ? 1u << d : 0u;
       if (!e.choices.empty() || !plainCube(e.quads, e.texture)) continue;

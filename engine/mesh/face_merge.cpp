@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <string>
 #include <vector>
 
+#include "core/assert.h"
 #include "core/model_units.h"
 #include "world/coords.h"
 
@@ -58,7 +60,8 @@ bool candidate(const PackedVertex* q, Candidate& out) {
     tMin = std::min(tMin, coordinate(q[c], a.t));
     bMin = std::min(bMin, coordinate(q[c], a.b));
   }
-  if (tMin % 32 != 0 || bMin % 32 != 0) return false;
+  // On the section's 16 x 16 grid of cells: a model's face can lie beyond its block, past the grid.
+  if (tMin % 32 != 0 || bMin % 32 != 0 || tMin >= 16 * 32 || bMin >= 16 * 32) return false;
   for (int c = 0; c < 4; ++c) {
     const bool tHigh = (kCornerSigns[c][0] > 0) == a.tAlong, bHigh = (kCornerSigns[c][1] > 0) == a.bAlong;
     if (q[c].material != q[0].material || q[c].uv != cornerUv(c, 1, 1) || coordinate(q[c], a.n) != height ||
@@ -76,6 +79,8 @@ bool candidate(const PackedVertex* q, Candidate& out) {
 }  // namespace
 
 std::size_t mergeFaces(PackedVertices& quads) {
+  TERRASOL_ASSERT(quads.size() % 4 == 0,
+                  "face merge: " + std::to_string(quads.size()) + " vertices are not whole quads");
   // Out, in this order: quads both views draw, faces that merged (the light's view), merged quads.
   // Per thread and kept between calls, like the mesher's writers: no allocation once warm.
   thread_local PackedVertices both, faces, merged;
@@ -116,6 +121,8 @@ std::size_t mergeFaces(PackedVertices& quads) {
   std::size_t facesMerged = 0;
   for (std::size_t first = 0, last = 0; first < candidates.size(); first = last) {
     for (; last < candidates.size() && candidates[last].plane == candidates[first].plane; ++last) {
+      TERRASOL_ASSERT(candidates[last].i < kChunkSize && candidates[last].j < kChunkSize,
+                      "face merge: a face off the grid");
       grid[cell(candidates[last].i, candidates[last].j)] = candidates[last].quad;
     }
     const Axes& a = kAxes[static_cast<std::size_t>(candidates[first].plane / 1024)];

@@ -6,12 +6,15 @@
 #include <exception>
 #include <string>
 
-#include "core/log.h"
-#include "mesh/section_mesh.h"
-
 namespace terrasol {
 
-MeshScheduler::MeshScheduler(const BlockMeshTable& table, int threads) : table_(table) {
+std::string MeshFailure::message() const {
+  return "meshing section (" + std::to_string(pos.x) + ", " + std::to_string(pos.section) + ", " +
+         std::to_string(pos.z) + ") failed: " + what;
+}
+
+MeshScheduler::MeshScheduler(const BlockMeshTable& table, int threads, MeshFunction mesh)
+    : table_(table), mesh_(std::move(mesh)) {
   for (int i = 0; i < std::max(threads, 1); ++i) workers_.emplace_back([this] {
     lowerThisThreadsPriority();
     work();
@@ -79,6 +82,10 @@ std::vector<SectionMesh> MeshScheduler::update(const World& world, std::size_t m
     const auto it = latest_.find(key(d.mesh.pos));
     if (it == latest_.end() || it->second != d.generation) continue;  // a newer job replaces it
     latest_.erase(it);
+    if (d.failure) {
+      failures_.push_back({d.mesh.pos, std::move(*d.failure)});
+      continue;
+    }
     ready.push_back(std::move(d.mesh));
   }
   return ready;
@@ -100,11 +107,15 @@ void MeshScheduler::work() {
       jobs_.pop_front();
       ++working_;
     }
-    Done done{SectionMesh{job->snapshot.pos, {}}, job->generation};
+    Done done{SectionMesh{job->snapshot.pos, {}}, job->generation, std::nullopt};
+    // Carried to the main thread, whose update() names the section: thrown here, it would end the
+    // process from a worker.
     try {
-      done.mesh = meshWithLinks(job->snapshot, table_);
-    } catch (const std::exception& e) {  // out of memory: an empty mesh, and the game goes on
-      logError(std::string("meshing failed: ") + e.what());
+      done.mesh = mesh_(job->snapshot, table_);
+    } catch (const std::exception& e) {
+      done.failure = e.what();
+    } catch (...) {
+      done.failure = "an exception that is not a std::exception";
     }
     std::lock_guard lock(mutex_);
     done_.push_back(std::move(done));

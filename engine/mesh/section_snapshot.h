@@ -28,8 +28,6 @@ class SectionSnapshot {
   static constexpr std::uint32_t lightTerm(bool opaque, int block, int sky) {
     return opaque ? 0 : kOpen | static_cast<std::uint32_t>(block) | static_cast<std::uint32_t>(sky) << 6;
   }
-  int blockLight(int i) const { return static_cast<int>(light[static_cast<std::size_t>(i)] & 15); }
-  int skyLight(int i) const { return static_cast<int>(light[static_cast<std::size_t>(i)] >> 6 & 15); }
 
   SectionPos pos;
   std::array<BlockId, kCells> blocks;

@@ -82,6 +82,9 @@ std::vector<SectionMesh> StreamedWorld::update(ChunkPos centre, std::chrono::ste
     // A job that finished after its chunk left must not bring the chunk back.
     if (meshable_.contains({mesh.pos.x, mesh.pos.z})) out.push_back(std::move(mesh));
   }
+  // A mesh is drawn from the world, which stays whole: the game goes on (and saves) with the
+  // section's old mesh, and the log names the section and the cause.
+  for (const MeshFailure& failure : mesher_->takeFailures()) logError(failure.message());
   return out;
 }
 

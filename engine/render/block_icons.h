@@ -27,7 +27,6 @@ class BlockIcons {
   // Icon i's corners in the texture (u0, v0, u1, v1), v = 0 at the top row, as ImGui takes them.
   glm::vec4 uv(std::size_t icon) const;
   std::size_t count() const { return count_; }
-  int cellPixels() const { return cell_; }
   // The whole sheet, top row first, straight alpha (transparent around each block).
   Image read() const;
 

@@ -47,8 +47,6 @@ class DeferredRenderer {
   // The targets of the last frame (for tests and reports), null before the first.
   const GBuffer* gbuffer() const { return gbuffer_ ? &*gbuffer_ : nullptr; }
   const FrameStats& lastFrame() const { return stats_; }
-  // The block atlas's albedo (sRGB, with mipmaps): for the HUD's block icons.
-  GLuint atlasAlbedo() const { return shared_.textures.atlas().albedo(); }
   // The shader variants built: each program's name with the defines that chose it ("gbuffer+CUTOUT").
   const std::vector<std::string>& shaderVariants() const { return shared_.variants; }
   const GBufferContents& gbufferContents() const { return shared_.contents; }

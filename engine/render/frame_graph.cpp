@@ -1,16 +1,19 @@
 #include "render/frame_graph.h"
 
 #include <algorithm>
-#include <stdexcept>
+
+#include "core/assert.h"
 
 namespace terrasol {
 
 void FrameGraph::Builder::read(Resource r) {
+  graph_.checkResource(r);
   PassNode& pass = graph_.passes_[static_cast<std::size_t>(pass_)];
   pass.reads.push_back(r);  // a resource until setup returns, then its version
 }
 
 void FrameGraph::Builder::write(Resource r) {
+  graph_.checkResource(r);
   graph_.passes_[static_cast<std::size_t>(pass_)].writes.push_back(r);
 }
 
@@ -33,15 +36,18 @@ FrameGraph::Resource FrameGraph::transient(std::string name, std::function<void(
 }
 
 void FrameGraph::output(Resource r) {
+  checkResource(r);
   outputs_.push_back(r);
 }
 
 bool FrameGraph::written(Resource r) const {
+  checkResource(r);
   return versions_[static_cast<std::size_t>(resources_[static_cast<std::size_t>(r)].latest)].writer >= 0;
 }
 
 void FrameGraph::add(std::string name, const std::function<void(Builder&)>& setup,
                      std::function<void()> run) {
+  TERRASOL_ASSERT(!ran_, "frame graph: pass " + name + " added after execute");
   const int index = static_cast<int>(passes_.size());
   passes_.push_back({std::move(name), std::move(run), {}, {}, {}, false});
   Builder builder(*this, index);
@@ -55,10 +61,8 @@ void FrameGraph::add(std::string name, const std::function<void(Builder&)>& setu
   // Reads first: a pass that reads and writes a resource (blending onto it) reads the version before.
   for (int& r : pass.reads) {
     ResourceNode& resource = resources_[static_cast<std::size_t>(r)];
-    if (!resource.imported && versions_[static_cast<std::size_t>(resource.latest)].writer < 0) {
-      throw std::logic_error("frame graph: " + pass.name + " reads " + resource.name +
-                             " before any pass writes it");
-    }
+    TERRASOL_ASSERT(resource.imported || versions_[static_cast<std::size_t>(resource.latest)].writer >= 0,
+                    "frame graph: " + pass.name + " reads " + resource.name + " before any pass writes it");
     r = resource.latest;
   }
   for (int& r : pass.writes) {
@@ -69,6 +73,8 @@ void FrameGraph::add(std::string name, const std::function<void(Builder&)>& setu
 }
 
 void FrameGraph::execute(const std::function<void(const std::string&)>& after, bool cull) {
+  TERRASOL_ASSERT(!ran_, "frame graph: a graph is executed once");
+  ran_ = true;
   // Backwards from the outputs: a pass is needed when it wrote a version that is needed.
   std::vector<bool> neededVersion(versions_.size(), false);
   for (const Resource r : outputs_)
@@ -83,6 +89,12 @@ void FrameGraph::execute(const std::function<void(const std::string&)>& after, b
 
   std::vector<bool> realized(resources_.size(), false);
   for (const PassNode& pass : passes_) {
+    // Every version a running pass reads was written by a pass that runs before it, or came in.
+    for (const int v : pass.reads) {
+      const int writer = versions_[static_cast<std::size_t>(v)].writer;
+      TERRASOL_ASSERT(!pass.needed || writer < 0 || passes_[static_cast<std::size_t>(writer)].needed,
+                      "frame graph: " + pass.name + " reads what a culled pass writes");
+    }
     if (!pass.skip.empty()) {
       skipped_.push_back({pass.name, pass.skip});
       continue;
@@ -103,6 +115,10 @@ void FrameGraph::execute(const std::function<void(const std::string&)>& after, b
     executed_.push_back(pass.name);
     if (after) after(pass.name);
   }
+}
+
+void FrameGraph::checkResource(Resource r) const {
+  TERRASOL_ASSERT(r >= 0 && static_cast<std::size_t>(r) < resources_.size(), "frame graph: unknown resource");
 }
 
 // A culled pass's first write: replaced by a later writer that ignores it, or read by no pass that runs.

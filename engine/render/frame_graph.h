@@ -79,6 +79,7 @@ class FrameGraph {
     bool needed = false;
   };
   std::string whyUnneeded(const PassNode& pass) const;
+  void checkResource(Resource r) const;
 
   std::vector<ResourceNode> resources_;
   std::vector<Version> versions_;
@@ -86,6 +87,7 @@ class FrameGraph {
   std::vector<Resource> outputs_;
   std::vector<Skipped> skipped_;
   std::vector<std::string> executed_;
+  bool ran_ = false;  // execute is called once
 };
 
 }  // namespace terrasol

@@ -128,6 +128,8 @@ std::vector<SectionMesh> SceneWorld::advanceTo(int frame, const BlockMeshTable& 
     for (SectionMesh& mesh : scheduler.update(world_)) {
       if (withinView(mesh.pos)) meshes.push_back(std::move(mesh));
     }
+    // A picture with a section left out would be wrong: no frame is rendered without it.
+    if (const auto failed = scheduler.takeFailures(); !failed.empty()) throw Error(failed.front().message());
     std::this_thread::yield();
   }
   return meshes;

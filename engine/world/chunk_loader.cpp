@@ -3,6 +3,7 @@
 #include "core/thread_priority.h"
 
 #include <algorithm>
+#include <string>
 #include <utility>
 
 #include "core/log.h"
@@ -95,7 +96,8 @@ void ChunkLoader::work() {
       }
     } catch (const std::exception& e) {
       // Never generate in place of a chunk whose save could not be read: a later edit would bury it.
-      logError(e.what());
+      logError("chunk (" + std::to_string(pos.x) + ", " + std::to_string(pos.z) +
+               ") not loaded: " + e.what());
       failed = true;
     }
     std::lock_guard lock(mutex_);

@@ -2,7 +2,6 @@
 
 #include <gtest/gtest.h>
 
-#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -107,16 +106,30 @@ TEST(FrameGraphTest, TransientsAreRealizedOnceAndOnlyWhenARunningPassTouchesThem
   EXPECT_EQ(graph.executed(), std::vector<std::string>{"final"});
 }
 
-TEST(FrameGraphTest, ReadingATransientNoPassWroteIsAnError) {
+TEST(FrameGraphDeathTest, ReadingATransientNoPassWroteIsAnError) {
   FrameGraph graph;
   const auto scene = graph.transient("scene");
-  EXPECT_THROW(graph.add(
+  EXPECT_DEATH(graph.add(
                    "final", [&](FrameGraph::Builder& b) { b.read(scene); }, [] {}),
-               std::logic_error);
+               "assertion failed: .*final reads scene before any pass writes it");
   const auto kept = graph.import("kept");
   EXPECT_NO_THROW(graph.add(
       "reader", [&](FrameGraph::Builder& b) { b.read(kept); }, [] {}))
       << "an imported resource lives beyond the frame";
+}
+
+TEST(FrameGraphDeathTest, AGraphRunsOnceAndNamesOnlyItsResources) {
+  FrameGraph graph;
+  const auto target = graph.import("target");
+  EXPECT_DEATH(graph.output(target + 1), "unknown resource");
+  graph.add(
+      "final", [&](FrameGraph::Builder& b) { b.write(target); }, [] {});
+  graph.output(target);
+  graph.execute();
+  EXPECT_DEATH(graph.execute(), "executed once");
+  EXPECT_DEATH(graph.add(
+                   "late", [&](FrameGraph::Builder& b) { b.write(target); }, [] {}),
+               "late added after execute");
 }
 
 }  // namespace

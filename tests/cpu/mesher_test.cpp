@@ -5,6 +5,8 @@
 #include "mesh/mesher.h"
 
 #include <chrono>
+#include <stdexcept>
+#include <string>
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 #include <thread>
@@ -344,6 +346,33 @@ TEST(MeshScheduler, RemeshesExactlyTheSectionsAnEditTouches) {
   }
   EXPECT_TRUE(sawEdited);
   for (const auto& m : results) EXPECT_NE(m.pos, (SectionPos{0, sectionOf(200), 0})) << "untouched sections stay";
+}
+
+// A mesher that throws: the section is named on the main thread, and no mesh replaces its old one.
+TEST(MeshScheduler, AFailedSectionIsNamedAndKeepsItsOldMesh) {
+  MeshWorld w("flat");
+  const SectionPos broken{0, sectionOf(64), 0};
+  MeshScheduler scheduler(w.table, 1, [&](const SectionSnapshot& snapshot, const BlockMeshTable& table) {
+    if (snapshot.pos == broken) throw std::runtime_error("a mesher bug");
+    return meshWithLinks(snapshot, table);
+  });
+  w.set({4, 64, 4}, "glowstone");  // something to draw in both sections
+  w.set({20, 64, 4}, "glowstone");
+  scheduler.markDirty(broken);
+  scheduler.markDirty({1, sectionOf(64), 0});
+  std::vector<SectionMesh> results;
+  std::vector<MeshFailure> failures;
+  for (int i = 0; i < 10000 && (scheduler.dirty() > 0 || scheduler.inFlight() > 0); ++i) {
+    for (auto& m : scheduler.update(w.world)) results.push_back(std::move(m));
+    for (auto& f : scheduler.takeFailures()) failures.push_back(std::move(f));
+    std::this_thread::sleep_for(std::chrono::microseconds(200));
+  }
+  ASSERT_EQ(results.size(), 1u);
+  EXPECT_EQ(results[0].pos, (SectionPos{1, sectionOf(64), 0}));
+  ASSERT_EQ(failures.size(), 1u);
+  EXPECT_EQ(failures[0].pos, broken);
+  EXPECT_EQ(failures[0].message(),
+            "meshing section (0, " + std::to_string(sectionOf(64)) + ", 0) failed: a mesher bug");
 }
 
 // A quad's footprint: its face, its height along the normal and its extent on the three axes (1/32).

@@ -1,4 +1,3 @@
-#include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 #include <zip.h>
 
@@ -11,6 +10,7 @@
 #include "packgen.h"
 #include "scene/block_atlas.h"
 #include "support/pack_builder.h"
+#include "support/raw_png.h"
 #include "support/test_data.h"
 #include "support/world_support.h"
 
@@ -208,15 +208,11 @@ TEST(ResourcePack, BadInputGivesClearErrorsNamingTheFile) {
 
 TEST(ResourcePack, SixteenBitGreyAndPaletteImagesAreConverted) {
   PackBuilder pack("pack_formats");
-  {  // 16-bit grey + alpha, written through OpenImageIO's PNG writer
-    std::vector<std::uint16_t> pixels(16 * 16 * 2, 0xFFFF);
-    pixels[0] = 0x8000;
-    auto out = OIIO::ImageOutput::create("png");
-    ASSERT_TRUE(out);
-    ASSERT_TRUE(
-        out->open(pack.file("deep.png").string(), OIIO::ImageSpec(16, 16, 2, OIIO::TypeDesc::UINT16)));
-    ASSERT_TRUE(out->write_image(OIIO::TypeDesc::UINT16, pixels.data()));
-    ASSERT_TRUE(out->close());
+  {  // 16-bit grey + alpha (big-endian samples): white, opaque, but for a mid-grey first pixel
+    std::vector<std::uint8_t> samples(16 * 16 * 2 * 2, 0xFF);
+    samples[0] = 0x80;
+    samples[1] = 0x00;
+    testing::writeRawPng(pack.file("deep.png"), 16, 16, 16, testing::PngColour::GreyAlpha, samples);
   }
   std::vector<PackProblem> deepProblems;
   const auto deep = load(stackOf({pack.dir()}), {"deep"}, deepProblems);

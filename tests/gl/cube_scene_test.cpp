@@ -1,8 +1,7 @@
 #include <set>
 
-#include "core/paths.h"
-#include "render/cube_scene.h"
 #include "render/gl/render_target.h"
+#include "support/cube_scene.h"
 #include "support/gl_test.h"
 #include "support/golden.h"
 
@@ -12,7 +11,7 @@ namespace {
 class CubeSceneTest : public testing::GlTest {
  protected:
   Image render(const Camera& camera, glm::vec3 towardLight) {
-    const ShaderPreprocessor shaders(shaderDir());
+    const ShaderPreprocessor shaders = CubeScene::sceneShaders();
     const CubeScene scene(shaders, CubeScene::standardCubes());
     const RenderTarget target({320, 180});
     scene.draw(target.framebuffer(), target.size(), camera, towardLight);
@@ -58,7 +57,7 @@ TEST_F(CubeSceneTest, LightingFollowsTheLightDirection) {
 }
 
 TEST_F(CubeSceneTest, ZeroSizeAndDegenerateInputsDrawNothingAndRaiseNoError) {
-  const ShaderPreprocessor shaders(shaderDir());
+  const ShaderPreprocessor shaders = CubeScene::sceneShaders();
   const CubeScene scene(shaders, CubeScene::standardCubes());
   scene.draw(0, {0, 0}, kView, {0, 1, 0});
   const RenderTarget tiny({1, 1});

@@ -60,7 +60,6 @@ glm::ivec2 GlfwWindow::framebufferSize() const {
 void GlfwWindow::swapBuffers() { glfwSwapBuffers(window_); }
 void GlfwWindow::pollEvents() { glfwPollEvents(); }
 bool GlfwWindow::shouldClose() const { return glfwWindowShouldClose(window_); }
-void GlfwWindow::requestClose() { glfwSetWindowShouldClose(window_, GLFW_TRUE); }
 double GlfwWindow::time() const { return glfwGetTime(); }
 void GlfwWindow::setVsync(bool on) { glfwSwapInterval(on ? 1 : 0); }
 bool GlfwWindow::minimised() const { return glfwGetWindowAttrib(window_, GLFW_ICONIFIED) == GLFW_TRUE; }

@@ -28,7 +28,6 @@ class GlfwWindow final : public GlContext {
 
   void pollEvents();
   bool shouldClose() const;
-  void requestClose();
   double time() const;  // seconds since the window opened
   void setVsync(bool on);
   // Minimised (iconified): X11 keeps the framebuffer's size then, Windows reports 0x0; the game

@@ -21,6 +21,9 @@ class CubeScene {
  public:
   CubeScene(const ShaderPreprocessor& shaders, const std::vector<CubeInstance>& cubes);
 
+  // Its shaders (tests/support/shaders), which include the engine's shaders/lib.
+  static ShaderPreprocessor sceneShaders();
+
   // Five coloured cubes on a 16x16 slab centred on the origin, top of the slab at y = 0.
   static std::vector<CubeInstance> standardCubes();
 

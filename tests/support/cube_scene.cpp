@@ -1,8 +1,10 @@
-#include "render/cube_scene.h"
+#include "support/cube_scene.h"
 
 #include <array>
 #include <glm/gtc/type_ptr.hpp>
 
+#include "core/error.h"
+#include "core/paths.h"
 #include "render/gl/program.h"
 #include "render/gl_slots.h"
 
@@ -35,6 +37,17 @@ void appendBox(std::vector<Vertex>& out, const CubeInstance& cube) {
 }
 
 }  // namespace
+
+ShaderPreprocessor CubeScene::sceneShaders() {
+  const std::filesystem::path roots[] = {std::filesystem::path(TERRASOL_SOURCE_DIR) / "tests/support/shaders",
+                                         shaderDir()};
+  return ShaderPreprocessor([roots](const std::string& path) -> std::optional<std::string> {
+    std::error_code ec;
+    for (const auto& root : roots)
+      if (std::filesystem::is_regular_file(root / path, ec)) return readTextFile(root / path);
+    return std::nullopt;
+  });
+}
 
 CubeScene::CubeScene(const ShaderPreprocessor& shaders, const std::vector<CubeInstance>& cubes)
     : program_(buildProgram(shaders, {{GL_VERTEX_SHADER, "cubes.vert"}, {GL_FRAGMENT_SHADER, "cubes.frag"}},
