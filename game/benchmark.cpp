@@ -8,6 +8,7 @@
 #include <glm/trigonometric.hpp>
 #include <nlohmann/json.hpp>
 
+#include "core/day_cycle.h"
 #include "core/error.h"
 #include "frame_rate.h"
 #include "game.h"
@@ -105,7 +106,7 @@ int runBenchmark(Game& game, const GameOptions& options) {
   const double seconds = *options.benchmark;
   PlayWorld& world = game.world();
   GlfwWindow& window = game.window();
-  world.level().time = 6000;  // noon: the sun casts shadows the whole run
+  world.level().time = kNoon;  // the sun casts shadows the whole run
   world.time().stop();
   game.ui().showHud();
   Flight flight(world, options);

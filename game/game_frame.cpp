@@ -129,7 +129,7 @@ void Game::draw(bool timed) {
   frame.fovDegrees = s.fov;
   frame.ticks = world_.level().time;
   frame.sunPathRotation = s.sunPathRotation;
-  frame.viewDistance = static_cast<float>(s.viewDistance * 16);
+  frame.viewDistance = static_cast<float>(s.viewDistance * kChunkSize);
   frame.debugView = overlay_.view();
   frame.reuseShadowMap = true;
   frame.props = &world_.props().placed().gpu();

@@ -17,7 +17,6 @@
 // Events play in time order once the game clock reaches their "t".
 
 #include <filesystem>
-#include <iterator>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -26,14 +25,15 @@
 #include <glm/vec2.hpp>
 
 #include "controls.h"
+#include "core/enum_names.h"
 
 namespace terrasol {
 
 enum class ScriptCommand { Save, Screenshot, Quit, Minimise, Restore, PlaceProp };
 // Their names in scripts, in ScriptCommand's order.
-inline constexpr std::string_view kScriptCommands[] = {"save", "screenshot", "quit", "minimise", "restore",
-                                                      "place_prop"};
-static_assert(std::size(kScriptCommands) == static_cast<std::size_t>(ScriptCommand::PlaceProp) + 1);
+inline constexpr EnumNames<ScriptCommand, 6> kScriptCommands{
+    {"save", "screenshot", "quit", "minimise", "restore", "place_prop"}};
+static_assert(kScriptCommands.size() == static_cast<std::size_t>(ScriptCommand::PlaceProp) + 1);
 
 struct ScriptEvent {
   enum class Kind { Key, Button, Look, MouseMove, Scroll, Command } kind = Kind::Key;

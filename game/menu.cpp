@@ -7,6 +7,8 @@
 
 #include <imgui.h>
 
+#include "core/render_scale.h"
+
 namespace terrasol {
 namespace {
 
@@ -89,7 +91,7 @@ void Menu::settingsTab(GameSettings& s, MenuResult& out) {
   ImGui::SliderFloat("Sun path rotation", &s.sunPathRotation, -90.0f, 90.0f, "%.0f deg");
   out.settingsChanged |= released();
   out.settingsChanged |= ImGui::Checkbox("VSync", &s.vsync);
-  ImGui::SliderFloat("Render scale", &s.renderScale, 0.25f, 1.0f, "%.2f");
+  ImGui::SliderFloat("Render scale", &s.renderScale, kMinRenderScale, kMaxRenderScale, "%.2f");
   out.settingsChanged |= released();
   ImGui::SliderInt("Target fps (0: fixed scale)", &s.targetFps, 0, 144);
   out.settingsChanged |= released();
@@ -131,7 +133,7 @@ void Menu::settingsTab(GameSettings& s, MenuResult& out) {
   ImGui::TextUnformatted("Reflections (smooth blocks, water, glass)");
   ReflectionSettings& r = s.reflections;
   out.rendererChanged |= ImGui::Checkbox("Reflections", &r.enabled);
-  ImGui::SliderFloat("Resolution scale", &r.resolutionScale, 0.25f, 1.0f, "%.2f");
+  ImGui::SliderFloat("Resolution scale", &r.resolutionScale, kMinRenderScale, kMaxRenderScale, "%.2f");
   out.rendererChanged |= released();
   ImGui::SliderInt("Steps", &r.maxSteps, 4, 96);
   out.rendererChanged |= released();

@@ -4,6 +4,7 @@
 
 #include "core/error.h"
 #include "core/json_check.h"
+#include "core/render_scale.h"
 
 namespace terrasol {
 namespace {
@@ -54,7 +55,7 @@ GameSettings parseRoot(const json& root, const path& dir) {
   if (const json* v = field(root, "packs")) s.packs = parsePacks(*v, dir);
   if (const json* v = field(root, "keys")) parseKeys(*v, s.keys);
   if (const json* v = field(root, "vsync")) s.vsync = boolean(*v, "vsync");
-  if (const json* v = field(root, "render_scale")) s.renderScale = numberIn(*v, "render_scale", 0.25, 1.0, false);
+  if (const json* v = field(root, "render_scale")) s.renderScale = numberIn(*v, "render_scale", kMinRenderScale, kMaxRenderScale, false);
   if (const json* v = field(root, "target_fps")) s.targetFps = static_cast<int>(wholeNumber(*v, "target_fps", 0, 1000));
   if (const json* v = field(root, "first_run")) {
     checkObject(*v, "first_run", {"gl", "frame_ms", "choice"});
