@@ -28,7 +28,8 @@ glm::vec3 boxCorner(const json& value, const std::string& key) {
   if (!value.is_array() || value.size() != 3) expected(key, "an array of 3 numbers from -16 to 32", value);
   glm::vec3 v;
   for (std::size_t i = 0; i < 3; ++i)
-    v[static_cast<int>(i)] = numberIn(value[i], element(key, i), -kModelUnits, 2 * kModelUnits, false);  // -1..2 blocks
+    v[static_cast<int>(i)] =
+        numberIn(value[i], element(key, i), -kModelUnits, 2 * kModelUnits, false);  // -1..2 blocks
   return v;
 }
 

@@ -161,7 +161,8 @@ void LightEngine::seedOpenSky(light::Propagator& p, const Chunk& chunk) {
   const auto tops = spreadTops(world_, chunk);
   Cell cell;
   for (int i = 0; i < kChunkArea; ++i) {
-    const int x = x0 + (i & kLastCell), z = z0 + (i >> kChunkShift), top = light.skyTop[static_cast<std::size_t>(i)];
+    const int x = x0 + (i & kLastCell), z = z0 + (i >> kChunkShift),
+              top = light.skyTop[static_cast<std::size_t>(i)];
     for (int y = top + 1; y <= std::min(tops[static_cast<std::size_t>(i)], kMaxY - 1); ++y) {
       p.increase(x, y, z, kMaxLight, kAllDirections);
     }
@@ -289,7 +290,8 @@ void LightEngine::seedChangedCell(light::Propagator& p, const BlockPos& at) {
     Cell near;
     if (!p.locate(n.x, n.y, n.z, near)) continue;
     const std::uint8_t level = p.light(near);
-    if (level > 1) p.increase(n.x, n.y, n.z, level, static_cast<std::uint8_t>(light::faceBit(light::opposite(d))));
+    if (level > 1)
+      p.increase(n.x, n.y, n.z, level, static_cast<std::uint8_t>(light::faceBit(light::opposite(d))));
   }
 }
 

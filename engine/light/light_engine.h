@@ -88,8 +88,8 @@ class LightEngine {
   void seedSkyColumn(light::Propagator& p, const BlockPos& at, int oldTop, int newTop);
   void ownLevels(const Chunk& chunk, int section, LightChannel channel, std::uint8_t* levels) const;
   void relightGeneral(light::Propagator& p, const Chunk& chunk, const SectionPos& s,
-                      const light::Cell& origin, const light::Cell* beyond, const std::array<int, kChunkArea>& tops,
-                      LightChannel channel);
+                      const light::Cell& origin, const light::Cell* beyond,
+                      const std::array<int, kChunkArea>& tops, LightChannel channel);
 
   World& world_;
   light::LightFaces faces_;                // light through shaped blocks (none without shapes)

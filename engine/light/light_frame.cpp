@@ -33,7 +33,7 @@ void LightFrame::reset(const ChunkWindow& window, LightChannel channel) {
   // Across a face the ref index moves by one section, chunk or row and the cell wraps to the far side.
   const std::int32_t section = 1 << kIndexBits, chunk = kRefSections << kIndexBits, row = stride_ * chunk;
   constexpr std::int32_t wrapX = kLastCell, wrapY = kLastCell * kChunkArea, wrapZ = kLastCell * kChunkSize;
-  const std::int32_t steps[6] = {-chunk + wrapX, chunk - wrapX, -section + wrapY,
+  const std::int32_t steps[6] = {-chunk + wrapX,  chunk - wrapX, -section + wrapY,
                                  section - wrapY, -row + wrapZ,  row - wrapZ};
   std::copy(std::begin(steps), std::end(steps), across_);
   const auto chunks = static_cast<std::size_t>(stride_ * (depth_ + 2));

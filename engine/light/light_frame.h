@@ -28,7 +28,7 @@ namespace terrasol::light {
 
 inline constexpr int kMaxFrameChunks = 16;  // a side; with the ring, ref indices stay far below 2^20
 inline constexpr int kRefSections = kSectionCount + 2;  // sections per chunk, with the empty ones
-inline constexpr int kIndexBits = 12;  // a frame position's low bits: the Section::index
+inline constexpr int kIndexBits = 12;                   // a frame position's low bits: the Section::index
 static_assert(1 << kIndexBits == Section::kVolume);
 static_assert((kMaxFrameChunks + 2) * (kMaxFrameChunks + 2) * kRefSections < (1 << (32 - kIndexBits)),
               "a frame position keeps its ref index in the bits above the cell index");
@@ -61,7 +61,8 @@ inline const std::array<std::uint8_t, Section::kVolume> kWriteMarks = [] {
   std::array<std::uint8_t, Section::kVolume> marks{};
   for (int i = 0; i < Section::kVolume; ++i) {
     const int x = Section::xOf(i), y = Section::yOf(i), z = Section::zOf(i);
-    marks[static_cast<std::size_t>(i)] = static_cast<std::uint8_t>(bandMark(y / kLayersPerBand) | sectionFaces(x, y, z));
+    marks[static_cast<std::size_t>(i)] =
+        static_cast<std::uint8_t>(bandMark(y / kLayersPerBand) | sectionFaces(x, y, z));
   }
   return marks;
 }();
@@ -89,9 +90,10 @@ class LightFrame {
         static_cast<unsigned>(fy) >= static_cast<unsigned>(kMaxY - kMinY)) {
       return false;
     }
-    const int ref =
-        (((fz >> kChunkShift) + 1) * stride_ + (fx >> kChunkShift) + 1) * kRefSections + (fy >> kChunkShift) + 1;
-    pos = static_cast<std::uint32_t>(ref << kIndexBits | Section::index(fx & kLastCell, fy & kLastCell, fz & kLastCell));
+    const int ref = (((fz >> kChunkShift) + 1) * stride_ + (fx >> kChunkShift) + 1) * kRefSections +
+                    (fy >> kChunkShift) + 1;
+    pos = static_cast<std::uint32_t>(ref << kIndexBits |
+                                     Section::index(fx & kLastCell, fy & kLastCell, fz & kLastCell));
     return true;
   }
   static int refIndex(std::uint32_t pos) { return static_cast<int>(pos >> kIndexBits); }
@@ -147,7 +149,7 @@ class LightFrame {
   using Slab = std::array<Level, Section::kVolume>;
   std::vector<std::unique_ptr<Slab>> slabs_;  // kept between updates
   std::size_t slabsUsed_ = 0;
-  std::array<std::unique_ptr<Slab>, kLightLevels> levelSlabs_;  // read-only, one per level, filled on first use
+  std::array<std::unique_ptr<Slab>, kLightLevels> levelSlabs_;  // read-only, one a level, made on first use
   static constexpr std::size_t kMaxSpareBytes = 64;   // 128 KiB
   std::vector<std::unique_ptr<NibbleArray::Bytes>> spareBytes_;  // layers' bytes freed by pack(), for reuse
 };

@@ -180,7 +180,7 @@ class Propagator {
   }
   std::uint8_t light(const Cell& c) const { return light(*c.ref, c.index); }
   void setLight(const Cell& c, std::uint8_t level) { setLight(*c.ref, c.index, level); }
-  // The level a cell has by itself: its emission (block light) or kMaxLight in the open sky column (sky light).
+  // The level a cell has by itself: its emission (block light), or kMaxLight in the open sky column.
   std::uint8_t source(const Cell& c) { return source(*c.ref, c.index); }
 
   void decrease(int x, int y, int z, std::uint8_t level, std::uint8_t directions) {

@@ -64,8 +64,8 @@ bool faceLosesLight(const std::uint8_t* current, const light::SectionSolver::Lev
 // has kMaxLight around it.
 template <class Fn>
 void forSources(const std::uint8_t* levels, LightChannel channel, bool emitters,
-                const std::array<int, kChunkArea>& tops, const std::array<std::int16_t, kChunkArea>& skyTop, int y0,
-                Fn&& fn) {
+                const std::array<int, kChunkArea>& tops, const std::array<std::int16_t, kChunkArea>& skyTop,
+                int y0, Fn&& fn) {
   if (channel == LightChannel::Block) {
     if (!emitters) return;
     for (int i = 0; i < Section::kVolume; ++i) {
@@ -151,7 +151,8 @@ void LightEngine::relightSection(const SectionPos& s) {
         for (const light::FaceCell& c : light::kFaceCells[static_cast<std::size_t>(d)]) {
           const std::uint8_t level = levels[c.ours];
           if (level > 1 && n.get(c.theirs) + 1 < level) {
-            p.increase(Propagator::posOf(origin.pos, c.ours), level, static_cast<std::uint8_t>(light::faceBit(d)));
+            p.increase(Propagator::posOf(origin.pos, c.ours), level,
+                       static_cast<std::uint8_t>(light::faceBit(d)));
           }
         }
       }
@@ -165,8 +166,8 @@ void LightEngine::relightSection(const SectionPos& s) {
 // removed outside. Then every source inside and the light just outside each face offer their light
 // again, through the general flood fill, which crosses the faces both ways.
 void LightEngine::relightGeneral(light::Propagator& p, const Chunk& chunk, const SectionPos& s,
-                                 const Cell& origin, const Cell* beyond, const std::array<int, kChunkArea>& tops,
-                                 LightChannel channel) {
+                                 const Cell& origin, const Cell* beyond,
+                                 const std::array<int, kChunkArea>& tops, LightChannel channel) {
   const int y0 = s.minBlockY();
   auto& levels = solver_->levels();
   ownLevels(chunk, s.section, channel, levels.data());

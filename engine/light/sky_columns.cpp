@@ -59,8 +59,8 @@ std::array<int, kChunkArea> spreadTops(const World& world, const Chunk& chunk) {
         const bool outside = nx < 0 || nx > kLastCell || nz < 0 || nz > kLastCell;
         const Chunk* c = outside ? around[k] : &chunk;
         if (c)
-          highest =
-              std::max<int>(highest, c->light().skyTop[static_cast<std::size_t>(columnIndex(localOf(nx), localOf(nz)))]);
+          highest = std::max<int>(
+              highest, c->light().skyTop[static_cast<std::size_t>(columnIndex(localOf(nx), localOf(nz)))]);
       }
       tops[static_cast<std::size_t>(columnIndex(lx, lz))] = highest;
     }

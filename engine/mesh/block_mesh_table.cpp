@@ -61,7 +61,8 @@ bool plainCube(const std::vector<ModelQuad>& quads, std::array<std::uint16_t, 6>
         r += static_cast<int>(f.up[i]) * (q.corners32[c][i] - 16);
       }
       if (std::abs(s) != 16 || std::abs(r) != 16) return false;  // not a whole side
-      if (q.uvs16[c][0] != (s > 0 ? kModelUnits : 0) || q.uvs16[c][1] != (r > 0 ? 0 : kModelUnits)) return false;
+      if (q.uvs16[c][0] != (s > 0 ? kModelUnits : 0) || q.uvs16[c][1] != (r > 0 ? 0 : kModelUnits))
+        return false;
     }
     textures[q.face] = q.texture;
   }

@@ -38,7 +38,8 @@ int coordinate(const PackedVertex& v, int axis) {
 
 // The UV the mesher gives corner c of a full face, and a merged quad w x h faces across.
 std::uint32_t cornerUv(int c, int w, int h) {
-  return PackedVertex::packUv(kCornerSigns[c][0] > 0 ? kModelUnits * w : 0, kCornerSigns[c][1] > 0 ? 0 : kModelUnits * h);
+  return PackedVertex::packUv(kCornerSigns[c][0] > 0 ? kModelUnits * w : 0,
+                              kCornerSigns[c][1] > 0 ? 0 : kModelUnits * h);
 }
 
 // A face that can merge, where it lies: its plane (face and height along the normal) and its cell in

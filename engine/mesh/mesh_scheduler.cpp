@@ -42,9 +42,9 @@ void MeshScheduler::markDirty(SectionPos section) {
 
 void MeshScheduler::markBlockChanged(const BlockPos& p) {
   const int lx = localOf(p.x), ly = localOf(p.y), lz = localOf(p.z);
-  for (int dz = lz == 0 ? -1 : 0; dz <= (lz == 15 ? 1 : 0); ++dz)
-    for (int dy = ly == 0 ? -1 : 0; dy <= (ly == 15 ? 1 : 0); ++dy)
-      for (int dx = lx == 0 ? -1 : 0; dx <= (lx == 15 ? 1 : 0); ++dx) {
+  for (int dz = lz == 0 ? -1 : 0; dz <= (lz == kLastCell ? 1 : 0); ++dz)
+    for (int dy = ly == 0 ? -1 : 0; dy <= (ly == kLastCell ? 1 : 0); ++dy)
+      for (int dx = lx == 0 ? -1 : 0; dx <= (lx == kLastCell ? 1 : 0); ++dx) {
         markDirty({chunkOf(p.x) + dx, sectionOf(p.y) + dy, chunkOf(p.z) + dz});
       }
 }

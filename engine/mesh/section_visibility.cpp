@@ -26,8 +26,9 @@ FaceLinks sectionFaceLinks(const SectionSnapshot& snapshot) {
     while (top > 0) {
       const int i = stack[static_cast<std::size_t>(--top)];
       const int x = Section::xOf(i), z = Section::zOf(i), y = Section::yOf(i);
-      faces |= on(x == 0, Direction::West) | on(x == kLastCell, Direction::East) | on(y == 0, Direction::Down) |
-               on(y == kLastCell, Direction::Up) | on(z == 0, Direction::North) | on(z == kLastCell, Direction::South);
+      faces |= on(x == 0, Direction::West) | on(x == kLastCell, Direction::East) |
+               on(y == 0, Direction::Down) | on(y == kLastCell, Direction::Up) |
+               on(z == 0, Direction::North) | on(z == kLastCell, Direction::South);
       const auto visit = [&](bool inside, int j) {
         if (inside && !seen[static_cast<std::size_t>(j)] && open(j)) {
           seen.set(static_cast<std::size_t>(j));

@@ -30,8 +30,9 @@ void applyTints(PackedVertices& vertices, const SectionSnapshot& s) {
   for (PackedVertex& v : vertices) {
     if (!tintedByBiome(static_cast<Tint>(v.tint()))) continue;
     const int x32 = v.x32(), z32 = v.z32();
-    const std::uint32_t bits = (x32 | z32) % 32 == 0 ? corners[static_cast<std::size_t>(z32 / 32 * kCorners + x32 / 32)]
-                                                     : bilinear(x32 + 16, z32 + 16);
+    const std::uint32_t bits = (x32 | z32) % 32 == 0
+                                   ? corners[static_cast<std::size_t>(z32 / 32 * kCorners + x32 / 32)]
+                                   : bilinear(x32 + 16, z32 + 16);
     v.light = (v.light & ~PackedVertex::kTintClimateBits) | bits;
   }
 }

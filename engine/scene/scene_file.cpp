@@ -173,7 +173,8 @@ void parseReflections(const nlohmann::json& value, const std::string& key, Refle
   if (const json* v = field(value, "max_steps")) r.maxSteps = static_cast<int>(wholeNumber(*v, member(key, "max_steps"), 1, 256));
   if (const json* v = field(value, "thickness")) r.thickness = numberIn(*v, member(key, "thickness"), 0.01, 16.0, false);
   if (const json* v = field(value, "resolution_scale")) {
-    r.resolutionScale = numberIn(*v, member(key, "resolution_scale"), kMinRenderScale, kMaxRenderScale, false);
+    r.resolutionScale =
+        numberIn(*v, member(key, "resolution_scale"), kMinRenderScale, kMaxRenderScale, false);
   }
   if (const json* v = field(value, "min_smoothness")) {
     r.minSmoothness = numberIn(*v, member(key, "min_smoothness"), 0.0, 1.0, false);
@@ -215,7 +216,8 @@ void parseRender(const json& render, SceneFile& scene) {
     scene.height = static_cast<int>(wholeNumber(*v, "render.height", 1, 8192));
   }
   if (const json* v = field(render, "scale")) {
-    scene.renderScale = static_cast<float>(numberIn(*v, "render.scale", kMinRenderScale, kMaxRenderScale, false));
+    scene.renderScale =
+        static_cast<float>(numberIn(*v, "render.scale", kMinRenderScale, kMaxRenderScale, false));
   }
   if (const json* v = field(render, "target_fps")) {
     scene.targetFps = static_cast<int>(wholeNumber(*v, "render.target_fps", 0, 1000));

@@ -47,7 +47,8 @@ void PlacedProps::relightNear(const std::vector<SectionPos>& sections, const Wor
     const glm::dvec3 lo = glm::floor(b.min - 1.0), hi = glm::floor(b.max + 1.0);
     const auto near = [&](const SectionPos& s) {
       const double x0 = s.x * kChunkSize, y0 = s.minBlockY(), z0 = s.z * kChunkSize, side = kChunkSize;
-      return hi.x >= x0 && lo.x < x0 + side && hi.y >= y0 && lo.y < y0 + side && hi.z >= z0 && lo.z < z0 + side;
+      return hi.x >= x0 && lo.x < x0 + side && hi.y >= y0 && lo.y < y0 + side && hi.z >= z0 &&
+             lo.z < z0 + side;
     };
     if (std::any_of(sections.begin(), sections.end(), near)) relight(i, world, light);
   }

@@ -97,7 +97,8 @@ class NibbleArray {
   static const std::uint8_t* uniformBytes(std::uint8_t level) {
     static const auto buffers = [] {
       std::array<Bytes, kLightLevels> all;
-      for (int l = 0; l < kLightLevels; ++l) all[static_cast<std::size_t>(l)].fill(static_cast<std::uint8_t>(l * 0x11));
+      for (int l = 0; l < kLightLevels; ++l)
+        all[static_cast<std::size_t>(l)].fill(static_cast<std::uint8_t>(l * 0x11));
       return all;
     }();
     return buffers[level & kLightMask].data();

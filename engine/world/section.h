@@ -20,8 +20,8 @@ class Section {
  public:
   static constexpr int kVolume = kChunkSize * kChunkSize * kChunkSize;
   static constexpr int index(int x, int y, int z) { return (y * kChunkSize + z) * kChunkSize + x; }
-  static constexpr int kYShift = 2 * kChunkShift;        // index >> kYShift: the cell's y
-  static constexpr int kColumnMask = kChunkArea - 1;     // index & kColumnMask: its column (columnIndex)
+  static constexpr int kYShift = 2 * kChunkShift;     // index >> kYShift: the cell's y
+  static constexpr int kColumnMask = kChunkArea - 1;  // index & kColumnMask: its column (columnIndex)
   // Local coordinates of an index.
   static constexpr int xOf(int index) { return index & kLastCell; }
   static constexpr int yOf(int index) { return index >> kYShift; }

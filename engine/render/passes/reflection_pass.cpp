@@ -114,7 +114,8 @@ void ReflectionPass::setUniforms(const Frame& frame) const {
 
 void ReflectionPass::execute(Frame& frame) {
   const GBuffer& gbuffer = *frame.gbuffer;
-  const float scale = std::clamp(shared_.options.reflections.resolutionScale, kMinRenderScale, kMaxRenderScale);
+  const float scale =
+      std::clamp(shared_.options.reflections.resolutionScale, kMinRenderScale, kMaxRenderScale);
   const glm::ivec2 size = glm::max(glm::ivec2(glm::round(glm::vec2(gbuffer.size()) * scale)), glm::ivec2(1));
   ensureTargets(size);
   setUniforms(frame);
