@@ -25,8 +25,8 @@ PackInfo parsePack(const json& root, const std::string& file) {
   if (!pack.is_object()) expected("pack", "an object", pack);
   PackInfo info;
   constexpr std::int64_t kMinInt = std::numeric_limits<int>::min(), kMaxInt = std::numeric_limits<int>::max();
-  info.packFormat =
-      static_cast<int>(wholeNumber(required(pack, "pack", "pack_format"), "pack.pack_format", kMinInt, kMaxInt));
+  const json& format = required(pack, "pack", "pack_format");
+  info.packFormat = static_cast<int>(wholeNumber(format, "pack.pack_format", kMinInt, kMaxInt));
   if (const json* d = field(pack, "description")) {
     // A plain string, or a JSON text component (kept as its JSON text).
     info.description = d->is_string() ? d->get<std::string>() : d->dump();

@@ -1,7 +1,7 @@
 #pragma once
-// Checked reading of JSON documents (scene files, settings, input scripts, block models): every error
-// names the key path ("render.shadow.resolution", "events[3].key") and what was expected, and the
-// caller adds the file. Throws Error.
+// Checked reading of JSON documents (scene files, settings, input scripts, block models, blocks.json,
+// level.json, pack metadata): every error names the key path ("render.shadow.resolution",
+// "events[3].key") and what was expected, and the caller adds the file. Throws Error.
 
 #include <algorithm>
 #include <cstdint>

@@ -224,12 +224,16 @@ BlockRegistry BlockRegistry::fromJson(std::string_view text, const std::string& 
     for (std::size_t i = 0; i < blocks.size(); ++i) registry.add(parseBlock(blocks[i], element("blocks", i)));
     // "wall_variant" names a block, so it is resolved once all are read.
     for (std::size_t i = 0; i < blocks.size(); ++i) {
+      BlockType& type = registry.types_[i];
+      const std::string at = join({element("blocks", i), " (", type.name, ")"});
       const json* v = field(blocks[i], "wall_variant");
+      if (!v && type.placement == PlacementRule::Torch) {
+        fail(at, "placement \"torch\" needs \"wall_variant\"");
+      }
       if (!v) continue;
-      const std::string key = join({element("blocks", i), " (", registry.types_[i].name, ").wall_variant"});
-      const auto it = registry.byName_.find(nonEmptyString(*v, key));
-      if (it == registry.byName_.end()) expected(key, "the name of a block", *v);
-      registry.types_[i].wallVariant = registry.types_[it->second].defaultState;
+      const auto it = registry.byName_.find(nonEmptyString(*v, member(at, "wall_variant")));
+      if (it == registry.byName_.end()) expected(member(at, "wall_variant"), "the name of a block", *v);
+      type.wallVariant = registry.types_[it->second].defaultState;
     }
     return registry;
   } catch (const Error& e) {

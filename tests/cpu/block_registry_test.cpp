@@ -110,6 +110,8 @@ TEST(BlockRegistry, UnknownKeysAndRulesAreNamedWithTheirKeyPath) {
             "\"open=yes\"");
   EXPECT_EQ(errorOf(with(R"({"name":"x","textures":{"all":"x"},"wall_variant":"nothing"})")),
             "test/blocks.json: blocks[1] (x).wall_variant: expected the name of a block, got \"nothing\"");
+  EXPECT_EQ(errorOf(with(R"({"name":"x","textures":{"all":"x"},"placement":"torch"})")),
+            "test/blocks.json: blocks[1] (x): placement \"torch\" needs \"wall_variant\"");
   EXPECT_EQ(errorOf(with(R"({"name":"x","layer":"none","textures":{"all":"x"}})")),
             "test/blocks.json: blocks[1] (x).layer: expected one of \"opaque\", \"cutout\", \"translucent\", got "
             "\"none\"");
@@ -126,6 +128,16 @@ TEST(BlockRegistry, UnknownKeysAndRulesAreNamedWithTheirKeyPath) {
   EXPECT_EQ(b("oak_fence_gate").passableWhen->property, "open");
   EXPECT_EQ(b("oak_fence_gate").passableWhen->value, "true");
   EXPECT_FALSE(b("oak_fence").passableWhen);
+}
+
+// One table per enum: a value's name, a name's value, and the valid names when a name is unknown.
+TEST(EnumNames, NameFindAndParseWithTheValidNames) {
+  EXPECT_EQ(kConnects.nameOf(Connects::Gate), "gate");
+  EXPECT_EQ(kConnects.find("pane"), Connects::Pane);
+  EXPECT_FALSE(kConnects.find("fences"));
+  EXPECT_FALSE(kConnects.find("")) << "None has no name: the key absent means none";
+  EXPECT_EQ(testing::errorOf([] { kConnects.parse("fences", "connects"); }),
+            "connects: unknown \"fences\"; expected one of \"fence\", \"pane\", \"wall\", \"gate\"");
 }
 
 // Blocks with properties: one state per combination, numbered after the states before them, the last
