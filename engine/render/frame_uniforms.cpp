@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <glm/gtc/type_ptr.hpp>
 
+#include "core/luma.h"
 #include "render/gl/uniforms.h"
 #include "render/gl_slots.h"
 #include "render/shadow_map.h"
@@ -15,7 +16,7 @@ namespace {
 
 // Sky light's colour: the zenith's hue at a fixed brightness (the lightmap carries the brightness).
 glm::vec3 ambientTint(glm::vec3 zenith) {
-  const float luminance = glm::dot(zenith, glm::vec3(0.2126f, 0.7152f, 0.0722f));
+  const float luminance = luma(zenith);
   const glm::vec3 hue = luminance > 1e-5f ? zenith / luminance : glm::vec3(1.0f);
   return glm::mix(glm::vec3(1.0f), glm::clamp(hue, 0.0f, 4.0f), 0.4f);
 }
