@@ -64,8 +64,8 @@ BlockIcons::BlockIcons(const ShaderPreprocessor& shaders, const Atlas& atlas, co
     mesh.pos = {static_cast<int>(i), 0, 0};
     uploaded.upload(mesh);
   }
-  const LinkedProgram program =
-      linkProgram(shaders, {{GL_VERTEX_SHADER, "icon.vert"}, {GL_FRAGMENT_SHADER, "icon.frag"}}, rendererDefines());
+  const LinkedProgram program = linkProgram(
+      shaders, {{GL_VERTEX_SHADER, "icon.vert"}, {GL_FRAGMENT_SHADER, "icon.frag"}}, rendererDefines());
   const gl::Uniform<glm::mat4> transformOf(program, "u_transform");
   const gl::Uniform<bool> cutout(program, "u_cutout");
   glUseProgram(program.id());

@@ -19,7 +19,8 @@ glm::vec3 ambientTintOf(glm::vec3 zenith) {
 
 }  // namespace
 
-WarpUniforms::WarpUniforms(const LinkedProgram& p) : warp(p, "u_shadowWarp"), strength(p, "u_shadowWarpStrength") {}
+WarpUniforms::WarpUniforms(const LinkedProgram& p)
+    : warp(p, "u_shadowWarp"), strength(p, "u_shadowWarpStrength") {}
 
 void WarpUniforms::set(const ShadowSettings& settings) const {
   const bool warped = settings.mode == ShadowMode::Warped;

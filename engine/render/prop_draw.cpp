@@ -39,8 +39,8 @@ bool anyBlended(const Props& props, const std::vector<int>& instances) {
   return false;
 }
 
-void drawProps(GLuint program, const PropUniforms& u, const Props& props, const std::vector<int>& instances, glm::dvec3 camera,
-               AlphaMode mode, bool cullBackFaces) {
+void drawProps(GLuint program, const PropUniforms& u, const Props& props, const std::vector<int>& instances,
+               glm::dvec3 camera, AlphaMode mode, bool cullBackFaces) {
   std::vector<int> order = instances;
   if (mode == AlphaMode::Blend) {  // farthest first, by the centre of their box
     auto distance = [&](int i) {

@@ -31,7 +31,7 @@ std::vector<int> propsInside(const FrustumPlanes& planes, glm::dvec3 camera, con
 // Whether a mesh of `instances` has a blended material (the translucent pass draws those).
 bool anyBlended(const Props& props, const std::vector<int>& instances);
 // The meshes of `instances` whose material has alpha mode `mode` (blended ones farthest first).
-void drawProps(GLuint program, const PropUniforms& u, const Props& props, const std::vector<int>& instances, glm::dvec3 camera,
-               AlphaMode mode, bool cullBackFaces);
+void drawProps(GLuint program, const PropUniforms& u, const Props& props, const std::vector<int>& instances,
+               glm::dvec3 camera, AlphaMode mode, bool cullBackFaces);
 
 }  // namespace terrasol

@@ -97,7 +97,7 @@ std::vector<ShaderDefine> debugViewDefines() {
   std::vector<ShaderDefine> defines;
   for (std::size_t i = 0; i < kDebugViews.size(); ++i) {
     std::string name = "DEBUG_VIEW_";
-    for (const char c : kDebugViews[i]) name += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    for (const unsigned char c : kDebugViews[i]) name += static_cast<char>(std::toupper(c));
     defines.push_back({name, std::to_string(i)});
   }
   return defines;
@@ -143,8 +143,9 @@ std::vector<ShaderDefine> rendererDefines() {
   for (auto& d : vertexDefines()) defines.push_back(std::move(d));
   for (auto& d : debugViewDefines()) defines.push_back(std::move(d));
   defines.push_back({"SKY_RADIANCE", floatLiteral(kSkyRadiance)});
-  defines.push_back({"LUMA_WEIGHTS", "vec3(" + floatLiteral(kLumaWeights.r) + ", " + floatLiteral(kLumaWeights.g) +
-                                         ", " + floatLiteral(kLumaWeights.b) + ")"});
+  const glm::vec3 w = kLumaWeights;
+  defines.push_back(
+      {"LUMA_WEIGHTS", "vec3(" + floatLiteral(w.r) + ", " + floatLiteral(w.g) + ", " + floatLiteral(w.b) + ")"});
   return defines;
 }
 

@@ -10,8 +10,8 @@ GeometryPass::GeometryPass(const VariantBuilder& build, PassShared& shared)
   if (!needs.any) return;
   propOpaque_ = gl::ProgramWith<Prop>(build("prop.vert", "prop.frag", shared.contents.defines()));
   if (needs.mask) {
-    propCutout_ =
-        gl::ProgramWith<Prop>(build("prop.vert", "prop.frag", with({{"CUTOUT", "1"}}, shared.contents.defines())));
+    const auto defines = with({{"CUTOUT", "1"}}, shared.contents.defines());
+    propCutout_ = gl::ProgramWith<Prop>(build("prop.vert", "prop.frag", defines));
   }
 }
 
@@ -41,18 +41,18 @@ void GeometryPass::execute(Frame& frame) {
   }
   const SectionDraw how{DrawOrder::NearestFirst, glm::vec3(0.0f), shared_.options.cullFacesAway,
                         &frame.stats};
-  drawSections(opaque_.id(), opaque_.u.section, shared_.textures, frame.visible, frame.meshes, MeshLayer::Opaque,
-               how);
-  drawSections(cutout_.id(), cutout_.u.section, shared_.textures, frame.visible, frame.meshes, MeshLayer::Cutout,
-               how);
+  drawSections(opaque_.id(), opaque_.u.section, shared_.textures, frame.visible, frame.meshes,
+               MeshLayer::Opaque, how);
+  drawSections(cutout_.id(), cutout_.u.section, shared_.textures, frame.visible, frame.meshes,
+               MeshLayer::Cutout, how);
   if (!frame.props) return;
   propOpaque_.u.viewProjection.set(view.viewProjection);
-  drawProps(propOpaque_.id(), propOpaque_.u.prop, *frame.props, frame.visibleProps, view.camera, AlphaMode::Opaque,
-            true);
+  drawProps(propOpaque_.id(), propOpaque_.u.prop, *frame.props, frame.visibleProps, view.camera,
+            AlphaMode::Opaque, true);
   if (propCutout_) {
     propCutout_.u.viewProjection.set(view.viewProjection);
-    drawProps(propCutout_.id(), propCutout_.u.prop, *frame.props, frame.visibleProps, view.camera, AlphaMode::Mask,
-              true);
+    drawProps(propCutout_.id(), propCutout_.u.prop, *frame.props, frame.visibleProps, view.camera,
+              AlphaMode::Mask, true);
   }
 }
 

@@ -48,7 +48,10 @@ class DebugViewPass final : public RenderPass {
   struct Debug {
     Debug() = default;
     explicit Debug(const LinkedProgram& p)
-        : view(p, "u_view"), reflected(p, "u_reflected"), surfaceMarched(p, "u_surfaceMarched"), nearFar(p, "u_nearFar") {}
+        : view(p, "u_view"),
+          reflected(p, "u_reflected"),
+          surfaceMarched(p, "u_surfaceMarched"),
+          nearFar(p, "u_nearFar") {}
     gl::Uniform<int> view;
     gl::Uniform<bool> reflected, surfaceMarched;
     gl::Uniform<glm::vec2> nearFar;
@@ -69,7 +72,10 @@ class OutlinePass final : public RenderPass {
   struct Outline {
     Outline() = default;
     explicit Outline(const LinkedProgram& p)
-        : depthScale(p, "u_depthScale"), min(p, "u_min"), max(p, "u_max"), viewProjection(p, "u_viewProjection") {}
+        : depthScale(p, "u_depthScale"),
+          min(p, "u_min"),
+          max(p, "u_max"),
+          viewProjection(p, "u_viewProjection") {}
     gl::Uniform<glm::vec2> depthScale;
     gl::Uniform<glm::vec3> min, max;
     gl::Uniform<glm::mat4> viewProjection;

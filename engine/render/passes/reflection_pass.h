@@ -61,7 +61,8 @@ class ReflectionPass final : public RenderPass {
   };
   struct Composite {
     Composite() = default;
-    explicit Composite(const LinkedProgram& p) : minSmoothness(p, "u_minSmoothness"), nearFar(p, "u_nearFar") {}
+    explicit Composite(const LinkedProgram& p)
+        : minSmoothness(p, "u_minSmoothness"), nearFar(p, "u_nearFar") {}
     gl::Uniform<float> minSmoothness;
     gl::Uniform<glm::vec2> nearFar;
   };

@@ -18,7 +18,9 @@ ShadowPass::ShadowPass(const VariantBuilder& build, PassShared& shared)
   if (!needs.any) return;
   propOpaque_ = PropProgram(build("prop_shadow.vert", "prop_shadow.frag"));
   if (needs.mask) propCutout_ = PropProgram(build("prop_shadow.vert", "prop_shadow.frag", {{"CUTOUT", "1"}}));
-  if (needs.blend) propTranslucent_ = PropProgram(build("prop_shadow.vert", "prop_shadow.frag", {{"TRANSLUCENT", "1"}}));
+  if (needs.blend) {
+    propTranslucent_ = PropProgram(build("prop_shadow.vert", "prop_shadow.frag", {{"TRANSLUCENT", "1"}}));
+  }
 }
 
 void ShadowPass::setup(FrameGraph::Builder& builder, Frame& frame) {
@@ -149,8 +151,9 @@ void ShadowPass::drawCasters(ShadowMap& map, const ShadowKey& key, const std::op
     }
     // Nearest the light first: the depth test then rejects what lies behind before it is shaded.
     const SectionDraw how{DrawOrder::NearestFirst, fromLight, false, nullptr, SectionMeshes::View::Light};
-    drawSections(opaque_.id(), opaque_.u.section, shared_.textures, casters, frame.meshes, MeshLayer::Opaque, how);
-    drawSections(cutout_.id(), cutout_.u.section, shared_.textures, casters, frame.meshes, MeshLayer::Cutout, how);
+    const BlockTextures& textures = shared_.textures;
+    drawSections(opaque_.id(), opaque_.u.section, textures, casters, frame.meshes, MeshLayer::Opaque, how);
+    drawSections(cutout_.id(), cutout_.u.section, textures, casters, frame.meshes, MeshLayer::Cutout, how);
     // Props cast in the first slice of a spread rebuild (they are few).
     std::vector<int> propCasters;
     if (frame.props && propOpaque_ && slices.first == 0) {
@@ -160,18 +163,19 @@ void ShadowPass::drawCasters(ShadowMap& map, const ShadowKey& key, const std::op
         u->shadowMatrix.set(light.matrix);  // nothing where the variant was not built
         u->warp.set(settings);
       }
-      drawProps(propOpaque_.id(), propOpaque_.u.prop, *frame.props, propCasters, camera, AlphaMode::Opaque, false);
+      const Props& props = *frame.props;
+      drawProps(propOpaque_.id(), propOpaque_.u.prop, props, propCasters, camera, AlphaMode::Opaque, false);
       if (propCutout_) {
-        drawProps(propCutout_.id(), propCutout_.u.prop, *frame.props, propCasters, camera, AlphaMode::Mask, false);
+        drawProps(propCutout_.id(), propCutout_.u.prop, props, propCasters, camera, AlphaMode::Mask, false);
       }
     }
     // Translucent casters into their own depth and colour: the nearest one filters the light.
     glBindFramebuffer(GL_FRAMEBUFFER, translucent);
-    drawSections(translucent_.id(), translucent_.u.section, shared_.textures, casters, frame.meshes,
+    drawSections(translucent_.id(), translucent_.u.section, textures, casters, frame.meshes,
                  MeshLayer::Translucent, how);
     if (propTranslucent_ && !propCasters.empty()) {
-      drawProps(propTranslucent_.id(), propTranslucent_.u.prop, *frame.props, propCasters, camera, AlphaMode::Blend,
-                false);
+      drawProps(propTranslucent_.id(), propTranslucent_.u.prop, *frame.props, propCasters, camera,
+                AlphaMode::Blend, false);
     }
   }
   glDisable(GL_DEPTH_CLAMP);

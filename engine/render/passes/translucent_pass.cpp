@@ -11,8 +11,8 @@ TranslucentPass::TranslucentPass(const VariantBuilder& build, PassShared& shared
                     with(with(lightingDefines(shared.options), shared.contents.defines()),
                          surfaceDefines(shared.options)))) {
   if (!shared.options.props.blend) return;
-  props_ = gl::ProgramWith<Prop>(
-      build("prop.vert", "prop_translucent.frag", with(lightingDefines(shared.options), shared.contents.defines())));
+  const auto defines = with(lightingDefines(shared.options), shared.contents.defines());
+  props_ = gl::ProgramWith<Prop>(build("prop.vert", "prop_translucent.frag", defines));
 }
 
 void TranslucentPass::setup(FrameGraph::Builder& builder, Frame& frame) {
@@ -48,7 +48,8 @@ void TranslucentPass::execute(Frame& frame) {
     glCullFace(GL_BACK);
     props_.u.lit.set(view, frame.shadow);
     props_.u.viewProjection.set(view.viewProjection);
-    drawProps(props_.id(), props_.u.prop, *frame.props, frame.visibleProps, view.camera, AlphaMode::Blend, true);
+    drawProps(props_.id(), props_.u.prop, *frame.props, frame.visibleProps, view.camera, AlphaMode::Blend,
+              true);
   }
   glDisable(GL_BLEND);
   glCullFace(GL_BACK);
