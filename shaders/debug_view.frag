@@ -19,7 +19,7 @@ layout(binding = UNIT_SURFACE_REFLECTION_HITS) uniform sampler2D u_surfaceHits;
 uniform bool u_reflected;       // the reflection pass marched from opaque surfaces this frame
 uniform bool u_surfaceMarched;  // ... and from water and glass (else those views are black)
 
-uniform int u_view;         // index in kDebugViews (core/render_settings.h), 1..
+uniform int u_view;         // DebugView (core/render_settings.h): DEBUG_VIEW_ALBEDO, ...
 
 layout(location = OUT_COLOR) out vec4 o_color;
 
@@ -36,22 +36,22 @@ void main() {
 #endif
   vec4 light = texelFetch(g_light, p, 0);
   vec3 c = vec3(0.0);
-  if (u_view == 1) c = linearToSrgb(albedo.rgb);
-  else if (u_view == 2) c = octDecode(normals.xy) * 0.5 + 0.5;
+  if (u_view == DEBUG_VIEW_ALBEDO) c = linearToSrgb(albedo.rgb);
+  else if (u_view == DEBUG_VIEW_NORMAL) c = octDecode(normals.xy) * 0.5 + 0.5;
 #ifdef NO_NORMAL_MAPS
-  else if (u_view == 3) c = octDecode(normals.xy) * 0.5 + 0.5;  // RG16F: the vertex normal only
+  else if (u_view == DEBUG_VIEW_VERTEX_NORMAL) c = octDecode(normals.xy) * 0.5 + 0.5;  // RG16F: vertex's only
 #else
-  else if (u_view == 3) c = octDecode(normals.zw) * 0.5 + 0.5;
+  else if (u_view == DEBUG_VIEW_VERTEX_NORMAL) c = octDecode(normals.zw) * 0.5 + 0.5;
 #endif
-  else if (u_view == 4) c = spec.rgb;
-  else if (u_view == 5) c = vec3(light.x, light.y, 0.0);
-  else if (u_view == 6) {
+  else if (u_view == DEBUG_VIEW_SPECULAR) c = spec.rgb;
+  else if (u_view == DEBUG_VIEW_LIGHTMAP) c = vec3(light.x, light.y, 0.0);
+  else if (u_view == DEBUG_VIEW_DEPTH) {
     // Linear depth, log-scaled so near and far both show.
     float linear = viewDepth(depth);
     c = vec3(log2(max(linear, u_nearFar.x) / u_nearFar.x) / log2(u_nearFar.y / u_nearFar.x));
-  } else if (u_view == 7) c = vec3(light.z, albedo.a, 0.0);
-  else if (u_view == 8) c = vec3(labpbrMaterial(spec, albedo.rgb).emission);
-  else if (u_view >= 9) {
+  } else if (u_view == DEBUG_VIEW_AO) c = vec3(light.z, albedo.a, 0.0);
+  else if (u_view == DEBUG_VIEW_EMISSION) c = vec3(labpbrMaterial(spec, albedo.rgb).emission);
+  else if (u_view >= DEBUG_VIEW_REFLECTION_HITS) {
     // Hits white, rays that found nothing blue, pixels not marched black; or what the pass added to
     // opaque surfaces and, over them, the light water and glass reflect (before Fresnel).
     vec2 uv = gl_FragCoord.xy / vec2(textureSize(g_depth, 0));
@@ -63,9 +63,12 @@ void main() {
       reflected = texture(u_surfaceReflection, uv).rgb;
       depth = 0.0;  // shown over the sky too
     }
-    if (u_view == 9) c = hit.z > 0.5 ? vec3(1.0) : hit.z > -0.5 ? vec3(0.1, 0.2, 0.8) : vec3(0.0);
-    else c = linearToSrgb(clamp(reflected * 0.5, 0.0, 1.0));
+    if (u_view == DEBUG_VIEW_REFLECTION_HITS) {
+      c = hit.z > 0.5 ? vec3(1.0) : hit.z > -0.5 ? vec3(0.1, 0.2, 0.8) : vec3(0.0);
+    } else {
+      c = linearToSrgb(clamp(reflected * 0.5, 0.0, 1.0));
+    }
   }
-  if (depth >= 1.0 && u_view != 6) c = vec3(0.0);
+  if (depth >= 1.0 && u_view != DEBUG_VIEW_DEPTH) c = vec3(0.0);
   o_color = vec4(c, 1.0);
 }

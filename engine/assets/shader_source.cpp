@@ -97,6 +97,20 @@ struct Expander {
 
 }  // namespace
 
+std::vector<std::string> declaredUniforms(std::string_view source) {
+  static const std::regex comment(R"(//[^\n]*|/\*[\s\S]*?\*/)");
+  // "uniform <type> a, b[N];": the names between the type and the semicolon.
+  static const std::regex declaration(R"(\buniform\s+(?:(?:lowp|mediump|highp)\s+)?\w+\s+([^;{]*);)");
+  static const std::regex name(R"((\w+)\s*(?:\[[^\]]*\])?\s*(?:,|$))");
+  const std::string code = std::regex_replace(std::string(source), comment, " ");
+  std::vector<std::string> names;
+  for (std::sregex_iterator d(code.begin(), code.end(), declaration), end; d != end; ++d) {
+    const std::string list = (*d)[1];
+    for (std::sregex_iterator n(list.begin(), list.end(), name); n != end; ++n) names.push_back((*n)[1]);
+  }
+  return names;
+}
+
 SourceLocation PreprocessedShader::origin(int line) const {
   if (line < 1 || line > static_cast<int>(lines.size())) return {"<unknown>", line};
   return lines[static_cast<std::size_t>(line) - 1];

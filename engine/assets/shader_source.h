@@ -33,6 +33,10 @@ struct PreprocessedShader {
   std::string mapLog(std::string_view log) const;
 };
 
+// The names `source` declares as plain uniforms (not blocks), in order, comments ignored. Text inside
+// #if blocks counts: a declaration is there whether or not a variant's defines keep it.
+std::vector<std::string> declaredUniforms(std::string_view source);
+
 class ShaderPreprocessor {
  public:
   // Returns a file's text by its root-relative path, or nothing when it does not exist.

@@ -27,6 +27,10 @@ static_assert(kNoon == 6000 && kSunset == 12000 && kMidnight == 18000);
 // skyBrightness at night; by day it is 1. Vanilla's sky light never drops below this either.
 inline constexpr float kNightSkyBrightness = 0.2f;
 
+// The sky gradient's radiance scale against the sun's ~3 (lightColor): the sky shader's and the fog
+// under water's.
+inline constexpr float kSkyRadiance = 3.0f;
+
 struct DayState {
   double dayFraction;       // 0..1, ticks mod kTicksPerDay / kTicksPerDay
   glm::vec3 toSun, toMoon;  // unit vectors towards them (world space, y up)

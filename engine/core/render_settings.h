@@ -28,6 +28,7 @@ inline constexpr EnumNames<SpecularModel, 2> kSpecularModels{{"blinn_phong", "gg
 
 // What the debug views show, in this order ("none" = the lit image): G-buffer channels, then the
 // reflection pass's hit mask and what it added (black when the pass did not run).
+// debug_view.frag gets each value as DEBUG_VIEW_<NAME> (render/shader_defines.cpp).
 enum class DebugView {
   None, Albedo, Normal, VertexNormal, Specular, Lightmap, Depth, Ao, Emission, ReflectionHits, Reflection
 };

@@ -20,6 +20,15 @@ namespace terrasol {
 enum class QuadRole : std::uint8_t { Both = 0, Faces = 1, Merged = 2 };  // Faces: light's view only
 inline constexpr int kQuadRoles = 3;
 
+// One field of a packed 32-bit word: `bits` wide, starting at bit `shift`.
+struct BitField {
+  int shift;
+  int bits;
+  constexpr std::uint32_t mask() const { return (1u << bits) - 1u; }  // before shifting
+  constexpr std::uint32_t pack(int value) const { return static_cast<std::uint32_t>(value) << shift; }
+  constexpr int get(std::uint32_t word) const { return static_cast<int>((word >> shift) & mask()); }
+};
+
 // One vertex in 16 bytes:
 //   position: x | y << 10 | z << 20, in 1/32 block from the section's minimum corner (0..512 each)
 //   material: texture id (16 bits) | face (4 bits) << 16 | Tint (3 bits) << 20 | QuadRole (2 bits) << 23
@@ -32,44 +41,54 @@ inline constexpr int kQuadRoles = 3;
 //             between column centres; 0 on untinted vertices
 //   uv:       u | v << 9, in 1/16 of the texture (0..256: merged faces repeat it, mesh/face_merge.h),
 //             v = 0 at the texture's top row
+// The fields and scales below are the layout's only statement: lib/block_vertex.glsl reads them as
+// injected #defines (render/shader_defines.cpp), and a GL test unpacks packed vertices in GLSL.
 struct PackedVertex {
   std::uint32_t position;
   std::uint32_t material;
   std::uint32_t light;
   std::uint32_t uv;
 
+  static constexpr BitField kX{0, 10}, kY{10, 10}, kZ{20, 10};                          // position
+  static constexpr BitField kTexture{0, 16}, kFace{16, 4}, kTint{20, 3}, kRole{23, 2};  // material
+  static constexpr BitField kBlockLight{0, 6}, kSkyLight{6, 6}, kAo{12, 2};             // light
+  static constexpr BitField kTemperature{14, 8}, kDownfall{22, 8};                      // light
+  static constexpr BitField kU{0, 9}, kV{9, 9};                                         // uv
+  static constexpr int kPositionSteps = 32;  // per block
+  static constexpr int kUvSteps = 16;        // per texture
+  static constexpr int kCellLight = 15;      // the brightest level one cell adds to a light sum
+
   static constexpr std::uint32_t packPosition(int x32, int y32, int z32) {
-    return static_cast<std::uint32_t>(x32) | static_cast<std::uint32_t>(y32) << 10 |
-           static_cast<std::uint32_t>(z32) << 20;
+    return kX.pack(x32) | kY.pack(y32) | kZ.pack(z32);
   }
   static constexpr std::uint32_t packMaterial(int texture, int face, int tint) {
-    return static_cast<std::uint32_t>(texture) | static_cast<std::uint32_t>(face) << 16 |
-           static_cast<std::uint32_t>(tint) << 20;
+    return kTexture.pack(texture) | kFace.pack(face) | kTint.pack(tint);
   }
   static constexpr std::uint32_t packTintClimate(int temperature, int downfall) {
-    return static_cast<std::uint32_t>(temperature) << 14 | static_cast<std::uint32_t>(downfall) << 22;
+    return kTemperature.pack(temperature) | kDownfall.pack(downfall);
   }
-  static constexpr std::uint32_t kTintClimateBits = 0xFFFFu << 14;
-  static constexpr std::uint32_t packUv(int u, int v) {
-    return static_cast<std::uint32_t>(u) | static_cast<std::uint32_t>(v) << 9;
+  static constexpr std::uint32_t kTintClimateBits = kTemperature.mask() << kTemperature.shift |
+                                                    kDownfall.mask() << kDownfall.shift;
+  static constexpr std::uint32_t packUv(int u, int v) { return kU.pack(u) | kV.pack(v); }
+  int x32() const { return kX.get(position); }
+  int y32() const { return kY.get(position); }
+  int z32() const { return kZ.get(position); }
+  int texture() const { return kTexture.get(material); }
+  int face() const { return kFace.get(material); }
+  int tint() const { return kTint.get(material); }
+  QuadRole role() const { return static_cast<QuadRole>(kRole.get(material)); }
+  void setRole(QuadRole r) {
+    material = (material & ~(kRole.mask() << kRole.shift)) | kRole.pack(static_cast<int>(r));
   }
-  int x32() const { return static_cast<int>(position & 1023); }
-  int y32() const { return static_cast<int>((position >> 10) & 1023); }
-  int z32() const { return static_cast<int>((position >> 20) & 1023); }
-  int texture() const { return static_cast<int>(material & 0xFFFF); }
-  int face() const { return static_cast<int>((material >> 16) & 15); }
-  int tint() const { return static_cast<int>((material >> 20) & 7); }
-  QuadRole role() const { return static_cast<QuadRole>((material >> 23) & 3); }
-  void setRole(QuadRole r) { material = (material & ~(3u << 23)) | static_cast<std::uint32_t>(r) << 23; }
-  int ao() const { return static_cast<int>((light >> 12) & 3); }
-  int tintTemperature() const { return static_cast<int>((light >> 14) & 255); }
-  int tintDownfall() const { return static_cast<int>((light >> 22) & 255); }
+  int ao() const { return kAo.get(light); }
+  int tintTemperature() const { return kTemperature.get(light); }
+  int tintDownfall() const { return kDownfall.get(light); }
   int cellsLit() const { return ao() + 1; }  // how many cells the light sums add up
   // The averages x4, rounded: 0..60.
-  int blockLight4() const { return (static_cast<int>(light & 63) * 4 + cellsLit() / 2) / cellsLit(); }
-  int skyLight4() const { return (static_cast<int>((light >> 6) & 63) * 4 + cellsLit() / 2) / cellsLit(); }
-  int u() const { return static_cast<int>(uv & 511); }
-  int v() const { return static_cast<int>((uv >> 9) & 511); }
+  int blockLight4() const { return (kBlockLight.get(light) * 4 + cellsLit() / 2) / cellsLit(); }
+  int skyLight4() const { return (kSkyLight.get(light) * 4 + cellsLit() / 2) / cellsLit(); }
+  int u() const { return kU.get(uv); }
+  int v() const { return kV.get(uv); }
   friend bool operator==(const PackedVertex&, const PackedVertex&) = default;
 };
 static_assert(sizeof(PackedVertex) == 16, "the G-buffer pass expects 16-byte vertices");

@@ -4,12 +4,12 @@
 #include <cmath>
 
 #include <glm/gtc/matrix_transform.hpp>
-#include <glm/gtc/type_ptr.hpp>
 
 #include "core/error.h"
 #include "render/block_textures.h"
 #include "render/gl/program.h"
 #include "render/gl/render_target.h"
+#include "render/gl/uniforms.h"
 #include "render/section_meshes.h"
 #include "render/shader_defines.h"
 
@@ -64,12 +64,12 @@ BlockIcons::BlockIcons(const ShaderPreprocessor& shaders, const Atlas& atlas, co
     mesh.pos = {static_cast<int>(i), 0, 0};
     uploaded.upload(mesh);
   }
-  const gl::Program program =
-      buildProgram(shaders, {{GL_VERTEX_SHADER, "icon.vert"}, {GL_FRAGMENT_SHADER, "icon.frag"}}, rendererDefines());
+  const LinkedProgram program = linkProgram(
+      shaders, {{GL_VERTEX_SHADER, "icon.vert"}, {GL_FRAGMENT_SHADER, "icon.frag"}}, rendererDefines());
+  const gl::Uniform<glm::mat4> transformOf(program, "u_transform");
+  const gl::Uniform<bool> cutout(program, "u_cutout");
   glUseProgram(program.id());
-  textures.bind(program.id());
-  const GLint transformAt = glGetUniformLocation(program.id(), "u_transform");
-  const GLint cutoutAt = glGetUniformLocation(program.id(), "u_cutout");
+  textures.bind(AtlasUniforms(program));
 
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.id());
   glViewport(0, 0, size_.x, size_.y);
@@ -88,11 +88,11 @@ BlockIcons::BlockIcons(const ShaderPreprocessor& shaders, const Atlas& atlas, co
     // GL's rows run bottom up: cell row r from the top starts at size - (r + 1) * cell.
     glViewport(i % columns_ * cell_, size_.y - (i / columns_ + 1) * cell_, cell_, cell_);
     const glm::mat4 transform = iconTransform(meshes[static_cast<std::size_t>(i)]);
-    glProgramUniformMatrix4fv(program.id(), transformAt, 1, GL_FALSE, glm::value_ptr(transform));
+    transformOf.set(transform);
     for (const MeshLayer layer : {MeshLayer::Opaque, MeshLayer::Cutout, MeshLayer::Translucent}) {
       const SectionMeshes::Layer& l = section.layers[static_cast<std::size_t>(layer)];
       if (l.quads == 0) continue;
-      glProgramUniform1i(program.id(), cutoutAt, layer == MeshLayer::Cutout ? 1 : 0);
+      cutout.set(layer == MeshLayer::Cutout);
       uploaded.bindLayer(l);
       for (int g = 0; g < SectionMeshes::kFaceGroups; ++g) {
         const auto [first, end] = l.range(g, SectionMeshes::View::Camera);

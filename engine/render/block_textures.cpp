@@ -2,7 +2,6 @@
 
 #include <cmath>
 
-#include <glm/gtc/type_ptr.hpp>
 
 #include "render/gl_slots.h"
 
@@ -47,15 +46,15 @@ void BlockTextures::update(std::int64_t ticks) {
   }
 }
 
-void BlockTextures::bind(GLuint program) const {
+void BlockTextures::bind(const AtlasUniforms& uniforms) const {
   glBindTextureUnit(slots::kUnitAtlasAlbedo, textures_.albedo());
   glBindTextureUnit(slots::kUnitAtlasNormal, textures_.normal());
   glBindTextureUnit(slots::kUnitAtlasSpecular, textures_.specular());
   glBindTextureUnit(slots::kUnitGrassColormap, grassColormap_.id());
   glBindTextureUnit(slots::kUnitFoliageColormap, foliageColormap_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, slots::kStorageTiles, tiles_.id());
-  glProgramUniform3iv(program, glGetUniformLocation(program, "u_atlasGrid"), 1, glm::value_ptr(grid_));
-  glProgramUniform2fv(program, glGetUniformLocation(program, "u_atlasSize"), 1, glm::value_ptr(size_));
+  uniforms.grid.set(grid_);
+  uniforms.size.set(size_);
 }
 
 }  // namespace terrasol

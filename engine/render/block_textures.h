@@ -13,8 +13,18 @@
 #include "assets/atlas.h"
 #include "assets/tints.h"
 #include "render/atlas_textures.h"
+#include "render/gl/uniforms.h"
 
 namespace terrasol {
+
+// The atlas grid of a program that samples the atlas (lib/atlas_uv.glsl).
+struct AtlasUniforms {
+  AtlasUniforms() = default;
+  explicit AtlasUniforms(const LinkedProgram& p) : grid(p, "u_atlasGrid"), size(p, "u_atlasSize") {}
+
+  gl::Uniform<glm::ivec3> grid;
+  gl::Uniform<glm::vec2> size;
+};
 
 class BlockTextures {
  public:
@@ -22,8 +32,8 @@ class BlockTextures {
 
   // Points every animated texture at its frame for world time `ticks`.
   void update(std::int64_t ticks);
-  // Binds the atlases, the colormaps and the tile buffer, and sets the atlas uniforms of `program`.
-  void bind(GLuint program) const;
+  // Binds the atlases, the colormaps and the tile buffer, and sets a program's atlas uniforms.
+  void bind(const AtlasUniforms& uniforms) const;
   const AtlasTextures& atlas() const { return textures_; }
   glm::vec3 waterTint() const { return waterTint_; }  // linear, at the plains' temperature
 

@@ -6,6 +6,7 @@
 #include <glm/gtc/matrix_inverse.hpp>
 
 #include "core/camera.h"
+#include "core/luma.h"
 #include "core/render_scale.h"
 #include "render/cave_culling.h"
 #include "render/frame_graph.h"
@@ -98,13 +99,12 @@ FrameView DeferredRenderer::viewFor(const FrameInputs& inputs, glm::ivec2 size) 
   view.lightmap = lightmapColours(view.day, inputs.ticks);
   if (inputs.underWater) {
     // The depths take the water's colour lit by the sky: its tint times the zenith's brightness
-    // (radiance 3, lib/sky.glsl) scattered back at a quarter, dimmed by the sky light at the camera
-    // squared.
+    // (lib/sky.glsl) scattered back at a quarter, dimmed by the sky light at the camera squared.
     const float skyLight = std::clamp(inputs.underWater->skyLight, 0.0f, 1.0f);
-    const float zenith = glm::dot(view.day.skyZenith, glm::vec3(0.2126f, 0.7152f, 0.0722f));
+    const float zenith = luma(view.day.skyZenith);
     view.underWater = true;
     view.waterTop = static_cast<float>(std::max(inputs.underWater->surfaceY - inputs.cameraPosition.y, 0.0));
-    view.waterFog = shared_.textures.waterTint() * (0.75f * zenith * skyLight * skyLight);
+    view.waterFog = shared_.textures.waterTint() * (kSkyRadiance * 0.25f * zenith * skyLight * skyLight);
   }
   // Below 0.1 % of its strength the light can show nothing (it is 0 at and under the horizon).
   view.lightUp = shared_.options.shadow.enabled && view.day.directStrength > 1e-3f;

@@ -1,99 +1,139 @@
 #include "render/frame_uniforms.h"
 
 #include <algorithm>
-#include <glm/gtc/type_ptr.hpp>
 
-#include "render/gl/uniforms.h"
+#include "core/luma.h"
 #include "render/gl_slots.h"
 #include "render/shadow_map.h"
 
 namespace terrasol {
 
-using gl::setVec3;
-
 namespace {
 
 // Sky light's colour: the zenith's hue at a fixed brightness (the lightmap carries the brightness).
-glm::vec3 ambientTint(glm::vec3 zenith) {
-  const float luminance = glm::dot(zenith, glm::vec3(0.2126f, 0.7152f, 0.0722f));
+glm::vec3 ambientTintOf(glm::vec3 zenith) {
+  const float luminance = luma(zenith);
   const glm::vec3 hue = luminance > 1e-5f ? zenith / luminance : glm::vec3(1.0f);
   return glm::mix(glm::vec3(1.0f), glm::clamp(hue, 0.0f, 4.0f), 0.4f);
 }
 
 }  // namespace
 
-void setLightingUniforms(GLuint program, const FrameView& view, const ShadowLookup& shadow) {
-  const DayState& day = view.day;
-  setVec3(program, "u_toLight", day.toShadowLight);
-  setVec3(program, "u_lightColor", day.lightColor);
-  setVec3(program, "u_ambientTint", ambientTint(day.skyZenith));
-  glProgramUniform1i(program, glGetUniformLocation(program, "u_materialAo"), view.materialAo ? 1 : 0);
-  setVec3(program, "u_lightmapSky", view.lightmap.sky);
-  setVec3(program, "u_lightmapBlock", view.lightmap.block);
-  glProgramUniform1f(program, glGetUniformLocation(program, "u_lightmapFloor"), view.lightmap.floor);
-  if (shadow.settings->enabled) setShadowUniforms(program, shadow, view.lightUp);
-}
+WarpUniforms::WarpUniforms(const LinkedProgram& p)
+    : warp(p, "u_shadowWarp"), strength(p, "u_shadowWarpStrength") {}
 
-void setSkyUniforms(GLuint program, const FrameView& view) {
-  const DayState& day = view.day;
-  setVec3(program, "u_skyZenith", day.skyZenith);
-  setVec3(program, "u_skyHorizon", day.skyHorizon);
-  setVec3(program, "u_toSun", day.toSun);
-  setVec3(program, "u_toMoon", day.toMoon);
-  setVec3(program, "u_sunColor", day.sunColor);
-  setVec3(program, "u_moonColor", day.moonColor);
-  glProgramUniform1f(program, glGetUniformLocation(program, "u_starVisibility"), day.starVisibility);
-  glProgramUniform2fv(program, glGetUniformLocation(program, "u_fogRange"), 1, glm::value_ptr(view.fogRange));
-  glProgramUniform1i(program, glGetUniformLocation(program, "u_underWater"), view.underWater ? 1 : 0);
-  glProgramUniform1f(program, glGetUniformLocation(program, "u_waterTop"), view.waterTop);
-  setVec3(program, "u_waterFog", view.waterFog);
-}
-
-void setSsrUniforms(GLuint program, const FrameView& view, const ReflectionSettings& settings) {
-  gl::setMat4(program, "u_inverseViewProjection", view.inverseViewProjection);
-  gl::setMat4(program, "u_viewProjection", view.viewProjection);
-  glProgramUniform2fv(program, glGetUniformLocation(program, "u_nearFar"), 1, glm::value_ptr(view.nearFar));
-  glProgramUniform1i(program, glGetUniformLocation(program, "u_maxSteps"),
-                     std::clamp(settings.maxSteps, 1, 256));
-  glProgramUniform1f(program, glGetUniformLocation(program, "u_thickness"), settings.thickness);
-  glProgramUniform1f(program, glGetUniformLocation(program, "u_maxDistance"), settings.maxDistance);
-  glProgramUniform1f(program, glGetUniformLocation(program, "u_minSmoothness"), settings.minSmoothness);
-}
-
-void setWarpUniforms(GLuint program, const ShadowSettings& settings) {
+void WarpUniforms::set(const ShadowSettings& settings) const {
   const bool warped = settings.mode == ShadowMode::Warped;
-  glProgramUniform1i(program, glGetUniformLocation(program, "u_shadowWarp"),
-                     warped ? static_cast<int>(settings.warp) : static_cast<int>(ShadowWarp::None));
-  glProgramUniform1f(program, glGetUniformLocation(program, "u_shadowWarpStrength"),
-                     std::clamp(settings.warpStrength, 0.0f, 0.999f));
+  warp.set(warped ? static_cast<int>(settings.warp) : static_cast<int>(ShadowWarp::None));
+  strength.set(std::clamp(settings.warpStrength, 0.0f, 0.999f));
 }
 
-void setShadowUniforms(GLuint program, const ShadowLookup& shadow, bool live) {
+ShadowUniforms::ShadowUniforms(const LinkedProgram& p)
+    : warp(p),
+      cascades(p, "u_cascades"),
+      matrices(p, "u_shadowMatrices"),
+      texelWorlds(p, "u_shadowTexelWorlds"),
+      depthRanges(p, "u_shadowDepthRanges"),
+      resolution(p, "u_shadowResolution"),
+      pcfRadius(p, "u_pcfRadius"),
+      pcfRadiusInBlocks(p, "u_pcfRadiusInBlocks"),
+      live(p, "u_shadowLive") {}
+
+void ShadowUniforms::set(const ShadowLookup& shadow, bool lit) const {
   const ShadowSettings& settings = *shadow.settings;
-  setWarpUniforms(program, settings);
+  warp.set(settings);
   const int layers = shadowLayers(settings);
-  std::array<glm::mat4, kMaxShadowCascades> matrices{};
+  std::array<glm::mat4, kMaxShadowCascades> shadowMatrices{};
   std::array<float, kMaxShadowCascades> texels{}, ranges{};
   for (int i = 0; i < layers; ++i) {
     const ShadowView& v = (*shadow.views)[static_cast<std::size_t>(i)];
-    matrices[static_cast<std::size_t>(i)] = v.matrix;
+    shadowMatrices[static_cast<std::size_t>(i)] = v.matrix;
     texels[static_cast<std::size_t>(i)] = v.texelWorld;
     ranges[static_cast<std::size_t>(i)] = v.depthRange;
   }
-  glProgramUniform1i(program, glGetUniformLocation(program, "u_cascades"), layers);
-  glProgramUniformMatrix4fv(program, glGetUniformLocation(program, "u_shadowMatrices"), layers, GL_FALSE,
-                            glm::value_ptr(matrices[0]));
-  glProgramUniform1fv(program, glGetUniformLocation(program, "u_shadowTexelWorlds"), layers, texels.data());
-  glProgramUniform1fv(program, glGetUniformLocation(program, "u_shadowDepthRanges"), layers, ranges.data());
-  glProgramUniform1f(program, glGetUniformLocation(program, "u_shadowResolution"),
-                     static_cast<float>(settings.resolution));
-  glProgramUniform1f(program, glGetUniformLocation(program, "u_pcfRadius"),
-                     std::max(settings.pcfRadius, 0.0f));
-  glProgramUniform1i(program, glGetUniformLocation(program, "u_pcfRadiusInBlocks"),
-                     settings.pcfRadiusInBlocks ? 1 : 0);
-  glProgramUniform1i(program, glGetUniformLocation(program, "u_shadowLive"), live ? 1 : 0);
+  cascades.set(layers);
+  matrices.set(shadowMatrices.data(), layers);
+  texelWorlds.set(texels.data(), layers);
+  depthRanges.set(ranges.data(), layers);
+  resolution.set(static_cast<float>(settings.resolution));
+  pcfRadius.set(std::max(settings.pcfRadius, 0.0f));
+  pcfRadiusInBlocks.set(settings.pcfRadiusInBlocks);
+  live.set(lit);
   glBindTextureUnit(slots::kUnitShadowMap, shadow.map->depth());
   glBindTextureUnit(slots::kUnitTransmittance, shadow.map->transmittance());
+}
+
+LightingUniforms::LightingUniforms(const LinkedProgram& p)
+    : toLight(p, "u_toLight"),
+      lightColor(p, "u_lightColor"),
+      ambientTint(p, "u_ambientTint"),
+      materialAo(p, "u_materialAo"),
+      lightmapSky(p, "u_lightmapSky"),
+      lightmapBlock(p, "u_lightmapBlock"),
+      lightmapFloor(p, "u_lightmapFloor") {}
+
+void LightingUniforms::set(const FrameView& view) const {
+  const DayState& day = view.day;
+  toLight.set(day.toShadowLight);
+  lightColor.set(day.lightColor);
+  ambientTint.set(ambientTintOf(day.skyZenith));
+  materialAo.set(view.materialAo);
+  lightmapSky.set(view.lightmap.sky);
+  lightmapBlock.set(view.lightmap.block);
+  lightmapFloor.set(view.lightmap.floor);
+}
+
+void LitUniforms::set(const FrameView& view, const ShadowLookup& lookup) const {
+  lighting.set(view);
+  if (lookup.settings->enabled) shadow.set(lookup, view.lightUp);
+  sky.set(view);
+}
+
+SkyUniforms::SkyUniforms(const LinkedProgram& p)
+    : zenith(p, "u_skyZenith"),
+      horizon(p, "u_skyHorizon"),
+      toSun(p, "u_toSun"),
+      toMoon(p, "u_toMoon"),
+      sunColor(p, "u_sunColor"),
+      moonColor(p, "u_moonColor"),
+      starVisibility(p, "u_starVisibility"),
+      fogRange(p, "u_fogRange"),
+      underWater(p, "u_underWater"),
+      waterTop(p, "u_waterTop"),
+      waterFog(p, "u_waterFog") {}
+
+void SkyUniforms::set(const FrameView& view) const {
+  const DayState& day = view.day;
+  zenith.set(day.skyZenith);
+  horizon.set(day.skyHorizon);
+  toSun.set(day.toSun);
+  toMoon.set(day.toMoon);
+  sunColor.set(day.sunColor);
+  moonColor.set(day.moonColor);
+  starVisibility.set(day.starVisibility);
+  fogRange.set(view.fogRange);
+  underWater.set(view.underWater);
+  waterTop.set(view.waterTop);
+  waterFog.set(view.waterFog);
+}
+
+SsrUniforms::SsrUniforms(const LinkedProgram& p)
+    : inverseViewProjection(p, "u_inverseViewProjection"),
+      viewProjection(p, "u_viewProjection"),
+      nearFar(p, "u_nearFar"),
+      maxSteps(p, "u_maxSteps"),
+      thickness(p, "u_thickness"),
+      maxDistance(p, "u_maxDistance"),
+      minSmoothness(p, "u_minSmoothness") {}
+
+void SsrUniforms::set(const FrameView& view, const ReflectionSettings& settings) const {
+  inverseViewProjection.set(view.inverseViewProjection);
+  viewProjection.set(view.viewProjection);
+  nearFar.set(view.nearFar);
+  maxSteps.set(std::clamp(settings.maxSteps, 1, 256));
+  thickness.set(settings.thickness);
+  maxDistance.set(settings.maxDistance);
+  minSmoothness.set(settings.minSmoothness);
 }
 
 // The waves' phase: world time in seconds, wrapped at a whole number of every wave's periods so it
@@ -101,11 +141,13 @@ void setShadowUniforms(GLuint program, const ShadowLookup& shadow, bool live) {
 // (in double), so a far camera sees the same waves as one at the origin.
 constexpr std::int64_t kWaveCycleTicks = 20 * 60 * 60;  // an hour
 
-void setWaveUniforms(GLuint program, const FrameInputs& inputs) {
+WaveUniforms::WaveUniforms(const LinkedProgram& p) : time(p, "u_waveTime"), origin(p, "u_waveOrigin") {}
+
+void WaveUniforms::set(const FrameInputs& inputs) const {
   const auto ticks = ((inputs.ticks % kWaveCycleTicks) + kWaveCycleTicks) % kWaveCycleTicks;
-  glProgramUniform1f(program, glGetUniformLocation(program, "u_waveTime"), static_cast<float>(ticks) / 20.0f);
+  time.set(static_cast<float>(ticks) / 20.0f);
   const glm::dvec3 wrapped = glm::mod(inputs.cameraPosition, glm::dvec3(256.0));
-  gl::setVec3(program, "u_waveOrigin", glm::vec3(wrapped));
+  origin.set(glm::vec3(wrapped));
 }
 
 }  // namespace terrasol

@@ -23,8 +23,8 @@ PassShared::PassShared(const Atlas& atlas, const BiomeColormaps& colormaps, cons
       textures(atlas, colormaps),
       empty(gl::VertexArray::create()) {}
 
-gl::Program VariantBuilder::operator()(const char* vertex, const char* fragment,
-                                       std::vector<ShaderDefine> extra) const {
+LinkedProgram VariantBuilder::operator()(const char* vertex, const char* fragment,
+                                         std::vector<ShaderDefine> extra) const {
   std::string name = std::string(fragment).substr(0, std::string(fragment).find('.'));
   for (const ShaderDefine& d : extra) {
     name += "+";
@@ -34,7 +34,7 @@ gl::Program VariantBuilder::operator()(const char* vertex, const char* fragment,
   shared_.variants.push_back(name);
   std::vector<ShaderDefine> defines = rendererDefines();
   for (auto& d : extra) defines.push_back(std::move(d));
-  return buildProgram(shaders_, {{GL_VERTEX_SHADER, vertex}, {GL_FRAGMENT_SHADER, fragment}}, defines);
+  return linkProgram(shaders_, {{GL_VERTEX_SHADER, vertex}, {GL_FRAGMENT_SHADER, fragment}}, defines);
 }
 
 std::vector<ShaderDefine> with(std::vector<ShaderDefine> a, const std::vector<ShaderDefine>& b) {

@@ -31,7 +31,7 @@ class VariantBuilder {
  public:
   VariantBuilder(const ShaderPreprocessor& shaders, PassShared& shared)
       : shaders_(shaders), shared_(shared) {}
-  gl::Program operator()(const char* vertex, const char* fragment,
+  LinkedProgram operator()(const char* vertex, const char* fragment,
                          std::vector<ShaderDefine> extra = {}) const;
 
  private:

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cstdint>
-#include <glm/gtc/type_ptr.hpp>
 
 namespace terrasol {
 
@@ -30,8 +29,9 @@ std::size_t quadsIn(const std::vector<VisibleSection>& sections, MeshLayer layer
   return quads;
 }
 
-void drawSections(GLuint program, const BlockTextures& textures, const std::vector<VisibleSection>& sections,
-                  const SectionMeshes& meshes, MeshLayer layer, const SectionDraw& how) {
+void drawSections(GLuint program, const SectionUniforms& uniforms, const BlockTextures& textures,
+                  const std::vector<VisibleSection>& sections, const SectionMeshes& meshes, MeshLayer layer,
+                  const SectionDraw& how) {
   struct Draw {
     const SectionMeshes::Layer* layer;
     glm::vec3 offset;
@@ -51,12 +51,11 @@ void drawSections(GLuint program, const BlockTextures& textures, const std::vect
   });
 
   glUseProgram(program);
-  textures.bind(program);
-  const GLint offsetLocation = glGetUniformLocation(program, "u_sectionOffset");
+  textures.bind(uniforms.atlas);
   glBindVertexArray(meshes.vertexArray());
   for (const Draw& d : draws) {
     meshes.bindLayer(*d.layer);
-    glProgramUniform3fv(program, offsetLocation, 1, glm::value_ptr(d.offset));
+    uniforms.offset.set(d.offset);
     // Face groups turned away from the camera for the whole section are never drawn: a face of normal
     // +x lies in a plane at x >= the section's corner, so it faces away from a camera (at 0) whenever
     // the corner's x >= 0; likewise for every direction. Runs of drawn groups become one range each.

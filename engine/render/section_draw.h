@@ -16,6 +16,15 @@ namespace terrasol {
 std::vector<VisibleSection> sectionsInside(const FrustumPlanes& planes, glm::dvec3 camera,
                                            const SectionMeshes& meshes, int* outside = nullptr);
 
+// The uniforms drawSections sets in a block program: the atlas grid and each section's offset.
+struct SectionUniforms {
+  SectionUniforms() = default;
+  explicit SectionUniforms(const LinkedProgram& p) : atlas(p), offset(p, "u_sectionOffset") {}
+
+  AtlasUniforms atlas;
+  gl::Uniform<glm::vec3> offset;
+};
+
 // How drawSections orders and trims: sections by their centre's distance from the camera, or (with a
 // non-zero `axis`) by how far along `axis` it lies, nearest first so the depth test can reject hidden
 // fragments before shading. `cullFacesAway` (passes that cull back faces) leaves out face groups
@@ -30,8 +39,9 @@ struct SectionDraw {
   SectionMeshes::View view = SectionMeshes::View::Camera;
 };
 
-void drawSections(GLuint program, const BlockTextures& textures, const std::vector<VisibleSection>& sections,
-                  const SectionMeshes& meshes, MeshLayer layer, const SectionDraw& how);
+void drawSections(GLuint program, const SectionUniforms& uniforms, const BlockTextures& textures,
+                  const std::vector<VisibleSection>& sections, const SectionMeshes& meshes, MeshLayer layer,
+                  const SectionDraw& how);
 
 // The quads of `layer` in `sections`.
 std::size_t quadsIn(const std::vector<VisibleSection>& sections, MeshLayer layer);

@@ -1,8 +1,14 @@
 #include "render/shader_defines.h"
 
+#include <cctype>
+#include <charconv>
 #include <sstream>
+#include <utility>
 
 #include "assets/labpbr.h"
+#include "core/day_cycle.h"
+#include "core/luma.h"
+#include "core/render_settings.h"
 #include "core/tint.h"
 #include "mesh/mesh_data.h"
 #include "render/gbuffer_layout.h"
@@ -11,6 +17,14 @@
 
 namespace terrasol {
 namespace {
+
+// The shortest literal that reads back as `value` ("3.0", "0.2126"): the shader computes with the
+// very float the C++ does.
+std::string floatLiteral(float value) {
+  char text[32];
+  const std::string shortest(text, std::to_chars(text, text + sizeof text, value).ptr);
+  return shortest.find_first_of(".e") == std::string::npos ? shortest + ".0" : shortest;
+}
 
 std::string vec3Literal(float x, float y, float z) {
   std::ostringstream out;
@@ -57,6 +71,38 @@ std::vector<ShaderDefine> tintDefines() {
           {"SPRUCE_FOLIAGE", literal(kSpruceFoliage)}};
 }
 
+// The packed vertex's fields and scales (mesh/mesh_data.h) for lib/block_vertex.glsl.
+std::vector<ShaderDefine> vertexDefines() {
+  using V = PackedVertex;
+  const std::pair<const char*, BitField> fields[] = {
+      {"X", V::kX}, {"Y", V::kY}, {"Z", V::kZ},  // position
+      {"TEXTURE", V::kTexture}, {"FACE", V::kFace}, {"TINT", V::kTint}, {"ROLE", V::kRole},  // material
+      {"BLOCK_LIGHT", V::kBlockLight}, {"SKY_LIGHT", V::kSkyLight}, {"AO", V::kAo},  // light
+      {"TEMPERATURE", V::kTemperature}, {"DOWNFALL", V::kDownfall},
+      {"U", V::kU}, {"V", V::kV}};  // uv
+  std::vector<ShaderDefine> defines;
+  for (const auto& [name, f] : fields) {
+    defines.push_back({"BV_" + std::string(name) + "_SHIFT", std::to_string(f.shift) + "u"});
+    defines.push_back({"BV_" + std::string(name) + "_MASK", std::to_string(f.mask()) + "u"});
+  }
+  defines.push_back({"BV_POSITION_STEPS", floatLiteral(static_cast<float>(V::kPositionSteps))});
+  defines.push_back({"BV_UV_STEPS", floatLiteral(static_cast<float>(V::kUvSteps))});
+  defines.push_back({"BV_CELL_LIGHT", floatLiteral(static_cast<float>(V::kCellLight))});
+  defines.push_back({"QUAD_ROLE_MERGED", std::to_string(static_cast<int>(QuadRole::Merged)) + "u"});
+  return defines;
+}
+
+// DEBUG_VIEW_ALBEDO, ...: DebugView's values (core/render_settings.h) for debug_view.frag.
+std::vector<ShaderDefine> debugViewDefines() {
+  std::vector<ShaderDefine> defines;
+  for (std::size_t i = 0; i < kDebugViews.size(); ++i) {
+    std::string name = "DEBUG_VIEW_";
+    for (const unsigned char c : kDebugViews[i]) name += static_cast<char>(std::toupper(c));
+    defines.push_back({name, std::to_string(i)});
+  }
+  return defines;
+}
+
 }  // namespace
 
 std::vector<ShaderDefine> gbufferDefines() {
@@ -94,6 +140,12 @@ std::vector<ShaderDefine> rendererDefines() {
   defines.push_back({"LABPBR_METAL_F0", metalArray()});
   defines.push_back({"SHADOW_MAX_CASCADES", std::to_string(kMaxShadowCascades)});
   for (auto& d : tintDefines()) defines.push_back(std::move(d));
+  for (auto& d : vertexDefines()) defines.push_back(std::move(d));
+  for (auto& d : debugViewDefines()) defines.push_back(std::move(d));
+  defines.push_back({"SKY_RADIANCE", floatLiteral(kSkyRadiance)});
+  const glm::vec3 w = kLumaWeights;
+  defines.push_back(
+      {"LUMA_WEIGHTS", "vec3(" + floatLiteral(w.r) + ", " + floatLiteral(w.g) + ", " + floatLiteral(w.b) + ")"});
   return defines;
 }
 

@@ -1,4 +1,5 @@
-// The mesher's 16-byte vertex (engine/mesh/mesh_data.h, PackedVertex), unpacked.
+// The mesher's 16-byte vertex (engine/mesh/mesh_data.h, PackedVertex), unpacked. Its fields' shifts
+// and masks (BV_<field>_SHIFT, BV_<field>_MASK) and scales are injected from there.
 
 struct BlockVertex {
   vec3 position;  // blocks, from the section's minimum corner
@@ -12,20 +13,25 @@ struct BlockVertex {
   bool merged;                 // QuadRole::Merged (mesh/face_merge.h)
 };
 
+uint bitField(uint word, uint shift, uint mask) { return (word >> shift) & mask; }
+
 BlockVertex unpackBlockVertex(uvec4 p) {
   BlockVertex v;
-  v.position = vec3(p.x & 1023u, (p.x >> 10) & 1023u, (p.x >> 20) & 1023u) / 32.0;
-  v.texture = int(p.y & 0xFFFFu);
-  v.face = int((p.y >> 16) & 15u);
-  v.tint = int((p.y >> 20) & 7u);
-  v.merged = ((p.y >> 23) & 3u) == 2u;
+  v.position = vec3(bitField(p.x, BV_X_SHIFT, BV_X_MASK), bitField(p.x, BV_Y_SHIFT, BV_Y_MASK),
+                    bitField(p.x, BV_Z_SHIFT, BV_Z_MASK)) / BV_POSITION_STEPS;
+  v.texture = int(bitField(p.y, BV_TEXTURE_SHIFT, BV_TEXTURE_MASK));
+  v.face = int(bitField(p.y, BV_FACE_SHIFT, BV_FACE_MASK));
+  v.tint = int(bitField(p.y, BV_TINT_SHIFT, BV_TINT_MASK));
+  v.merged = bitField(p.y, BV_ROLE_SHIFT, BV_ROLE_MASK) == QUAD_ROLE_MERGED;
   // Light sums over the ao + 1 cells around the corner (PackedVertex::light).
-  uint ao = (p.z >> 12) & 3u;
-  float cells = float(ao + 1u) * 15.0;
-  v.blockLight = float(p.z & 63u) / cells;
-  v.skyLight = float((p.z >> 6) & 63u) / cells;
-  v.ao = float(ao) / 3.0;
-  v.tintClimate = vec2((p.z >> 14) & 255u, (p.z >> 22) & 255u) / 255.0;
-  v.uv = vec2(p.w & 511u, (p.w >> 9) & 511u) / 16.0;
+  uint ao = bitField(p.z, BV_AO_SHIFT, BV_AO_MASK);
+  float cells = float(ao + 1u) * BV_CELL_LIGHT;
+  v.blockLight = float(bitField(p.z, BV_BLOCK_LIGHT_SHIFT, BV_BLOCK_LIGHT_MASK)) / cells;
+  v.skyLight = float(bitField(p.z, BV_SKY_LIGHT_SHIFT, BV_SKY_LIGHT_MASK)) / cells;
+  v.ao = float(ao) / float(BV_AO_MASK);
+  v.tintClimate = vec2(bitField(p.z, BV_TEMPERATURE_SHIFT, BV_TEMPERATURE_MASK),
+                       bitField(p.z, BV_DOWNFALL_SHIFT, BV_DOWNFALL_MASK)) /
+                  vec2(BV_TEMPERATURE_MASK, BV_DOWNFALL_MASK);
+  v.uv = vec2(bitField(p.w, BV_U_SHIFT, BV_U_MASK), bitField(p.w, BV_V_SHIFT, BV_V_MASK)) / BV_UV_STEPS;
   return v;
 }

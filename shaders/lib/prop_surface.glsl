@@ -65,8 +65,7 @@ PropSurface propSurface() {
 #endif
   vec2 mr = clamp(texture(u_metallicRoughnessMap, v_uv).bg * vec2(u_metallic, u_roughness), 0.0, 1.0);
   vec3 emissive = texture(u_emissiveMap, v_uv).rgb * u_emissiveFactor;
-  const vec3 kLuma = vec3(0.2126, 0.7152, 0.0722);
-  float strength = dot(emissive, kLuma) / max(dot(s.baseColor.rgb, kLuma), 1e-3);
+  float strength = dot(emissive, LUMA_WEIGHTS) / max(dot(s.baseColor.rgb, LUMA_WEIGHTS), 1e-3);
   float emission = strength > 0.0 ? min(strength, 254.0 / 255.0) : 1.0;  // 255: none
   s.spec = vec4(1.0 - sqrt(mr.y), mr.x >= 0.5 ? 1.0 : 10.0 / 255.0, 0.0, emission);
   s.occlusion = 1.0 + u_occlusionStrength * (texture(u_occlusionMap, v_uv).r - 1.0);

@@ -1,4 +1,5 @@
-// The sky seen along a direction: a gradient by time of day, the sun and moon discs, and stars.
+// The sky seen along a direction: a gradient by time of day (scaled by SKY_RADIANCE, core/day_cycle.h),
+// the sun and moon discs, and stars.
 
 uniform vec3 u_skyZenith;
 uniform vec3 u_skyHorizon;
@@ -8,7 +9,6 @@ uniform vec3 u_sunColor;
 uniform vec3 u_moonColor;
 uniform float u_starVisibility;
 
-const float kSkyRadiance = 3.0;  // the gradient's scale against the sun's ~3 (day_cycle.h)
 const float kSunCos = 0.99966;   // ~1.5 degrees radius, a little larger than the real sun, like vanilla's
 const float kMoonCos = 0.99978;
 
@@ -21,7 +21,7 @@ float hash13(vec3 p) {
 vec3 skyColor(vec3 dir) {
   float up = dir.y;
   // Below the horizon the haze stays near the horizon's colour, so fog at the world's edge blends in.
-  vec3 color = kSkyRadiance * (up >= 0.0 ? mix(u_skyHorizon, u_skyZenith, sqrt(up))
+  vec3 color = SKY_RADIANCE * (up >= 0.0 ? mix(u_skyHorizon, u_skyZenith, sqrt(up))
                                          : mix(u_skyHorizon, u_skyHorizon * 0.7, min(-up * 2.0, 1.0)));
   float toSun = dot(dir, u_toSun);
   float glow = max(toSun, 0.0);

@@ -100,5 +100,20 @@ TEST(ShaderPreprocessor, EveryShipedShaderPreprocesses) {
   EXPECT_GE(count, 2);
 }
 
+TEST(DeclaredUniforms, ListsEveryNameOfPlainDeclarationsAndSkipsBlocksAndComments) {
+  const std::string source =
+      "#version 450 core\n"
+      "uniform mat4 u_a;  // uniform float u_commented;\n"
+      "layout(binding = 3) uniform sampler2D u_map;\n"
+      "uniform float u_b, u_c[4];\n"
+      "/* uniform vec3 u_blockComment; */\n"
+      "layout(std140) uniform Block { vec4 inBlock; };\n"
+      "#ifdef SOME_VARIANT\n"
+      "uniform highp vec2 u_d;\n"
+      "#endif\n"
+      "void main() {}\n";
+  EXPECT_EQ(declaredUniforms(source), (std::vector<std::string>{"u_a", "u_map", "u_b", "u_c", "u_d"}));
+}
+
 }  // namespace
 }  // namespace terrasol

@@ -1,14 +1,18 @@
 // Rules written in both C++ and GLSL: the shaders' functions run in a compute shader on a grid of
 // inputs and must agree with the C++ reference the rest of the tests check, so the copy that ships is
-// the one tested. Octahedral normals (core/octahedral.h), LabPBR decoding (assets/labpbr.h) and the
-// lightmap (core/lightmap.h).
+// the one tested. Octahedral normals (core/octahedral.h), LabPBR decoding (assets/labpbr.h), the
+// lightmap (core/lightmap.h) and the packed block vertex (mesh/mesh_data.h, whose fields the shader
+// gets as injected defines).
 
 #include <algorithm>
 #include <cmath>
 #include <functional>
 #include <glm/gtc/type_ptr.hpp>
 #include <glm/vec4.hpp>
+#include <iterator>
+#include <random>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "assets/labpbr.h"
@@ -16,6 +20,7 @@
 #include "core/lightmap.h"
 #include "core/octahedral.h"
 #include "core/paths.h"
+#include "mesh/mesh_data.h"
 #include "render/gl/program.h"
 #include "render/shader_defines.h"
 #include "support/gl_test.h"
@@ -26,19 +31,23 @@ namespace {
 class GlslReferenceTest : public testing::GlTest {};
 
 // Runs `body` once per input in a compute shader that includes `library` (a file under shaders/).
-// The body reads `vec4 x` and writes `outputs[i * per + k]` for its `per` results.
+// The body reads `x` (a vec4, or a uvec4 for glm::uvec4 inputs) and writes `outputs[i * per + k]`
+// for its `per` results.
+template <class Input>
 std::vector<glm::vec4> runGlsl(const std::string& library, const std::string& body,
-                               const std::vector<glm::vec4>& in, int per,
+                               const std::vector<Input>& in, int per,
                                const std::function<void(GLuint)>& uniforms = {}) {
+  static_assert(std::is_same_v<Input, glm::vec4> || std::is_same_v<Input, glm::uvec4>);
+  const std::string type = std::is_same_v<Input, glm::uvec4> ? "uvec4" : "vec4";
   const std::string source = "#version 450 core\nlayout(local_size_x = 64) in;\n#include \"" + library +
-                             "\"\n" +
-                             R"(layout(std430, binding = 0) readonly buffer Inputs { vec4 inputs[]; };
-layout(std430, binding = 1) writeonly buffer Outputs { vec4 outputs[]; };
+                             "\"\nlayout(std430, binding = 0) readonly buffer Inputs { " + type +
+                             " inputs[]; };\n" +
+                             R"(layout(std430, binding = 1) writeonly buffer Outputs { vec4 outputs[]; };
 uniform uint u_count;
 void main() {
   uint i = gl_GlobalInvocationID.x;
   if (i >= u_count) return;
-  vec4 x = inputs[i];
+  )" + type + R"( x = inputs[i];
   uint per = )" + std::to_string(per) +
                              "u;\n" + body + "\n}\n";
   const ShaderPreprocessor shaders([&](const std::string& path) -> std::optional<std::string> {
@@ -49,7 +58,7 @@ void main() {
   });
   const gl::Program program =
       buildProgram(shaders, {{GL_COMPUTE_SHADER, "reference.comp"}}, rendererDefines());
-  const auto bytesIn = static_cast<GLsizeiptr>(in.size() * sizeof(glm::vec4));
+  const auto bytesIn = static_cast<GLsizeiptr>(in.size() * sizeof(Input));
   const auto bytesOut = bytesIn * per;
   gl::Buffer input = gl::Buffer::create(), output = gl::Buffer::create();
   glNamedBufferStorage(input.id(), bytesIn, in.data(), 0);
@@ -170,6 +179,90 @@ TEST_F(GlslReferenceTest, TheShadersLightmapIsTheCppTableAtWholeLevels) {
             worst, largest(glm::vec3(gpu[static_cast<std::size_t>(sky * 16 + block)]), table.at(block, sky)));
       }
     EXPECT_LT(worst, 1e-5f) << "at tick " << ticks;
+  }
+}
+
+// Every field at 0 and at its largest in all 16 384 combinations, then random vertices.
+std::vector<PackedVertex> verticesToUnpack() {
+  using V = PackedVertex;
+  const BitField fields[] = {V::kX,          V::kY,        V::kZ,           V::kTexture,  V::kFace,
+                             V::kTint,        V::kRole,     V::kAo,          V::kBlockLight, V::kSkyLight,
+                             V::kTemperature, V::kDownfall, V::kU,           V::kV};
+  constexpr int kFields = static_cast<int>(std::size(fields));
+  const auto vertex = [&](auto valueOf) {
+    int f[kFields];
+    for (int k = 0; k < kFields; ++k) f[k] = valueOf(k, static_cast<int>(fields[k].mask()));
+    PackedVertex v{V::packPosition(f[0], f[1], f[2]), V::packMaterial(f[3], f[4], f[5]),
+                   V::kAo.pack(f[7]) | V::kBlockLight.pack(f[8]) | V::kSkyLight.pack(f[9]) |
+                       V::packTintClimate(f[10], f[11]),
+                   V::packUv(f[12], f[13])};
+    v.setRole(static_cast<QuadRole>(f[6]));
+    return v;
+  };
+  std::vector<PackedVertex> vertices;
+  for (int corner = 0; corner < 1 << kFields; ++corner) {
+    vertices.push_back(vertex([&](int k, int max) { return corner >> k & 1 ? max : 0; }));
+  }
+  std::mt19937 random(7);
+  for (int n = 0; n < 4096; ++n) {
+    vertices.push_back(vertex([&](int, int max) { return std::uniform_int_distribution(0, max)(random); }));
+  }
+  return vertices;
+}
+
+// What C++ packs, lib/block_vertex.glsl unpacks to the same fields: its shifts and masks are the
+// injected ones, so a field the shader reads with the wrong shift or mask shows here.
+TEST_F(GlslReferenceTest, TheShaderUnpacksEveryFieldOfThePackedVertexAsCppPacksIt) {
+  using V = PackedVertex;
+  const std::vector<PackedVertex> vertices = verticesToUnpack();
+  std::vector<glm::uvec4> words;
+  for (const PackedVertex& v : vertices) words.emplace_back(v.position, v.material, v.light, v.uv);
+  const auto gpu = runGlsl("lib/block_vertex.glsl", R"(
+    BlockVertex v = unpackBlockVertex(x);
+    outputs[i * per] = vec4(v.position, float(v.texture));
+    outputs[i * per + 1u] = vec4(float(v.face), float(v.tint), v.merged ? 1.0 : 0.0, v.ao);
+    outputs[i * per + 2u] = vec4(v.blockLight, v.skyLight, v.uv);
+    outputs[i * per + 3u] = vec4(v.tintClimate, 0.0, 0.0);)",
+                           words, 4);
+  constexpr const char* kNames[14] = {"x",    "y",           "z",         "texture", "face",
+                                      "tint", "merged",      "ao",        "block light", "sky light",
+                                      "u",    "v",           "temperature", "downfall"};
+  const float steps = static_cast<float>(V::kPositionSteps), uvSteps = static_cast<float>(V::kUvSteps);
+  const float aoMax = static_cast<float>(V::kAo.mask());
+  const float climateMax = static_cast<float>(V::kTemperature.mask());
+  int wrong[14] = {};
+  std::string first[14];
+  for (std::size_t n = 0; n < vertices.size(); ++n) {
+    const PackedVertex& v = vertices[n];
+    const auto f = [](int value) { return static_cast<float>(value); };
+    const float cells = f(v.cellsLit() * V::kCellLight);
+    const float cpu[14] = {f(v.x32()) / steps,
+                           f(v.y32()) / steps,
+                           f(v.z32()) / steps,
+                           f(v.texture()),
+                           f(v.face()),
+                           f(v.tint()),
+                           v.role() == QuadRole::Merged ? 1.0f : 0.0f,
+                           f(v.ao()) / aoMax,
+                           f(V::kBlockLight.get(v.light)) / cells,
+                           f(V::kSkyLight.get(v.light)) / cells,
+                           f(v.u()) / uvSteps,
+                           f(v.v()) / uvSteps,
+                           f(v.tintTemperature()) / climateMax,
+                           f(v.tintDownfall()) / climateMax};
+    for (int k = 0; k < 14; ++k) {
+      const float shader = gpu[n * 4 + static_cast<std::size_t>(k / 4)][k % 4];
+      if (std::abs(shader - cpu[k]) <= 1e-6f) continue;
+      if (wrong[k]++ == 0) {
+        first[k] = "GLSL " + std::to_string(shader) + ", C++ " + std::to_string(cpu[k]) + " for words " +
+                   std::to_string(v.position) + " " + std::to_string(v.material) + " " +
+                   std::to_string(v.light) + " " + std::to_string(v.uv);
+      }
+    }
+  }
+  for (int k = 0; k < 14; ++k) {
+    EXPECT_EQ(wrong[k], 0) << kNames[k] << " differs in " << wrong[k] << " of " << vertices.size()
+                           << " vertices, first: " << first[k];
   }
 }
 

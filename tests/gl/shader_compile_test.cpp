@@ -1,5 +1,6 @@
 
 #include "render/gl/program.h"
+#include "render/gl/uniforms.h"
 #include "render/gl_slots.h"
 #include "support/gl_test.h"
 #include "support/memory_shaders.h"
@@ -59,6 +60,36 @@ TEST_F(GlTest, LinkErrorNamesTheStages) {
     FAIL() << "mismatched stages linked";
   } catch (const ShaderError& e) {
     EXPECT_NE(std::string(e.what()).find("shaders/t.vert + shaders/t.frag"), std::string::npos) << e.what();
+  }
+}
+
+// A uniform table names each uniform once; the names are checked against the sources at link time.
+TEST_F(GlTest, AUniformNoSourceDeclaresIsAnErrorNamingProgramAndUniform) {
+  const auto sources = testing::memoryShaders({
+      {"t.vert", kVertex},
+      {"t.frag",
+       "#version 450 core\n"
+       "uniform vec4 u_tint;\n"
+       "uniform float u_unused;  // optimised out: declared, so not an error\n"
+       "#ifdef NEVER\n"
+       "uniform float u_elsewhere;  // only another variant's\n"
+       "#endif\n"
+       "out vec4 o;\n"
+       "void main() { o = u_tint; }\n"},
+  });
+  const LinkedProgram program =
+      linkProgram(sources, {{GL_VERTEX_SHADER, "t.vert"}, {GL_FRAGMENT_SHADER, "t.frag"}}, slotDefines());
+  EXPECT_GE(gl::uniformLocation(program, "u_tint"), 0);
+  EXPECT_EQ(gl::uniformLocation(program, "u_unused"), -1);
+  EXPECT_EQ(gl::uniformLocation(program, "u_elsewhere"), -1);
+  const gl::Uniform<float> unused(program, "u_unused");
+  unused.set(1.0f);  // nothing to set, no GL error
+  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+  try {
+    const gl::Uniform<glm::vec4> misspelt(program, "u_tnit");
+    FAIL() << "a misspelt uniform was accepted";
+  } catch (const ShaderError& e) {
+    EXPECT_EQ(std::string(e.what()), "shaders/t.vert + shaders/t.frag declares no uniform u_tnit");
   }
 }
 

@@ -1,5 +1,7 @@
 #include "render/gl/program.h"
 
+#include <algorithm>
+
 namespace terrasol {
 namespace {
 
@@ -14,8 +16,9 @@ std::string infoLog(GLuint object, bool isProgram) {
 }
 
 gl::Shader compile(const ShaderPreprocessor& sources, const ShaderStageSource& stage,
-                   const std::vector<ShaderDefine>& defines) {
+                   const std::vector<ShaderDefine>& defines, std::vector<std::string>& declared) {
   const PreprocessedShader pre = sources.process(stage.file, defines);
+  for (auto& name : declaredUniforms(pre.text)) declared.push_back(std::move(name));
   gl::Shader shader = gl::Shader::create(stage.stage);
   const char* text = pre.text.c_str();
   glShaderSource(shader.id(), 1, &text, nullptr);
@@ -31,22 +34,38 @@ gl::Shader compile(const ShaderPreprocessor& sources, const ShaderStageSource& s
 
 }  // namespace
 
+bool LinkedProgram::declares(std::string_view uniform) const {
+  return std::find(declared.begin(), declared.end(), uniform) != declared.end();
+}
+
+LinkedProgram linkProgram(const ShaderPreprocessor& sources, const std::vector<ShaderStageSource>& stages,
+                          const std::vector<ShaderDefine>& defines) {
+  LinkedProgram linked;
+  std::vector<gl::Shader> shaders;
+  for (const auto& stage : stages) {
+    shaders.push_back(compile(sources, stage, defines, linked.declared));
+    linked.name += (linked.name.empty() ? "" : " + ") + sources.displayName(stage.file);
+  }
+  linked.program = gl::Program::create();
+  const GLuint program = linked.program.id();
+  for (const auto& shader : shaders) glAttachShader(program, shader.id());
+  glLinkProgram(program);
+  for (const auto& shader : shaders) glDetachShader(program, shader.id());
+  GLint ok = GL_FALSE;
+  glGetProgramiv(program, GL_LINK_STATUS, &ok);
+  if (!ok) throw ShaderError("cannot link " + linked.name + ":\n" + infoLog(program, true));
+  return linked;
+}
+
 gl::Program buildProgram(const ShaderPreprocessor& sources, const std::vector<ShaderStageSource>& stages,
                          const std::vector<ShaderDefine>& defines) {
-  std::vector<gl::Shader> shaders;
-  std::string names;
-  for (const auto& stage : stages) {
-    shaders.push_back(compile(sources, stage, defines));
-    names += (names.empty() ? "" : " + ") + sources.displayName(stage.file);
-  }
-  gl::Program program = gl::Program::create();
-  for (const auto& shader : shaders) glAttachShader(program.id(), shader.id());
-  glLinkProgram(program.id());
-  for (const auto& shader : shaders) glDetachShader(program.id(), shader.id());
-  GLint ok = GL_FALSE;
-  glGetProgramiv(program.id(), GL_LINK_STATUS, &ok);
-  if (!ok) throw ShaderError("cannot link " + names + ":\n" + infoLog(program.id(), true));
-  return program;
+  return linkProgram(sources, stages, defines).program;
+}
+
+GLint gl::uniformLocation(const LinkedProgram& program, const char* name) {
+  if (!program) return -1;
+  if (!program.declares(name)) throw ShaderError(program.name + " declares no uniform " + name);
+  return glGetUniformLocation(program.id(), name);
 }
 
 }  // namespace terrasol

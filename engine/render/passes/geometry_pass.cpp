@@ -1,9 +1,5 @@
 #include "render/passes/geometry_pass.h"
 
-#include "render/gl/uniforms.h"
-#include "render/prop_draw.h"
-#include "render/section_draw.h"
-
 namespace terrasol {
 
 GeometryPass::GeometryPass(const VariantBuilder& build, PassShared& shared)
@@ -12,9 +8,11 @@ GeometryPass::GeometryPass(const VariantBuilder& build, PassShared& shared)
       cutout_(build("gbuffer.vert", "gbuffer.frag", with({{"CUTOUT", "1"}}, shared.contents.defines()))) {
   const PropNeeds& needs = shared.options.props;
   if (!needs.any) return;
-  propOpaque_ = build("prop.vert", "prop.frag", shared.contents.defines());
-  if (needs.mask)
-    propCutout_ = build("prop.vert", "prop.frag", with({{"CUTOUT", "1"}}, shared.contents.defines()));
+  propOpaque_ = gl::ProgramWith<Prop>(build("prop.vert", "prop.frag", shared.contents.defines()));
+  if (needs.mask) {
+    const auto defines = with({{"CUTOUT", "1"}}, shared.contents.defines());
+    propCutout_ = gl::ProgramWith<Prop>(build("prop.vert", "prop.frag", defines));
+  }
 }
 
 void GeometryPass::setup(FrameGraph::Builder& builder, Frame& frame) {
@@ -36,22 +34,25 @@ void GeometryPass::execute(Frame& frame) {
   glEnable(GL_CULL_FACE);
   glDisable(GL_BLEND);
   const FrameView& view = frame.view;
-  for (const GLuint program : {opaque_.id(), cutout_.id()}) {
-    gl::setMat4(program, "u_viewProjection", view.viewProjection);
-    glProgramUniform2f(program, glGetUniformLocation(program, "u_viewportPixels"),
-                       static_cast<float>(gbuffer.size().x), static_cast<float>(gbuffer.size().y));
-    glProgramUniform1i(program, glGetUniformLocation(program, "u_sealMergedEdges"), 1);
+  for (const Blocks* u : {&opaque_.u, &cutout_.u}) {
+    u->viewProjection.set(view.viewProjection);
+    u->viewportPixels.set(glm::vec2(gbuffer.size()));
+    u->sealMergedEdges.set(true);
   }
   const SectionDraw how{DrawOrder::NearestFirst, glm::vec3(0.0f), shared_.options.cullFacesAway,
                         &frame.stats};
-  drawSections(opaque_.id(), shared_.textures, frame.visible, frame.meshes, MeshLayer::Opaque, how);
-  drawSections(cutout_.id(), shared_.textures, frame.visible, frame.meshes, MeshLayer::Cutout, how);
+  drawSections(opaque_.id(), opaque_.u.section, shared_.textures, frame.visible, frame.meshes,
+               MeshLayer::Opaque, how);
+  drawSections(cutout_.id(), cutout_.u.section, shared_.textures, frame.visible, frame.meshes,
+               MeshLayer::Cutout, how);
   if (!frame.props) return;
-  gl::setMat4(propOpaque_.id(), "u_viewProjection", view.viewProjection);
-  drawProps(propOpaque_.id(), *frame.props, frame.visibleProps, view.camera, AlphaMode::Opaque, true);
-  if (propCutout_.id()) {
-    gl::setMat4(propCutout_.id(), "u_viewProjection", view.viewProjection);
-    drawProps(propCutout_.id(), *frame.props, frame.visibleProps, view.camera, AlphaMode::Mask, true);
+  propOpaque_.u.viewProjection.set(view.viewProjection);
+  drawProps(propOpaque_.id(), propOpaque_.u.prop, *frame.props, frame.visibleProps, view.camera,
+            AlphaMode::Opaque, true);
+  if (propCutout_) {
+    propCutout_.u.viewProjection.set(view.viewProjection);
+    drawProps(propCutout_.id(), propCutout_.u.prop, *frame.props, frame.visibleProps, view.camera,
+              AlphaMode::Mask, true);
   }
 }
 

@@ -1,8 +1,5 @@
 #include "render/passes/lighting_pass.h"
 
-#include "render/frame_uniforms.h"
-#include "render/gl/uniforms.h"
-
 namespace terrasol {
 
 LightingPass::LightingPass(const VariantBuilder& build, PassShared& shared)
@@ -20,11 +17,10 @@ void LightingPass::setup(FrameGraph::Builder& builder, Frame& frame) {
 void LightingPass::execute(Frame& frame) {
   const FrameView& view = frame.view;
   const GLuint program = lighting_.id();
-  setLightingUniforms(program, view, frame.shadow);
-  setSkyUniforms(program, view);
-  gl::setMat4(program, "u_inverseViewProjection", view.inverseViewProjection);
-  setSkyUniforms(sky_.id(), view);
-  gl::setMat4(sky_.id(), "u_inverseViewProjection", view.inverseViewProjection);
+  lighting_.u.lit.set(view, frame.shadow);
+  lighting_.u.inverseViewProjection.set(view.inverseViewProjection);
+  sky_.u.sky.set(view);
+  sky_.u.inverseViewProjection.set(view.inverseViewProjection);
 
   const GBuffer& gbuffer = *frame.gbuffer;
   gbuffer.copyDepthForLighting();

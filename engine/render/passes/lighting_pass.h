@@ -3,6 +3,7 @@
 // HDR scene target. Both draw a full-screen triangle at depth 1 against a copy of the scene's depth,
 // so a CPU rasterizer's early depth test skips the other's pixels, block by block, before shading.
 
+#include "render/frame_uniforms.h"
 #include "render/pass_shared.h"
 #include "render/render_pass.h"
 
@@ -17,8 +18,22 @@ class LightingPass final : public RenderPass {
   void execute(Frame& frame) override;
 
  private:
+  struct Lighting {
+    Lighting() = default;
+    explicit Lighting(const LinkedProgram& p) : lit(p), inverseViewProjection(p, "u_inverseViewProjection") {}
+    LitUniforms lit;
+    gl::Uniform<glm::mat4> inverseViewProjection;
+  };
+  struct Sky {
+    Sky() = default;
+    explicit Sky(const LinkedProgram& p) : sky(p), inverseViewProjection(p, "u_inverseViewProjection") {}
+    SkyUniforms sky;
+    gl::Uniform<glm::mat4> inverseViewProjection;
+  };
+
   PassShared& shared_;
-  gl::Program lighting_, sky_;
+  gl::ProgramWith<Lighting> lighting_;
+  gl::ProgramWith<Sky> sky_;
 };
 
 }  // namespace terrasol

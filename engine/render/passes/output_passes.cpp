@@ -1,9 +1,6 @@
 #include "render/passes/output_passes.h"
 
-#include <glm/gtc/type_ptr.hpp>
-
 #include "render/gl/render_target.h"
-#include "render/gl/uniforms.h"
 #include "render/gl_slots.h"
 
 namespace terrasol {
@@ -43,7 +40,7 @@ void FinalPass::setup(FrameGraph::Builder& builder, Frame& frame) {
 
 void FinalPass::execute(Frame& frame) {
   glBindTextureUnit(0, frame.gbuffer->scene());
-  glProgramUniform1f(final_.id(), glGetUniformLocation(final_.id(), "u_exposure"), kExposure);
+  final_.u.exposure.set(kExposure);
   if (frame.size == frame.targetSize) {
     bindTarget(frame);
     drawFullScreen(final_.id(), shared_, GL_TRIANGLES, 3);
@@ -64,7 +61,7 @@ void FinalPass::execute(Frame& frame) {
   bindTarget(frame);
   glBindTextureUnit(0, image_.id());
   const glm::vec2 scale = glm::vec2(frame.size) / glm::vec2(frame.targetSize);
-  glProgramUniform2fv(upscale_.id(), glGetUniformLocation(upscale_.id(), "u_sceneScale"), 1, glm::value_ptr(scale));
+  upscale_.u.sceneScale.set(scale);
   drawFullScreen(upscale_.id(), shared_, GL_TRIANGLES, 3);
 }
 
@@ -82,22 +79,18 @@ void DebugViewPass::setup(FrameGraph::Builder& builder, Frame& frame) {
 }
 
 void DebugViewPass::execute(Frame& frame) {
-  const GLuint program = debug_.id();
-  glProgramUniform1i(program, glGetUniformLocation(program, "u_view"),
-                     static_cast<int>(frame.inputs.debugView));
+  const Debug& u = debug_.u;
+  u.view.set(static_cast<int>(frame.inputs.debugView));
   bindTarget(frame);
   frame.gbuffer->bindForReading();
   glBindTextureUnit(slots::kUnitReflection, frame.reflections.added);
   glBindTextureUnit(slots::kUnitReflectionHits, frame.reflections.hits);
-  glProgramUniform1i(program, glGetUniformLocation(program, "u_reflected"),
-                     frame.reflections.hits != 0 ? 1 : 0);
+  u.reflected.set(frame.reflections.hits != 0);
   glBindTextureUnit(slots::kUnitSurfaceReflection, frame.reflections.surfaceReflected);
   glBindTextureUnit(slots::kUnitSurfaceReflectionHits, frame.reflections.surfaceHits);
-  glProgramUniform1i(program, glGetUniformLocation(program, "u_surfaceMarched"),
-                     frame.reflections.surfaceHits != 0 ? 1 : 0);
-  glProgramUniform2fv(program, glGetUniformLocation(program, "u_nearFar"), 1,
-                      glm::value_ptr(frame.view.nearFar));
-  drawFullScreen(program, shared_, GL_TRIANGLES, 3);
+  u.surfaceMarched.set(frame.reflections.surfaceHits != 0);
+  u.nearFar.set(frame.view.nearFar);
+  drawFullScreen(debug_.id(), shared_, GL_TRIANGLES, 3);
 }
 
 OutlinePass::OutlinePass(const VariantBuilder& build, PassShared& shared)
@@ -118,10 +111,10 @@ void OutlinePass::execute(Frame& frame) {
   glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
   glBindTextureUnit(0, frame.gbuffer->depth());
   const glm::vec2 scale = glm::vec2(frame.size) / glm::vec2(frame.targetSize);
-  glProgramUniform2fv(outline_.id(), glGetUniformLocation(outline_.id(), "u_depthScale"), 1, glm::value_ptr(scale));
-  gl::setVec3(outline_.id(), "u_min", glm::vec3(box.min - kGrow - frame.view.camera));
-  gl::setVec3(outline_.id(), "u_max", glm::vec3(box.max + kGrow - frame.view.camera));
-  gl::setMat4(outline_.id(), "u_viewProjection", frame.view.viewProjection);
+  outline_.u.depthScale.set(scale);
+  outline_.u.min.set(glm::vec3(box.min - kGrow - frame.view.camera));
+  outline_.u.max.set(glm::vec3(box.max + kGrow - frame.view.camera));
+  outline_.u.viewProjection.set(frame.view.viewProjection);
   drawFullScreen(outline_.id(), shared_, GL_LINES, 24);
   glDisable(GL_BLEND);
 }

@@ -3,6 +3,7 @@
 // sRGB), a debug view of a G-buffer channel instead of it, and the targeted block's outline over
 // either.
 
+#include "render/gl/uniforms.h"
 #include "render/pass_shared.h"
 #include "render/render_pass.h"
 
@@ -17,7 +18,18 @@ class FinalPass final : public RenderPass {
 
  private:
   PassShared& shared_;
-  gl::Program final_, upscale_;
+  struct Final {
+    Final() = default;
+    explicit Final(const LinkedProgram& p) : exposure(p, "u_exposure") {}
+    gl::Uniform<float> exposure;
+  };
+  struct Upscale {
+    Upscale() = default;
+    explicit Upscale(const LinkedProgram& p) : sceneScale(p, "u_sceneScale") {}
+    gl::Uniform<glm::vec2> sceneScale;
+  };
+  gl::ProgramWith<Final> final_;
+  gl::ProgramWith<Upscale> upscale_;
   // At a render scale: the final image at the scene's size, then scaled up to the target.
   glm::ivec2 imageSize_{0};
   gl::Texture image_;
@@ -33,8 +45,19 @@ class DebugViewPass final : public RenderPass {
   void execute(Frame& frame) override;
 
  private:
+  struct Debug {
+    Debug() = default;
+    explicit Debug(const LinkedProgram& p)
+        : view(p, "u_view"),
+          reflected(p, "u_reflected"),
+          surfaceMarched(p, "u_surfaceMarched"),
+          nearFar(p, "u_nearFar") {}
+    gl::Uniform<int> view;
+    gl::Uniform<bool> reflected, surfaceMarched;
+    gl::Uniform<glm::vec2> nearFar;
+  };
   PassShared& shared_;
-  gl::Program debug_;
+  gl::ProgramWith<Debug> debug_;
 };
 
 // Edges of FrameInputs::outline, hidden where the G-buffer's depth has something nearer.
@@ -46,8 +69,19 @@ class OutlinePass final : public RenderPass {
   void execute(Frame& frame) override;
 
  private:
+  struct Outline {
+    Outline() = default;
+    explicit Outline(const LinkedProgram& p)
+        : depthScale(p, "u_depthScale"),
+          min(p, "u_min"),
+          max(p, "u_max"),
+          viewProjection(p, "u_viewProjection") {}
+    gl::Uniform<glm::vec2> depthScale;
+    gl::Uniform<glm::vec3> min, max;
+    gl::Uniform<glm::mat4> viewProjection;
+  };
   PassShared& shared_;
-  gl::Program outline_;
+  gl::ProgramWith<Outline> outline_;
 };
 
 }  // namespace terrasol

@@ -2,16 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <glm/gtc/type_ptr.hpp>
 #include <initializer_list>
 
 #include "core/error.h"
 #include "core/render_scale.h"
-#include "render/frame_uniforms.h"
 #include "render/gl/render_target.h"
-#include "render/gl/uniforms.h"
 #include "render/gl_slots.h"
-#include "render/section_draw.h"
 
 namespace terrasol {
 
@@ -40,13 +36,13 @@ constexpr float kFarDepth = 1.0f;
 
 ReflectionPass::ReflectionPass(const VariantBuilder& build, PassShared& shared) : shared_(shared) {
   if (!shared.options.reflections.enabled) return;
-  mask_ = build("fullscreen.vert", "reflection_mask.frag");
-  march_ = build("fullscreen.vert", "reflection.frag", shared.contents.defines());
-  composite_ = build("fullscreen.vert", "reflection_composite.frag");
+  mask_ = gl::ProgramWith<Mask>(build("fullscreen.vert", "reflection_mask.frag"));
+  march_ = gl::ProgramWith<March>(build("fullscreen.vert", "reflection.frag", shared.contents.defines()));
+  composite_ = gl::ProgramWith<Composite>(build("fullscreen.vert", "reflection_composite.frag"));
   depthCopy_ = build("fullscreen.vert", "reflection_depth.frag");
   const std::vector<ShaderDefine> surface = with(shared.contents.defines(), surfaceDefines(shared.options));
-  surfaceDepth_ = build("gbuffer.vert", "depth_only.frag", surface);
-  surfaceMarch_ = build("gbuffer.vert", "surface_reflection.frag", surface);
+  surfaceDepth_ = gl::ProgramWith<SurfaceDepth>(build("gbuffer.vert", "depth_only.frag", surface));
+  surfaceMarch_ = gl::ProgramWith<SurfaceMarch>(build("gbuffer.vert", "surface_reflection.frag", surface));
 }
 
 void ReflectionPass::setup(FrameGraph::Builder& builder, Frame& frame) {
@@ -98,18 +94,16 @@ void ReflectionPass::ensureTargets(glm::ivec2 size) {
 void ReflectionPass::setUniforms(const Frame& frame) const {
   const ReflectionSettings& settings = shared_.options.reflections;
   const FrameView& view = frame.view;
-  for (const GLuint program : {march_.id(), surfaceMarch_.id()}) {
-    setLightingUniforms(program, view, frame.shadow);
-    setSkyUniforms(program, view);
-    setSsrUniforms(program, view, settings);
+  for (const March* u : {&march_.u, &surfaceMarch_.u.march}) {
+    u->lighting.set(view);
+    u->sky.set(view);
+    u->ssr.set(view, settings);
   }
-  for (const GLuint program : {mask_.id(), composite_.id()}) {
-    glProgramUniform1f(program, glGetUniformLocation(program, "u_minSmoothness"), settings.minSmoothness);
-  }
-  glProgramUniform2fv(composite_.id(), glGetUniformLocation(composite_.id(), "u_nearFar"), 1,
-                      glm::value_ptr(view.nearFar));
-  gl::setMat4(surfaceDepth_.id(), "u_viewProjection", view.viewProjection);
-  if (shared_.options.water.waves) setWaveUniforms(surfaceMarch_.id(), frame.inputs);
+  mask_.u.minSmoothness.set(settings.minSmoothness);
+  composite_.u.minSmoothness.set(settings.minSmoothness);
+  composite_.u.nearFar.set(view.nearFar);
+  surfaceDepth_.u.viewProjection.set(view.viewProjection);
+  if (shared_.options.water.waves) surfaceMarch_.u.waves.set(frame.inputs);
 }
 
 void ReflectionPass::execute(Frame& frame) {
@@ -194,15 +188,15 @@ void ReflectionPass::marchFromSurfaces(Frame& frame) {
   glCullFace(frame.view.underWater ? GL_FRONT : GL_BACK);  // as the translucent pass draws them
   glDepthFunc(GL_LESS);
   const SectionDraw nearestFirst{DrawOrder::NearestFirst, glm::vec3(0.0f), !frame.view.underWater, nullptr};
-  drawSections(surfaceDepth_.id(), shared_.textures, frame.visible, frame.meshes, MeshLayer::Translucent,
-               nearestFirst);
+  drawSections(surfaceDepth_.id(), surfaceDepth_.u.section, shared_.textures, frame.visible, frame.meshes,
+               MeshLayer::Translucent, nearestFirst);
   // The march, once per pixel: on the nearest quad only.
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glDepthFunc(GL_LEQUAL);
   glDepthMask(GL_FALSE);
-  gl::setMat4(surfaceMarch_.id(), "u_viewProjection", frame.view.viewProjection);
-  drawSections(surfaceMarch_.id(), shared_.textures, frame.visible, frame.meshes, MeshLayer::Translucent,
-               nearestFirst);
+  surfaceMarch_.u.march.ssr.viewProjection.set(frame.view.viewProjection);
+  drawSections(surfaceMarch_.id(), surfaceMarch_.u.section, shared_.textures, frame.visible, frame.meshes,
+               MeshLayer::Translucent, nearestFirst);
   glCullFace(GL_BACK);
   glDisable(GL_CULL_FACE);
 }

@@ -11,8 +11,10 @@
 #include <glm/vec4.hpp>
 #include <vector>
 
+#include "render/frame_uniforms.h"
 #include "render/pass_shared.h"
 #include "render/render_pass.h"
+#include "render/section_draw.h"
 
 namespace terrasol {
 
@@ -45,10 +47,47 @@ class ReflectionPass final : public RenderPass {
   void marchFromOpaque(Frame& frame);
   void marchFromSurfaces(Frame& frame);
 
+  struct Mask {
+    Mask() = default;
+    explicit Mask(const LinkedProgram& p) : minSmoothness(p, "u_minSmoothness") {}
+    gl::Uniform<float> minSmoothness;
+  };
+  struct March {
+    March() = default;
+    explicit March(const LinkedProgram& p) : lighting(p), sky(p), ssr(p) {}
+    LightingUniforms lighting;
+    SkyUniforms sky;
+    SsrUniforms ssr;
+  };
+  struct Composite {
+    Composite() = default;
+    explicit Composite(const LinkedProgram& p)
+        : minSmoothness(p, "u_minSmoothness"), nearFar(p, "u_nearFar") {}
+    gl::Uniform<float> minSmoothness;
+    gl::Uniform<glm::vec2> nearFar;
+  };
+  struct SurfaceDepth {
+    SurfaceDepth() = default;
+    explicit SurfaceDepth(const LinkedProgram& p) : section(p), viewProjection(p, "u_viewProjection") {}
+    SectionUniforms section;
+    gl::Uniform<glm::mat4> viewProjection;
+  };
+  struct SurfaceMarch {
+    SurfaceMarch() = default;
+    explicit SurfaceMarch(const LinkedProgram& p) : section(p), march(p), waves(p) {}
+    SectionUniforms section;
+    March march;
+    WaveUniforms waves;
+  };
+
   PassShared& shared_;
   // Only when reflections are on.
-  gl::Program mask_, march_, composite_;                 // opaque surfaces
-  gl::Program depthCopy_, surfaceDepth_, surfaceMarch_;  // water and glass
+  gl::ProgramWith<Mask> mask_;  // opaque surfaces
+  gl::ProgramWith<March> march_;
+  gl::ProgramWith<Composite> composite_;
+  LinkedProgram depthCopy_;  // water and glass
+  gl::ProgramWith<SurfaceDepth> surfaceDepth_;
+  gl::ProgramWith<SurfaceMarch> surfaceMarch_;
   bool opaque_ = false, surfaces_ = false;               // this frame's parts
   glm::ivec2 size_{0};
   gl::Texture colour_;  // RGBA16F: rgb added to the scene, a: 1 where the ray hit something on screen

@@ -3,24 +3,24 @@
 #include <algorithm>
 #include <cmath>
 
-#include "render/frame_uniforms.h"
-#include "render/gl/uniforms.h"
-#include "render/prop_draw.h"
-#include "render/section_draw.h"
 
 namespace terrasol {
 
 ShadowPass::ShadowPass(const VariantBuilder& build, PassShared& shared)
     : shared_(shared), schedule_(shared.options.shadow, shared.options.shadowCasterCulling) {
   if (!shared.options.shadow.enabled) return;
-  opaque_ = build("shadow.vert", "shadow.frag");
-  cutout_ = build("shadow.vert", "shadow.frag", {{"CUTOUT", "1"}});
-  translucent_ = build("shadow.vert", "shadow.frag", {{"TRANSLUCENT", "1"}});
+  using BlocksProgram = gl::ProgramWith<Blocks>;
+  using PropProgram = gl::ProgramWith<Prop>;
+  opaque_ = BlocksProgram(build("shadow.vert", "shadow.frag"));
+  cutout_ = BlocksProgram(build("shadow.vert", "shadow.frag", {{"CUTOUT", "1"}}));
+  translucent_ = BlocksProgram(build("shadow.vert", "shadow.frag", {{"TRANSLUCENT", "1"}}));
   const PropNeeds& needs = shared.options.props;
   if (!needs.any) return;
-  propOpaque_ = build("prop_shadow.vert", "prop_shadow.frag");
-  if (needs.mask) propCutout_ = build("prop_shadow.vert", "prop_shadow.frag", {{"CUTOUT", "1"}});
-  if (needs.blend) propTranslucent_ = build("prop_shadow.vert", "prop_shadow.frag", {{"TRANSLUCENT", "1"}});
+  propOpaque_ = PropProgram(build("prop_shadow.vert", "prop_shadow.frag"));
+  if (needs.mask) propCutout_ = PropProgram(build("prop_shadow.vert", "prop_shadow.frag", {{"CUTOUT", "1"}}));
+  if (needs.blend) {
+    propTranslucent_ = PropProgram(build("prop_shadow.vert", "prop_shadow.frag", {{"TRANSLUCENT", "1"}}));
+  }
 }
 
 void ShadowPass::setup(FrameGraph::Builder& builder, Frame& frame) {
@@ -145,33 +145,37 @@ void ShadowPass::drawCasters(ShadowMap& map, const ShadowKey& key, const std::op
       glClearNamedFramebufferfv(translucent, GL_DEPTH, 0, &farDepth);
     }
     glBindFramebuffer(GL_FRAMEBUFFER, opaque);
-    for (const GLuint program : {opaque_.id(), cutout_.id(), translucent_.id()}) {
-      gl::setMat4(program, "u_shadowMatrix", light.matrix);
-      setWarpUniforms(program, settings);
+    for (const Blocks* u : {&opaque_.u, &cutout_.u, &translucent_.u}) {
+      u->shadowMatrix.set(light.matrix);
+      u->warp.set(settings);
     }
     // Nearest the light first: the depth test then rejects what lies behind before it is shaded.
     const SectionDraw how{DrawOrder::NearestFirst, fromLight, false, nullptr, SectionMeshes::View::Light};
-    drawSections(opaque_.id(), shared_.textures, casters, frame.meshes, MeshLayer::Opaque, how);
-    drawSections(cutout_.id(), shared_.textures, casters, frame.meshes, MeshLayer::Cutout, how);
+    const BlockTextures& textures = shared_.textures;
+    drawSections(opaque_.id(), opaque_.u.section, textures, casters, frame.meshes, MeshLayer::Opaque, how);
+    drawSections(cutout_.id(), cutout_.u.section, textures, casters, frame.meshes, MeshLayer::Cutout, how);
     // Props cast in the first slice of a spread rebuild (they are few).
     std::vector<int> propCasters;
-    if (frame.props && propOpaque_.id() && slices.first == 0) {
+    if (frame.props && propOpaque_ && slices.first == 0) {
       propCasters = propsInside(frustumPlanes(light.matrix), camera, *frame.props);
       stats.propShadowCasters += static_cast<int>(propCasters.size());
-      for (const GLuint program : {propOpaque_.id(), propCutout_.id(), propTranslucent_.id()}) {
-        if (!program) continue;
-        gl::setMat4(program, "u_shadowMatrix", light.matrix);
-        setWarpUniforms(program, settings);
+      for (const Prop* u : {&propOpaque_.u, &propCutout_.u, &propTranslucent_.u}) {
+        u->shadowMatrix.set(light.matrix);  // nothing where the variant was not built
+        u->warp.set(settings);
       }
-      drawProps(propOpaque_.id(), *frame.props, propCasters, camera, AlphaMode::Opaque, false);
-      if (propCutout_.id())
-        drawProps(propCutout_.id(), *frame.props, propCasters, camera, AlphaMode::Mask, false);
+      const Props& props = *frame.props;
+      drawProps(propOpaque_.id(), propOpaque_.u.prop, props, propCasters, camera, AlphaMode::Opaque, false);
+      if (propCutout_) {
+        drawProps(propCutout_.id(), propCutout_.u.prop, props, propCasters, camera, AlphaMode::Mask, false);
+      }
     }
     // Translucent casters into their own depth and colour: the nearest one filters the light.
     glBindFramebuffer(GL_FRAMEBUFFER, translucent);
-    drawSections(translucent_.id(), shared_.textures, casters, frame.meshes, MeshLayer::Translucent, how);
-    if (propTranslucent_.id() && !propCasters.empty()) {
-      drawProps(propTranslucent_.id(), *frame.props, propCasters, camera, AlphaMode::Blend, false);
+    drawSections(translucent_.id(), translucent_.u.section, textures, casters, frame.meshes,
+                 MeshLayer::Translucent, how);
+    if (propTranslucent_ && !propCasters.empty()) {
+      drawProps(propTranslucent_.id(), propTranslucent_.u.prop, *frame.props, propCasters, camera,
+                AlphaMode::Blend, false);
     }
   }
   glDisable(GL_DEPTH_CLAMP);

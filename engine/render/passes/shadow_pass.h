@@ -10,8 +10,11 @@
 #include <optional>
 
 #include "render/cave_culling.h"
+#include "render/frame_uniforms.h"
 #include "render/pass_shared.h"
+#include "render/prop_draw.h"
 #include "render/render_pass.h"
+#include "render/section_draw.h"
 #include "render/shadow_map.h"
 #include "render/shadow_schedule.h"
 
@@ -37,9 +40,24 @@ class ShadowPass final : public RenderPass {
   void drawCasters(ShadowMap& map, const ShadowKey& key, const std::optional<SectionSet>& lit, Frame& frame,
                    ShadowSlices slices);
 
+  struct Blocks {
+    Blocks() = default;
+    explicit Blocks(const LinkedProgram& p) : section(p), warp(p), shadowMatrix(p, "u_shadowMatrix") {}
+    SectionUniforms section;
+    WarpUniforms warp;
+    gl::Uniform<glm::mat4> shadowMatrix;
+  };
+  struct Prop {
+    Prop() = default;
+    explicit Prop(const LinkedProgram& p) : prop(p, false), warp(p), shadowMatrix(p, "u_shadowMatrix") {}
+    PropUniforms prop;
+    WarpUniforms warp;
+    gl::Uniform<glm::mat4> shadowMatrix;
+  };
+
   PassShared& shared_;
-  gl::Program opaque_, cutout_, translucent_;
-  gl::Program propOpaque_, propCutout_, propTranslucent_;  // each only when a placed prop needs it
+  gl::ProgramWith<Blocks> opaque_, cutout_, translucent_;
+  gl::ProgramWith<Prop> propOpaque_, propCutout_, propTranslucent_;  // each only when a placed prop needs it
   ShadowSchedule schedule_;
   ShadowPlan plan_;  // this frame's, from setup
   ShadowMap map_, building_;

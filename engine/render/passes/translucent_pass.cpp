@@ -1,11 +1,7 @@
 #include "render/passes/translucent_pass.h"
 
-#include "render/frame_uniforms.h"
 #include "render/gl/render_target.h"
-#include "render/gl/uniforms.h"
 #include "render/gl_slots.h"
-#include "render/prop_draw.h"
-#include "render/section_draw.h"
 
 namespace terrasol {
 
@@ -15,12 +11,12 @@ TranslucentPass::TranslucentPass(const VariantBuilder& build, PassShared& shared
                     with(with(lightingDefines(shared.options), shared.contents.defines()),
                          surfaceDefines(shared.options)))) {
   if (!shared.options.props.blend) return;
-  props_ = build("prop.vert", "prop_translucent.frag",
-                 with(lightingDefines(shared.options), shared.contents.defines()));
+  const auto defines = with(lightingDefines(shared.options), shared.contents.defines());
+  props_ = gl::ProgramWith<Prop>(build("prop.vert", "prop_translucent.frag", defines));
 }
 
 void TranslucentPass::setup(FrameGraph::Builder& builder, Frame& frame) {
-  const bool props = frame.props && props_.id() && anyBlended(*frame.props, frame.visibleProps);
+  const bool props = frame.props && props_ && anyBlended(*frame.props, frame.visibleProps);
   if (shared_.options.cullPasses && quadsIn(frame.visible, MeshLayer::Translucent) == 0 && !props) {
     return builder.skip("no translucent geometry in view");
   }
@@ -33,10 +29,9 @@ void TranslucentPass::setup(FrameGraph::Builder& builder, Frame& frame) {
 
 void TranslucentPass::execute(Frame& frame) {
   const FrameView& view = frame.view;
-  setLightingUniforms(blocks_.id(), view, frame.shadow);
-  setSkyUniforms(blocks_.id(), view);
+  blocks_.u.lit.set(view, frame.shadow);
   if (shared_.options.reflections.enabled) prepareReflections(frame);
-  if (shared_.options.water.waves) setWaveUniforms(blocks_.id(), frame.inputs);
+  if (shared_.options.water.waves) blocks_.u.waves.set(frame.inputs);
   glBindFramebuffer(GL_FRAMEBUFFER, frame.gbuffer->translucentFramebuffer());
   glViewport(0, 0, frame.gbuffer->size().x, frame.gbuffer->size().y);
   glEnable(GL_DEPTH_TEST);
@@ -46,16 +41,15 @@ void TranslucentPass::execute(Frame& frame) {
   glEnable(GL_BLEND);
   // Premultiplied colour; alpha keeps the lighting pass's shadow term of the surface behind.
   glBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
-  gl::setMat4(blocks_.id(), "u_viewProjection", view.viewProjection);
-  drawSections(blocks_.id(), shared_.textures, frame.visible, frame.meshes, MeshLayer::Translucent,
-               {DrawOrder::FarthestFirst, glm::vec3(0.0f), false, &frame.stats});
-  if (frame.props && props_.id()) {
+  blocks_.u.viewProjection.set(view.viewProjection);
+  drawSections(blocks_.id(), blocks_.u.section, shared_.textures, frame.visible, frame.meshes,
+               MeshLayer::Translucent, {DrawOrder::FarthestFirst, glm::vec3(0.0f), false, &frame.stats});
+  if (frame.props && props_) {
     glCullFace(GL_BACK);
-    const GLuint program = props_.id();
-    setLightingUniforms(program, view, frame.shadow);
-    setSkyUniforms(program, view);
-    gl::setMat4(program, "u_viewProjection", view.viewProjection);
-    drawProps(program, *frame.props, frame.visibleProps, view.camera, AlphaMode::Blend, true);
+    props_.u.lit.set(view, frame.shadow);
+    props_.u.viewProjection.set(view.viewProjection);
+    drawProps(props_.id(), props_.u.prop, *frame.props, frame.visibleProps, view.camera, AlphaMode::Blend,
+              true);
   }
   glDisable(GL_BLEND);
   glCullFace(GL_BACK);
@@ -75,11 +69,11 @@ void TranslucentPass::prepareReflections(const Frame& frame) {
                      copySize_.x, copySize_.y, 1);
   glBindTextureUnit(slots::kUnitReflectionScene, sceneCopy_.id());
   glBindTextureUnit(slots::kUnitSsrDepth, gbuffer.lightingDepth());
-  setSsrUniforms(blocks_.id(), frame.view, shared_.options.reflections);
+  blocks_.u.nearFar.set(frame.view.nearFar);
+  blocks_.u.minSmoothness.set(shared_.options.reflections.minSmoothness);
   // What the reflection pass's march from these surfaces saw, where it ran.
   const ReflectionTargets& marched = frame.reflections;
-  glProgramUniform1i(blocks_.id(), glGetUniformLocation(blocks_.id(), "u_marched"),
-                     marched.surfaceReflected != 0 ? 1 : 0);
+  blocks_.u.marched.set(marched.surfaceReflected != 0);
   glBindTextureUnit(slots::kUnitReflection, marched.surfaceReflected);
   glBindTextureUnit(slots::kUnitReflectionHits, marched.surfaceHits);
 }
