@@ -6,14 +6,17 @@
 #include <algorithm>
 #include <utility>
 
+#include "core/enum_names.h"
+
 namespace terrasol {
 namespace {
 
-constexpr std::string_view kActionNames[kActionCount] = {
-    "forward",  "back",     "left",     "right",    "jump",     "sneak",        "sprint",
-    "hotbar_1", "hotbar_2", "hotbar_3", "hotbar_4", "hotbar_5", "hotbar_6",     "hotbar_7",
-    "hotbar_8", "hotbar_9", "hide_hud", "screenshot", "debug_overlay", "debug_view", "time_faster",
-    "time_stop", "time_set", "place_prop", "inventory"};
+constexpr EnumNames<Action, kActionCount> kActionNames{
+    {"forward",  "back",     "left",     "right",    "jump",     "sneak",        "sprint",
+     "hotbar_1", "hotbar_2", "hotbar_3", "hotbar_4", "hotbar_5", "hotbar_6",     "hotbar_7",
+     "hotbar_8", "hotbar_9", "hide_hud", "screenshot", "debug_overlay", "debug_view", "time_faster",
+     "time_stop", "time_set", "place_prop", "inventory"}};
+constexpr EnumNames<MouseButton, 3> kMouseButtons{{"left", "right", "middle"}};
 
 struct NamedKey {
   std::string_view name;
@@ -37,20 +40,11 @@ constexpr NamedKey kNamedKeys[] = {
 
 }  // namespace
 
-std::string_view actionName(Action action) { return kActionNames[static_cast<std::size_t>(action)]; }
+std::string_view actionName(Action action) { return kActionNames.nameOf(action); }
 
-std::optional<Action> actionNamed(std::string_view name) {
-  const auto it = std::find(std::begin(kActionNames), std::end(kActionNames), name);
-  if (it == std::end(kActionNames)) return std::nullopt;
-  return static_cast<Action>(it - std::begin(kActionNames));
-}
+std::optional<Action> actionNamed(std::string_view name) { return kActionNames.find(name); }
 
-std::optional<MouseButton> mouseButtonNamed(std::string_view name) {
-  if (name == "left") return MouseButton::Left;
-  if (name == "right") return MouseButton::Right;
-  if (name == "middle") return MouseButton::Middle;
-  return std::nullopt;
-}
+std::optional<MouseButton> mouseButtonNamed(std::string_view name) { return kMouseButtons.find(name); }
 
 std::optional<int> keyNamed(std::string_view name) {
   if (name.size() == 1 && ((name[0] >= 'A' && name[0] <= 'Z') || (name[0] >= '0' && name[0] <= '9'))) {

@@ -94,7 +94,7 @@ std::vector<std::string> DebugOverlay::right(const PlayWorld& world, const GameS
   out.push_back(s.enabled ? format("Shadows: %s %d^2, %.0f blocks, pcf %d", std::string(nameOf(s.mode, kShadowModes)).c_str(),
                                    s.resolution, s.distance, s.pcfSamples)
                           : std::string("Shadows: off"));
-  out.push_back(format("Debug view (F4): %s", std::string(kDebugViews[static_cast<std::size_t>(view_)]).c_str()));
+  out.push_back(format("Debug view (F4): %s", std::string(kDebugViews.nameOf(view_)).c_str()));
   if (target) {
     const BlockPos b = target->block;
     out.push_back(format("Targeted block: %d %d %d", b.x, b.y, b.z));

@@ -25,8 +25,8 @@ class DebugOverlay {
 
   bool shown() const { return shown_; }
   void toggle() { shown_ = !shown_; }
-  DebugView view() const { return static_cast<DebugView>(view_); }
-  void nextView() { view_ = (view_ + 1) % static_cast<int>(kDebugViews.size()); }
+  DebugView view() const { return view_; }
+  void nextView() { view_ = static_cast<DebugView>((static_cast<std::size_t>(view_) + 1) % kDebugViews.size()); }
   const std::string& glRenderer() const { return glRenderer_; }
 
   // Each frame's time in seconds (the rate), and that of each drawn frame (the graph).
@@ -44,7 +44,7 @@ class DebugOverlay {
  private:
   std::string glRenderer_;
   bool shown_ = false;
-  int view_ = 0;  // DebugView
+  DebugView view_ = DebugView::None;
   std::vector<PassTiming> timings_;
   std::vector<double> frameTimes_;  // seconds, the last second's
   std::deque<float> graph_;         // ms, the last frames' (the F3 graph)

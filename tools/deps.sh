@@ -20,6 +20,8 @@ packages=(
   libimgui-dev
   # tests and benchmarks
   libgtest-dev libgmock-dev libbenchmark-dev
+  # the format check (tools/check-format.sh): Debian 12's clang-format, version 14
+  clang-format
   # a virtual display for windowed smoke tests, and a window manager so a test can minimise the game
   xvfb xauth twm
 )
