@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <cstdint>
 #include <fstream>
 #include <iterator>
 #include <memory>
@@ -22,11 +23,28 @@
 namespace terrasol {
 namespace {
 
+// A PNG's size from its header. stb_image refuses a PNG too large to decode with a reason that gives
+// no size ("unknown image type" once every format has declined it), so the size is read here first.
+bool pngSize(const std::vector<std::uint8_t>& bytes, int& w, int& h) {
+  static constexpr std::uint8_t kStart[] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n',  // signature
+                                            0,    0,   0,   13,  'I',  'H',  'D',  'R'};  // IHDR first
+  if (bytes.size() < sizeof kStart + 8 || !std::equal(std::begin(kStart), std::end(kStart), bytes.begin())) {
+    return false;
+  }
+  const auto get32 = [&](std::size_t at) {
+    return static_cast<std::uint32_t>(bytes[at]) << 24 | static_cast<std::uint32_t>(bytes[at + 1]) << 16 |
+           static_cast<std::uint32_t>(bytes[at + 2]) << 8 | bytes[at + 3];
+  };
+  w = static_cast<int>(std::min<std::uint32_t>(get32(16), 0x7FFFFFFF));
+  h = static_cast<int>(std::min<std::uint32_t>(get32(20), 0x7FFFFFFF));
+  return true;
+}
+
 Image decode(const std::vector<std::uint8_t>& bytes, const std::string& name, const ImageLimits& limits) {
   if (bytes.empty()) throw Error(name + ": empty file");
   const auto size = static_cast<int>(std::min<std::size_t>(bytes.size(), 0x7FFFFFFF));
   int w = 0, h = 0, channels = 0;
-  if (!stbi_info_from_memory(bytes.data(), size, &w, &h, &channels)) {
+  if (!pngSize(bytes, w, h) && !stbi_info_from_memory(bytes.data(), size, &w, &h, &channels)) {
     throw Error(name + ": cannot read image: " + stbi_failure_reason());
   }
   if (w <= 0 || h <= 0 || w > limits.maxSide || h > limits.maxSide ||
