@@ -1,6 +1,7 @@
 #version 450 core
-// Final pass: exposure, filmic tone map, then sRGB encoding (the only place it happens). At a render
-// scale this draws at the scene's size, and upscale.frag takes it to the target's.
+// Final pass: exposure, filmic tone map, then sRGB encoding of the scene (debug views and block icons
+// encode their own). At a render scale this draws at the scene's size, and upscale.frag takes it to
+// the target's.
 
 #include "lib/color.glsl"
 

@@ -34,9 +34,9 @@ void interpolateModelLight(const ModelQuad& m, const std::uint32_t (&corner)[4],
     const int own = m.ownOcclusion[v];
     const int occlusion = std::min(static_cast<int>(std::lround(o)), own == 2 ? 0 : 3 - own);
     const float cells = static_cast<float>(occlusion + 1);
-    light[v] = static_cast<std::uint32_t>(std::lround(b * cells)) |
-               static_cast<std::uint32_t>(std::lround(k * cells)) << 6 |
-               static_cast<std::uint32_t>(occlusion) << 12;
+    light[v] = PackedVertex::kBlockLight.pack(static_cast<int>(std::lround(b * cells))) |
+               PackedVertex::kSkyLight.pack(static_cast<int>(std::lround(k * cells))) |
+               PackedVertex::kAo.pack(occlusion);
   }
 }
 

@@ -4,6 +4,7 @@
 
 #include "core/error.h"
 #include "core/json_check.h"
+#include "core/light_level.h"
 
 namespace terrasol {
 namespace {
@@ -57,7 +58,7 @@ FaceTextures parseTextures(const json& textures, const std::string& key) {
 
 int parseLevel(const json& block, const char* name, int fallback, const std::string& at) {
   const json* value = field(block, name);
-  return value ? static_cast<int>(wholeNumber(*value, member(at, name), 0, 15)) : fallback;
+  return value ? static_cast<int>(wholeNumber(*value, member(at, name), 0, kMaxLight)) : fallback;
 }
 
 // Property names and values go into state names ("oak_log[axis=x]") unquoted.
@@ -197,7 +198,7 @@ BlockType parseBlock(const json& block, const std::string& where) {
                "properties", "default", "placement", "wall_variant", "connects", "opens", "collision"});
   type.shape = BlockShape::Cube;
   parseLooks(block, type, at);
-  type.opacity = static_cast<std::uint8_t>(parseLevel(block, "opacity", type.isOpaqueCube() ? 15 : 0, at));
+  type.opacity = static_cast<std::uint8_t>(parseLevel(block, "opacity", type.isOpaqueCube() ? kMaxLight : 0, at));
   type.emission = static_cast<std::uint8_t>(parseLevel(block, "emission", 0, at));
   if (const json* v = field(block, "shape_occludes_light")) {
     type.shapeOccludesLight = boolean(*v, member(at, "shape_occludes_light"));

@@ -23,7 +23,7 @@ struct LevelProp {
 struct Level {
   std::string generator = "terrain";
   std::uint64_t seed = 0;
-  std::int64_t time = 0;                 // world time in ticks (24000 a day)
+  std::int64_t time = 0;                 // world time in ticks (kTicksPerDay a day)
   glm::dvec3 playerPosition{0.0, 0.0, 0.0};
   float playerYaw = 0.0f, playerPitch = 0.0f;  // degrees
   bool playerFlying = false;             // "flying" (absent in older files: false)
