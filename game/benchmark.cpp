@@ -3,9 +3,8 @@
 #include <stdlib.h>
 
 #include <cmath>
-#include <map>
-
 #include <glm/trigonometric.hpp>
+#include <map>
 #include <nlohmann/json.hpp>
 
 #include "core/day_cycle.h"
@@ -18,7 +17,9 @@
 namespace terrasol {
 namespace {
 
-double ms(Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double, std::milli>(b - a).count(); }
+double ms(Clock::time_point a, Clock::time_point b) {
+  return std::chrono::duration<double, std::milli>(b - a).count();
+}
 
 // Where the camera is at each moment of the flight.
 class Flight {
@@ -26,7 +27,8 @@ class Flight {
   Flight(PlayWorld& world, const GameOptions& options) : world_(world), seconds_(*options.benchmark) {
     if (options.benchmarkPath.empty()) return;
     scene_ = loadScene(options.benchmarkPath);
-    if (!scene_->cameraPath) throw Error(options.benchmarkPath.string() + ": --benchmark needs a camera_path");
+    if (!scene_->cameraPath)
+      throw Error(options.benchmarkPath.string() + ": --benchmark needs a camera_path");
   }
   bool onPath() const { return scene_.has_value(); }
 
@@ -43,9 +45,11 @@ class Flight {
     // The circle: 20 blocks over the ground below, followed smoothly (over the hills, never into them).
     glm::dvec3 eye = circle(t);
     const glm::dvec3 ahead = circle(t + 0.5);
-    const auto ground = world_.streamed().surfaceY(static_cast<int>(std::floor(eye.x)), static_cast<int>(std::floor(eye.z)));
+    const auto ground =
+        world_.streamed().surfaceY(static_cast<int>(std::floor(eye.x)), static_cast<int>(std::floor(eye.z)));
     const double target = ground ? *ground + 20.0 : std::max(altitude_, 100.0);
-    altitude_ = altitude_ == 0.0 ? target : altitude_ + (target - altitude_) * std::min(1.0, (t - lastT_) * 2.0);
+    altitude_ =
+        altitude_ == 0.0 ? target : altitude_ + (target - altitude_) * std::min(1.0, (t - lastT_) * 2.0);
     lastT_ = t;
     eye.y = altitude_;
     player.teleport(eye - glm::dvec3(0.0, Player::kEyeHeight, 0.0));
@@ -79,19 +83,20 @@ void printSummary(Game& game, const FrameRateSummary& fps, double seconds) {
   const GameSettings& settings = game.settings();
   const glm::ivec2 size = game.window().framebufferSize();
   const ShadowSettings& s = settings.shadow;
-  std::printf("benchmark: %zu frames in %.1f s at %dx%d, view %d chunks, shadows %s\n", fps.frames, seconds, size.x,
-              size.y, settings.viewDistance,
+  std::printf("benchmark: %zu frames in %.1f s at %dx%d, view %d chunks, shadows %s\n", fps.frames, seconds,
+              size.x, size.y, settings.viewDistance,
               s.enabled ? format("%s %d^2 over %.0f blocks, pcf %d, updates over %d frames",
                                  std::string(nameOf(s.mode, kShadowModes)).c_str(), s.resolution, s.distance,
                                  s.pcfSamples, s.updateFrames)
                               .c_str()
                         : "off");
-  std::printf("benchmark: render scale %s\n",
-              settings.targetFps > 0
-                  ? format("dynamic for %d fps (at most %.2f)", settings.targetFps, settings.renderScale).c_str()
-                  : format("%.2f", settings.renderScale).c_str());
-  std::printf("benchmark: median %.1f fps (%.2f ms), 1%% low %.1f fps (%.2f ms), mean %.1f fps\n", fps.medianFps,
-              fps.medianMs, fps.onePercentLowFps, fps.onePercentLowMs, fps.meanFps);
+  std::printf(
+      "benchmark: render scale %s\n",
+      settings.targetFps > 0
+          ? format("dynamic for %d fps (at most %.2f)", settings.targetFps, settings.renderScale).c_str()
+          : format("%.2f", settings.renderScale).c_str());
+  std::printf("benchmark: median %.1f fps (%.2f ms), 1%% low %.1f fps (%.2f ms), mean %.1f fps\n",
+              fps.medianFps, fps.medianMs, fps.onePercentLowFps, fps.onePercentLowMs, fps.meanFps);
 }
 
 }  // namespace
@@ -150,8 +155,8 @@ int runBenchmark(Game& game, const GameOptions& options) {
   for (int i = 0; i < kTimedFrames && !window.shouldClose(); ++i) {
     flight.place(flight.onPath() ? seconds * i / kTimedFrames : t + i / 20.0);
     const bool last = i + 1 == kTimedFrames && !options.screenshot.empty();
-    const FrameTimes f =
-        game.frameStep(0.0, {.play = false, .passTimes = true, .finish = true, .pace = false, .screenshot = last});
+    const FrameTimes f = game.frameStep(
+        0.0, {.play = false, .passTimes = true, .finish = true, .pace = false, .screenshot = last});
     passMs["~world"] += ms(f.start, f.streamed) / kTimedFrames;
     passMs["~hud"] += ms(f.drawn, f.hud) / kTimedFrames;
     passMs["~swap"] += ms(f.hud, f.done) / kTimedFrames;

@@ -92,8 +92,8 @@ void BlockInteraction::placeProp(const std::string& model, PlayWorld& world) {
     const LevelProp prop = world.props().standingIn(model, *at);
     const WorldBounds box = world.props().boundsOf(prop);
     const Box body = world.player().box();
-    if (body.min.x < box.max.x && body.max.x > box.min.x && body.min.y < box.max.y && body.max.y > box.min.y &&
-        body.min.z < box.max.z && body.max.z > box.min.z) {
+    if (body.min.x < box.max.x && body.max.x > box.min.x && body.min.y < box.max.y &&
+        body.max.y > box.min.y && body.min.z < box.max.z && body.max.z > box.min.z) {
       logWarning("no prop placed: it would stand in the player");
       return;
     }

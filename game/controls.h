@@ -5,18 +5,39 @@
 
 #include <array>
 #include <bitset>
+#include <glm/vec2.hpp>
 #include <optional>
 #include <string>
 #include <string_view>
 
-#include <glm/vec2.hpp>
-
 namespace terrasol {
 
 enum class Action {
-  Forward, Back, Left, Right, Jump, Sneak, Sprint,
-  Hotbar1, Hotbar2, Hotbar3, Hotbar4, Hotbar5, Hotbar6, Hotbar7, Hotbar8, Hotbar9,
-  HideHud, Screenshot, DebugOverlay, DebugView, TimeFaster, TimeStop, TimeSet, PlaceProp, Inventory,
+  Forward,
+  Back,
+  Left,
+  Right,
+  Jump,
+  Sneak,
+  Sprint,
+  Hotbar1,
+  Hotbar2,
+  Hotbar3,
+  Hotbar4,
+  Hotbar5,
+  Hotbar6,
+  Hotbar7,
+  Hotbar8,
+  Hotbar9,
+  HideHud,
+  Screenshot,
+  DebugOverlay,
+  DebugView,
+  TimeFaster,
+  TimeStop,
+  TimeSet,
+  PlaceProp,
+  Inventory,
   Count
 };
 inline constexpr std::size_t kActionCount = static_cast<std::size_t>(Action::Count);

@@ -26,7 +26,9 @@ class DebugOverlay {
   bool shown() const { return shown_; }
   void toggle() { shown_ = !shown_; }
   DebugView view() const { return view_; }
-  void nextView() { view_ = static_cast<DebugView>((static_cast<std::size_t>(view_) + 1) % kDebugViews.size()); }
+  void nextView() {
+    view_ = static_cast<DebugView>((static_cast<std::size_t>(view_) + 1) % kDebugViews.size());
+  }
   const std::string& glRenderer() const { return glRenderer_; }
 
   // Each frame's time in seconds (the rate), and that of each drawn frame (the graph).

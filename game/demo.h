@@ -3,7 +3,6 @@
 // over the generated world from late morning into the night, drawn by the deferred renderer.
 
 #include <filesystem>
-
 #include <glm/vec2.hpp>
 
 #include "scene/scene_file.h"

@@ -31,7 +31,8 @@ GameSettings firstRunSettings(const MachineProbe& probe, GameSettings s) {
   s.renderScale = 1.0f;
   char why[160];
   std::snprintf(why, sizeof why, "%s, an empty frame %.1f ms: %s", software ? "software rendering" : "a GPU",
-                probe.frameMs, software ? (slow ? "the slow settings" : "the light settings") : "the full settings");
+                probe.frameMs,
+                software ? (slow ? "the slow settings" : "the light settings") : "the full settings");
   s.firstRun = FirstRunRecord{probe.glRenderer, probe.frameMs, why};
   return s;
 }

@@ -13,8 +13,9 @@ FrameRateSummary summarizeFrames(std::vector<double> frameSeconds) {
   s.seconds = std::accumulate(frameSeconds.begin(), frameSeconds.end(), 0.0);
   const double median = frameSeconds[frameSeconds.size() / 2];
   const std::size_t slowest = std::max<std::size_t>(1, frameSeconds.size() / 100);
-  const double low = std::accumulate(frameSeconds.end() - static_cast<std::ptrdiff_t>(slowest), frameSeconds.end(), 0.0) /
-                     static_cast<double>(slowest);
+  const double low =
+      std::accumulate(frameSeconds.end() - static_cast<std::ptrdiff_t>(slowest), frameSeconds.end(), 0.0) /
+      static_cast<double>(slowest);
   s.medianMs = median * 1000.0;
   s.onePercentLowMs = low * 1000.0;
   s.medianFps = median > 0.0 ? 1.0 / median : 0.0;

@@ -32,7 +32,9 @@ std::uint64_t seedOf(const GameOptions& options) {
   return options.seed ? *options.seed : std::random_device{}();
 }
 
-std::string firstOf(const std::vector<std::string>& names) { return names.empty() ? std::string() : names.front(); }
+std::string firstOf(const std::vector<std::string>& names) {
+  return names.empty() ? std::string() : names.front();
+}
 
 }  // namespace
 
@@ -42,8 +44,8 @@ Game::Game(GlfwWindow& window, const GameOptions& options)
       settings_(settingsFor(options)),
       content_(BlockRegistry::fromFile(resourcePackDir() / "default" / "blocks.json")),
       renderer_(content_.blocks, settings_.values),
-      world_(options.benchmark ? benchmarkWorldDir() : options.world, options.benchmark.has_value(), seedOf(options),
-             options.seed, content_, renderer_, settings_.values.viewDistance),
+      world_(options.benchmark ? benchmarkWorldDir() : options.world, options.benchmark.has_value(),
+             seedOf(options), options.seed, content_, renderer_, settings_.values.viewDistance),
       interaction_(content_),
       input_(window, settings_.values.keys),
       ui_(window.handle(), settings_, firstOf(world_.propFiles())),
@@ -60,7 +62,9 @@ float Game::renderScale() const {
   return s.targetFps > 0 ? frames_.resolution.scale() : s.renderScale;
 }
 
-glm::ivec2 Game::drawableSize() const { return window_.minimised() ? glm::ivec2(0) : window_.framebufferSize(); }
+glm::ivec2 Game::drawableSize() const {
+  return window_.minimised() ? glm::ivec2(0) : window_.framebufferSize();
+}
 
 void Game::probeMachine() {
   if (drawableSize().x <= 0 || drawableSize().y <= 0) return;

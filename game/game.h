@@ -49,9 +49,9 @@ struct FrameState {
   double tickAccumulator = 0.0;  // seconds not yet run as ticks
   double sinceSave = 0.0;
   FrameCounts counts;
-  bool hidden = false;           // the last frame had no pixels to draw
+  bool hidden = false;                    // the last frame had no pixels to draw
   bool quit = false, screenshot = false;  // asked for by the menu, a key or the script
-  DynamicResolution resolution;  // the render scale while the settings hold a target fps
+  DynamicResolution resolution;           // the render scale while the settings hold a target fps
 };
 
 class Game {

@@ -41,8 +41,9 @@ int Game::run() {
   }
   save();
   settings_.save();
-  if (!options_.report.empty()) writeReport(options_.report, world_, options_.probes, frames_.counts, input_.screen(),
-                                            interaction_.hotbar());
+  if (!options_.report.empty())
+    writeReport(options_.report, world_, options_.probes, frames_.counts, input_.screen(),
+                interaction_.hotbar());
   return 0;
 }
 
@@ -56,7 +57,8 @@ FrameTimes Game::frameStep(double dt, const FrameStep& step) {
   const glm::ivec2 size = drawableSize();
   if (const bool hidden = size.x <= 0 || size.y <= 0; hidden != frames_.hidden) {
     frames_.hidden = hidden;
-    logInfo(hidden ? "window minimised: drawing paused, the world goes on" : "window restored: drawing again");
+    logInfo(hidden ? "window minimised: drawing paused, the world goes on"
+                   : "window restored: drawing again");
   }
   ++(frames_.hidden ? frames_.counts.minimised : frames_.counts.drawn);
   if (!frames_.hidden) {
@@ -98,11 +100,13 @@ void Game::playInput(double dt) {
 }
 
 void Game::handleInput(const FrameInput& in, double dt) {
-  if (in.menuPressed) input_.show(input_.screenOpen() ? Screen::None : Screen::Menu);  // Esc closes what is open
+  if (in.menuPressed)
+    input_.show(input_.screenOpen() ? Screen::None : Screen::Menu);  // Esc closes what is open
   if (input_.screenOpen()) return;
   if (in.wasPressed(Action::Inventory)) return input_.show(Screen::Inventory);
   const double sensitivity = settings_.values.mouseSensitivity;
-  world_.player().look(static_cast<float>(in.mouseDelta.x * sensitivity), static_cast<float>(in.mouseDelta.y * sensitivity));
+  world_.player().look(static_cast<float>(in.mouseDelta.x * sensitivity),
+                       static_cast<float>(in.mouseDelta.y * sensitivity));
   Hotbar& hotbar = interaction_.hotbar();
   for (int i = 0; i < Hotbar::kSlots; ++i) {
     if (in.wasPressed(static_cast<Action>(static_cast<int>(Action::Hotbar1) + i))) hotbar.select(i);
@@ -145,9 +149,10 @@ void Game::drawHud() {
   if (ui_.hudShown() && !input_.screenOpen()) ui_.crosshairAndHotbar(renderer_, interaction_.hotbar());
   if (overlay_.shown()) {
     const std::deque<float>& graph = overlay_.graph();
-    ui_.overlay(overlay_.left(world_, renderer_),
-                overlay_.right(world_, settings_.values, drawableSize(), renderScale(), interaction_.target()),
-                {graph.begin(), graph.end()});
+    ui_.overlay(
+        overlay_.left(world_, renderer_),
+        overlay_.right(world_, settings_.values, drawableSize(), renderScale(), interaction_.target()),
+        {graph.begin(), graph.end()});
   }
   if (input_.screen() == Screen::Menu) applyMenu(ui_.menu(renderer_.assets().packNames, world_.propFiles()));
   if (input_.screen() == Screen::Inventory) ui_.inventory(renderer_, interaction_.hotbar());

@@ -26,7 +26,8 @@ WorldBounds GameProps::boundsOf(const LevelProp& prop) {
   return placedBounds(propTransform(prop.position, prop.rotation, prop.scale), m.min, m.max);
 }
 
-void GameProps::place(const LevelProp& prop, const World& world, const LightEngine& light, bool keepIfBroken) {
+void GameProps::place(const LevelProp& prop, const World& world, const LightEngine& light,
+                      bool keepIfBroken) {
   try {
     placed_.place(resolve(prop.model), propTransform(prop.position, prop.rotation, prop.scale), world, light);
   } catch (const Error& e) {

@@ -29,12 +29,14 @@ std::unique_ptr<DeferredRenderer> makeRenderer(const BlockAssets& assets, const 
   options.shadow = shadow;
   options.reflections = reflections;
   options.props = props;
-  return std::make_unique<DeferredRenderer>(ShaderPreprocessor(shaderDir()), assets.atlas.atlas, assets.colormaps, options);
+  return std::make_unique<DeferredRenderer>(ShaderPreprocessor(shaderDir()), assets.atlas.atlas,
+                                            assets.colormaps, options);
 }
 
 }  // namespace
 
-std::unique_ptr<BlockAssets> BlockAssets::load(const BlockRegistry& blocks, const std::vector<PackChoice>& packs) {
+std::unique_ptr<BlockAssets> BlockAssets::load(const BlockRegistry& blocks,
+                                               const std::vector<PackChoice>& packs) {
   std::vector<std::string> names;
   const PackStack stack = openPacks(packs, names);
   return std::make_unique<BlockAssets>(blocks, stack, std::move(names));
@@ -87,8 +89,8 @@ const BlockIcons& GameRenderer::icons() {
   if (!icons_) {
     std::vector<SectionMesh> meshes;
     for (const BlockId state : iconStates_) meshes.push_back(iconMesh(assets_->table, blocks_, state));
-    icons_ = std::make_unique<BlockIcons>(ShaderPreprocessor(shaderDir()), assets_->atlas.atlas, assets_->colormaps,
-                                          meshes, kIconPixels);
+    icons_ = std::make_unique<BlockIcons>(ShaderPreprocessor(shaderDir()), assets_->atlas.atlas,
+                                          assets_->colormaps, meshes, kIconPixels);
   }
   return *icons_;
 }

@@ -4,9 +4,8 @@
 // the GPU. Packs reload without a restart: new assets, then every section is meshed again.
 
 #include <memory>
-#include <vector>
-
 #include <optional>
+#include <vector>
 
 #include "mesh/mesher.h"
 #include "render/block_icons.h"

@@ -1,9 +1,8 @@
 #include "game_report.h"
 
 #include <chrono>
-#include <thread>
-
 #include <nlohmann/json.hpp>
+#include <thread>
 
 #include "core/error.h"
 
@@ -44,21 +43,27 @@ void writeReport(const std::filesystem::path& file, PlayWorld& world, const std:
                      {"light", {light.x, light.y}}});
   }
   nlohmann::json edits = nlohmann::json::array();
-  for (const Edit& e : world.edits()) edits.push_back({{"pos", {e.pos.x, e.pos.y, e.pos.z}}, {"block", e.block}});
+  for (const Edit& e : world.edits())
+    edits.push_back({{"pos", {e.pos.x, e.pos.y, e.pos.z}}, {"block", e.block}});
   const Player& player = world.player();
   const glm::dvec3 p = player.position();
   nlohmann::json slots = nlohmann::json::array();
   for (const BlockId state : hotbar.slots()) slots.push_back(blocks.stateName(state));
-  const nlohmann::json report = {
-      {"world", streamed.dir().string()},
-      {"time", world.level().time},
-      {"frames", {{"drawn", frames.drawn}, {"minimised", frames.minimised}}},
-      {"player", {{"position", {p.x, p.y, p.z}}, {"yaw", player.yaw}, {"pitch", player.pitch}, {"flying", player.flying}}},
-      {"screen", screen == Screen::Menu ? "menu" : screen == Screen::Inventory ? "inventory" : "none"},
-      {"hotbar", slots},
-      {"edits", edits},
-      {"props", props},
-      {"probes", probed}};
+  const nlohmann::json report = {{"world", streamed.dir().string()},
+                                 {"time", world.level().time},
+                                 {"frames", {{"drawn", frames.drawn}, {"minimised", frames.minimised}}},
+                                 {"player",
+                                  {{"position", {p.x, p.y, p.z}},
+                                   {"yaw", player.yaw},
+                                   {"pitch", player.pitch},
+                                   {"flying", player.flying}}},
+                                 {"screen", screen == Screen::Menu        ? "menu"
+                                            : screen == Screen::Inventory ? "inventory"
+                                                                          : "none"},
+                                 {"hotbar", slots},
+                                 {"edits", edits},
+                                 {"props", props},
+                                 {"probes", probed}};
   writeFileAtomically(file, report.dump(2) + "\n");
 }
 

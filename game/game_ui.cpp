@@ -20,7 +20,8 @@ ItemIcon iconOf(GameRenderer& renderer, BlockId state, const std::string& name) 
 
 std::vector<ItemIcon> hotbarIcons(GameRenderer& renderer, const Hotbar& hotbar) {
   std::vector<ItemIcon> slots;
-  for (const BlockId state : hotbar.slots()) slots.push_back(iconOf(renderer, state, renderer.blocks()[state].name));
+  for (const BlockId state : hotbar.slots())
+    slots.push_back(iconOf(renderer, state, renderer.blocks()[state].name));
   return slots;
 }
 
@@ -40,7 +41,8 @@ void GameUi::crosshairAndHotbar(GameRenderer& renderer, const Hotbar& hotbar) {
   hud_.hotbar(hotbarIcons(renderer, hotbar), hotbar.selected());
 }
 
-MenuResult GameUi::menu(const std::vector<std::string>& loadedPacks, const std::vector<std::string>& propFiles) {
+MenuResult GameUi::menu(const std::vector<std::string>& loadedPacks,
+                        const std::vector<std::string>& propFiles) {
   const MenuResult r = menu_.draw(settings_.values, loadedPacks, propFiles, selectedProp_);
   if (r.prop) selectedProp_ = *r.prop;
   return r;
@@ -48,7 +50,8 @@ MenuResult GameUi::menu(const std::vector<std::string>& loadedPacks, const std::
 
 void GameUi::inventory(GameRenderer& renderer, Hotbar& hotbar) {
   std::vector<ItemIcon> items;
-  for (const BlockId state : renderer.iconStates()) items.push_back(iconOf(renderer, state, renderer.blocks()[state].name));
+  for (const BlockId state : renderer.iconStates())
+    items.push_back(iconOf(renderer, state, renderer.blocks()[state].name));
   const InventoryScreen::Result r = inventory_.draw(items, hotbarIcons(renderer, hotbar), hotbar.selected());
   if (r.select) hotbar.select(*r.select);
   if (r.place) hotbar.put(r.place->first, renderer.iconStates()[r.place->second]);

@@ -6,8 +6,9 @@
 namespace terrasol {
 
 Hotbar::Hotbar(const BlockRegistry& blocks) {
-  constexpr const char* kFirstStart[kSlots] = {"stone",     "stone_slab", "oak_stairs", "oak_planks", "oak_log",
-                                               "oak_fence", "glass_pane", "torch",      "oak_door"};
+  constexpr const char* kFirstStart[kSlots] = {"stone",      "stone_slab", "oak_stairs",
+                                               "oak_planks", "oak_log",    "oak_fence",
+                                               "glass_pane", "torch",      "oak_door"};
   for (int i = 0; i < kSlots; ++i) slots_[static_cast<std::size_t>(i)] = blocks.id(kFirstStart[i]);
 }
 

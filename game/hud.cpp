@@ -1,20 +1,20 @@
 #include "hud.h"
 
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_opengl3.h>
+#include <imgui.h>
+
 #include <algorithm>
 #include <array>
 #include <cstdint>
 #include <cstdio>
 
-#include <imgui.h>
-#include <backends/imgui_impl_glfw.h>
-#include <backends/imgui_impl_opengl3.h>
-
 namespace terrasol {
 namespace {
 
-constexpr ImGuiWindowFlags kOverlayFlags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoInputs |
-                                           ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
-                                           ImGuiWindowFlags_NoNav | ImGuiWindowFlags_AlwaysAutoResize;
+constexpr ImGuiWindowFlags kOverlayFlags =
+    ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoInputs | ImGuiWindowFlags_NoSavedSettings |
+    ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav | ImGuiWindowFlags_AlwaysAutoResize;
 
 }  // namespace
 
@@ -49,7 +49,8 @@ void Hud::crosshair() {
   ImDrawList* draw = ImGui::GetForegroundDrawList();
   const ImVec2 c(ImGui::GetIO().DisplaySize.x * 0.5f, ImGui::GetIO().DisplaySize.y * 0.5f);
   const float r = 8.0f;
-  for (const auto& [colour, width] : {std::pair{IM_COL32(0, 0, 0, 160), 4.0f}, std::pair{IM_COL32(255, 255, 255, 230), 2.0f}}) {
+  for (const auto& [colour, width] :
+       {std::pair{IM_COL32(0, 0, 0, 160), 4.0f}, std::pair{IM_COL32(255, 255, 255, 230), 2.0f}}) {
     draw->AddLine({c.x - r, c.y}, {c.x + r, c.y}, colour, width);
     draw->AddLine({c.x, c.y - r}, {c.x, c.y + r}, colour, width);
   }
@@ -65,16 +66,18 @@ void Hud::hotbar(const std::vector<ItemIcon>& slots, int selected) {
     const ImVec2 a(x0 + slot * i, y0), b(a.x + slot, a.y + slot);
     draw->AddRectFilled(a, b, IM_COL32(0, 0, 0, 110));
     const float inset = slot * 0.18f;
-    const ImU32 tint = IM_COL32(static_cast<int>(s.r * 255), static_cast<int>(s.g * 255), static_cast<int>(s.b * 255), 255);
-    draw->AddImage(reinterpret_cast<ImTextureID>(static_cast<std::uintptr_t>(s.texture)), {a.x + inset, a.y + inset},
-                   {b.x - inset, b.y - inset}, {s.u0, s.v0}, {s.u1, s.v1}, tint);
+    const ImU32 tint =
+        IM_COL32(static_cast<int>(s.r * 255), static_cast<int>(s.g * 255), static_cast<int>(s.b * 255), 255);
+    draw->AddImage(reinterpret_cast<ImTextureID>(static_cast<std::uintptr_t>(s.texture)),
+                   {a.x + inset, a.y + inset}, {b.x - inset, b.y - inset}, {s.u0, s.v0}, {s.u1, s.v1}, tint);
     draw->AddRect(a, b, i == selected ? IM_COL32(255, 255, 255, 255) : IM_COL32(130, 130, 130, 200), 0.0f, 0,
                   i == selected ? 3.0f : 1.0f);
   }
   if (selected >= 0 && selected < static_cast<int>(slots.size())) {
     const std::string& name = slots[static_cast<std::size_t>(selected)].name;
     const ImVec2 size = ImGui::CalcTextSize(name.c_str());
-    draw->AddText({display.x * 0.5f - size.x * 0.5f, y0 - size.y - 6.0f}, IM_COL32(255, 255, 255, 255), name.c_str());
+    draw->AddText({display.x * 0.5f - size.x * 0.5f, y0 - size.y - 6.0f}, IM_COL32(255, 255, 255, 255),
+                  name.c_str());
   }
 }
 

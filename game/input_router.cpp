@@ -12,7 +12,8 @@ InputRouter::InputRouter(GlfwWindow& window, const KeyBindings& keys)
   GLFWwindow* w = window_.handle();
   glfwSetWindowUserPointer(w, this);
   glfwSetKeyCallback(w, [](GLFWwindow* win, int key, int, int action, int) { of(win).key(key, action); });
-  glfwSetMouseButtonCallback(w, [](GLFWwindow* win, int button, int action, int) { of(win).button(button, action); });
+  glfwSetMouseButtonCallback(
+      w, [](GLFWwindow* win, int button, int action, int) { of(win).button(button, action); });
   glfwSetCursorPosCallback(w, [](GLFWwindow* win, double x, double y) { of(win).cursor(x, y); });
   glfwSetScrollCallback(w, [](GLFWwindow* win, double, double y) {
     if (!of(win).screenOpen()) of(win).controls_.scrolled(y);

@@ -3,8 +3,8 @@
 #include <algorithm>
 
 #include "core/error.h"
-#include "core/paths.h"
 #include "core/json_check.h"
+#include "core/paths.h"
 
 namespace terrasol {
 namespace {
@@ -27,7 +27,9 @@ ScriptEvent parseEvent(const json& value, const std::string& key) {
     e.kind = ScriptEvent::Kind::Key;
     const std::string name = nonEmptyString(*v, member(key, "key"));
     const auto code = keyNamed(name);
-    if (!code) fail(member(key, "key"), join({"unknown key \"", name, "\" (GLFW names: W, SPACE, LEFT_SHIFT, F3, 1)"}));
+    if (!code)
+      fail(member(key, "key"),
+           join({"unknown key \"", name, "\" (GLFW names: W, SPACE, LEFT_SHIFT, F3, 1)"}));
     e.key = *code;
     ++kinds;
   }
@@ -35,7 +37,9 @@ ScriptEvent parseEvent(const json& value, const std::string& key) {
     e.kind = ScriptEvent::Kind::Button;
     const std::string name = nonEmptyString(*v, member(key, "button"));
     const auto b = mouseButtonNamed(name);
-    if (!b) fail(member(key, "button"), join({"unknown button \"", name, "\"; expected \"left\", \"right\" or \"middle\""}));
+    if (!b)
+      fail(member(key, "button"),
+           join({"unknown button \"", name, "\"; expected \"left\", \"right\" or \"middle\""}));
     e.button = *b;
     ++kinds;
   }
@@ -67,7 +71,9 @@ ScriptEvent parseEvent(const json& value, const std::string& key) {
   } else if (placeProp) {
     fail(key, "\"place_prop\" needs \"model\" (a .gltf or .glb file)");
   }
-  if (kinds != 1) fail(key, "expected exactly one of \"key\", \"button\", \"look\", \"mouse_move\", \"scroll\", \"command\"");
+  if (kinds != 1)
+    fail(key,
+         "expected exactly one of \"key\", \"button\", \"look\", \"mouse_move\", \"scroll\", \"command\"");
   if (const json* v = field(value, "down")) {
     if (e.kind != ScriptEvent::Kind::Key && e.kind != ScriptEvent::Kind::Button) {
       fail(member(key, "down"), "only keys and buttons go down and up");
@@ -84,7 +90,8 @@ InputScript parseRoot(const json& root) {
   const json* events = field(root, "events");
   if (!events) fail("events", "missing");
   if (!events->is_array()) expected("events", "an array", *events);
-  for (std::size_t i = 0; i < events->size(); ++i) script.events.push_back(parseEvent((*events)[i], element("events", i)));
+  for (std::size_t i = 0; i < events->size(); ++i)
+    script.events.push_back(parseEvent((*events)[i], element("events", i)));
   std::stable_sort(script.events.begin(), script.events.end(),
                    [](const ScriptEvent& a, const ScriptEvent& b) { return a.t < b.t; });
   return script;
@@ -101,11 +108,14 @@ InputScript parseInputScript(std::string_view text, const std::filesystem::path&
   }
 }
 
-InputScript loadInputScript(const std::filesystem::path& file) { return parseInputScript(readTextFile(file), file); }
+InputScript loadInputScript(const std::filesystem::path& file) {
+  return parseInputScript(readTextFile(file), file);
+}
 
 std::vector<ScriptEvent> ScriptPlayer::due(double now) {
   std::vector<ScriptEvent> out;
-  while (next_ < script_.events.size() && script_.events[next_].t <= now + 1e-9) out.push_back(script_.events[next_++]);
+  while (next_ < script_.events.size() && script_.events[next_].t <= now + 1e-9)
+    out.push_back(script_.events[next_++]);
   return out;
 }
 

@@ -17,12 +17,11 @@
 // Events play in time order once the game clock reaches their "t".
 
 #include <filesystem>
+#include <glm/vec2.hpp>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
-
-#include <glm/vec2.hpp>
 
 #include "controls.h"
 #include "core/enum_names.h"
@@ -38,12 +37,12 @@ static_assert(kScriptCommands.size() == static_cast<std::size_t>(ScriptCommand::
 struct ScriptEvent {
   enum class Kind { Key, Button, Look, MouseMove, Scroll, Command } kind = Kind::Key;
   double t = 0.0;
-  int key = 0;                     // Key
-  MouseButton button{};            // Button
-  std::optional<bool> down;        // Key, Button: nullopt taps (down this frame, up the next)
-  glm::dvec2 value{0.0};           // Look: yaw, pitch; MouseMove: dx, dy; Scroll: x = notches
-  ScriptCommand command{};         // Command
-  std::string model;               // Command PlaceProp: the glTF file
+  int key = 0;               // Key
+  MouseButton button{};      // Button
+  std::optional<bool> down;  // Key, Button: nullopt taps (down this frame, up the next)
+  glm::dvec2 value{0.0};     // Look: yaw, pitch; MouseMove: dx, dy; Scroll: x = notches
+  ScriptCommand command{};   // Command
+  std::string model;         // Command PlaceProp: the glTF file
 };
 
 struct InputScript {

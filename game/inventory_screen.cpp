@@ -1,16 +1,18 @@
 #include "inventory_screen.h"
 
+#include <imgui.h>
+
 #include <algorithm>
 #include <cstdint>
-
-#include <imgui.h>
 
 #include "inventory.h"
 
 namespace terrasol {
 namespace {
 
-ImTextureID textureOf(const ItemIcon& s) { return reinterpret_cast<ImTextureID>(static_cast<std::uintptr_t>(s.texture)); }
+ImTextureID textureOf(const ItemIcon& s) {
+  return reinterpret_cast<ImTextureID>(static_cast<std::uintptr_t>(s.texture));
+}
 
 // The slot's icon as a button; true when clicked.
 bool iconButton(const ItemIcon& s, float size) {
@@ -23,16 +25,19 @@ constexpr const char* kPayload = "TERRASOL_ITEM";
 
 }  // namespace
 
-bool InventoryScreen::typing() const { return ImGui::GetIO().WantTextInput; }
+bool InventoryScreen::typing() const {
+  return ImGui::GetIO().WantTextInput;
+}
 
-InventoryScreen::Result InventoryScreen::draw(const std::vector<ItemIcon>& items, const std::vector<ItemIcon>& hotbar,
-                                              int selected) {
+InventoryScreen::Result InventoryScreen::draw(const std::vector<ItemIcon>& items,
+                                              const std::vector<ItemIcon>& hotbar, int selected) {
   Result out;
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   const float cell = std::clamp(display.y / 16.0f, 28.0f, 48.0f);
   ImGui::SetNextWindowPos({display.x * 0.5f, display.y * 0.5f}, ImGuiCond_Always, {0.5f, 0.5f});
-  ImGui::SetNextWindowSize({std::min(display.x - 20.0f, cell * 14.0f), std::min(display.y - 20.0f, cell * 12.0f)},
-                           ImGuiCond_Always);
+  ImGui::SetNextWindowSize(
+      {std::min(display.x - 20.0f, cell * 14.0f), std::min(display.y - 20.0f, cell * 12.0f)},
+      ImGuiCond_Always);
   if (ImGui::Begin("Blocks", nullptr, ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings)) {
     // Not focused on opening: the key that opened the inventory closes it again unless the player
     // clicks into the search first (then letters type).
@@ -44,7 +49,8 @@ InventoryScreen::Result InventoryScreen::draw(const std::vector<ItemIcon>& items
     const float button = cell + 2.0f * 2.0f + style.ItemSpacing.x;  // icon, frame padding, spacing
     const float footer = cell + 4.0f + style.ItemSpacing.y * 2.0f + style.WindowPadding.y + 8.0f;
     ImGui::BeginChild("##items", {0.0f, -footer});
-    const int columns = std::max(1, static_cast<int>((ImGui::GetContentRegionAvail().x + style.ItemSpacing.x) / button));
+    const int columns =
+        std::max(1, static_cast<int>((ImGui::GetContentRegionAvail().x + style.ItemSpacing.x) / button));
     int shown = 0;
     for (std::size_t i = 0; i < items.size(); ++i) {
       if (!matchesSearch(items[i].name, search_)) continue;
@@ -53,7 +59,8 @@ InventoryScreen::Result InventoryScreen::draw(const std::vector<ItemIcon>& items
       if (iconButton(items[i], cell)) out.place = {{selected, i}};
       if (ImGui::BeginDragDropSource()) {
         ImGui::SetDragDropPayload(kPayload, &i, sizeof i);
-        ImGui::Image(textureOf(items[i]), {cell, cell}, {items[i].u0, items[i].v0}, {items[i].u1, items[i].v1});
+        ImGui::Image(textureOf(items[i]), {cell, cell}, {items[i].u0, items[i].v0},
+                     {items[i].u1, items[i].v1});
         ImGui::EndDragDropSource();
       }
       if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", items[i].name.c_str());

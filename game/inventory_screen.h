@@ -18,7 +18,7 @@ class InventoryScreen {
   // What the player did in the inventory this frame.
   struct Result {
     std::optional<std::pair<int, std::size_t>> place;  // put item `second` into hotbar slot `first`
-    std::optional<int> select;                          // a hotbar slot clicked
+    std::optional<int> select;                         // a hotbar slot clicked
   };
   Result draw(const std::vector<ItemIcon>& items, const std::vector<ItemIcon>& hotbar, int selected);
   // A text field has the keyboard: letters are typing, not game keys.

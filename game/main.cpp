@@ -9,8 +9,8 @@
 #include "game.h"
 #include "options.h"
 #include "platform/glfw/glfw_window.h"
-#include "screenshot.h"
 #include "scene_render/scene_render.h"
+#include "screenshot.h"
 
 namespace terrasol {
 namespace {
@@ -40,8 +40,9 @@ int run(const GameOptions& options) {
   } catch (const NoDisplayError& e) {
     if (options.benchmark || !options.inputScript.empty()) throw;  // these need the real game
     constexpr int kDemoFrames = 8;
-    std::printf("terrasol: %s.\nNo window can be opened here, so rendering a %d-frame demo headless instead...\n",
-                e.what(), kDemoFrames);
+    std::printf(
+        "terrasol: %s.\nNo window can be opened here, so rendering a %d-frame demo headless instead...\n",
+        e.what(), kDemoFrames);
     std::fflush(stdout);
     const auto dir = renderHeadlessDemo(options.demoDir, kDemoFrames, {640, 360});
     std::printf("terrasol: wrote %d demo frames to %s/frame_0000.png ... frame_%04d.png\n", kDemoFrames,

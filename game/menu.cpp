@@ -1,11 +1,11 @@
 #include "menu.h"
 
+#include <imgui.h>
+
 #include <algorithm>
 #include <array>
 #include <cstdio>
 #include <span>
-
-#include <imgui.h>
 
 #include "core/render_scale.h"
 
@@ -31,16 +31,19 @@ bool comboOf(const char* label, E& value, std::span<const std::string_view> name
 }
 
 // Sliders apply when let go (a new shadow map per drag step would stall the menu).
-bool released() { return ImGui::IsItemDeactivatedAfterEdit(); }
+bool released() {
+  return ImGui::IsItemDeactivatedAfterEdit();
+}
 
 }  // namespace
 
 MenuResult Menu::draw(GameSettings& settings, const std::vector<std::string>& loadedPacks,
-                     const std::vector<std::string>& propFiles, const std::string& selectedProp) {
+                      const std::vector<std::string>& propFiles, const std::string& selectedProp) {
   MenuResult out;
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   ImGui::SetNextWindowPos({display.x * 0.5f, display.y * 0.5f}, ImGuiCond_Always, {0.5f, 0.5f});
-  ImGui::SetNextWindowSize({std::min(display.x - 20.0f, 560.0f), std::min(display.y - 20.0f, 520.0f)}, ImGuiCond_Always);
+  ImGui::SetNextWindowSize({std::min(display.x - 20.0f, 560.0f), std::min(display.y - 20.0f, 520.0f)},
+                           ImGuiCond_Always);
   if (ImGui::Begin("Game menu", nullptr, ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings)) {
     out.resume = ImGui::Button("Back to game");
     ImGui::SameLine();
@@ -73,8 +76,9 @@ MenuResult Menu::draw(GameSettings& settings, const std::vector<std::string>& lo
 }
 
 void Menu::propsTab(const std::vector<std::string>& files, const std::string& selected, MenuResult& out) {
-  ImGui::TextWrapped("glTF models (.gltf, .glb) in the world's props folder. The place-prop key (P by default) "
-                     "stands the chosen one in the free cell beside the block you look at.");
+  ImGui::TextWrapped(
+      "glTF models (.gltf, .glb) in the world's props folder. The place-prop key (P by default) "
+      "stands the chosen one in the free cell beside the block you look at.");
   if (files.empty()) ImGui::TextDisabled("The folder is empty.");
   for (const std::string& file : files) {
     if (ImGui::RadioButton(file.c_str(), file == selected)) out.prop = file;
@@ -96,7 +100,8 @@ void Menu::settingsTab(GameSettings& s, MenuResult& out) {
   ImGui::SliderInt("Target fps (0: fixed scale)", &s.targetFps, 0, 144);
   out.settingsChanged |= released();
   if (s.firstRun) {
-    ImGui::TextWrapped("Chosen on the first start for %s (%s).", s.firstRun->glRenderer.c_str(), s.firstRun->choice.c_str());
+    ImGui::TextWrapped("Chosen on the first start for %s (%s).", s.firstRun->glRenderer.c_str(),
+                       s.firstRun->choice.c_str());
   }
   ImGui::Separator();
   ImGui::TextUnformatted("Shadows");
@@ -170,7 +175,10 @@ void Menu::packsTab(GameSettings& s, const std::vector<std::string>& loadedPacks
       break;
     }
     ImGui::SameLine();
-    ImGui::TextUnformatted(s.packs[static_cast<std::size_t>(std::min<int>(i, static_cast<int>(s.packs.size()) - 1))].path.string().c_str());
+    ImGui::TextUnformatted(
+        s.packs[static_cast<std::size_t>(std::min<int>(i, static_cast<int>(s.packs.size()) - 1))]
+            .path.string()
+            .c_str());
     ImGui::PopID();
   }
   char buffer[512];

@@ -3,11 +3,10 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <glm/vec2.hpp>
 #include <optional>
 #include <string>
 #include <vector>
-
-#include <glm/vec2.hpp>
 
 #include "world/coords.h"
 

@@ -119,8 +119,8 @@ std::vector<Placement> placementOf(const World& world, BlockId held, const Targe
       // On a side it hangs from that side, at the half clicked; on a top or bottom it faces the player.
       if (!side.empty())
         return {{at, with(blocks, held, {{"facing", side}, {"half", upper ? "top" : "bottom"}})}};
-      return {
-          {at, with(blocks, held, {{"facing", opposite(facingOf(look))}, {"half", upper ? "top" : "bottom"}})}};
+      return {{at, with(blocks, held,
+                        {{"facing", opposite(facingOf(look))}, {"half", upper ? "top" : "bottom"}})}};
     case PlacementRule::Wall:
     case PlacementRule::Torch:
       // Against a wall's whole side; a torch stands on a floor too.

@@ -36,7 +36,8 @@ PlayWorld::PlayWorld(const std::filesystem::path& dir, bool scratch, std::uint64
     : scratch_{scratch ? dir : std::filesystem::path()},
       content_(content),
       renderer_(renderer),
-      world_(dir, seed, content.blocks, renderer.assets().table, viewDistance, workerThreads(), &content.shapes),
+      world_(dir, seed, content.blocks, renderer.assets().table, viewDistance, workerThreads(),
+             &content.shapes),
       props_(world_.dir()) {
   const Level& level = world_.level();
   if (world_.isNew()) {
@@ -67,7 +68,8 @@ PlayWorld::PlayWorld(const std::filesystem::path& dir, bool scratch, std::uint64
 void PlayWorld::tick(const FrameInput& in, bool screenOpen, int ticks) {
   MoveInput move;
   if (!screenOpen) {
-    move.forward = static_cast<float>(in.isHeld(Action::Forward)) - static_cast<float>(in.isHeld(Action::Back));
+    move.forward =
+        static_cast<float>(in.isHeld(Action::Forward)) - static_cast<float>(in.isHeld(Action::Back));
     move.strafe = static_cast<float>(in.isHeld(Action::Right)) - static_cast<float>(in.isHeld(Action::Left));
     move.jump = in.isHeld(Action::Jump);
     move.sneak = in.isHeld(Action::Sneak);
@@ -75,7 +77,8 @@ void PlayWorld::tick(const FrameInput& in, bool screenOpen, int ticks) {
   }
   for (int i = 0; i < ticks; ++i) {
     player_.tick(world_.world(), move);
-    if (player_.position().y < kMinY - 64) spawnPending_ = true;  // fell out of the world: back to the surface
+    if (player_.position().y < kMinY - 64)
+      spawnPending_ = true;  // fell out of the world: back to the surface
     time_.tick(world_.level().time);
   }
 }

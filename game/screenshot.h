@@ -2,7 +2,6 @@
 // Saving the window's picture: F2, a script's "screenshot" and --screenshot all come here.
 
 #include <filesystem>
-
 #include <glm/vec2.hpp>
 
 namespace terrasol {

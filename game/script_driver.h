@@ -26,7 +26,7 @@ class ScriptDriver {
  private:
   ScriptPlayer player_;
   bool started_ = false;
-  double clock_ = 0.0;  // script time: from the start
+  double clock_ = 0.0;        // script time: from the start
   std::vector<int> keyTaps_;  // tapped this frame: released the next
   std::vector<MouseButton> buttonTaps_;
 };

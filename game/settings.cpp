@@ -43,25 +43,32 @@ void parseKeys(const json& value, KeyBindings& keys) {
 }
 
 GameSettings parseRoot(const json& root, const path& dir) {
-  checkObject(root, "", {"view_distance", "fov", "mouse_sensitivity", "sun_path_rotation", "shadow", "reflections", "packs",
-                         "keys", "vsync", "render_scale", "target_fps", "first_run"});
+  checkObject(root, "",
+              {"view_distance", "fov", "mouse_sensitivity", "sun_path_rotation", "shadow", "reflections",
+               "packs", "keys", "vsync", "render_scale", "target_fps", "first_run"});
   GameSettings s;
-  if (const json* v = field(root, "view_distance")) s.viewDistance = static_cast<int>(wholeNumber(*v, "view_distance", 2, 32));
+  if (const json* v = field(root, "view_distance"))
+    s.viewDistance = static_cast<int>(wholeNumber(*v, "view_distance", 2, 32));
   if (const json* v = field(root, "fov")) s.fov = numberIn(*v, "fov", 30.0, 110.0, false);
-  if (const json* v = field(root, "mouse_sensitivity")) s.mouseSensitivity = numberIn(*v, "mouse_sensitivity", 0.01, 2.0, false);
-  if (const json* v = field(root, "sun_path_rotation")) s.sunPathRotation = numberIn(*v, "sun_path_rotation", -90.0, 90.0, false);
+  if (const json* v = field(root, "mouse_sensitivity"))
+    s.mouseSensitivity = numberIn(*v, "mouse_sensitivity", 0.01, 2.0, false);
+  if (const json* v = field(root, "sun_path_rotation"))
+    s.sunPathRotation = numberIn(*v, "sun_path_rotation", -90.0, 90.0, false);
   if (const json* v = field(root, "shadow")) parseShadow(*v, "shadow", s.shadow);
   if (const json* v = field(root, "reflections")) parseReflections(*v, "reflections", s.reflections);
   if (const json* v = field(root, "packs")) s.packs = parsePacks(*v, dir);
   if (const json* v = field(root, "keys")) parseKeys(*v, s.keys);
   if (const json* v = field(root, "vsync")) s.vsync = boolean(*v, "vsync");
-  if (const json* v = field(root, "render_scale")) s.renderScale = numberIn(*v, "render_scale", kMinRenderScale, kMaxRenderScale, false);
-  if (const json* v = field(root, "target_fps")) s.targetFps = static_cast<int>(wholeNumber(*v, "target_fps", 0, 1000));
+  if (const json* v = field(root, "render_scale"))
+    s.renderScale = numberIn(*v, "render_scale", kMinRenderScale, kMaxRenderScale, false);
+  if (const json* v = field(root, "target_fps"))
+    s.targetFps = static_cast<int>(wholeNumber(*v, "target_fps", 0, 1000));
   if (const json* v = field(root, "first_run")) {
     checkObject(*v, "first_run", {"gl", "frame_ms", "choice"});
     FirstRunRecord r;
     if (const json* g = field(*v, "gl")) r.glRenderer = nonEmptyString(*g, "first_run.gl");
-    if (const json* m = field(*v, "frame_ms")) r.frameMs = numberIn(*m, "first_run.frame_ms", 0.0, 1e6, false);
+    if (const json* m = field(*v, "frame_ms"))
+      r.frameMs = numberIn(*m, "first_run.frame_ms", 0.0, 1e6, false);
     if (const json* c = field(*v, "choice")) r.choice = nonEmptyString(*c, "first_run.choice");
     s.firstRun = r;
   }
@@ -92,21 +99,30 @@ void saveSettings(const std::filesystem::path& file, const GameSettings& s) {
     const auto a = static_cast<Action>(i);
     keys[std::string(actionName(a))] = keyName(s.keys.key(a));
   }
-  json root = {{"view_distance", s.viewDistance}, {"fov", s.fov},
-                     {"mouse_sensitivity", s.mouseSensitivity}, {"sun_path_rotation", s.sunPathRotation},
-                     {"shadow", shadowJson(s.shadow)}, {"reflections", reflectionsJson(s.reflections)},
-                     {"packs", packs}, {"keys", keys}, {"vsync", s.vsync},
-                     {"render_scale", s.renderScale}, {"target_fps", s.targetFps}};
+  json root = {{"view_distance", s.viewDistance},
+               {"fov", s.fov},
+               {"mouse_sensitivity", s.mouseSensitivity},
+               {"sun_path_rotation", s.sunPathRotation},
+               {"shadow", shadowJson(s.shadow)},
+               {"reflections", reflectionsJson(s.reflections)},
+               {"packs", packs},
+               {"keys", keys},
+               {"vsync", s.vsync},
+               {"render_scale", s.renderScale},
+               {"target_fps", s.targetFps}};
   if (s.firstRun) {
-    root["first_run"] = {{"gl", s.firstRun->glRenderer}, {"frame_ms", s.firstRun->frameMs}, {"choice", s.firstRun->choice}};
+    root["first_run"] = {
+        {"gl", s.firstRun->glRenderer}, {"frame_ms", s.firstRun->frameMs}, {"choice", s.firstRun->choice}};
   }
   if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path());
   writeFileAtomically(file, root.dump(2) + "\n");
 }
 
 std::filesystem::path defaultSettingsFile() {
-  if (const char* xdg = std::getenv("XDG_CONFIG_HOME"); xdg && *xdg) return std::filesystem::path(xdg) / "terrasol" / "settings.json";
-  if (const char* home = std::getenv("HOME"); home && *home) return std::filesystem::path(home) / ".config" / "terrasol" / "settings.json";
+  if (const char* xdg = std::getenv("XDG_CONFIG_HOME"); xdg && *xdg)
+    return std::filesystem::path(xdg) / "terrasol" / "settings.json";
+  if (const char* home = std::getenv("HOME"); home && *home)
+    return std::filesystem::path(home) / ".config" / "terrasol" / "settings.json";
   return "terrasol-settings.json";
 }
 

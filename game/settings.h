@@ -29,24 +29,24 @@ struct FirstRunRecord {
 };
 
 struct GameSettings {
-  int viewDistance = 6;             // chunks, 2..32
-  float fov = 70.0f;                // degrees, 30..110
-  float mouseSensitivity = 0.15f;   // degrees per pixel, 0.01..2
-  float sunPathRotation = -25.0f;   // degrees, -90..90
+  int viewDistance = 6;            // chunks, 2..32
+  float fov = 70.0f;               // degrees, 30..110
+  float mouseSensitivity = 0.15f;  // degrees per pixel, 0.01..2
+  float sunPathRotation = -25.0f;  // degrees, -90..90
   ShadowSettings shadow = defaultShadow();
-  ReflectionSettings reflections;   // as in scenes
-  std::vector<PackChoice> packs;    // stacked bottom to top over the default pack
+  ReflectionSettings reflections;  // as in scenes
+  std::vector<PackChoice> packs;   // stacked bottom to top over the default pack
   KeyBindings keys;
   bool vsync = true;
-  float renderScale = 1.0f;         // the scene drawn at this fraction of the window, 0.25..1
-  int targetFps = 30;               // dynamic resolution holds this rate (below render_scale); 0: off
+  float renderScale = 1.0f;                // the scene drawn at this fraction of the window, 0.25..1
+  int targetFps = 30;                      // dynamic resolution holds this rate (below render_scale); 0: off
   std::optional<FirstRunRecord> firstRun;  // "first_run": absent in files written by hand
 
   static ShadowSettings defaultShadow() {
     ShadowSettings s;
     s.resolution = 1024;  // a 1024^2 map over 96 blocks, warped: sharp near, cheap on llvmpipe
     s.distance = 96.0f;
-    s.updateFrames = 8;   // Luanti's default: a changed map is spread over 8 frames
+    s.updateFrames = 8;  // Luanti's default: a changed map is spread over 8 frames
     return s;
   }
 };

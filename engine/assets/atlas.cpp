@@ -1,6 +1,5 @@
 #include "assets/atlas.h"
 
-
 #include <algorithm>
 #include <bit>
 #include <cmath>
@@ -59,8 +58,10 @@ std::vector<float> textureSmoothness(const Atlas& atlas) {
   const int pad = atlas.tileSize / 2;
   for (std::size_t t = 0; t < atlas.textures.size(); ++t) {
     std::uint8_t most = 0;
-    for (int tile = atlas.textures[t].firstTile; tile < atlas.textures[t].firstTile + atlas.textures[t].frames; ++tile) {
-      const int x0 = (tile % atlas.columns) * atlas.slotSize + pad, y0 = (tile / atlas.columns) * atlas.slotSize + pad;
+    for (int tile = atlas.textures[t].firstTile;
+         tile < atlas.textures[t].firstTile + atlas.textures[t].frames; ++tile) {
+      const int x0 = (tile % atlas.columns) * atlas.slotSize + pad,
+                y0 = (tile / atlas.columns) * atlas.slotSize + pad;
       for (int y = y0; y < y0 + atlas.tileSize; ++y)
         for (int x = x0; x < x0 + atlas.tileSize; ++x) most = std::max(most, level.pixel(x, y)[0]);
     }
@@ -83,7 +84,8 @@ Atlas buildAtlas(const std::vector<LoadedTexture>& textures) {
   }
   atlas.tileSize = std::min(static_cast<int>(std::bit_ceil(static_cast<unsigned>(widest))), kMaxTile);
   atlas.slotSize = 2 * atlas.tileSize;
-  atlas.columns = std::max(1, static_cast<int>(std::ceil(std::sqrt(static_cast<double>(std::max(tiles, 1))))));
+  atlas.columns =
+      std::max(1, static_cast<int>(std::ceil(std::sqrt(static_cast<double>(std::max(tiles, 1))))));
   atlas.rows = std::max(1, (tiles + atlas.columns - 1) / atlas.columns);
   const int width = atlas.columns * atlas.slotSize, height = atlas.rows * atlas.slotSize;
   Image albedo(width, height), normal(width, height), specular(width, height);
@@ -101,7 +103,8 @@ Atlas buildAtlas(const std::vector<LoadedTexture>& textures) {
       placeTile(albedo, sx, sy, a);
       Image n = scaleTo(t.normal[f], atlas.tileSize);
       if (t.openGlNormals) {  // the atlas holds LabPBR's DirectX convention: green points down
-        for (std::size_t i = 1; i < n.rgba.size(); i += 4) n.rgba[i] = static_cast<std::uint8_t>(255 - n.rgba[i]);
+        for (std::size_t i = 1; i < n.rgba.size(); i += 4)
+          n.rgba[i] = static_cast<std::uint8_t>(255 - n.rgba[i]);
       }
       placeTile(normal, sx, sy, n);
       placeTile(specular, sx, sy, scaleTo(t.specular[f], atlas.tileSize));
@@ -117,7 +120,8 @@ Atlas buildAtlas(const std::vector<LoadedTexture>& textures) {
   for (int i = 0; i < tiles; ++i) {
     if (!cutoutTiles[static_cast<std::size_t>(i)]) continue;
     const int sx = (i % atlas.columns) * atlas.slotSize, sy = (i / atlas.columns) * atlas.slotSize;
-    coverage[static_cast<std::size_t>(i)] = mip::coverage(albedo, {sx + pad0, sy + pad0, atlas.tileSize, atlas.tileSize});
+    coverage[static_cast<std::size_t>(i)] =
+        mip::coverage(albedo, {sx + pad0, sy + pad0, atlas.tileSize, atlas.tileSize});
   }
 
   atlas.albedo.push_back(std::move(albedo));

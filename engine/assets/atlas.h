@@ -7,11 +7,10 @@
 // tile), so bilinear filtering at a tile edge reads its own texture. Each mip level halves every slot
 // exactly, down to a 1-texel tile in a 2-texel slot, so no level ever mixes two textures.
 
+#include <glm/vec4.hpp>
 #include <string>
 #include <unordered_map>
 #include <vector>
-
-#include <glm/vec4.hpp>
 
 #include "assets/texture_loader.h"
 
@@ -19,15 +18,15 @@ namespace terrasol {
 
 struct AtlasTexture {
   std::string name;
-  int firstTile = 0;           // tiles firstTile .. firstTile + frames - 1 hold the strip's frames
+  int firstTile = 0;  // tiles firstTile .. firstTile + frames - 1 hold the strip's frames
   int frames = 1;
   std::optional<Animation> animation;
   bool missing = false;
-  bool cutout = false;         // has texels an alpha test discards
+  bool cutout = false;  // has texels an alpha test discards
 };
 
 struct Atlas {
-  int tileSize = 16;   // texels of a tile at level 0 (every texture is scaled to this)
+  int tileSize = 16;  // texels of a tile at level 0 (every texture is scaled to this)
   int slotSize = 32;
   int columns = 0, rows = 0;
   std::vector<Image> albedo, normal, specular;  // one image per mip level, level 0 first

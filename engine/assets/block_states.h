@@ -71,5 +71,4 @@ class BlockStates {
   std::vector<Part> parts_;
 };
 
-
 }  // namespace terrasol

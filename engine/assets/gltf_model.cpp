@@ -3,15 +3,14 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
-#include <limits>
-#include <set>
-
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
 #include <glm/mat3x3.hpp>
 #include <glm/mat4x4.hpp>
+#include <limits>
+#include <set>
 
 #include "core/error.h"
 
@@ -62,7 +61,8 @@ View viewOf(const tinygltf::Model& m, int index, const std::string& user) {
   }
   const tinygltf::BufferView& bv = m.bufferViews[static_cast<std::size_t>(a.bufferView)];
   const std::string bvKey = at("bufferViews", static_cast<std::size_t>(a.bufferView));
-  if (bv.buffer < 0 || static_cast<std::size_t>(bv.buffer) >= m.buffers.size()) fail(bvKey, "names no buffer");
+  if (bv.buffer < 0 || static_cast<std::size_t>(bv.buffer) >= m.buffers.size())
+    fail(bvKey, "names no buffer");
   const tinygltf::Buffer& buffer = m.buffers[static_cast<std::size_t>(bv.buffer)];
   if (bv.byteOffset > buffer.data.size() || bv.byteLength > buffer.data.size() - bv.byteOffset) {
     fail(bvKey, "reaches past the end of " + at("buffers", static_cast<std::size_t>(bv.buffer)) + " (" +
@@ -71,16 +71,22 @@ View viewOf(const tinygltf::Model& m, int index, const std::string& user) {
   const int components = tinygltf::GetNumComponentsInType(static_cast<std::uint32_t>(a.type));
   const int size = tinygltf::GetComponentSizeInBytes(static_cast<std::uint32_t>(a.componentType));
   if (components <= 0 || size <= 0) fail(key, "has an unknown type or component type");
-  if (a.count > kMaxVertices * 3) fail(key, "has " + std::to_string(a.count) + " elements, more than a prop may have");
+  if (a.count > kMaxVertices * 3)
+    fail(key, "has " + std::to_string(a.count) + " elements, more than a prop may have");
   const std::size_t element = static_cast<std::size_t>(components) * static_cast<std::size_t>(size);
   const std::size_t stride = bv.byteStride ? bv.byteStride : element;
   if (stride < element) fail(bvKey, "has a byte stride smaller than the elements of " + key);
   const std::size_t bytes = a.count == 0 ? 0 : stride * (a.count - 1) + element;
   if (a.byteOffset > bv.byteLength || bytes > bv.byteLength - a.byteOffset) {
-    fail(key, std::to_string(a.count) + " elements from byte " + std::to_string(a.byteOffset) + " reach past the end of " +
-                  bvKey + " (" + std::to_string(bv.byteLength) + " bytes)");
+    fail(key, std::to_string(a.count) + " elements from byte " + std::to_string(a.byteOffset) +
+                  " reach past the end of " + bvKey + " (" + std::to_string(bv.byteLength) + " bytes)");
   }
-  return {buffer.data.data() + bv.byteOffset + a.byteOffset, stride, a.count, a.componentType, components, a.normalized};
+  return {buffer.data.data() + bv.byteOffset + a.byteOffset,
+          stride,
+          a.count,
+          a.componentType,
+          components,
+          a.normalized};
 }
 
 template <class T>
@@ -94,26 +100,31 @@ T readAs(const std::uint8_t* p) {
 float component(const View& v, std::size_t i, int c) {
   const std::uint8_t* p = v.data + i * v.stride;
   switch (v.componentType) {
-    case TINYGLTF_COMPONENT_TYPE_FLOAT: return readAs<float>(p + 4 * c);
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return p[c] / (v.normalized ? 255.0f : 1.0f);
+    case TINYGLTF_COMPONENT_TYPE_FLOAT:
+      return readAs<float>(p + 4 * c);
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+      return p[c] / (v.normalized ? 255.0f : 1.0f);
     case TINYGLTF_COMPONENT_TYPE_BYTE:
       return v.normalized ? std::max(readAs<std::int8_t>(p + c) / 127.0f, -1.0f) : readAs<std::int8_t>(p + c);
     case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
       return readAs<std::uint16_t>(p + 2 * c) / (v.normalized ? 65535.0f : 1.0f);
     case TINYGLTF_COMPONENT_TYPE_SHORT:
-      return v.normalized ? std::max(readAs<std::int16_t>(p + 2 * c) / 32767.0f, -1.0f) : readAs<std::int16_t>(p + 2 * c);
-    default: return 0.0f;
+      return v.normalized ? std::max(readAs<std::int16_t>(p + 2 * c) / 32767.0f, -1.0f)
+                          : readAs<std::int16_t>(p + 2 * c);
+    default:
+      return 0.0f;
   }
 }
 
 // An attribute's accessor, required to have `components` components per element and `count` elements.
-const View* attribute(const tinygltf::Model& m, const tinygltf::Primitive& p, const char* name, int components,
-                      std::size_t count, const std::string& where, View& out) {
+const View* attribute(const tinygltf::Model& m, const tinygltf::Primitive& p, const char* name,
+                      int components, std::size_t count, const std::string& where, View& out) {
   const auto it = p.attributes.find(name);
   if (it == p.attributes.end()) return nullptr;
   out = viewOf(m, it->second, where + ".attributes." + name);
   if (out.components != components) fail(where + ".attributes." + name, "has the wrong element type");
-  if (count != 0 && out.count != count) fail(where + ".attributes." + name, "has a different count than POSITION");
+  if (count != 0 && out.count != count)
+    fail(where + ".attributes." + name, "has a different count than POSITION");
   return &out;
 }
 
@@ -127,8 +138,10 @@ void generateNormals(ModelMesh& mesh) {
   std::vector<ModelVertex> flat;
   flat.reserve(mesh.indices.size());
   for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
-    ModelVertex v[3] = {mesh.vertices[mesh.indices[t]], mesh.vertices[mesh.indices[t + 1]], mesh.vertices[mesh.indices[t + 2]]};
-    const glm::vec3 n = safeNormalize(glm::cross(v[1].position - v[0].position, v[2].position - v[0].position), {0, 1, 0});
+    ModelVertex v[3] = {mesh.vertices[mesh.indices[t]], mesh.vertices[mesh.indices[t + 1]],
+                        mesh.vertices[mesh.indices[t + 2]]};
+    const glm::vec3 n =
+        safeNormalize(glm::cross(v[1].position - v[0].position, v[2].position - v[0].position), {0, 1, 0});
     for (ModelVertex& x : v) {
       x.normal = n;
       flat.push_back(x);
@@ -141,7 +154,8 @@ void generateNormals(ModelMesh& mesh) {
 
 // Lengyel's per-triangle tangents from the UVs, summed per vertex and orthogonalised to the normal.
 void generateTangents(ModelMesh& mesh, bool hasUv) {
-  std::vector<glm::vec3> tan(mesh.vertices.size(), glm::vec3(0.0f)), bit(mesh.vertices.size(), glm::vec3(0.0f));
+  std::vector<glm::vec3> tan(mesh.vertices.size(), glm::vec3(0.0f)),
+      bit(mesh.vertices.size(), glm::vec3(0.0f));
   if (hasUv) {
     for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
       const std::uint32_t i0 = mesh.indices[t], i1 = mesh.indices[t + 1], i2 = mesh.indices[t + 2];
@@ -169,10 +183,12 @@ void generateTangents(ModelMesh& mesh, bool hasUv) {
 
 ModelMesh readPrimitive(const tinygltf::Model& m, const tinygltf::Primitive& p, const std::string& where,
                         const glm::mat4& transform) {
-  if (p.mode != TINYGLTF_MODE_TRIANGLES) fail(where, "only triangles are supported (mode " + std::to_string(p.mode) + ")");
+  if (p.mode != TINYGLTF_MODE_TRIANGLES)
+    fail(where, "only triangles are supported (mode " + std::to_string(p.mode) + ")");
   View positions, normals, tangents, uvs, indices;
   if (!attribute(m, p, "POSITION", 3, 0, where, positions)) fail(where, "has no POSITION");
-  if (positions.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT) fail(where + ".attributes.POSITION", "must be floats");
+  if (positions.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT)
+    fail(where + ".attributes.POSITION", "must be floats");
   const std::size_t n = positions.count;
   const bool hasNormal = attribute(m, p, "NORMAL", 3, n, where, normals) != nullptr;
   const bool hasTangent = attribute(m, p, "TANGENT", 4, n, where, tangents) != nullptr;
@@ -190,11 +206,14 @@ ModelMesh readPrimitive(const tinygltf::Model& m, const tinygltf::Primitive& p, 
     }
     v.position = glm::vec3(transform * glm::vec4(local, 1.0f));
     if (hasNormal) {
-      v.normal = safeNormalize(normalMatrix * glm::vec3(component(normals, i, 0), component(normals, i, 1), component(normals, i, 2)),
+      v.normal = safeNormalize(normalMatrix * glm::vec3(component(normals, i, 0), component(normals, i, 1),
+                                                        component(normals, i, 2)),
                                {0, 1, 0});
     }
     if (hasTangent) {
-      const glm::vec3 t = glm::mat3(transform) * glm::vec3(component(tangents, i, 0), component(tangents, i, 1), component(tangents, i, 2));
+      const glm::vec3 t =
+          glm::mat3(transform) *
+          glm::vec3(component(tangents, i, 0), component(tangents, i, 1), component(tangents, i, 2));
       v.tangent = glm::vec4(safeNormalize(t, {1, 0, 0}), component(tangents, i, 3) < 0.0f ? -1.0f : 1.0f);
     }
     if (hasUv) v.uv = {component(uvs, i, 0), component(uvs, i, 1)};
@@ -202,9 +221,9 @@ ModelMesh readPrimitive(const tinygltf::Model& m, const tinygltf::Primitive& p, 
   if (p.indices >= 0) {
     indices = viewOf(m, p.indices, where + ".indices");
     const int type = indices.componentType;
-    if (indices.components != 1 || (type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
-                                    type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
-                                    type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)) {
+    if (indices.components != 1 ||
+        (type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE && type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
+         type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)) {
       fail(where + ".indices", "must be unsigned bytes, shorts or ints");
     }
     mesh.indices.resize(indices.count);
@@ -213,7 +232,9 @@ ModelMesh readPrimitive(const tinygltf::Model& m, const tinygltf::Primitive& p, 
       const std::uint32_t index = type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE    ? e[0]
                                   : type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ? readAs<std::uint16_t>(e)
                                                                                    : readAs<std::uint32_t>(e);
-      if (index >= n) fail(where + ".indices", "index " + std::to_string(index) + " is past the " + std::to_string(n) + " vertices");
+      if (index >= n)
+        fail(where + ".indices",
+             "index " + std::to_string(index) + " is past the " + std::to_string(n) + " vertices");
       mesh.indices[i] = index;
     }
   } else {
@@ -222,7 +243,8 @@ ModelMesh readPrimitive(const tinygltf::Model& m, const tinygltf::Primitive& p, 
   }
   if (mesh.indices.size() % 3 != 0) fail(where, "has a triangle list whose length is not a multiple of 3");
   if (glm::determinant(glm::mat3(transform)) < 0.0f) {  // a mirroring node: keep triangles front-facing
-    for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) std::swap(mesh.indices[t + 1], mesh.indices[t + 2]);
+    for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3)
+      std::swap(mesh.indices[t + 1], mesh.indices[t + 2]);
   }
   if (!hasNormal) generateNormals(mesh);
   if (!hasTangent) generateTangents(mesh, hasUv);
@@ -232,7 +254,8 @@ ModelMesh readPrimitive(const tinygltf::Model& m, const tinygltf::Primitive& p, 
 glm::mat4 localMatrix(const tinygltf::Node& node) {
   if (node.matrix.size() == 16) {
     glm::mat4 m;
-    for (int i = 0; i < 16; ++i) glm::value_ptr(m)[i] = static_cast<float>(node.matrix[static_cast<std::size_t>(i)]);
+    for (int i = 0; i < 16; ++i)
+      glm::value_ptr(m)[i] = static_cast<float>(node.matrix[static_cast<std::size_t>(i)]);
     return m;
   }
   glm::mat4 m(1.0f);
@@ -248,7 +271,8 @@ glm::mat4 localMatrix(const tinygltf::Node& node) {
   return m;
 }
 
-void addNode(const tinygltf::Model& m, int index, const glm::mat4& parent, int depth, std::set<int>& path, Model& out) {
+void addNode(const tinygltf::Model& m, int index, const glm::mat4& parent, int depth, std::set<int>& path,
+             Model& out) {
   const std::string key = at("nodes", static_cast<std::size_t>(std::max(index, 0)));
   if (index < 0 || static_cast<std::size_t>(index) >= m.nodes.size()) fail(key, "does not exist");
   if (depth > kMaxNodeDepth) fail(key, "is nested more than " + std::to_string(kMaxNodeDepth) + " deep");
@@ -259,7 +283,9 @@ void addNode(const tinygltf::Model& m, int index, const glm::mat4& parent, int d
     if (static_cast<std::size_t>(node.mesh) >= m.meshes.size()) fail(key + ".mesh", "does not exist");
     const tinygltf::Mesh& mesh = m.meshes[static_cast<std::size_t>(node.mesh)];
     for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
-      out.meshes.push_back(readPrimitive(m, mesh.primitives[p], at("meshes", static_cast<std::size_t>(node.mesh)) + at(".primitives", p), transform));
+      out.meshes.push_back(
+          readPrimitive(m, mesh.primitives[p],
+                        at("meshes", static_cast<std::size_t>(node.mesh)) + at(".primitives", p), transform));
       if (out.vertexCount() > kMaxVertices) fail(key, "the model has more vertices than a prop may have");
     }
   }
@@ -269,9 +295,11 @@ void addNode(const tinygltf::Model& m, int index, const glm::mat4& parent, int d
 
 int imageOf(const tinygltf::Model& m, int texture, const std::string& where) {
   if (texture < 0) return -1;
-  if (static_cast<std::size_t>(texture) >= m.textures.size()) fail(where, "texture " + std::to_string(texture) + " does not exist");
+  if (static_cast<std::size_t>(texture) >= m.textures.size())
+    fail(where, "texture " + std::to_string(texture) + " does not exist");
   const int source = m.textures[static_cast<std::size_t>(texture)].source;
-  if (source >= static_cast<int>(m.images.size())) fail(at("textures", static_cast<std::size_t>(texture)), "names no image");
+  if (source >= static_cast<int>(m.images.size()))
+    fail(at("textures", static_cast<std::size_t>(texture)), "names no image");
   return source;
 }
 
@@ -279,21 +307,27 @@ ModelMaterial readMaterial(const tinygltf::Model& m, const tinygltf::Material& m
   ModelMaterial out;
   const auto& pbr = mat.pbrMetallicRoughness;
   if (pbr.baseColorFactor.size() == 4) {
-    out.baseColor = {pbr.baseColorFactor[0], pbr.baseColorFactor[1], pbr.baseColorFactor[2], pbr.baseColorFactor[3]};
+    out.baseColor = {pbr.baseColorFactor[0], pbr.baseColorFactor[1], pbr.baseColorFactor[2],
+                     pbr.baseColorFactor[3]};
   }
   out.baseColorImage = imageOf(m, pbr.baseColorTexture.index, key + ".baseColorTexture");
   out.metallic = static_cast<float>(std::clamp(pbr.metallicFactor, 0.0, 1.0));
   out.roughness = static_cast<float>(std::clamp(pbr.roughnessFactor, 0.0, 1.0));
-  out.metallicRoughnessImage = imageOf(m, pbr.metallicRoughnessTexture.index, key + ".metallicRoughnessTexture");
+  out.metallicRoughnessImage =
+      imageOf(m, pbr.metallicRoughnessTexture.index, key + ".metallicRoughnessTexture");
   out.normalImage = imageOf(m, mat.normalTexture.index, key + ".normalTexture");
   out.normalScale = static_cast<float>(mat.normalTexture.scale);
   out.occlusionImage = imageOf(m, mat.occlusionTexture.index, key + ".occlusionTexture");
   out.occlusionStrength = static_cast<float>(std::clamp(mat.occlusionTexture.strength, 0.0, 1.0));
-  if (mat.emissiveFactor.size() == 3) out.emissive = {mat.emissiveFactor[0], mat.emissiveFactor[1], mat.emissiveFactor[2]};
+  if (mat.emissiveFactor.size() == 3)
+    out.emissive = {mat.emissiveFactor[0], mat.emissiveFactor[1], mat.emissiveFactor[2]};
   out.emissiveImage = imageOf(m, mat.emissiveTexture.index, key + ".emissiveTexture");
-  if (mat.alphaMode == "MASK") out.alphaMode = AlphaMode::Mask;
-  else if (mat.alphaMode == "BLEND") out.alphaMode = AlphaMode::Blend;
-  else if (mat.alphaMode != "OPAQUE" && !mat.alphaMode.empty()) fail(key + ".alphaMode", "unknown mode \"" + mat.alphaMode + "\"");
+  if (mat.alphaMode == "MASK")
+    out.alphaMode = AlphaMode::Mask;
+  else if (mat.alphaMode == "BLEND")
+    out.alphaMode = AlphaMode::Blend;
+  else if (mat.alphaMode != "OPAQUE" && !mat.alphaMode.empty())
+    fail(key + ".alphaMode", "unknown mode \"" + mat.alphaMode + "\"");
   out.alphaCutoff = static_cast<float>(mat.alphaCutoff);
   out.doubleSided = mat.doubleSided;
   return out;
@@ -322,7 +356,8 @@ Model convert(const tinygltf::Model& m) {
     fail("extensionsRequired", "\"" + ext + "\" is required by the model and not supported");
   }
   Model out;
-  for (std::size_t i = 0; i < m.materials.size(); ++i) out.materials.push_back(readMaterial(m, m.materials[i], at("materials", i)));
+  for (std::size_t i = 0; i < m.materials.size(); ++i)
+    out.materials.push_back(readMaterial(m, m.materials[i], at("materials", i)));
   for (const tinygltf::Image& image : m.images) {
     Image copy(image.width, image.height);
     copy.rgba = image.image;
@@ -331,8 +366,10 @@ Model convert(const tinygltf::Model& m) {
   std::set<int> path;
   std::vector<int> roots;
   if (!m.scenes.empty()) {
-    const std::size_t scene = m.defaultScene >= 0 && static_cast<std::size_t>(m.defaultScene) < m.scenes.size()
-                                  ? static_cast<std::size_t>(m.defaultScene) : 0;
+    const std::size_t scene =
+        m.defaultScene >= 0 && static_cast<std::size_t>(m.defaultScene) < m.scenes.size()
+            ? static_cast<std::size_t>(m.defaultScene)
+            : 0;
     roots = m.scenes[scene].nodes;
   } else {
     std::vector<bool> child(m.nodes.size(), false);
@@ -362,7 +399,8 @@ std::size_t Model::vertexCount() const {
   return n;
 }
 
-Model parseModel(const std::vector<std::uint8_t>& bytes, const std::string& name, const std::filesystem::path& baseDir) {
+Model parseModel(const std::vector<std::uint8_t>& bytes, const std::string& name,
+                 const std::filesystem::path& baseDir) {
   tinygltf::TinyGLTF loader;
   loader.SetImageLoader(decodeGltfImage, nullptr);
   tinygltf::Model model;
@@ -370,8 +408,8 @@ Model parseModel(const std::vector<std::uint8_t>& bytes, const std::string& name
   const bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
   bool ok = false;
   try {
-    ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(), static_cast<unsigned int>(bytes.size()),
-                                              baseDir.string())
+    ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(),
+                                              static_cast<unsigned int>(bytes.size()), baseDir.string())
                 : loader.LoadASCIIFromString(&model, &err, &warn, reinterpret_cast<const char*>(bytes.data()),
                                              static_cast<unsigned int>(bytes.size()), baseDir.string());
   } catch (const std::exception& e) {  // tinygltf lets some of nlohmann's exceptions through

@@ -7,12 +7,11 @@
 
 #include <cstdint>
 #include <filesystem>
-#include <string>
-#include <vector>
-
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
+#include <string>
+#include <vector>
 
 #include "assets/image.h"
 
@@ -55,7 +54,7 @@ struct ModelMesh {
 struct Model {
   std::vector<ModelMesh> meshes;
   std::vector<ModelMaterial> materials;
-  std::vector<Image> images;  // RGBA8, as stored (base colour and emissive are sRGB)
+  std::vector<Image> images;       // RGBA8, as stored (base colour and emissive are sRGB)
   glm::vec3 min{0.0f}, max{0.0f};  // bounds of every vertex
   std::size_t vertexCount() const;
 };
@@ -64,6 +63,7 @@ struct Model {
 Model loadModel(const std::filesystem::path& file);
 // The bytes of a .glb or a .gltf (told apart by the binary magic); external files resolve against
 // `baseDir`. `name` names the input in errors.
-Model parseModel(const std::vector<std::uint8_t>& bytes, const std::string& name, const std::filesystem::path& baseDir);
+Model parseModel(const std::vector<std::uint8_t>& bytes, const std::string& name,
+                 const std::filesystem::path& baseDir);
 
 }  // namespace terrasol

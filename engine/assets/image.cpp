@@ -1,8 +1,8 @@
 #include "assets/image.h"
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
-#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
@@ -53,8 +53,8 @@ Image readAll(OIIO::ImageInput& in, const std::string& name, const ImageLimits& 
   const std::int64_t pixels = static_cast<std::int64_t>(spec.width) * spec.height;
   if (spec.width <= 0 || spec.height <= 0 || spec.width > limits.maxSide || spec.height > limits.maxSide ||
       pixels > limits.maxPixels || spec.nchannels <= 0) {
-    throw Error(name + ": unsupported image size " + std::to_string(spec.width) + "x" + std::to_string(spec.height) +
-                " with " + std::to_string(spec.nchannels) + " channels");
+    throw Error(name + ": unsupported image size " + std::to_string(spec.width) + "x" +
+                std::to_string(spec.height) + " with " + std::to_string(spec.nchannels) + " channels");
   }
   const int channels = std::min(spec.nchannels, 4);
   std::vector<std::uint8_t> raw(static_cast<std::size_t>(pixels) * static_cast<std::size_t>(channels));
@@ -79,7 +79,8 @@ Image loadImage(const std::filesystem::path& file, const ImageLimits& limits) {
   return readAll(*in, file.string(), limits);
 }
 
-Image decodeImage(const std::vector<std::uint8_t>& bytes, const std::string& name, const ImageLimits& limits) {
+Image decodeImage(const std::vector<std::uint8_t>& bytes, const std::string& name,
+                  const ImageLimits& limits) {
   if (bytes.empty()) throw Error(name + ": empty file");
   OIIO::Filesystem::IOMemReader reader(const_cast<std::uint8_t*>(bytes.data()), bytes.size());
   OIIO::ImageSpec config = straightAlpha();
@@ -95,8 +96,8 @@ void saveImage(const std::filesystem::path& file, const Image& image) {
   if (!out) throw Error(locate(file, 0, "cannot write image: " + OIIO::geterror()));
   OIIO::ImageSpec spec(image.width, image.height, 4, OIIO::TypeDesc::UINT8);
   spec.attribute("oiio:UnassociatedAlpha", 1);
-  if (!out->open(file.string(), spec) ||
-      !out->write_image(OIIO::TypeDesc::UINT8, image.rgba.data()) || !out->close()) {
+  if (!out->open(file.string(), spec) || !out->write_image(OIIO::TypeDesc::UINT8, image.rgba.data()) ||
+      !out->close()) {
     throw Error(locate(file, 0, "cannot write image: " + out->geterror()));
   }
 }

@@ -18,7 +18,9 @@ struct Image {
   Image() = default;
   Image(int w, int h) : width(w), height(h), rgba(static_cast<std::size_t>(w) * h * 4, 0) {}
   std::uint8_t* pixel(int x, int y) { return &rgba[(static_cast<std::size_t>(y) * width + x) * 4]; }
-  const std::uint8_t* pixel(int x, int y) const { return &rgba[(static_cast<std::size_t>(y) * width + x) * 4]; }
+  const std::uint8_t* pixel(int x, int y) const {
+    return &rgba[(static_cast<std::size_t>(y) * width + x) * 4];
+  }
 };
 
 // Largest image accepted; checked against the header before any pixel memory is allocated.
@@ -31,7 +33,8 @@ struct ImageLimits {
 // RGBA. Throws Error naming the file and the problem (missing, empty, corrupt, truncated, too large).
 Image loadImage(const std::filesystem::path& file, const ImageLimits& limits = {});
 // The same from bytes in memory; `name` (with its extension) names the format and the errors.
-Image decodeImage(const std::vector<std::uint8_t>& bytes, const std::string& name, const ImageLimits& limits = {});
+Image decodeImage(const std::vector<std::uint8_t>& bytes, const std::string& name,
+                  const ImageLimits& limits = {});
 // Writes by extension (.png, .exr, ...); throws Error naming the file on failure.
 void saveImage(const std::filesystem::path& file, const Image& image);
 // Scaled to w x h: `filtered` for colour and normals, else each pixel the source pixel under its

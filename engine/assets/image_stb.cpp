@@ -10,8 +10,8 @@
 #include <stb/stb_image_write.h>
 
 #include <algorithm>
-#include <cstdlib>
 #include <cstdint>
+#include <cstdlib>
 #include <fstream>
 #include <iterator>
 #include <memory>
@@ -51,8 +51,8 @@ Image decode(const std::vector<std::uint8_t>& bytes, const std::string& name, co
       static_cast<std::int64_t>(w) * h > limits.maxPixels) {
     throw Error(name + ": unsupported image size " + std::to_string(w) + "x" + std::to_string(h));
   }
-  std::unique_ptr<stbi_uc, void (*)(void*)> pixels(stbi_load_from_memory(bytes.data(), size, &w, &h, &channels, 4),
-                                                   stbi_image_free);
+  std::unique_ptr<stbi_uc, void (*)(void*)> pixels(
+      stbi_load_from_memory(bytes.data(), size, &w, &h, &channels, 4), stbi_image_free);
   if (!pixels) throw Error(name + ": corrupt or truncated image: " + stbi_failure_reason());
   Image image(w, h);
   std::copy_n(pixels.get(), image.rgba.size(), image.rgba.begin());
@@ -64,17 +64,21 @@ Image decode(const std::vector<std::uint8_t>& bytes, const std::string& name, co
 Image loadImage(const std::filesystem::path& file, const ImageLimits& limits) {
   std::ifstream in(file, std::ios::binary);
   if (!in) throw Error(locate(file, 0, "cannot read image: cannot open the file"));
-  const std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)),
+                                        std::istreambuf_iterator<char>());
   return decode(bytes, file.string(), limits);
 }
 
-Image decodeImage(const std::vector<std::uint8_t>& bytes, const std::string& name, const ImageLimits& limits) {
+Image decodeImage(const std::vector<std::uint8_t>& bytes, const std::string& name,
+                  const ImageLimits& limits) {
   return decode(bytes, name, limits);
 }
 
 void saveImage(const std::filesystem::path& file, const Image& image) {
-  if (file.extension() != ".png") throw Error(locate(file, 0, "cannot write image: this build writes PNG only"));
-  if (!stbi_write_png(file.string().c_str(), image.width, image.height, 4, image.rgba.data(), image.width * 4)) {
+  if (file.extension() != ".png")
+    throw Error(locate(file, 0, "cannot write image: this build writes PNG only"));
+  if (!stbi_write_png(file.string().c_str(), image.width, image.height, 4, image.rgba.data(),
+                      image.width * 4)) {
     throw Error(locate(file, 0, "cannot write image"));
   }
 }

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-
 #include <glm/geometric.hpp>
 
 namespace terrasol::labpbr {
@@ -25,8 +24,12 @@ constexpr Metal kMetals[8] = {
     {"silver", {0.15943f, 0.14512f, 0.13547f}, {3.9291f, 3.1900f, 2.3808f}},
 };
 
-float unorm(std::uint8_t v) { return static_cast<float>(v) / 255.0f; }
-std::uint8_t toByte(float v) { return static_cast<std::uint8_t>(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f)); }
+float unorm(std::uint8_t v) {
+  return static_cast<float>(v) / 255.0f;
+}
+std::uint8_t toByte(float v) {
+  return static_cast<std::uint8_t>(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f));
+}
 
 }  // namespace
 
@@ -91,6 +94,8 @@ glm::vec3 metalF0(int id) {
   return num / den;
 }
 
-const char* metalName(int id) { return id >= 230 && id <= 237 ? kMetals[id - 230].name : "none"; }
+const char* metalName(int id) {
+  return id >= 230 && id <= 237 ? kMetals[id - 230].name : "none";
+}
 
 }  // namespace terrasol::labpbr

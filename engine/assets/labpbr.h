@@ -3,7 +3,6 @@
 // these functions are the reference the tests check, and what the atlas builder uses for mipmaps.
 
 #include <cstdint>
-
 #include <glm/vec3.hpp>
 
 namespace terrasol::labpbr {
@@ -23,9 +22,9 @@ NormalTexel decodeNormal(const std::uint8_t rgba[4], bool openGlConvention = fal
 void encodeNormal(const glm::vec3& normal, float ao, float depth, std::uint8_t rgba[4]);
 
 enum class Reflectance : std::uint8_t {
-  Dielectric,  // G 0..229: F0 = G / 255, grey
-  Metal,       // G 230..237: one of the predefined metals
-  AlbedoMetal, // G 238..255: metal whose F0 is the albedo
+  Dielectric,   // G 0..229: F0 = G / 255, grey
+  Metal,        // G 230..237: one of the predefined metals
+  AlbedoMetal,  // G 238..255: metal whose F0 is the albedo
 };
 
 struct SpecularTexel {

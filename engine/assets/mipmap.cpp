@@ -27,7 +27,9 @@ std::uint8_t linearToSrgb(float c) {
   return static_cast<std::uint8_t>(std::lround(s * 255.0f));
 }
 
-std::uint8_t average(int a, int b, int c, int d) { return static_cast<std::uint8_t>((a + b + c + d + 2) / 4); }
+std::uint8_t average(int a, int b, int c, int d) {
+  return static_cast<std::uint8_t>((a + b + c + d + 2) / 4);
+}
 
 // Calls f(out, the four source texels) for every texel of the halved image.
 template <class F>
@@ -35,8 +37,8 @@ Image halve(const Image& src, F f) {
   Image out(src.width / 2, src.height / 2);
   for (int y = 0; y < out.height; ++y)
     for (int x = 0; x < out.width; ++x) {
-      const std::uint8_t* q[4] = {src.pixel(2 * x, 2 * y), src.pixel(2 * x + 1, 2 * y), src.pixel(2 * x, 2 * y + 1),
-                                  src.pixel(2 * x + 1, 2 * y + 1)};
+      const std::uint8_t* q[4] = {src.pixel(2 * x, 2 * y), src.pixel(2 * x + 1, 2 * y),
+                                  src.pixel(2 * x, 2 * y + 1), src.pixel(2 * x + 1, 2 * y + 1)};
       f(out.pixel(x, y), q);
     }
   return out;
@@ -57,10 +59,13 @@ template <class InClass>
 std::uint8_t averageWithinMajorityClass(const std::uint8_t v[4], InClass inClass) {
   int inside = 0, sumIn = 0, sumOut = 0;
   for (int i = 0; i < 4; ++i) {
-    if (inClass(v[i])) ++inside, sumIn += v[i];
-    else sumOut += v[i];
+    if (inClass(v[i]))
+      ++inside, sumIn += v[i];
+    else
+      sumOut += v[i];
   }
-  if (inside >= 2 && (inside > 2 || inClass(v[0]))) return static_cast<std::uint8_t>((sumIn + inside / 2) / inside);
+  if (inside >= 2 && (inside > 2 || inClass(v[0])))
+    return static_cast<std::uint8_t>((sumIn + inside / 2) / inside);
   return static_cast<std::uint8_t>((sumOut + (4 - inside) / 2) / (4 - inside));
 }
 

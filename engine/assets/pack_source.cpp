@@ -37,7 +37,8 @@ class FolderSource final : public PackSource {
     if (!std::filesystem::is_regular_file(file, ec)) return std::nullopt;
     const auto size = std::filesystem::file_size(file, ec);
     if (ec) throw Error(locate(file, 0, "cannot read: " + ec.message()));
-    if (size > kMaxFileBytes) throw Error(locate(file, 0, "file too large (" + std::to_string(size) + " bytes)"));
+    if (size > kMaxFileBytes)
+      throw Error(locate(file, 0, "file too large (" + std::to_string(size) + " bytes)"));
     std::ifstream in(file, std::ios::binary);
     std::vector<std::uint8_t> bytes(size);
     in.read(reinterpret_cast<char*>(bytes.data()), static_cast<std::streamsize>(size));
@@ -104,27 +105,32 @@ class ZipSource final : public PackSource {
     if (zip_stat_index(archive_, it->second, 0, &stat) != 0 || !(stat.valid & ZIP_STAT_SIZE)) {
       throw Error(displayName(path) + ": cannot read zip entry");
     }
-    if (stat.size > kMaxFileBytes) throw Error(displayName(path) + ": file too large (" + std::to_string(stat.size) + " bytes)");
+    if (stat.size > kMaxFileBytes)
+      throw Error(displayName(path) + ": file too large (" + std::to_string(stat.size) + " bytes)");
     zip_file_t* file = zip_fopen_index(archive_, it->second, 0);
     if (!file) throw Error(displayName(path) + ": cannot open zip entry: " + zip_strerror(archive_));
     std::vector<std::uint8_t> bytes(stat.size);
     const zip_int64_t n = zip_fread(file, bytes.data(), stat.size);
     zip_fclose(file);
-    if (n < 0 || static_cast<zip_uint64_t>(n) != stat.size) throw Error(displayName(path) + ": corrupt zip entry");
+    if (n < 0 || static_cast<zip_uint64_t>(n) != stat.size)
+      throw Error(displayName(path) + ": corrupt zip entry");
     return bytes;
   }
 
   std::vector<std::string> list(const std::string& dir) const override {
     const std::string prefix = prefix_ + dir + "/";
     std::vector<std::string> names;
-    for (auto it = entries_.lower_bound(prefix); it != entries_.end() && it->first.starts_with(prefix); ++it) {
+    for (auto it = entries_.lower_bound(prefix); it != entries_.end() && it->first.starts_with(prefix);
+         ++it) {
       const std::string rest = it->first.substr(prefix.size());
       if (rest.find('/') == std::string::npos) names.push_back(rest);
     }
     return names;
   }
 
-  std::string displayName(const std::string& path) const override { return location().string() + "!" + prefix_ + path; }
+  std::string displayName(const std::string& path) const override {
+    return location().string() + "!" + prefix_ + path;
+  }
 
  private:
   zip_t* archive_ = nullptr;

@@ -62,7 +62,8 @@ ResourcePack ResourcePack::open(const std::filesystem::path& path) {
   if (!mcmeta) throw Error(pack.source_->displayName("pack.mcmeta") + ": missing: not a resource pack");
   pack.info_ = parseMcmeta(*mcmeta, pack.source_->displayName("pack.mcmeta"));
   for (const char* dir : kBlockDirs) {
-    for (const auto& name : pack.source_->list(dir)) pack.blockFiles_.emplace(name, std::string(dir) + "/" + name);
+    for (const auto& name : pack.source_->list(dir))
+      pack.blockFiles_.emplace(name, std::string(dir) + "/" + name);
   }
   return pack;
 }

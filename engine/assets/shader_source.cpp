@@ -60,7 +60,8 @@ struct Expander {
     }
     const std::string raw(text.substr(open + 1, close - open - 1));
     const auto path = normalise(raw);
-    if (!path) throw Error(locate(pre.displayName(file), line, "include path '" + raw + "' leaves the shader root"));
+    if (!path)
+      throw Error(locate(pre.displayName(file), line, "include path '" + raw + "' leaves the shader root"));
     return *path;
   }
 
@@ -84,7 +85,8 @@ struct Expander {
         emit(lines[i], file, lineNo);
         for (const auto& d : defines) emit("#define " + d.name + " " + d.value, "<defines>", 0);
       } else if (name == "include") {
-        if (isMain && !sawVersion) throw Error(locate(pre.displayName(file), lineNo, "#include before #version"));
+        if (isMain && !sawVersion)
+          throw Error(locate(pre.displayName(file), lineNo, "#include before #version"));
         const std::string target = includeTarget(file, lineNo, lines[i]);
         if (!included.contains(target)) expand(target, false, defines, file, lineNo);
       } else {
@@ -119,8 +121,8 @@ SourceLocation PreprocessedShader::origin(int line) const {
 std::string PreprocessedShader::mapLog(std::string_view log) const {
   // Group 1: prefix kept as is; group 2: the output line number; the rest of the position is dropped.
   static const std::regex kPositions[] = {
-      std::regex(R"(^()\d+:(\d+)\(\d+\):\s*)"),        // Mesa:    0:12(5): error: ...
-      std::regex(R"(^()\d+\((\d+)\)\s*:\s*)"),         // NVIDIA:  0(12) : error C1008: ...
+      std::regex(R"(^()\d+:(\d+)\(\d+\):\s*)"),                // Mesa:    0:12(5): error: ...
+      std::regex(R"(^()\d+\((\d+)\)\s*:\s*)"),                 // NVIDIA:  0(12) : error C1008: ...
       std::regex(R"(^(ERROR:\s*|WARNING:\s*)\d+:(\d+):\s*)"),  // AMD/Intel: ERROR: 0:12: ...
   };
   std::string result;
@@ -151,7 +153,9 @@ ShaderPreprocessor::ShaderPreprocessor(std::filesystem::path root)
 ShaderPreprocessor::ShaderPreprocessor(FileReader reader, std::string rootName)
     : reader_(std::move(reader)), rootName_(std::move(rootName)) {}
 
-std::string ShaderPreprocessor::displayName(const std::string& file) const { return rootName_ + "/" + file; }
+std::string ShaderPreprocessor::displayName(const std::string& file) const {
+  return rootName_ + "/" + file;
+}
 
 PreprocessedShader ShaderPreprocessor::process(const std::string& file,
                                                const std::vector<ShaderDefine>& defines) const {

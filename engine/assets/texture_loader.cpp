@@ -1,6 +1,5 @@
 #include "assets/texture_loader.h"
 
-
 #include <cstring>
 
 #include "assets/labpbr.h"
@@ -9,7 +8,9 @@
 namespace terrasol {
 namespace {
 
-std::string text(const std::vector<std::uint8_t>& bytes) { return {bytes.begin(), bytes.end()}; }
+std::string text(const std::vector<std::uint8_t>& bytes) {
+  return {bytes.begin(), bytes.end()};
+}
 
 Image solid(int w, int h, const std::uint8_t rgba[4]) {
   Image image(w, h);
@@ -29,7 +30,9 @@ std::vector<Image> splitFrames(const Image& strip, int frameHeight) {
 
 // Filtered for normal maps, nearest for specular data (no new metal ids or emission values may appear
 // between texels).
-Image resample(const Image& src, int w, int h, bool filtered) { return resizeImage(src, w, h, filtered); }
+Image resample(const Image& src, int w, int h, bool filtered) {
+  return resizeImage(src, w, h, filtered);
+}
 
 struct Companion {
   std::vector<Image> frames;
@@ -38,8 +41,8 @@ struct Companion {
 
 // A companion map (_n or _s) of `base` from the same pack: a strip with the same frames, or one frame
 // used for all of them; resampled when its frame size differs.
-Companion loadCompanion(const ResourcePack& pack, const std::string& file, const LoadedTexture& base, bool filtered,
-                        std::vector<PackProblem>& problems) {
+Companion loadCompanion(const ResourcePack& pack, const std::string& file, const LoadedTexture& base,
+                        bool filtered, std::vector<PackProblem>& problems) {
   Companion c;
   const auto path = pack.blockTexture(file);
   if (!path) return c;
@@ -51,7 +54,8 @@ Companion loadCompanion(const ResourcePack& pack, const std::string& file, const
     std::vector<Image> split;
     std::optional<Animation> own;
     if (const auto meta = pack.blockTexture(file + ".mcmeta")) {
-      own = parseAnimation(text(pack.files().require(*meta)), image.width, image.height, pack.files().displayName(*meta));
+      own = parseAnimation(text(pack.files().require(*meta)), image.width, image.height,
+                           pack.files().displayName(*meta));
     }
     if (own) {
       // Its own strip layout; frame i of the texture uses frame i of the map when the counts match.
@@ -62,8 +66,9 @@ Companion loadCompanion(const ResourcePack& pack, const std::string& file, const
     } else {
       split.push_back(image);
       if (frames > 1 && image.width != image.height * fw / fh) {
-        problems.push_back({PackProblem::Severity::Warning,
-                            shown + ": not one frame or a strip of " + std::to_string(frames) + "; used as one frame"});
+        problems.push_back(
+            {PackProblem::Severity::Warning,
+             shown + ": not one frame or a strip of " + std::to_string(frames) + "; used as one frame"});
       }
     }
     for (auto& f : split) {
@@ -137,7 +142,8 @@ LoadedTexture loadBlockTexture(const PackStack& packs, const std::vector<std::st
   } else {
     std::string tried;
     for (const auto& name : candidates) tried += (tried.empty() ? "" : ", ") + name + ".png";
-    problems.push_back({PackProblem::Severity::Warning, "missing texture '" + t.name + "' (no pack has " + tried + ")"});
+    problems.push_back(
+        {PackProblem::Severity::Warning, "missing texture '" + t.name + "' (no pack has " + tried + ")"});
   }
   if (t.albedo.empty()) {
     t.missing = true;

@@ -18,9 +18,9 @@ struct PackProblem {
 };
 
 struct LoadedTexture {
-  std::string name;     // the name asked for (first candidate)
-  std::string source;   // the file it came from, or "" when missing
-  bool missing = false; // shown as the magenta/black "missing" texture
+  std::string name;      // the name asked for (first candidate)
+  std::string source;    // the file it came from, or "" when missing
+  bool missing = false;  // shown as the magenta/black "missing" texture
   bool openGlNormals = false;
   std::optional<Animation> animation;
   // One image per strip frame, all the same size.

@@ -37,9 +37,9 @@ Animation parseSection(const json& a, int width, int height) {
   anim.frameWidth = positiveInt(a, "width", width, "animation");
   anim.frameHeight = positiveInt(a, "height", anim.frameWidth, "animation");
   if (anim.frameWidth != width || height % anim.frameHeight != 0) {
-    fail("animation", join({"the strip is ", std::to_string(width), "x", std::to_string(height),
-                            ", not a stack of ", std::to_string(anim.frameWidth), "x",
-                            std::to_string(anim.frameHeight), " frames"}));
+    fail("animation",
+         join({"the strip is ", std::to_string(width), "x", std::to_string(height), ", not a stack of ",
+               std::to_string(anim.frameWidth), "x", std::to_string(anim.frameHeight), " frames"}));
   }
   anim.stripFrames = height / anim.frameHeight;
   const int frametime = positiveInt(a, "frametime", 1, "animation");
@@ -75,13 +75,15 @@ FrameBlend frameAt(const Animation& animation, std::int64_t ticks, float partial
   while (t >= seq[i].ticks) t -= seq[i++].ticks;
   FrameBlend out{seq[i].index, seq[(i + 1) % seq.size()].index, 0.0f};
   if (animation.interpolate) {
-    out.blend = std::clamp((static_cast<float>(t) + std::clamp(partialTick, 0.0f, 1.0f)) / static_cast<float>(seq[i].ticks),
-                           0.0f, 1.0f);
+    out.blend = std::clamp(
+        (static_cast<float>(t) + std::clamp(partialTick, 0.0f, 1.0f)) / static_cast<float>(seq[i].ticks),
+        0.0f, 1.0f);
   }
   return out;
 }
 
-std::optional<Animation> parseAnimation(const std::string& text, int width, int height, const std::string& file) {
+std::optional<Animation> parseAnimation(const std::string& text, int width, int height,
+                                        const std::string& file) {
   const json root = parseJson(text, file);
   try {
     if (!root.is_object()) expected("", "an object", root);

@@ -36,6 +36,7 @@ FrameBlend frameAt(const Animation& animation, std::int64_t ticks, float partial
 // Parses `json` (the .mcmeta text) for an image of `width` x `height`. Returns nothing when it has no
 // "animation" section. Throws Error naming `file` and the key for malformed JSON, a strip height that
 // is not a multiple of the frame height, frame indices out of range or times below 1.
-std::optional<Animation> parseAnimation(const std::string& json, int width, int height, const std::string& file);
+std::optional<Animation> parseAnimation(const std::string& json, int width, int height,
+                                        const std::string& file);
 
 }  // namespace terrasol

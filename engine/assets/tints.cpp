@@ -10,7 +10,8 @@ namespace {
 
 Image solid(glm::vec3 srgb) {
   Image image(1, 1);
-  for (int c = 0; c < 3; ++c) image.rgba[static_cast<std::size_t>(c)] = static_cast<std::uint8_t>(std::lround(srgb[c] * 255.0f));
+  for (int c = 0; c < 3; ++c)
+    image.rgba[static_cast<std::size_t>(c)] = static_cast<std::uint8_t>(std::lround(srgb[c] * 255.0f));
   image.rgba[3] = 255;
   return image;
 }
@@ -61,12 +62,18 @@ glm::vec3 tintColour(const BiomeColormaps& maps, Tint tint, TintClimate climate)
   const float u = static_cast<float>(255 - climate.temperature) / 255.0f;
   const float v = static_cast<float>(255 - climate.downfall) / 255.0f;
   switch (tint) {
-    case Tint::None: return glm::vec3(1.0f);
-    case Tint::Grass: return sampleAxes(maps.grass, u, v);
-    case Tint::Foliage: return sampleAxes(maps.foliage, u, v);
-    case Tint::Water: return waterTint(climate.temperature);
-    case Tint::Birch: return kBirchFoliage;
-    case Tint::Spruce: return kSpruceFoliage;
+    case Tint::None:
+      return glm::vec3(1.0f);
+    case Tint::Grass:
+      return sampleAxes(maps.grass, u, v);
+    case Tint::Foliage:
+      return sampleAxes(maps.foliage, u, v);
+    case Tint::Water:
+      return waterTint(climate.temperature);
+    case Tint::Birch:
+      return kBirchFoliage;
+    case Tint::Spruce:
+      return kSpruceFoliage;
   }
   return glm::vec3(1.0f);
 }

@@ -2,9 +2,8 @@
 // Biome tints for grey textures: the packs' colormaps (assets/minecraft/textures/colormap/grass.png
 // and foliage.png), looked up the way Minecraft does for a biome's temperature and downfall.
 
-#include <vector>
-
 #include <glm/vec3.hpp>
+#include <vector>
 
 #include "assets/image.h"
 #include "assets/resource_pack.h"

@@ -215,7 +215,8 @@ void applyOverride(json& root, const std::string& setting) {
       at = &(*at)[i];
     } else {
       if (!at->is_object()) {
-        if (!at->is_null()) throw Error(join({name, ": \"", part, "\" is inside a value that is not an object"}));
+        if (!at->is_null())
+          throw Error(join({name, ": \"", part, "\" is inside a value that is not an object"}));
         *at = json::object();
       }
       at = &(*at)[part];
@@ -225,6 +226,5 @@ void applyOverride(json& root, const std::string& setting) {
   }
   *at = std::move(value);
 }
-
 
 }  // namespace terrasol::json_check

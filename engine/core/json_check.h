@@ -6,15 +6,14 @@
 #include <algorithm>
 #include <cstdint>
 #include <filesystem>
+#include <glm/vec3.hpp>
 #include <initializer_list>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <span>
 #include <string>
 #include <string_view>
 #include <vector>
-
-#include <glm/vec3.hpp>
-#include <nlohmann/json.hpp>
 
 #include "core/enum_names.h"
 

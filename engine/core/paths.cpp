@@ -44,17 +44,23 @@ fs::path dataRoot() {
 
 std::optional<fs::path> testDataDir(std::string* why) {
   const char* env = std::getenv("TERRASOL_TESTDATA");
-  const fs::path dir = env && *env ? fs::path(env) : (dataRoot() / ".." / "shared" / "testdata").lexically_normal();
+  const fs::path dir =
+      env && *env ? fs::path(env) : (dataRoot() / ".." / "shared" / "testdata").lexically_normal();
   std::error_code error;
   if (fs::is_directory(dir, error)) return dir;
   if (why) {
-    *why = env && *env ? "TERRASOL_TESTDATA (" + dir.string() + ") is not a directory"
-                       : "no third-party test data: " + dir.string() + " is absent and TERRASOL_TESTDATA is not set";
+    *why = env && *env
+               ? "TERRASOL_TESTDATA (" + dir.string() + ") is not a directory"
+               : "no third-party test data: " + dir.string() + " is absent and TERRASOL_TESTDATA is not set";
   }
   return std::nullopt;
 }
 
-fs::path shaderDir() { return dataRoot() / "shaders"; }
-fs::path resourcePackDir() { return dataRoot() / "resourcepacks"; }
+fs::path shaderDir() {
+  return dataRoot() / "shaders";
+}
+fs::path resourcePackDir() {
+  return dataRoot() / "resourcepacks";
+}
 
 }  // namespace terrasol

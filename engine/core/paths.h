@@ -9,7 +9,8 @@ namespace terrasol {
 
 // The directory holding `shaders/` and `resourcepacks/`. Searched in order: $TERRASOL_DATA_DIR, the
 // executable's directory and its parents (a build tree inside the source tree, or an install with
-// the data beside the binary), then the source tree this binary was built from. Throws Error if none has both.
+// the data beside the binary), then the source tree this binary was built from. Throws Error if none has
+// both.
 std::filesystem::path dataRoot();
 
 std::filesystem::path shaderDir();        // dataRoot()/shaders

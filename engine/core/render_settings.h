@@ -30,11 +30,21 @@ inline constexpr EnumNames<SpecularModel, 2> kSpecularModels{{"blinn_phong", "gg
 // reflection pass's hit mask and what it added (black when the pass did not run).
 // debug_view.frag gets each value as DEBUG_VIEW_<NAME> (render/shader_defines.cpp).
 enum class DebugView {
-  None, Albedo, Normal, VertexNormal, Specular, Lightmap, Depth, Ao, Emission, ReflectionHits, Reflection
+  None,
+  Albedo,
+  Normal,
+  VertexNormal,
+  Specular,
+  Lightmap,
+  Depth,
+  Ao,
+  Emission,
+  ReflectionHits,
+  Reflection
 };
-inline constexpr EnumNames<DebugView, 11> kDebugViews{{
-    "none", "albedo", "normal", "vertex_normal", "specular", "lightmap", "depth", "ao", "emission",
-    "reflection_hits", "reflection"}};
+inline constexpr EnumNames<DebugView, 11> kDebugViews{{"none", "albedo", "normal", "vertex_normal",
+                                                       "specular", "lightmap", "depth", "ao", "emission",
+                                                       "reflection_hits", "reflection"}};
 inline constexpr bool showsReflections(DebugView v) {
   return v == DebugView::ReflectionHits || v == DebugView::Reflection;
 }
@@ -43,19 +53,19 @@ inline constexpr bool showsReflections(DebugView v) {
 struct ShadowSettings {
   bool enabled = true;
   ShadowMode mode = ShadowMode::Warped;
-  int cascades = 4;             // cascaded mode: 2..kMaxShadowCascades
-  int resolution = 2048;        // texels per side (of each cascade), 16..16384
-  float distance = 128.0f;      // blocks from the camera to the map's edge, 1..4096
+  int cascades = 4;         // cascaded mode: 2..kMaxShadowCascades
+  int resolution = 2048;    // texels per side (of each cascade), 16..16384
+  float distance = 128.0f;  // blocks from the camera to the map's edge, 1..4096
   ShadowWarp warp = ShadowWarp::Radial;
-  float warpStrength = 0.85f;   // [0, 1): 0 = no warp
-  int pcfSamples = 1;           // N: (2N + 1)^2 grid taps; above 0 the disk or tent pattern; 0 = one tap
-  float pcfRadius = 1.0f;       // texels of the shadow map, or blocks with pcfRadiusInBlocks (0..32)
+  float warpStrength = 0.85f;  // [0, 1): 0 = no warp
+  int pcfSamples = 1;          // N: (2N + 1)^2 grid taps; above 0 the disk or tent pattern; 0 = one tap
+  float pcfRadius = 1.0f;      // texels of the shadow map, or blocks with pcfRadiusInBlocks (0..32)
   bool pcfRadiusInBlocks = false;
   PcfPattern pcfPattern = PcfPattern::Tent;
-  float shiftAhead = 0.0f;      // warped mode: the map's centre moves this fraction of `distance` ahead
-                                // of the camera (horizontally), as Luanti does: more map where one looks
-  int updateFrames = 1;         // with FrameInputs::reuseShadowMap: a changed map is redrawn over this
-                                // many frames into a second map (1..16; Luanti's shadow_update_frames)
+  float shiftAhead = 0.0f;  // warped mode: the map's centre moves this fraction of `distance` ahead
+                            // of the camera (horizontally), as Luanti does: more map where one looks
+  int updateFrames = 1;     // with FrameInputs::reuseShadowMap: a changed map is redrawn over this
+                            // many frames into a second map (1..16; Luanti's shadow_update_frames)
 
   bool operator==(const ShadowSettings&) const = default;
 };
@@ -69,8 +79,8 @@ struct ReflectionSettings {
   int maxSteps = 12;              // steps along the reflected ray (1..256), then a binary refinement
   float thickness = 1.0f;         // blocks a hit may lie behind the depth buffer's surface (0.01..16)
   float resolutionScale = 0.25f;  // the march runs at this fraction of the frame's size (0.25..1)
-  float minSmoothness = 0.6f;    // LabPBR smoothness (0..1) below which no ray is marched
-  float maxDistance = 64.0f;     // blocks a ray travels at most (1..1024)
+  float minSmoothness = 0.6f;     // LabPBR smoothness (0..1) below which no ray is marched
+  float maxDistance = 64.0f;      // blocks a ray travels at most (1..1024)
 
   bool operator==(const ReflectionSettings&) const = default;
 };

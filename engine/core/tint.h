@@ -6,7 +6,6 @@
 
 #include <algorithm>
 #include <cstdint>
-
 #include <glm/vec3.hpp>
 
 namespace terrasol {
@@ -14,7 +13,9 @@ namespace terrasol {
 enum class Tint : std::uint8_t { None, Grass, Foliage, Water, Birch, Spruce };
 inline constexpr int kTintCount = 6;
 
-constexpr bool tintedByBiome(Tint tint) { return tint == Tint::Grass || tint == Tint::Foliage || tint == Tint::Water; }
+constexpr bool tintedByBiome(Tint tint) {
+  return tint == Tint::Grass || tint == Tint::Foliage || tint == Tint::Water;
+}
 
 // Where a column's grass, foliage and water colours come from: its place on the packs' colormaps, as
 // Minecraft looks a biome's temperature and downfall up there. Both axes are 0..255: `temperature`
@@ -53,9 +54,9 @@ inline constexpr glm::vec3 kSpruceFoliage{0x61 / 255.0f, 0x99 / 255.0f, 0x61 / 2
 constexpr glm::vec3 waterTint(int temperature) {
   const float t = static_cast<float>(temperature) / 255.0f;
   auto mix = [](glm::vec3 a, glm::vec3 b, float f) { return a + (b - a) * std::clamp(f, 0.0f, 1.0f); };
-  return t < kWaterTemperateFrom ? mix(kWaterCold, kWaterTemperate, t / kWaterTemperateFrom)
-                                 : mix(kWaterTemperate, kWaterWarm,
-                                       (t - kWaterTemperateTo) / (1.0f - kWaterTemperateTo));
+  return t < kWaterTemperateFrom
+             ? mix(kWaterCold, kWaterTemperate, t / kWaterTemperateFrom)
+             : mix(kWaterTemperate, kWaterWarm, (t - kWaterTemperateTo) / (1.0f - kWaterTemperateTo));
 }
 
 }  // namespace terrasol

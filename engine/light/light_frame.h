@@ -149,8 +149,8 @@ class LightFrame {
   using Slab = std::array<Level, Section::kVolume>;
   std::vector<std::unique_ptr<Slab>> slabs_;  // kept between updates
   std::size_t slabsUsed_ = 0;
-  std::array<std::unique_ptr<Slab>, kLightLevels> levelSlabs_;  // read-only, one a level, made on first use
-  static constexpr std::size_t kMaxSpareBytes = 64;   // 128 KiB
+  std::array<std::unique_ptr<Slab>, kLightLevels> levelSlabs_;   // read-only, one a level, made on first use
+  static constexpr std::size_t kMaxSpareBytes = 64;              // 128 KiB
   std::vector<std::unique_ptr<NibbleArray::Bytes>> spareBytes_;  // layers' bytes freed by pack(), for reuse
 };
 

@@ -5,7 +5,6 @@
 #include <string>
 
 #include "core/assert.h"
-
 #include "core/model_units.h"
 
 namespace terrasol {

@@ -54,9 +54,9 @@ struct PackedVertex {
   static constexpr BitField kBlockLight{0, 6}, kSkyLight{6, 6}, kAo{12, 2};             // light
   static constexpr BitField kTemperature{14, 8}, kDownfall{22, 8};                      // light
   static constexpr BitField kU{0, 9}, kV{9, 9};                                         // uv
-  static constexpr int kPositionSteps = 32;  // per block
-  static constexpr int kUvSteps = 16;        // per texture
-  static constexpr int kCellLight = 15;      // the brightest level one cell adds to a light sum
+  static constexpr int kPositionSteps = 32;                                             // per block
+  static constexpr int kUvSteps = 16;                                                   // per texture
+  static constexpr int kCellLight = 15;  // the brightest level one cell adds to a light sum
 
   static constexpr std::uint32_t packPosition(int x32, int y32, int z32) {
     return kX.pack(x32) | kY.pack(y32) | kZ.pack(z32);
@@ -67,8 +67,8 @@ struct PackedVertex {
   static constexpr std::uint32_t packTintClimate(int temperature, int downfall) {
     return kTemperature.pack(temperature) | kDownfall.pack(downfall);
   }
-  static constexpr std::uint32_t kTintClimateBits = kTemperature.mask() << kTemperature.shift |
-                                                    kDownfall.mask() << kDownfall.shift;
+  static constexpr std::uint32_t kTintClimateBits =
+      kTemperature.mask() << kTemperature.shift | kDownfall.mask() << kDownfall.shift;
   static constexpr std::uint32_t packUv(int u, int v) { return kU.pack(u) | kV.pack(v); }
   int x32() const { return kX.get(position); }
   int y32() const { return kY.get(position); }
@@ -103,16 +103,16 @@ struct FaceBasis {
 };
 inline constexpr float kHalfSqrt2 = 0.70710678f;
 inline constexpr FaceBasis kFaceBases[10] = {
-    {{-1, 0, 0}, {0, 0, 1}, {0, 1, 0}},   // West
-    {{1, 0, 0}, {0, 0, -1}, {0, 1, 0}},   // East
-    {{0, -1, 0}, {1, 0, 0}, {0, 0, 1}},   // Down
-    {{0, 1, 0}, {1, 0, 0}, {0, 0, -1}},   // Up
-    {{0, 0, -1}, {-1, 0, 0}, {0, 1, 0}},  // North
-    {{0, 0, 1}, {1, 0, 0}, {0, 1, 0}},    // South
-    {{-kHalfSqrt2, 0, kHalfSqrt2}, {kHalfSqrt2, 0, kHalfSqrt2}, {0, 1, 0}},     // cross plane x=z, front
-    {{kHalfSqrt2, 0, -kHalfSqrt2}, {kHalfSqrt2, 0, kHalfSqrt2}, {0, 1, 0}},     // and its back
-    {{kHalfSqrt2, 0, kHalfSqrt2}, {kHalfSqrt2, 0, -kHalfSqrt2}, {0, 1, 0}},     // cross plane x=-z, front
-    {{-kHalfSqrt2, 0, -kHalfSqrt2}, {kHalfSqrt2, 0, -kHalfSqrt2}, {0, 1, 0}},   // and its back
+    {{-1, 0, 0}, {0, 0, 1}, {0, 1, 0}},                                        // West
+    {{1, 0, 0}, {0, 0, -1}, {0, 1, 0}},                                        // East
+    {{0, -1, 0}, {1, 0, 0}, {0, 0, 1}},                                        // Down
+    {{0, 1, 0}, {1, 0, 0}, {0, 0, -1}},                                        // Up
+    {{0, 0, -1}, {-1, 0, 0}, {0, 1, 0}},                                       // North
+    {{0, 0, 1}, {1, 0, 0}, {0, 1, 0}},                                         // South
+    {{-kHalfSqrt2, 0, kHalfSqrt2}, {kHalfSqrt2, 0, kHalfSqrt2}, {0, 1, 0}},    // cross plane x=z, front
+    {{kHalfSqrt2, 0, -kHalfSqrt2}, {kHalfSqrt2, 0, kHalfSqrt2}, {0, 1, 0}},    // and its back
+    {{kHalfSqrt2, 0, kHalfSqrt2}, {kHalfSqrt2, 0, -kHalfSqrt2}, {0, 1, 0}},    // cross plane x=-z, front
+    {{-kHalfSqrt2, 0, -kHalfSqrt2}, {kHalfSqrt2, 0, -kHalfSqrt2}, {0, 1, 0}},  // and its back
 };
 
 // The corners of a full face quad in the order the mesher writes them: their side along the tangent (u)
@@ -159,7 +159,9 @@ struct MeshData {
 using FaceLinks = std::uint64_t;
 inline constexpr FaceLinks kAllFacesLinked = (FaceLinks{1} << 36) - 1;
 inline constexpr FaceLinks kNoFacesLinked = 0;
-constexpr bool linked(FaceLinks links, int a, int b) { return (links >> (a * 6 + b)) & 1u; }
+constexpr bool linked(FaceLinks links, int a, int b) {
+  return (links >> (a * 6 + b)) & 1u;
+}
 
 struct SectionMesh {
   SectionPos pos;

@@ -1,10 +1,10 @@
 #include "mesh/mesh_scheduler.h"
 
-#include "core/thread_priority.h"
-
 #include <algorithm>
 #include <exception>
 #include <string>
+
+#include "core/thread_priority.h"
 
 namespace terrasol {
 
@@ -15,10 +15,11 @@ std::string MeshFailure::message() const {
 
 MeshScheduler::MeshScheduler(const BlockMeshTable& table, int threads, MeshFunction mesh)
     : table_(table), mesh_(std::move(mesh)) {
-  for (int i = 0; i < std::max(threads, 1); ++i) workers_.emplace_back([this] {
-    lowerThisThreadsPriority();
-    work();
-  });
+  for (int i = 0; i < std::max(threads, 1); ++i)
+    workers_.emplace_back([this] {
+      lowerThisThreadsPriority();
+      work();
+    });
 }
 
 MeshScheduler::~MeshScheduler() {
@@ -31,7 +32,9 @@ MeshScheduler::~MeshScheduler() {
 }
 
 std::uint64_t MeshScheduler::key(SectionPos s) {
-  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(s.x)) << 32 ^ static_cast<std::uint32_t>(s.z)) * 32 +
+  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(s.x)) << 32 ^
+          static_cast<std::uint32_t>(s.z)) *
+             32 +
          static_cast<std::uint64_t>(s.section);
 }
 

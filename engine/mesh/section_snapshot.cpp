@@ -29,8 +29,8 @@ bool buried(const World& world, const Chunk& chunk, SectionPos pos) {
   for (int d = 0; d < 6; ++d) {
     const BlockPos& o = kDirectionOffsets[d];
     const int s = pos.section + o.y;
-    if (s < 0) continue;                       // below the world: never seen
-    if (s >= kSectionCount) return false;      // open to the sky above the world
+    if (s < 0) continue;                   // below the world: never seen
+    if (s >= kSectionCount) return false;  // open to the sky above the world
     const Chunk* neighbour = o.x == 0 && o.z == 0 ? &chunk : world.chunk({pos.x + o.x, pos.z + o.z});
     if (!neighbour || !faceIsOpaque(neighbour->section(s), opaque, d)) return false;
   }
@@ -41,7 +41,8 @@ bool buried(const World& world, const Chunk& chunk, SectionPos pos) {
 // Sixteen light terms (SectionSnapshot::lightTerm) from eight bytes of each channel's nibbles and
 // sixteen 0/1 opaque flags. Every term fits in 16 bits (kOpen is bit 12), so the sum is
 // built in 16-bit lanes and widened at the end.
-void lightRow(const std::uint8_t* block, const std::uint8_t* sky, const std::uint8_t* opaque, std::uint32_t* out) {
+void lightRow(const std::uint8_t* block, const std::uint8_t* sky, const std::uint8_t* opaque,
+              std::uint32_t* out) {
   const __m128i low = _mm_set1_epi8(kLightMask);
   auto levels = [&](const std::uint8_t* bytes) {  // 16 levels, one per byte, in cell order
     const __m128i packed = _mm_loadl_epi64(reinterpret_cast<const __m128i*>(bytes));
@@ -53,8 +54,10 @@ void lightRow(const std::uint8_t* block, const std::uint8_t* sky, const std::uin
   auto half = [&](__m128i b16, __m128i k16, __m128i open16) {
     return _mm_and_si128(_mm_or_si128(_mm_or_si128(kOpen, b16), _mm_slli_epi16(k16, 6)), open16);
   };
-  const __m128i lo = half(_mm_unpacklo_epi8(b, zero), _mm_unpacklo_epi8(k, zero), _mm_unpacklo_epi8(open, open));
-  const __m128i hi = half(_mm_unpackhi_epi8(b, zero), _mm_unpackhi_epi8(k, zero), _mm_unpackhi_epi8(open, open));
+  const __m128i lo =
+      half(_mm_unpacklo_epi8(b, zero), _mm_unpacklo_epi8(k, zero), _mm_unpacklo_epi8(open, open));
+  const __m128i hi =
+      half(_mm_unpackhi_epi8(b, zero), _mm_unpackhi_epi8(k, zero), _mm_unpackhi_epi8(open, open));
   auto* dst = reinterpret_cast<__m128i*>(out);
   _mm_storeu_si128(dst, _mm_unpacklo_epi16(lo, zero));
   _mm_storeu_si128(dst + 1, _mm_unpackhi_epi16(lo, zero));
@@ -80,7 +83,8 @@ void copyRun(const Chunk* chunk, int y, int z, int x0, int count, const std::uin
     if (count == kChunkSize) {
       std::copy_n(dense->data() + first, kChunkSize, &out.blocks[d]);  // a constant size: inlined
     } else {
-      for (int i = 0; i < count; ++i) out.blocks[d + static_cast<std::size_t>(i)] = (*dense)[static_cast<std::size_t>(first + i)];
+      for (int i = 0; i < count; ++i)
+        out.blocks[d + static_cast<std::size_t>(i)] = (*dense)[static_cast<std::size_t>(first + i)];
     }
   } else {
     std::fill_n(&out.blocks[d], count, section.uniformBlock());
@@ -100,7 +104,8 @@ void copyRun(const Chunk* chunk, int y, int z, int x0, int count, const std::uin
   }
 #endif
   for (int i = 0; i < count; ++i) {
-    terms[i] = SectionSnapshot::lightTerm(opaque[i], NibbleArray::get(block, first + i), NibbleArray::get(sky, first + i));
+    terms[i] = SectionSnapshot::lightTerm(opaque[i], NibbleArray::get(block, first + i),
+                                          NibbleArray::get(sky, first + i));
   }
 }
 

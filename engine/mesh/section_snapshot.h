@@ -1,8 +1,8 @@
 #pragma once
 // A copy of one 16³ section and the one-block halo around it (18³ cells): blocks, both light
-// channels and the columns' tints, everything the mesher reads. Taken on the main thread from the World; meshed on any
-// thread. Cells outside the world or in unloaded chunks read as air with no light (they are drawn
-// against later, when their chunk loads and the section is remeshed).
+// channels and the columns' tints, everything the mesher reads. Taken on the main thread from the World;
+// meshed on any thread. Cells outside the world or in unloaded chunks read as air with no light (they are
+// drawn against later, when their chunk loads and the section is remeshed).
 
 #include <array>
 #include <cstdint>

@@ -19,8 +19,10 @@ void applyTints(PackedVertices& vertices, const SectionSnapshot& s) {
     const std::uint64_t sum = lanes(i, j) * static_cast<std::uint64_t>((32 - fx) * (32 - fz)) +
                               lanes(i + 1, j) * static_cast<std::uint64_t>(fx * (32 - fz)) +
                               lanes(i, j + 1) * static_cast<std::uint64_t>((32 - fx) * fz) +
-                              lanes(i + 1, j + 1) * static_cast<std::uint64_t>(fx * fz) + (512ull | 512ull << 32);
-    return PackedVertex::packTintClimate(static_cast<int>((sum & 0xFFFFFFFF) >> 10), static_cast<int>(sum >> 42));
+                              lanes(i + 1, j + 1) * static_cast<std::uint64_t>(fx * fz) +
+                              (512ull | 512ull << 32);
+    return PackedVertex::packTintClimate(static_cast<int>((sum & 0xFFFFFFFF) >> 10),
+                                         static_cast<int>(sum >> 42));
   };
   constexpr int kCorners = kChunkSize + 1;  // block corners along a section's side
   std::array<std::uint32_t, kCorners * kCorners> corners;

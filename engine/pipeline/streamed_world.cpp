@@ -21,8 +21,9 @@ Level openLevel(const std::filesystem::path& dir, std::uint64_t seed, bool& isNe
 
 }  // namespace
 
-StreamedWorld::StreamedWorld(const std::filesystem::path& dir, std::uint64_t seed, const BlockRegistry& blocks,
-                             const BlockMeshTable& table, int viewDistance, int threads, const BlockShapes* shapes)
+StreamedWorld::StreamedWorld(const std::filesystem::path& dir, std::uint64_t seed,
+                             const BlockRegistry& blocks, const BlockMeshTable& table, int viewDistance,
+                             int threads, const BlockShapes* shapes)
     : level_(openLevel(dir, seed, isNew_)),
       world_(blocks, shapes),
       storage_(dir, blocks),
@@ -71,7 +72,8 @@ void StreamedWorld::chunkRemoved(ChunkPos pos) {
     }
 }
 
-std::vector<SectionMesh> StreamedWorld::update(ChunkPos centre, std::chrono::steady_clock::time_point deadline) {
+std::vector<SectionMesh> StreamedWorld::update(ChunkPos centre,
+                                               std::chrono::steady_clock::time_point deadline) {
   streamer_.update(centre, [&] { return std::chrono::steady_clock::now() < deadline; });
   for (const SectionPos& s : light_.takeChangedSections()) {
     if (meshable_.contains({s.x, s.z})) mesher_->markDirty(s);
@@ -96,7 +98,9 @@ std::optional<BlockChange> StreamedWorld::setBlock(const BlockPos& pos, BlockId 
   return change;
 }
 
-void StreamedWorld::setViewDistance(int chunks) { streamer_.setRadius(chunks + 1); }
+void StreamedWorld::setViewDistance(int chunks) {
+  streamer_.setRadius(chunks + 1);
+}
 
 void StreamedWorld::remeshAll(const BlockMeshTable& table) {
   mesher_.reset();  // joins its workers before the old table goes

@@ -1,7 +1,8 @@
 #pragma once
-// A streamed world (the game's, and a saved world the exporter reads): a save directory, the chunks streamed around the player (generated or loaded on
-// worker threads), their light, and remeshing on worker threads. Each frame the game hands it the
-// player's chunk and a time budget; it returns finished meshes. Plain C++: tests play it with no GL.
+// A streamed world (the game's, and a saved world the exporter reads): a save directory, the chunks streamed
+// around the player (generated or loaded on worker threads), their light, and remeshing on worker threads.
+// Each frame the game hands it the player's chunk and a time budget; it returns finished meshes. Plain C++:
+// tests play it with no GL.
 
 #include <chrono>
 #include <filesystem>
@@ -28,7 +29,8 @@ class StreamedWorld {
   // existing world keeps its own). Throws Error naming the file when level.json is malformed.
   // `shapes` (World's): collision, targeting and light through shaped blocks; it must outlive this.
   StreamedWorld(const std::filesystem::path& dir, std::uint64_t seed, const BlockRegistry& blocks,
-                const BlockMeshTable& table, int viewDistance, int threads, const BlockShapes* shapes = nullptr);
+                const BlockMeshTable& table, int viewDistance, int threads,
+                const BlockShapes* shapes = nullptr);
   ~StreamedWorld();
 
   bool isNew() const { return isNew_; }
@@ -77,7 +79,7 @@ class StreamedWorld {
   // Chunks whose eight neighbours are loaded: only they are meshed (their borders are known).
   std::unordered_set<ChunkPos> meshable_;
   std::vector<SectionMesh> removed_;  // empty meshes for sections of chunks that stopped being meshable
-  ChunkStreamer streamer_;  // last: its loader threads stop first
+  ChunkStreamer streamer_;            // last: its loader threads stop first
 };
 
 }  // namespace terrasol

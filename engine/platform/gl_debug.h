@@ -35,7 +35,6 @@ class GlDebugOutput {
   void onMessage(unsigned type, unsigned severity, const char* message);
 
  private:
-
   GlErrorPolicy policy_;
   std::mutex mutex_;
   std::vector<std::string> errors_;

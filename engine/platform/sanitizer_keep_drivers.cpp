@@ -3,4 +3,6 @@
 // LeakSanitizer cannot name frames in an unloaded library, so its once-per-process allocations could
 // not be told apart from ours and suppressed (tests/lsan.supp). Never part of a normal build.
 
-extern "C" int dlclose(void*) { return 0; }
+extern "C" int dlclose(void*) {
+  return 0;
+}

@@ -2,7 +2,8 @@
 
 namespace terrasol {
 
-gl::Texture uploadTexture(const std::vector<Image>& levels, GLenum format, GLenum minFilter, GLenum magFilter) {
+gl::Texture uploadTexture(const std::vector<Image>& levels, GLenum format, GLenum minFilter,
+                          GLenum magFilter) {
   gl::Texture texture = gl::Texture::create(GL_TEXTURE_2D);
   const Image& base = levels.front();
   glTextureStorage2D(texture.id(), static_cast<GLsizei>(levels.size()), format, base.width, base.height);

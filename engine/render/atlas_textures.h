@@ -10,7 +10,8 @@
 namespace terrasol {
 
 // A 2D texture from an image and its mip levels (largest first), rows top first as Image stores them.
-gl::Texture uploadTexture(const std::vector<Image>& levels, GLenum format, GLenum minFilter, GLenum magFilter);
+gl::Texture uploadTexture(const std::vector<Image>& levels, GLenum format, GLenum minFilter,
+                          GLenum magFilter);
 
 class AtlasTextures {
  public:

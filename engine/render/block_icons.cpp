@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "core/error.h"
@@ -34,9 +33,11 @@ glm::mat4 iconTransform(const SectionMesh& mesh) {
   // A big mesh keeps its cell's centre (a slab sits low, as in Minecraft), a small one its own.
   const glm::vec3 middle = (lo + hi) * 0.5f;
   const glm::vec3 centre = zoom > 1.0f ? middle : glm::floor(middle) + 0.5f;
-  const glm::vec3 eye = centre + glm::normalize(glm::vec3(1.0f, std::tan(glm::radians(30.0f)) * std::sqrt(2.0f), -1.0f)) * 4.0f;
+  const glm::vec3 eye =
+      centre + glm::normalize(glm::vec3(1.0f, std::tan(glm::radians(30.0f)) * std::sqrt(2.0f), -1.0f)) * 4.0f;
   const float half = 0.86f / zoom;  // a cube's outline is 1.41 wide and 1.57 tall
-  return glm::ortho(-half, half, -half, half, 0.1f, 8.0f) * glm::lookAt(eye, centre, glm::vec3(0.0f, 1.0f, 0.0f));
+  return glm::ortho(-half, half, -half, half, 0.1f, 8.0f) *
+         glm::lookAt(eye, centre, glm::vec3(0.0f, 1.0f, 0.0f));
 }
 
 }  // namespace
@@ -97,8 +98,9 @@ BlockIcons::BlockIcons(const ShaderPreprocessor& shaders, const Atlas& atlas, co
       for (int g = 0; g < SectionMeshes::kFaceGroups; ++g) {
         const auto [first, end] = l.range(g, SectionMeshes::View::Camera);
         if (end == first) continue;
-        glDrawElements(GL_TRIANGLES, (end - first) * 6, GL_UNSIGNED_INT,
-                       reinterpret_cast<const void*>(static_cast<std::uintptr_t>(first) * 6 * sizeof(GLuint)));
+        glDrawElements(
+            GL_TRIANGLES, (end - first) * 6, GL_UNSIGNED_INT,
+            reinterpret_cast<const void*>(static_cast<std::uintptr_t>(first) * 6 * sizeof(GLuint)));
       }
     }
   }
@@ -118,6 +120,8 @@ glm::vec4 BlockIcons::uv(std::size_t icon) const {
           1.0f - (corner.y + static_cast<float>(cell_)) / size.y};
 }
 
-Image BlockIcons::read() const { return readFramebuffer(framebuffer_.id(), size_); }
+Image BlockIcons::read() const {
+  return readFramebuffer(framebuffer_.id(), size_);
+}
 
 }  // namespace terrasol

@@ -3,10 +3,9 @@
 // textures (tinted as in the plains), isometric as Minecraft's inventory shows it, lit from above,
 // into one texture of square cells. Drawn once when made; remade when the packs change. GL thread only.
 
-#include <vector>
-
 #include <glm/vec2.hpp>
 #include <glm/vec4.hpp>
+#include <vector>
 
 #include "assets/atlas.h"
 #include "assets/image.h"

@@ -2,14 +2,17 @@
 
 #include <cmath>
 
-
 #include "render/gl_slots.h"
 
 namespace terrasol {
 namespace {
 
-float srgbToLinear(float c) { return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f); }
-glm::vec3 srgbToLinear(glm::vec3 c) { return {srgbToLinear(c.r), srgbToLinear(c.g), srgbToLinear(c.b)}; }
+float srgbToLinear(float c) {
+  return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
+}
+glm::vec3 srgbToLinear(glm::vec3 c) {
+  return {srgbToLinear(c.r), srgbToLinear(c.g), srgbToLinear(c.b)};
+}
 
 }  // namespace
 
@@ -19,15 +22,17 @@ BlockTextures::BlockTextures(const Atlas& atlas, const BiomeColormaps& colormaps
       entries_(atlas.textures),
       current_(atlas.textures.size()),
       grid_(atlas.columns, atlas.slotSize, atlas.tileSize),
-      size_(static_cast<float>(atlas.columns * atlas.slotSize), static_cast<float>(atlas.rows * atlas.slotSize)),
+      size_(static_cast<float>(atlas.columns * atlas.slotSize),
+            static_cast<float>(atlas.rows * atlas.slotSize)),
       // Sampled in the vertex shader at a vertex's climate, between texels for maps not 256 wide.
       grassColormap_(uploadTexture({colormaps.grass}, GL_SRGB8_ALPHA8, GL_LINEAR, GL_LINEAR)),
       foliageColormap_(uploadTexture({colormaps.foliage}, GL_SRGB8_ALPHA8, GL_LINEAR, GL_LINEAR)),
       waterTint_(srgbToLinear(tintColour(colormaps, Tint::Water))) {
-  for (std::size_t i = 0; i < entries_.size(); ++i) current_[i] = static_cast<std::uint32_t>(entries_[i].firstTile);
+  for (std::size_t i = 0; i < entries_.size(); ++i)
+    current_[i] = static_cast<std::uint32_t>(entries_[i].firstTile);
   if (current_.empty()) current_.push_back(0);  // a storage buffer may not be empty
-  glNamedBufferStorage(tiles_.id(), static_cast<GLsizeiptr>(current_.size() * sizeof(std::uint32_t)), current_.data(),
-                       GL_DYNAMIC_STORAGE_BIT);
+  glNamedBufferStorage(tiles_.id(), static_cast<GLsizeiptr>(current_.size() * sizeof(std::uint32_t)),
+                       current_.data(), GL_DYNAMIC_STORAGE_BIT);
 }
 
 void BlockTextures::update(std::int64_t ticks) {

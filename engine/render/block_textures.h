@@ -5,10 +5,9 @@
 
 #include <array>
 #include <cstdint>
-#include <vector>
-
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <vector>
 
 #include "assets/atlas.h"
 #include "assets/tints.h"
@@ -42,8 +41,8 @@ class BlockTextures {
   gl::Buffer tiles_;
   std::vector<AtlasTexture> entries_;  // per texture id: first tile and animation
   std::vector<std::uint32_t> current_;
-  glm::ivec3 grid_;   // columns, slot size, tile size
-  glm::vec2 size_;    // texels
+  glm::ivec3 grid_;  // columns, slot size, tile size
+  glm::vec2 size_;   // texels
   gl::Texture grassColormap_, foliageColormap_;
   glm::vec3 waterTint_;
 };

@@ -2,7 +2,6 @@
 
 #include <cmath>
 #include <deque>
-
 #include <glm/vec2.hpp>
 
 namespace terrasol {
@@ -56,7 +55,8 @@ SectionSet reachableSections(const SectionMeshes& meshes, glm::dvec3 camera, con
     const bool above = eye.y >= kSectionCount;
     for (int dz = -radius; dz <= radius; ++dz)
       for (int dx = -radius; dx <= radius; ++dx) {
-        reach({eye.x + dx, above ? kSectionCount - 1 : 0, eye.z + dz}, above ? kUp : kDown, 1u << (above ? kDown : kUp));
+        reach({eye.x + dx, above ? kSectionCount - 1 : 0, eye.z + dz}, above ? kUp : kDown,
+              1u << (above ? kDown : kUp));
       }
   }
   while (!queue.empty()) {
@@ -73,7 +73,8 @@ SectionSet reachableSections(const SectionMeshes& meshes, glm::dvec3 camera, con
 }
 
 SectionSet sectionsLitFrom(const SectionMeshes& meshes, glm::vec3 toLight, glm::dvec3 centre, int radius) {
-  const glm::ivec3 mid(static_cast<int>(std::floor(centre.x / 16.0)), 0, static_cast<int>(std::floor(centre.z / 16.0)));
+  const glm::ivec3 mid(static_cast<int>(std::floor(centre.x / 16.0)), 0,
+                       static_cast<int>(std::floor(centre.z / 16.0)));
   // Per section: the faces it has been entered by (bits 0..5), and kMember once it is reached.
   SectionSet entered({mid.x, mid.z}, radius);
   // The ways a ray moves: along each axis where -toLight has a component.
@@ -94,7 +95,8 @@ SectionSet sectionsLitFrom(const SectionMeshes& meshes, glm::vec3 toLight, glm::
       for (int dx = -radius; dx <= radius; ++dx) {
         const glm::ivec3 s(mid.x + dx, y, mid.z + dz);
         for (int d = 0; d < 6; ++d) {
-          if (!(along & (1u << (d ^ 1)))) continue;  // face d looks towards the light when rays move along d ^ 1
+          if (!(along & (1u << (d ^ 1))))
+            continue;  // face d looks towards the light when rays move along d ^ 1
           if (!entered.cell(s + kSteps[d])) enter(s, d);
         }
       }

@@ -5,11 +5,10 @@
 // frustum. Sections the walk never reaches are hidden behind solid ground however the frustum sees them.
 
 #include <cstdint>
-#include <utility>
-#include <vector>
-
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <utility>
+#include <vector>
 
 #include "render/frustum.h"
 #include "render/section_meshes.h"

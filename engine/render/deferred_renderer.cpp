@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-
 #include <glm/gtc/matrix_inverse.hpp>
 
 #include "core/camera.h"
@@ -15,8 +14,8 @@
 
 namespace terrasol {
 
-DeferredRenderer::DeferredRenderer(const ShaderPreprocessor& shaders, const Atlas& atlas, const BiomeColormaps& colormaps,
-                                   const RendererOptions& options)
+DeferredRenderer::DeferredRenderer(const ShaderPreprocessor& shaders, const Atlas& atlas,
+                                   const BiomeColormaps& colormaps, const RendererOptions& options)
     : shared_(atlas, colormaps, options),
       geometry_(VariantBuilder(shaders, shared_), shared_),
       lighting_(VariantBuilder(shaders, shared_), shared_),
@@ -72,7 +71,11 @@ void DeferredRenderer::render(const FrameInputs& inputs, const SectionMeshes& me
   const auto& ran = graph.executed();
   const bool shown = frame.shadowDrawn && std::find(ran.begin(), ran.end(), "lighting") != ran.end();
   reflected_ = std::find(ran.begin(), ran.end(), "reflection") != ran.end();
-  lastGeometry_ = {view.camera, view.viewProjection, view.inverseViewProjection, view.day.toShadowLight, shown,
+  lastGeometry_ = {view.camera,
+                   view.viewProjection,
+                   view.inverseViewProjection,
+                   view.day.toShadowLight,
+                   shown,
                    shown ? (*frame.shadow.views)[0].texelWorld : 0.0f};
 }
 
@@ -150,7 +153,8 @@ std::size_t nonFinitePixels(const GBufferPixels& g) {
   std::size_t bad = 0;
   for (std::size_t p = 0; p < g.depth.size(); ++p) {
     bool finite = std::isfinite(g.depth[p]);
-    for (int c = 0; c < 4; ++c) finite = finite && std::isfinite(g.scene[p][c]) && std::isfinite(g.normals[p][c]);
+    for (int c = 0; c < 4; ++c)
+      finite = finite && std::isfinite(g.scene[p][c]) && std::isfinite(g.normals[p][c]);
     bad += !finite;
   }
   return bad;

@@ -12,11 +12,10 @@
 // view needs no lighting, translucent pass or shadow map). Consumes meshes and the atlas; never sees
 // the world. GL thread only.
 
+#include <glm/vec2.hpp>
 #include <optional>
 #include <string>
 #include <vector>
-
-#include <glm/vec2.hpp>
 
 #include "assets/shader_source.h"
 #include "render/frame_inputs.h"

@@ -6,7 +6,9 @@
 namespace terrasol {
 namespace {
 
-float clampScale(float scale, float maxScale) { return std::clamp(scale, DynamicResolution::kMinScale, maxScale); }
+float clampScale(float scale, float maxScale) {
+  return std::clamp(scale, DynamicResolution::kMinScale, maxScale);
+}
 
 }  // namespace
 
@@ -19,7 +21,8 @@ void DynamicResolution::setMaxScale(float maxScale) {
 }
 
 float DynamicResolution::update(double frameMs, double targetFps) {
-  if (!std::isfinite(frameMs) || frameMs < 0.0 || !std::isfinite(targetFps) || targetFps <= 0.0) return scale_;
+  if (!std::isfinite(frameMs) || frameMs < 0.0 || !std::isfinite(targetFps) || targetFps <= 0.0)
+    return scale_;
   smoothedMs_ = smoothedMs_ == 0.0 ? frameMs : smoothedMs_ + (frameMs - smoothedMs_) * 0.25;
   if (++sinceStep_ < kSettleFrames) return scale_;
   const double budget = 1000.0 / targetFps;

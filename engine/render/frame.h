@@ -35,9 +35,9 @@ struct FrameView {
   glm::dvec3 shadowCentreOffset{0.0};
   glm::dvec3 forward{0.0, 0.0, -1.0};  // unit view direction
   bool underWater = false;
-  float waterTop = 0.0f;      // under water: the surface's height above the camera
-  glm::vec3 waterFog{0.0f};   // under water: the colour the depths fade to (linear)
-  ViewCone cone;                       // the view's receivers, for the shadow pass
+  float waterTop = 0.0f;     // under water: the surface's height above the camera
+  glm::vec3 waterFog{0.0f};  // under water: the colour the depths fade to (linear)
+  ViewCone cone;             // the view's receivers, for the shadow pass
 };
 
 // What the lighting and translucent passes read of the shadow map (the shadow pass's).

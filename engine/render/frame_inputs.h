@@ -3,12 +3,11 @@
 // the last frame did (FrameStats, FrameGeometry): the renderer's public types.
 
 #include <cstdint>
+#include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
 #include <optional>
 #include <string>
 #include <vector>
-
-#include <glm/mat4x4.hpp>
-#include <glm/vec3.hpp>
 
 #include "core/day_cycle.h"
 #include "core/render_settings.h"
@@ -33,11 +32,11 @@ struct FrameInputs {
   glm::dvec3 cameraLookAt{0.0, 0.0, -1.0};
   glm::dvec3 cameraUp{0.0, 1.0, 0.0};  // screen-up hint (camera paths roll it continuously)
   float fovDegrees = 70.0f;
-  std::int64_t ticks = kNoon;     // world time
-  float sunPathRotation = 0.0f;   // degrees
-  float viewDistance = 64.0f;     // blocks: fog ends here
+  std::int64_t ticks = kNoon;    // world time
+  float sunPathRotation = 0.0f;  // degrees
+  float viewDistance = 64.0f;    // blocks: fog ends here
   DebugView debugView = DebugView::None;
-  bool materialAo = true;         // LabPBR _n blue darkens ambient light
+  bool materialAo = true;  // LabPBR _n blue darkens ambient light
   // Moves the shadow map's centre as if the camera had moved, keeping the view: the flicker
   // measurement compares the same pixels (the same world points) under two map placements.
   glm::dvec3 shadowCentreOffset{0.0};
@@ -61,8 +60,8 @@ glm::ivec2 scaledRenderSize(glm::ivec2 size, float scale);
 
 // Choices that pick shader variants, fixed for the renderer's life.
 struct RendererOptions {
-  bool ggxSpecular = false;  // GGX/Smith instead of energy-conserving Blinn-Phong
-  bool caveCulling = true;   // leave out sections hidden behind solid ground (render/cave_culling.h)
+  bool ggxSpecular = false;   // GGX/Smith instead of energy-conserving Blinn-Phong
+  bool caveCulling = true;    // leave out sections hidden behind solid ground (render/cave_culling.h)
   bool cullFacesAway = true;  // leave out face groups turned away from the camera for a whole section
   // The frame graph leaves out passes whose output no pass that runs reads, and the translucent pass
   // with nothing translucent in view (off: every pass that can run does, for tests of that rule).
@@ -80,11 +79,11 @@ struct RendererOptions {
 // Where the last frame looked from, for reports that check it against the world.
 struct FrameGeometry {
   glm::dvec3 camera{0.0};
-  glm::mat4 viewProjection{1.0f};         // camera-relative
+  glm::mat4 viewProjection{1.0f};  // camera-relative
   glm::mat4 inverseViewProjection{1.0f};
-  glm::vec3 toLight{0.0f, 1.0f, 0.0f};    // the shadow-casting light
-  bool shadowMapShown = false;            // the lit passes read a shadow map (drawn this frame, or kept)
-  float shadowTexelWorld = 0.0f;          // blocks per texel of the unwarped shadow map (its first layer)
+  glm::vec3 toLight{0.0f, 1.0f, 0.0f};  // the shadow-casting light
+  bool shadowMapShown = false;          // the lit passes read a shadow map (drawn this frame, or kept)
+  float shadowTexelWorld = 0.0f;        // blocks per texel of the unwarped shadow map (its first layer)
 };
 
 // What the last frame did, for reports.

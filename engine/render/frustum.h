@@ -2,7 +2,6 @@
 // Culling boxes against a view-projection's frustum (the camera's, or the shadow light's box).
 
 #include <array>
-
 #include <glm/geometric.hpp>
 #include <glm/mat4x4.hpp>
 #include <glm/matrix.hpp>

@@ -8,7 +8,9 @@
 namespace terrasol {
 namespace {
 
-gl::Texture makeTarget(GLenum format, glm::ivec2 size) { return targetTexture(format, size, GL_NEAREST); }
+gl::Texture makeTarget(GLenum format, glm::ivec2 size) {
+  return targetTexture(format, size, GL_NEAREST);
+}
 
 void checkComplete(GLuint framebuffer, const char* name) {
   const GLenum status = glCheckNamedFramebufferStatus(framebuffer, GL_FRAMEBUFFER);
@@ -68,7 +70,8 @@ GBufferPixels GBuffer::read() const {
   glGetTextureImage(depth_.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, bytes(out.depth), out.depth.data());
   glGetTextureImage(target(gbuffer::kNormals), 0, GL_RGBA, GL_FLOAT, bytes(out.normals), out.normals.data());
   glGetTextureImage(scene_.id(), 0, GL_RGBA, GL_FLOAT, bytes(out.scene), out.scene.data());
-  glGetTextureImage(target(gbuffer::kLight), 0, GL_RGBA, GL_UNSIGNED_BYTE, bytes(out.light), out.light.data());
+  glGetTextureImage(target(gbuffer::kLight), 0, GL_RGBA, GL_UNSIGNED_BYTE, bytes(out.light),
+                    out.light.data());
   return out;
 }
 
@@ -78,7 +81,8 @@ void GBuffer::copyDepthForLighting() const {
 }
 
 void GBuffer::bindForReading() const {
-  for (int i = 0; i < gbuffer::kTargets; ++i) glBindTextureUnit(static_cast<GLuint>(i), target(i));  // 0 if left out
+  for (int i = 0; i < gbuffer::kTargets; ++i)
+    glBindTextureUnit(static_cast<GLuint>(i), target(i));  // 0 if left out
   glBindTextureUnit(gbuffer::kDepthUnit, depth_.id());
 }
 

@@ -3,12 +3,10 @@
 // translucent passes write, sized together. GL thread only.
 
 #include <array>
-
-#include <vector>
-
+#include <glm/gtc/type_precision.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec4.hpp>
-#include <glm/gtc/type_precision.hpp>
+#include <vector>
 
 #include "render/gbuffer_layout.h"
 #include "render/gl/object.h"
@@ -18,10 +16,10 @@ namespace terrasol {
 // The targets read back to the CPU, rows bottom first as GL stores them (pixel (x, y) at y * width + x).
 struct GBufferPixels {
   glm::ivec2 size{0};
-  std::vector<float> depth;         // 0..1, 1 = sky
-  std::vector<glm::vec4> normals;   // octahedral surface xy, vertex zw (vertex xy without surface normals)
-  std::vector<glm::vec4> scene;     // linear HDR; alpha = the direct light's shadow term (lighting.glsl)
-  std::vector<glm::u8vec4> light;   // block, sky, vertex AO
+  std::vector<float> depth;        // 0..1, 1 = sky
+  std::vector<glm::vec4> normals;  // octahedral surface xy, vertex zw (vertex xy without surface normals)
+  std::vector<glm::vec4> scene;    // linear HDR; alpha = the direct light's shadow term (lighting.glsl)
+  std::vector<glm::u8vec4> light;  // block, sky, vertex AO
 };
 
 class GBuffer {

@@ -16,10 +16,10 @@
 // target 1 shrinks to RG16F holding only that; when none has specular maps (NO_SPECULAR_MAPS) target 2
 // is not made at all (GBufferContents).
 
+#include <epoxy/gl.h>
+
 #include <array>
 #include <vector>
-
-#include <epoxy/gl.h>
 
 #include "assets/shader_source.h"
 

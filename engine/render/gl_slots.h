@@ -23,7 +23,7 @@ inline constexpr int kAttribLight = 6;
 
 // Fragment outputs of the forward passes.
 inline constexpr int kOutColor = 0;
-inline constexpr int kOutReflectionHit = 1;  // the reflection march's second target (hit or not, where)
+inline constexpr int kOutReflectionHit = 1;      // the reflection march's second target (hit or not, where)
 inline constexpr int kOutReflectionSurface = 2;  // the march from water and glass: the normal it used
 
 // Texture units of the block passes (the G-buffer targets use units 0..4 in the passes that read them).

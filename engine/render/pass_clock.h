@@ -21,7 +21,9 @@ struct PassTiming {
 // useful.
 class PassClock {
  public:
-  PassClock(std::vector<PassTiming>* timings, bool gpuTimer) : timings_(timings), gpuTimer_(gpuTimer) { begin(); }
+  PassClock(std::vector<PassTiming>* timings, bool gpuTimer) : timings_(timings), gpuTimer_(gpuTimer) {
+    begin();
+  }
   ~PassClock() { finish(); }
   PassClock(const PassClock&) = delete;
   PassClock& operator=(const PassClock&) = delete;

@@ -32,7 +32,7 @@ class VariantBuilder {
   VariantBuilder(const ShaderPreprocessor& shaders, PassShared& shared)
       : shaders_(shaders), shared_(shared) {}
   LinkedProgram operator()(const char* vertex, const char* fragment,
-                         std::vector<ShaderDefine> extra = {}) const;
+                           std::vector<ShaderDefine> extra = {}) const;
 
  private:
   const ShaderPreprocessor& shaders_;

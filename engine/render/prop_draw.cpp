@@ -24,16 +24,19 @@ std::vector<int> propsInside(const FrustumPlanes& planes, glm::dvec3 camera, con
   const auto& instances = props.instances();
   for (std::size_t i = 0; i < instances.size(); ++i) {
     const Props::Placement& p = instances[i].placement;
-    if (boxVisible(planes, glm::vec3(p.min - camera), glm::vec3(p.max - camera))) inside.push_back(static_cast<int>(i));
+    if (boxVisible(planes, glm::vec3(p.min - camera), glm::vec3(p.max - camera)))
+      inside.push_back(static_cast<int>(i));
   }
   return inside;
 }
 
 bool anyBlended(const Props& props, const std::vector<int>& instances) {
   for (const int i : instances) {
-    const Props::GpuModel& model = props.models()[static_cast<std::size_t>(props.instances()[static_cast<std::size_t>(i)].model)];
+    const Props::GpuModel& model =
+        props.models()[static_cast<std::size_t>(props.instances()[static_cast<std::size_t>(i)].model)];
     for (const Props::Mesh& mesh : model.meshes) {
-      if (model.materials[static_cast<std::size_t>(mesh.material)].params.alphaMode == AlphaMode::Blend) return true;
+      if (model.materials[static_cast<std::size_t>(mesh.material)].params.alphaMode == AlphaMode::Blend)
+        return true;
     }
   }
   return false;

@@ -17,7 +17,8 @@ gl::Texture makeTexture(const Image& image, GLenum format) {
   glTextureStorage2D(texture.id(), levels, format, image.width, image.height);
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
   // Rows top first, as glTF's uv (0, 0) is the image's top left: uv maps straight to GL's t.
-  glTextureSubImage2D(texture.id(), 0, 0, 0, image.width, image.height, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
+  glTextureSubImage2D(texture.id(), 0, 0, 0, image.width, image.height, GL_RGBA, GL_UNSIGNED_BYTE,
+                      image.rgba.data());
   glGenerateTextureMipmap(texture.id());  // sRGB formats are filtered in linear light
   glTextureParameteri(texture.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
   glTextureParameteri(texture.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
@@ -58,7 +59,8 @@ int Props::addModel(const Model& model) {
     if (image < 0 || static_cast<std::size_t>(image) >= model.images.size()) return fallback;
     GLuint& id = (isSrgb ? srgb : linear)[static_cast<std::size_t>(image)];
     if (!id) {
-      gpu.textures.push_back(makeTexture(model.images[static_cast<std::size_t>(image)], isSrgb ? GL_SRGB8_ALPHA8 : GL_RGBA8));
+      gpu.textures.push_back(
+          makeTexture(model.images[static_cast<std::size_t>(image)], isSrgb ? GL_SRGB8_ALPHA8 : GL_RGBA8));
       id = gpu.textures.back().id();
     }
     return id;
@@ -79,10 +81,14 @@ int Props::addModel(const Model& model) {
 
   gpu.vertices = gl::Buffer::create();
   gpu.indices = gl::Buffer::create();
-  glNamedBufferStorage(gpu.vertices.id(), static_cast<GLsizeiptr>(std::max<std::size_t>(vertices.size(), 1) * sizeof(ModelVertex)),
-                       vertices.empty() ? nullptr : vertices.data(), 0);
-  glNamedBufferStorage(gpu.indices.id(), static_cast<GLsizeiptr>(std::max<std::size_t>(indices.size(), 1) * sizeof(std::uint32_t)),
-                       indices.empty() ? nullptr : indices.data(), 0);
+  glNamedBufferStorage(
+      gpu.vertices.id(),
+      static_cast<GLsizeiptr>(std::max<std::size_t>(vertices.size(), 1) * sizeof(ModelVertex)),
+      vertices.empty() ? nullptr : vertices.data(), 0);
+  glNamedBufferStorage(
+      gpu.indices.id(),
+      static_cast<GLsizeiptr>(std::max<std::size_t>(indices.size(), 1) * sizeof(std::uint32_t)),
+      indices.empty() ? nullptr : indices.data(), 0);
   gpu.layout = gl::VertexArray::create();
   const GLuint vao = gpu.layout.id();
   glVertexArrayVertexBuffer(vao, 0, gpu.vertices.id(), 0, sizeof(ModelVertex));
@@ -96,7 +102,8 @@ int Props::addModel(const Model& model) {
                     {slots::kAttribUv, 2, offsetof(ModelVertex, uv)}};
   for (const auto& a : attributes) {
     glEnableVertexArrayAttrib(vao, static_cast<GLuint>(a.location));
-    glVertexArrayAttribFormat(vao, static_cast<GLuint>(a.location), a.size, GL_FLOAT, GL_FALSE, static_cast<GLuint>(a.offset));
+    glVertexArrayAttribFormat(vao, static_cast<GLuint>(a.location), a.size, GL_FLOAT, GL_FALSE,
+                              static_cast<GLuint>(a.offset));
     glVertexArrayAttribBinding(vao, static_cast<GLuint>(a.location), 0);
   }
   // Binding 1: the instance's light, bound per draw.
@@ -108,7 +115,8 @@ int Props::addModel(const Model& model) {
 }
 
 int Props::place(int model, const Placement& placement, std::span<const glm::vec2> light) {
-  if (model < 0 || static_cast<std::size_t>(model) >= models_.size()) throw Error("no prop model " + std::to_string(model));
+  if (model < 0 || static_cast<std::size_t>(model) >= models_.size())
+    throw Error("no prop model " + std::to_string(model));
   Instance instance;
   instance.model = model;
   instance.placement = placement;
@@ -122,10 +130,12 @@ void Props::relight(int index, std::span<const glm::vec2> light) {
   Instance& instance = instances_.at(static_cast<std::size_t>(index));
   const std::size_t vertices = models_[static_cast<std::size_t>(instance.model)].vertexCount;
   if (light.size() != vertices) {
-    throw Error("prop light: " + std::to_string(light.size()) + " values for " + std::to_string(vertices) + " vertices");
+    throw Error("prop light: " + std::to_string(light.size()) + " values for " + std::to_string(vertices) +
+                " vertices");
   }
   instance.light = gl::Buffer::create();  // a fresh buffer: immutable storage, and no stall on the old one
-  glNamedBufferStorage(instance.light.id(), static_cast<GLsizeiptr>(std::max<std::size_t>(vertices, 1) * sizeof(glm::vec2)),
+  glNamedBufferStorage(instance.light.id(),
+                       static_cast<GLsizeiptr>(std::max<std::size_t>(vertices, 1) * sizeof(glm::vec2)),
                        light.empty() ? nullptr : light.data(), 0);
 }
 

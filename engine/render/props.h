@@ -4,13 +4,13 @@
 // second vertex buffer, so a model placed twice shares its geometry). The renderer draws them beside
 // the blocks (deferred_renderer.h); it never sees the world, so light comes in as data. GL thread only.
 
-#include <span>
-#include <vector>
-
 #include <epoxy/gl.h>
+
 #include <glm/mat3x3.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <span>
+#include <vector>
 
 #include "assets/gltf_model.h"
 #include "render/gl/object.h"
@@ -34,9 +34,9 @@ class Props {
   int addModel(const Model& model);
 
   struct Placement {
-    glm::dvec3 position{0.0};   // of the model's origin
-    glm::mat3 basis{1.0f};      // model -> world: rotation x uniform scale
-    glm::mat3 rotation{1.0f};   // for normals and tangents
+    glm::dvec3 position{0.0};       // of the model's origin
+    glm::mat3 basis{1.0f};          // model -> world: rotation x uniform scale
+    glm::mat3 rotation{1.0f};       // for normals and tangents
     glm::dvec3 min{0.0}, max{0.0};  // world bounds, for culling
   };
   // `light`: block and sky light 0..1 for every vertex of the model, meshes in Model order.
@@ -56,7 +56,8 @@ class Props {
   };
   struct Material {
     ModelMaterial params;
-    GLuint baseColor = 0, metallicRoughness = 0, normal = 0, emissive = 0, occlusion = 0;  // never 0: defaults
+    GLuint baseColor = 0, metallicRoughness = 0, normal = 0, emissive = 0,
+           occlusion = 0;  // never 0: defaults
     bool hasNormalMap = false;
   };
   struct GpuModel {

@@ -28,7 +28,8 @@ const PackedVertices& SectionMeshes::group(const MeshData& data, bool byFace,
   auto next = start;
   for (std::size_t q = 0; q < data.quads(); ++q) {
     const auto at = static_cast<std::size_t>(next[runOf(data.vertices[q * 4], byFace)]++);
-    std::copy_n(data.vertices.begin() + static_cast<std::ptrdiff_t>(q * 4), 4, grouped_.begin() + static_cast<std::ptrdiff_t>(at * 4));
+    std::copy_n(data.vertices.begin() + static_cast<std::ptrdiff_t>(q * 4), 4,
+                grouped_.begin() + static_cast<std::ptrdiff_t>(at * 4));
   }
   return grouped_;
 }

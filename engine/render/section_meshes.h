@@ -74,7 +74,7 @@ class SectionMeshes {
   gl::Buffer indices_;
   GLsizei indexQuads_ = 0;
   std::uint64_t generation_ = 0;
-  PackedVertices grouped_;  // reused by upload
+  PackedVertices grouped_;                 // reused by upload
   std::map<SectionPos, FaceLinks> links_;  // only sections not linked all round
 };
 

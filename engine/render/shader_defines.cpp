@@ -74,12 +74,20 @@ std::vector<ShaderDefine> tintDefines() {
 // The packed vertex's fields and scales (mesh/mesh_data.h) for lib/block_vertex.glsl.
 std::vector<ShaderDefine> vertexDefines() {
   using V = PackedVertex;
-  const std::pair<const char*, BitField> fields[] = {
-      {"X", V::kX}, {"Y", V::kY}, {"Z", V::kZ},  // position
-      {"TEXTURE", V::kTexture}, {"FACE", V::kFace}, {"TINT", V::kTint}, {"ROLE", V::kRole},  // material
-      {"BLOCK_LIGHT", V::kBlockLight}, {"SKY_LIGHT", V::kSkyLight}, {"AO", V::kAo},  // light
-      {"TEMPERATURE", V::kTemperature}, {"DOWNFALL", V::kDownfall},
-      {"U", V::kU}, {"V", V::kV}};  // uv
+  const std::pair<const char*, BitField> fields[] = {{"X", V::kX},
+                                                     {"Y", V::kY},
+                                                     {"Z", V::kZ},  // position
+                                                     {"TEXTURE", V::kTexture},
+                                                     {"FACE", V::kFace},
+                                                     {"TINT", V::kTint},
+                                                     {"ROLE", V::kRole},  // material
+                                                     {"BLOCK_LIGHT", V::kBlockLight},
+                                                     {"SKY_LIGHT", V::kSkyLight},
+                                                     {"AO", V::kAo},  // light
+                                                     {"TEMPERATURE", V::kTemperature},
+                                                     {"DOWNFALL", V::kDownfall},
+                                                     {"U", V::kU},
+                                                     {"V", V::kV}};  // uv
   std::vector<ShaderDefine> defines;
   for (const auto& [name, f] : fields) {
     defines.push_back({"BV_" + std::string(name) + "_SHIFT", std::to_string(f.shift) + "u"});
@@ -116,9 +124,14 @@ int GBufferContents::bytesPerPixel() const {
   int bytes = 4;  // DEPTH32F
   for (int i = 0; i < gbuffer::kTargets; ++i) {
     switch (format(i)) {
-      case GL_RGBA16F: bytes += 8; break;
-      case GL_NONE: break;
-      default: bytes += 4; break;  // RGBA8, RG16F
+      case GL_RGBA16F:
+        bytes += 8;
+        break;
+      case GL_NONE:
+        break;
+      default:
+        bytes += 4;
+        break;  // RGBA8, RG16F
     }
   }
   return bytes;
@@ -144,8 +157,8 @@ std::vector<ShaderDefine> rendererDefines() {
   for (auto& d : debugViewDefines()) defines.push_back(std::move(d));
   defines.push_back({"SKY_RADIANCE", floatLiteral(kSkyRadiance)});
   const glm::vec3 w = kLumaWeights;
-  defines.push_back(
-      {"LUMA_WEIGHTS", "vec3(" + floatLiteral(w.r) + ", " + floatLiteral(w.g) + ", " + floatLiteral(w.b) + ")"});
+  defines.push_back({"LUMA_WEIGHTS", "vec3(" + floatLiteral(w.r) + ", " + floatLiteral(w.g) + ", " +
+                                         floatLiteral(w.b) + ")"});
   return defines;
 }
 

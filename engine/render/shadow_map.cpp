@@ -2,15 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
-#include <string>
-
 #include <glm/gtc/matrix_transform.hpp>
+#include <string>
 
 #include "core/error.h"
 
 namespace terrasol {
 
-ShadowView shadowViewFor(int resolution, float mapDistance, glm::vec3 toLight, glm::dvec3 camera, glm::dvec3 centre) {
+ShadowView shadowViewFor(int resolution, float mapDistance, glm::vec3 toLight, glm::dvec3 camera,
+                         glm::dvec3 centre) {
   const glm::dvec3 z = glm::normalize(glm::dvec3(toLight));
   const glm::dvec3 hint = std::abs(z.y) < 0.99 ? glm::dvec3(0.0, 1.0, 0.0) : glm::dvec3(0.0, 0.0, 1.0);
   const glm::dvec3 x = glm::normalize(glm::cross(hint, z));
@@ -19,7 +19,8 @@ ShadowView shadowViewFor(int resolution, float mapDistance, glm::vec3 toLight, g
   const double texel = 2.0 * distance / std::max(resolution, 1);
   // The centre in light space, snapped to whole texels: the map moves in whole texels.
   const glm::dvec2 snapped = glm::floor(glm::dvec2(glm::dot(centre, x), glm::dot(centre, y)) / texel) * texel;
-  const glm::dvec2 shift = glm::dvec2(glm::dot(camera, x), glm::dot(camera, y)) - snapped;  // small: safe in float
+  const glm::dvec2 shift =
+      glm::dvec2(glm::dot(camera, x), glm::dot(camera, y)) - snapped;  // small: safe in float
 
   glm::mat4 view(1.0f);  // rows x, y, z: camera-relative world -> light space
   for (int i = 0; i < 3; ++i) {

@@ -10,7 +10,6 @@
 // holds at any distance from the world's origin.
 
 #include <array>
-
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
@@ -25,15 +24,16 @@ inline constexpr float kShadowCasterReach = 256.0f;
 
 // The light's orthographic view of the camera's surroundings.
 struct ShadowView {
-  glm::mat4 matrix;        // camera-relative world position -> light clip space, before the warp
-  glm::vec3 toLight;       // unit
-  float depthRange;        // blocks from the near to the far plane
-  float texelWorld;        // blocks per texel of the unwarped map
+  glm::mat4 matrix;   // camera-relative world position -> light clip space, before the warp
+  glm::vec3 toLight;  // unit
+  float depthRange;   // blocks from the near to the far plane
+  float texelWorld;   // blocks per texel of the unwarped map
 };
 
 // A map of `distance` blocks around `centre` (the camera; moved only to measure flicker), for positions
 // relative to `camera`. `toLight` must be unit length (DayState::toShadowLight).
-ShadowView shadowViewFor(int resolution, float distance, glm::vec3 toLight, glm::dvec3 camera, glm::dvec3 centre);
+ShadowView shadowViewFor(int resolution, float distance, glm::vec3 toLight, glm::dvec3 camera,
+                         glm::dvec3 centre);
 
 class ShadowMap {
  public:
@@ -42,7 +42,9 @@ class ShadowMap {
   // The framebuffer drawing opaque casters into `layer`.
   GLuint framebuffer(int layer) const { return framebuffers_[static_cast<std::size_t>(layer)].id(); }
   // The framebuffer drawing translucent casters into `layer`: their depth and transmittance.
-  GLuint translucentFramebuffer(int layer) const { return translucentFramebuffers_[static_cast<std::size_t>(layer)].id(); }
+  GLuint translucentFramebuffer(int layer) const {
+    return translucentFramebuffers_[static_cast<std::size_t>(layer)].id();
+  }
   GLuint depth() const { return depth_.id(); }
   // RGBA16: the colour light keeps through the nearest translucent caster, and that caster's depth.
   GLuint transmittance() const { return transmittance_.id(); }

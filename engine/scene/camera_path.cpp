@@ -2,9 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <vector>
-
 #include <glm/gtc/quaternion.hpp>
+#include <vector>
 
 namespace terrasol {
 namespace {
@@ -20,7 +19,8 @@ glm::dvec3 directionOf(glm::dvec3 position, glm::dvec3 lookAt) {
 glm::dquat orientationOf(glm::dvec3 forward, glm::dvec3 upHint) {
   const glm::dvec3 hint = std::abs(forward.y) < 0.9999 ? glm::dvec3(0.0, 1.0, 0.0) : upHint;
   glm::dvec3 right = glm::cross(forward, hint);
-  if (glm::length(right) < 1e-9) right = glm::cross(forward, glm::dvec3(0.0, 0.0, -1.0));  // hint along forward
+  if (glm::length(right) < 1e-9)
+    right = glm::cross(forward, glm::dvec3(0.0, 0.0, -1.0));  // hint along forward
   right = glm::normalize(right);
   const glm::dvec3 up = glm::cross(right, forward);
   return glm::normalize(glm::quat_cast(glm::dmat3(right, up, -forward)));
@@ -66,7 +66,8 @@ CameraState cameraOnPath(const CameraPath& path, double t) {
   c.forward = glm::normalize(q * glm::dvec3(0.0, 0.0, -1.0));
   c.up = glm::normalize(q * glm::dvec3(0.0, 1.0, 0.0));
   c.fov = static_cast<float>(keys[i].fov + (keys[j].fov - keys[i].fov) * u);
-  c.time = keys[i].time + static_cast<std::int64_t>(std::llround(static_cast<double>(keys[j].time - keys[i].time) * u));
+  c.time = keys[i].time +
+           static_cast<std::int64_t>(std::llround(static_cast<double>(keys[j].time - keys[i].time) * u));
   return c;
 }
 

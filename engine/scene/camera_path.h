@@ -5,7 +5,6 @@
 // are interpolated linearly.
 
 #include <cstdint>
-
 #include <glm/vec3.hpp>
 
 #include "scene/scene_file.h"

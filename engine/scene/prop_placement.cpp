@@ -2,14 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
-
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "core/light_level.h"
 
 namespace terrasol {
 
-PropTransform propTransform(const SceneProp& prop) { return propTransform(prop.position, prop.rotation, prop.scale); }
+PropTransform propTransform(const SceneProp& prop) {
+  return propTransform(prop.position, prop.rotation, prop.scale);
+}
 
 PropTransform propTransform(const glm::dvec3& position, const glm::vec3& rotationDegrees, float scale) {
   const glm::vec3 r = glm::radians(rotationDegrees);
@@ -38,7 +39,8 @@ WorldBounds placedBounds(const PropTransform& t, const glm::vec3& min, const glm
   return b;
 }
 
-std::vector<glm::vec2> smoothLightAt(const World& world, const LightEngine& light, std::span<const glm::dvec3> points) {
+std::vector<glm::vec2> smoothLightAt(const World& world, const LightEngine& light,
+                                     std::span<const glm::dvec3> points) {
   const auto& opacity = world.blocks().opacities();
   std::vector<glm::vec2> out;
   out.reserve(points.size());
@@ -50,11 +52,14 @@ std::vector<glm::vec2> smoothLightAt(const World& world, const LightEngine& ligh
     glm::vec2 sum(0.0f);
     double weights = 0.0;
     for (int corner = 0; corner < 8; ++corner) {
-      const BlockPos cell{static_cast<int>(base.x) + (corner & 1), static_cast<int>(base.y) + (corner >> 1 & 1),
+      const BlockPos cell{static_cast<int>(base.x) + (corner & 1),
+                          static_cast<int>(base.y) + (corner >> 1 & 1),
                           static_cast<int>(base.z) + (corner >> 2 & 1)};
       if (opacity[world.getBlock(cell)] >= kMaxLight) continue;  // stops all light
-      const double w = (corner & 1 ? f.x : 1.0 - f.x) * (corner & 2 ? f.y : 1.0 - f.y) * (corner & 4 ? f.z : 1.0 - f.z);
-      sum += static_cast<float>(w) * glm::vec2(light.lightAt(cell, LightChannel::Block), light.lightAt(cell, LightChannel::Sky));
+      const double w =
+          (corner & 1 ? f.x : 1.0 - f.x) * (corner & 2 ? f.y : 1.0 - f.y) * (corner & 4 ? f.z : 1.0 - f.z);
+      sum += static_cast<float>(w) *
+             glm::vec2(light.lightAt(cell, LightChannel::Block), light.lightAt(cell, LightChannel::Sky));
       weights += w;
     }
     out.push_back(weights > 1e-9 ? sum / static_cast<float>(weights * kMaxLight) : glm::vec2(0.0f));
@@ -62,7 +67,8 @@ std::vector<glm::vec2> smoothLightAt(const World& world, const LightEngine& ligh
   return out;
 }
 
-std::vector<glm::vec2> modelLight(const Model& model, const PropTransform& t, const World& world, const LightEngine& light) {
+std::vector<glm::vec2> modelLight(const Model& model, const PropTransform& t, const World& world,
+                                  const LightEngine& light) {
   std::vector<glm::dvec3> points;
   points.reserve(model.vertexCount());
   for (const ModelMesh& mesh : model.meshes) {

@@ -1,12 +1,11 @@
 #pragma once
 // Where a scene's prop goes in the world, and the voxel light it stands in: plain C++, no GL.
 
-#include <span>
-#include <vector>
-
 #include <glm/mat3x3.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <span>
+#include <vector>
 
 #include "assets/gltf_model.h"
 #include "light/light_engine.h"
@@ -35,10 +34,12 @@ WorldBounds placedBounds(const PropTransform& t, const glm::vec3& min, const glm
 // Block and sky light (0..1) at world points, smooth like the mesher's: the trilinear blend of the
 // 8 cells whose centres surround the point, leaving out cells of full opacity (light never enters
 // them) and renormalising over the rest. A point with all 8 cells solid is dark.
-std::vector<glm::vec2> smoothLightAt(const World& world, const LightEngine& light, std::span<const glm::dvec3> points);
+std::vector<glm::vec2> smoothLightAt(const World& world, const LightEngine& light,
+                                     std::span<const glm::dvec3> points);
 
 // smoothLightAt every vertex of a placed model, meshes in order (what render/props.h takes).
-std::vector<glm::vec2> modelLight(const Model& model, const PropTransform& t, const World& world, const LightEngine& light);
+std::vector<glm::vec2> modelLight(const Model& model, const PropTransform& t, const World& world,
+                                  const LightEngine& light);
 
 // A model file placed by several props is loaded once.
 class ModelCache {

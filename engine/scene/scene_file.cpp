@@ -11,8 +11,8 @@
 #include <sstream>
 
 #include "core/error.h"
-#include "core/paths.h"
 #include "core/json_check.h"
+#include "core/paths.h"
 #include "core/render_scale.h"
 
 namespace terrasol {
@@ -104,7 +104,8 @@ std::vector<path> parsePacks(const json& value, const path& sceneDir) {
   if (!value.is_array() || value.empty()) expected("packs", "a non-empty array of pack paths", value);
   std::vector<path> packs;
   for (std::size_t i = 0; i < value.size(); ++i) {
-    packs.push_back(resolvePack(nonEmptyString(value[i], element("packs", i)), sceneDir, element("packs", i)));
+    packs.push_back(
+        resolvePack(nonEmptyString(value[i], element("packs", i)), sceneDir, element("packs", i)));
   }
   return packs;
 }
@@ -118,22 +119,27 @@ SceneProp parseProp(const json& value, const std::string& key, const path& scene
   prop.model = resolvePath(nonEmptyString(*model, member(key, "model")), sceneDir, member(key, "model"));
   if (const json* v = field(value, "position")) prop.position = vec3(*v, member(key, "position"));
   if (const json* v = field(value, "rotation")) prop.rotation = glm::vec3(vec3(*v, member(key, "rotation")));
-  if (const json* v = field(value, "scale")) prop.scale = numberIn(*v, member(key, "scale"), 0.0, 1000.0, true);
+  if (const json* v = field(value, "scale"))
+    prop.scale = numberIn(*v, member(key, "scale"), 0.0, 1000.0, true);
   return prop;
 }
 
 std::vector<SceneProp> parseProps(const json& value, const path& sceneDir) {
   if (!value.is_array()) expected("props", "an array of props", value);
   std::vector<SceneProp> props;
-  for (std::size_t i = 0; i < value.size(); ++i) props.push_back(parseProp(value[i], element("props", i), sceneDir));
+  for (std::size_t i = 0; i < value.size(); ++i)
+    props.push_back(parseProp(value[i], element("props", i), sceneDir));
   return props;
 }
 
 void parsePcf(const json& pcf, const std::string& key, ShadowSettings& shadow) {
   checkObject(pcf, key, {"samples", "radius", "radius_unit", "pattern"});
-  if (const json* v = field(pcf, "samples")) shadow.pcfSamples = static_cast<int>(wholeNumber(*v, member(key, "samples"), 0, 8));
-  if (const json* v = field(pcf, "radius")) shadow.pcfRadius = numberIn(*v, member(key, "radius"), 0.0, 32.0, false);
-  if (const json* v = field(pcf, "pattern")) shadow.pcfPattern = enumOf(*v, member(key, "pattern"), kPcfPatterns);
+  if (const json* v = field(pcf, "samples"))
+    shadow.pcfSamples = static_cast<int>(wholeNumber(*v, member(key, "samples"), 0, 8));
+  if (const json* v = field(pcf, "radius"))
+    shadow.pcfRadius = numberIn(*v, member(key, "radius"), 0.0, 32.0, false);
+  if (const json* v = field(pcf, "pattern"))
+    shadow.pcfPattern = enumOf(*v, member(key, "pattern"), kPcfPatterns);
   if (const json* v = field(pcf, "radius_unit")) {
     shadow.pcfRadiusInBlocks = enumOf(*v, member(key, "radius_unit"), kPcfRadiusUnits);
   }
@@ -143,8 +149,8 @@ void parsePcf(const json& pcf, const std::string& key, ShadowSettings& shadow) {
 
 void parseShadow(const nlohmann::json& value, const std::string& key, ShadowSettings& shadow) {
   checkObject(value, key,
-              {"enabled", "mode", "cascades", "resolution", "distance", "warp", "warp_strength", "pcf", "shift_ahead",
-               "update_frames"});
+              {"enabled", "mode", "cascades", "resolution", "distance", "warp", "warp_strength", "pcf",
+               "shift_ahead", "update_frames"});
   if (const json* v = field(value, "enabled")) shadow.enabled = boolean(*v, member(key, "enabled"));
   if (const json* v = field(value, "mode")) shadow.mode = enumOf(*v, member(key, "mode"), kShadowModes);
   if (const json* v = field(value, "cascades")) {
@@ -153,25 +159,31 @@ void parseShadow(const nlohmann::json& value, const std::string& key, ShadowSett
   if (const json* v = field(value, "resolution")) {
     shadow.resolution = static_cast<int>(wholeNumber(*v, member(key, "resolution"), 16, 16384));
   }
-  if (const json* v = field(value, "distance")) shadow.distance = numberIn(*v, member(key, "distance"), 1.0, 4096.0, false);
+  if (const json* v = field(value, "distance"))
+    shadow.distance = numberIn(*v, member(key, "distance"), 1.0, 4096.0, false);
   if (const json* v = field(value, "warp")) shadow.warp = enumOf(*v, member(key, "warp"), kShadowWarps);
   if (const json* v = field(value, "warp_strength")) {
     const double a = finiteNumber(*v, member(key, "warp_strength"));
-    if (a < 0.0 || a >= 1.0) expected(member(key, "warp_strength"), "a number from 0 up to (not including) 1", *v);
+    if (a < 0.0 || a >= 1.0)
+      expected(member(key, "warp_strength"), "a number from 0 up to (not including) 1", *v);
     shadow.warpStrength = static_cast<float>(a);
   }
   if (const json* v = field(value, "pcf")) parsePcf(*v, member(key, "pcf"), shadow);
-  if (const json* v = field(value, "shift_ahead")) shadow.shiftAhead = numberIn(*v, member(key, "shift_ahead"), 0.0, 0.9, false);
+  if (const json* v = field(value, "shift_ahead"))
+    shadow.shiftAhead = numberIn(*v, member(key, "shift_ahead"), 0.0, 0.9, false);
   if (const json* v = field(value, "update_frames")) {
     shadow.updateFrames = static_cast<int>(wholeNumber(*v, member(key, "update_frames"), 1, 16));
   }
 }
 
 void parseReflections(const nlohmann::json& value, const std::string& key, ReflectionSettings& r) {
-  checkObject(value, key, {"enabled", "max_steps", "thickness", "resolution_scale", "min_smoothness", "max_distance"});
+  checkObject(value, key,
+              {"enabled", "max_steps", "thickness", "resolution_scale", "min_smoothness", "max_distance"});
   if (const json* v = field(value, "enabled")) r.enabled = boolean(*v, member(key, "enabled"));
-  if (const json* v = field(value, "max_steps")) r.maxSteps = static_cast<int>(wholeNumber(*v, member(key, "max_steps"), 1, 256));
-  if (const json* v = field(value, "thickness")) r.thickness = numberIn(*v, member(key, "thickness"), 0.01, 16.0, false);
+  if (const json* v = field(value, "max_steps"))
+    r.maxSteps = static_cast<int>(wholeNumber(*v, member(key, "max_steps"), 1, 256));
+  if (const json* v = field(value, "thickness"))
+    r.thickness = numberIn(*v, member(key, "thickness"), 0.01, 16.0, false);
   if (const json* v = field(value, "resolution_scale")) {
     r.resolutionScale =
         numberIn(*v, member(key, "resolution_scale"), kMinRenderScale, kMaxRenderScale, false);
@@ -179,12 +191,17 @@ void parseReflections(const nlohmann::json& value, const std::string& key, Refle
   if (const json* v = field(value, "min_smoothness")) {
     r.minSmoothness = numberIn(*v, member(key, "min_smoothness"), 0.0, 1.0, false);
   }
-  if (const json* v = field(value, "max_distance")) r.maxDistance = numberIn(*v, member(key, "max_distance"), 1.0, 1024.0, false);
+  if (const json* v = field(value, "max_distance"))
+    r.maxDistance = numberIn(*v, member(key, "max_distance"), 1.0, 1024.0, false);
 }
 
 nlohmann::json reflectionsJson(const ReflectionSettings& r) {
-  return {{"enabled", r.enabled},         {"max_steps", r.maxSteps},           {"thickness", r.thickness},
-          {"resolution_scale", r.resolutionScale}, {"min_smoothness", r.minSmoothness}, {"max_distance", r.maxDistance}};
+  return {{"enabled", r.enabled},
+          {"max_steps", r.maxSteps},
+          {"thickness", r.thickness},
+          {"resolution_scale", r.resolutionScale},
+          {"min_smoothness", r.minSmoothness},
+          {"max_distance", r.maxDistance}};
 }
 
 nlohmann::json shadowJson(const ShadowSettings& s) {
@@ -197,18 +214,20 @@ nlohmann::json shadowJson(const ShadowSettings& s) {
           {"warp_strength", s.warpStrength},
           {"shift_ahead", s.shiftAhead},
           {"update_frames", s.updateFrames},
-          {"pcf", {{"samples", s.pcfSamples}, {"radius", s.pcfRadius},
-                   {"radius_unit", kPcfRadiusUnits.nameOf(s.pcfRadiusInBlocks)},
-                   {"pattern", nameOf(s.pcfPattern, kPcfPatterns)}}}};
+          {"pcf",
+           {{"samples", s.pcfSamples},
+            {"radius", s.pcfRadius},
+            {"radius_unit", kPcfRadiusUnits.nameOf(s.pcfRadiusInBlocks)},
+            {"pattern", nameOf(s.pcfPattern, kPcfPatterns)}}}};
 }
 
 namespace {
 
 void parseRender(const json& render, SceneFile& scene) {
   checkObject(render, "render",
-              {"width", "height", "scale", "target_fps", "view_distance", "debug_view", "specular", "material_ao", "cave_culling",
-               "shadow_caster_culling", "cull_faces_away", "leave_out_absent_maps", "cull_passes", "shadow",
-               "reflections", "water"});
+              {"width", "height", "scale", "target_fps", "view_distance", "debug_view", "specular",
+               "material_ao", "cave_culling", "shadow_caster_culling", "cull_faces_away",
+               "leave_out_absent_maps", "cull_passes", "shadow", "reflections", "water"});
   if (const json* v = field(render, "width")) {
     scene.width = static_cast<int>(wholeNumber(*v, "render.width", 1, 8192));
   }
@@ -228,15 +247,18 @@ void parseRender(const json& render, SceneFile& scene) {
   if (const json* v = field(render, "debug_view")) {
     scene.debugView = enumOf(*v, "render.debug_view", kDebugViews);
   }
-  if (const json* v = field(render, "specular")) scene.specular = enumOf(*v, "render.specular", kSpecularModels);
+  if (const json* v = field(render, "specular"))
+    scene.specular = enumOf(*v, "render.specular", kSpecularModels);
   if (const json* v = field(render, "material_ao")) scene.materialAo = boolean(*v, "render.material_ao");
   if (const json* v = field(render, "cave_culling")) scene.caveCulling = boolean(*v, "render.cave_culling");
   if (const json* v = field(render, "shadow_caster_culling")) {
     scene.shadowCasterCulling = boolean(*v, "render.shadow_caster_culling");
   }
-  if (const json* v = field(render, "cull_faces_away")) scene.cullFacesAway = boolean(*v, "render.cull_faces_away");
+  if (const json* v = field(render, "cull_faces_away"))
+    scene.cullFacesAway = boolean(*v, "render.cull_faces_away");
   if (const json* v = field(render, "cull_passes")) scene.cullPasses = boolean(*v, "render.cull_passes");
-  if (const json* v = field(render, "reflections")) parseReflections(*v, "render.reflections", scene.reflections);
+  if (const json* v = field(render, "reflections"))
+    parseReflections(*v, "render.reflections", scene.reflections);
   if (const json* v = field(render, "water")) {
     checkObject(*v, "render.water", {"waves"});
     if (const json* w = field(*v, "waves")) scene.water.waves = boolean(*w, "render.water.waves");
@@ -313,8 +335,9 @@ void checkEditFrames(const SceneFile& scene) {
 }
 
 SceneFile parseRoot(const json& root, const path& file) {
-  checkObject(root, "",
-              {"world", "packs", "props", "time", "sun_path_rotation", "render", "camera", "camera_path", "compare"});
+  checkObject(
+      root, "",
+      {"world", "packs", "props", "time", "sun_path_rotation", "render", "camera", "camera_path", "compare"});
   SceneFile scene;
   scene.file = file;
   if (const json* v = field(root, "world")) parseWorld(*v, scene);

@@ -31,21 +31,21 @@ struct SceneEdit {
 struct CameraKeyframe {
   double t = 0.0;  // 0..1, strictly increasing along the path
   glm::dvec3 position{0.0}, lookAt{0.0, 0.0, -1.0};
-  float fov = 70.0f;         // defaults to camera.fov
+  float fov = 70.0f;          // defaults to camera.fov
   std::int64_t time = kNoon;  // defaults to the scene's time
 };
 struct CameraPath {
-  int frames = 1;  // 1..100000
+  int frames = 1;                         // 1..100000
   std::vector<CameraKeyframe> keyframes;  // at least one
 };
 
 // "props": a glTF model placed in the world (engine/scene/prop_placement.h turns it into a transform).
 struct SceneProp {
-  std::filesystem::path model;      // .gltf or .glb; relative paths resolve against the scene file
-  glm::dvec3 position{0.0};         // blocks: where the model's origin goes
-  glm::vec3 rotation{0.0f};         // degrees: yaw (about y), pitch (about x), roll (about z)
-  float scale = 1.0f;               // (0, 1000]
-  std::string key;                  // "props[i]", for later error messages
+  std::filesystem::path model;  // .gltf or .glb; relative paths resolve against the scene file
+  glm::dvec3 position{0.0};     // blocks: where the model's origin goes
+  glm::vec3 rotation{0.0f};     // degrees: yaw (about y), pitch (about x), roll (about z)
+  float scale = 1.0f;           // (0, 1000]
+  std::string key;              // "props[i]", for later error messages
 };
 
 // "compare": how terrasol-render --compare judges a frame against its golden.
@@ -62,26 +62,27 @@ struct SceneFile {
   // Bottom to top. "default" becomes resourcePackDir()/"default"; relative paths are resolved against
   // the scene file's directory. When the key is absent: just the default pack.
   std::vector<std::filesystem::path> packs;
-  std::int64_t time = kNoon;       // ticks, >= 0: core/day_cycle.h (kSunrise, kNoon, kSunset, kMidnight)
-  float sunPathRotation = 0.0f;    // degrees in [-90, 90], tilts the sun and moon path
-  int width = 320, height = 180;   // pixels, 1..8192 each
-  int viewDistance = 4;            // chunks, 0..32
-  float renderScale = 1.0f;        // render.scale, 0.25..1: the scene drawn smaller, scaled up at the end
-  int targetFps = 0;               // render.target_fps: dynamic resolution below render.scale; 0: off
+  std::int64_t time = kNoon;      // ticks, >= 0: core/day_cycle.h (kSunrise, kNoon, kSunset, kMidnight)
+  float sunPathRotation = 0.0f;   // degrees in [-90, 90], tilts the sun and moon path
+  int width = 320, height = 180;  // pixels, 1..8192 each
+  int viewDistance = 4;           // chunks, 0..32
+  float renderScale = 1.0f;       // render.scale, 0.25..1: the scene drawn smaller, scaled up at the end
+  int targetFps = 0;              // render.target_fps: dynamic resolution below render.scale; 0: off
   DebugView debugView = DebugView::None;               // "render.debug_view": one of kDebugViews
   SpecularModel specular = SpecularModel::BlinnPhong;  // "render.specular": one of kSpecularModels
-  bool materialAo = true;          // "render.material_ao": LabPBR _n blue darkens ambient light
-  bool caveCulling = true;         // "render.cave_culling": leave out sections hidden behind solid ground
+  bool materialAo = true;           // "render.material_ao": LabPBR _n blue darkens ambient light
+  bool caveCulling = true;          // "render.cave_culling": leave out sections hidden behind solid ground
   bool shadowCasterCulling = true;  // "render.shadow_caster_culling": no caster shading nothing in view
-  bool leaveOutAbsentMaps = true;  // "render.leave_out_absent_maps": no _n/_s sampling when no pack has them
-  bool cullFacesAway = true;       // "render.cull_faces_away": face groups turned away are not drawn
-  bool cullPasses = true;          // "render.cull_passes": no pass whose output nothing reads, or with nothing to draw
-  ShadowSettings shadow;           // "render.shadow"
+  bool leaveOutAbsentMaps = true;   // "render.leave_out_absent_maps": no _n/_s sampling when no pack has them
+  bool cullFacesAway = true;        // "render.cull_faces_away": face groups turned away are not drawn
+  bool cullPasses =
+      true;               // "render.cull_passes": no pass whose output nothing reads, or with nothing to draw
+  ShadowSettings shadow;  // "render.shadow"
   ReflectionSettings reflections;  // "render.reflections"
   WaterSettings water;             // "render.water"
   glm::dvec3 cameraPosition{0.0, 80.0, 0.0};
   glm::dvec3 cameraLookAt{0.0, 80.0, -1.0};
-  float fov = 70.0f;  // vertical degrees, in (0, 180)
+  float fov = 70.0f;                     // vertical degrees, in (0, 180)
   std::optional<CameraPath> cameraPath;  // when absent: one frame from `camera`
   std::vector<SceneProp> props;
   CompareSettings compare;

@@ -6,9 +6,9 @@
 
 #include "core/error.h"
 #include "mesh/mesh_scheduler.h"
-#include "scene/camera_path.h"
 #include "mesh/section_mesh.h"
 #include "scene/block_atlas.h"
+#include "scene/camera_path.h"
 #include "world/connected_states.h"
 
 namespace terrasol {

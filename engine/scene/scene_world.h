@@ -52,7 +52,7 @@ class SceneWorld {
   std::vector<ChunkPos> centres_;  // each frame's camera chunk, each once
   int viewDistance_;
   std::vector<ChunkPos> loaded_;  // within view distance + 1 of a centre
-  std::vector<Edit> edits_;  // in file order
+  std::vector<Edit> edits_;       // in file order
 };
 
 }  // namespace terrasol

@@ -5,12 +5,15 @@
 
 namespace terrasol {
 
-const Model& PlacedProps::model(const std::filesystem::path& file) { return models_[models_.load(file)]; }
+const Model& PlacedProps::model(const std::filesystem::path& file) {
+  return models_[models_.load(file)];
+}
 
 int PlacedProps::place(const std::filesystem::path& file, const PropTransform& transform, const World& world,
                        const LightEngine& light) {
   const int model = models_.load(file);
-  if (gpuModels_.size() <= static_cast<std::size_t>(model)) gpuModels_.resize(static_cast<std::size_t>(model) + 1, -1);
+  if (gpuModels_.size() <= static_cast<std::size_t>(model))
+    gpuModels_.resize(static_cast<std::size_t>(model) + 1, -1);
   int& gpuModel = gpuModels_[static_cast<std::size_t>(model)];
   if (gpuModel < 0) gpuModel = gpu_.addModel(models_[model]);
   const Model& m = models_[model];
@@ -40,7 +43,8 @@ void PlacedProps::relightAll(const World& world, const LightEngine& light) {
   for (std::size_t i = 0; i < placed_.size(); ++i) relight(i, world, light);
 }
 
-void PlacedProps::relightNear(const std::vector<SectionPos>& sections, const World& world, const LightEngine& light) {
+void PlacedProps::relightNear(const std::vector<SectionPos>& sections, const World& world,
+                              const LightEngine& light) {
   for (std::size_t i = 0; i < placed_.size(); ++i) {
     // The box grown by one block: smooth light reads the cells around each vertex.
     const WorldBounds& b = placed_[i].bounds;

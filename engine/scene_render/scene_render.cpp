@@ -9,9 +9,9 @@
 #include "render/gl/render_target.h"
 #include "scene/block_atlas.h"
 #include "scene/camera_path.h"
+#include "scene/scene_world.h"
 #include "scene_render/placed_props.h"
 #include "scene_render/under_water.h"
-#include "scene/scene_world.h"
 
 namespace terrasol {
 namespace {
@@ -70,8 +70,8 @@ RendererOptions withProps(RendererOptions options, const PlacedProps& props) {
 }  // namespace
 
 struct SceneRenderer::Gpu {
-  Gpu(const ShaderPreprocessor& shaders, const Atlas& atlas, const BiomeColormaps& colormaps, const RendererOptions& options,
-      glm::ivec2 size, const SceneFile& scene, const SceneWorld& world)
+  Gpu(const ShaderPreprocessor& shaders, const Atlas& atlas, const BiomeColormaps& colormaps,
+      const RendererOptions& options, glm::ivec2 size, const SceneFile& scene, const SceneWorld& world)
       : props(placeProps(scene, world)),
         renderer(shaders, atlas, colormaps, withProps(options, props)),
         target(size) {}
@@ -103,8 +103,8 @@ SceneRenderer::SceneRenderer(const SceneFile& scene)
   options.cullPasses = scene.cullPasses;
   options.reflections = scene.reflections;
   options.water = scene.water;
-  gpu_ = std::make_unique<Gpu>(shaders, world_->atlas.atlas, colormaps, options, glm::ivec2(scene.width, scene.height), scene,
-                               world_->world);
+  gpu_ = std::make_unique<Gpu>(shaders, world_->atlas.atlas, colormaps, options,
+                               glm::ivec2(scene.width, scene.height), scene, world_->world);
   for (const auto& mesh : meshes) {
     gpu_->meshes.upload(mesh);
     stats_.quads += mesh.quads();
@@ -114,9 +114,13 @@ SceneRenderer::SceneRenderer(const SceneFile& scene)
 
 SceneRenderer::~SceneRenderer() = default;
 
-DeferredRenderer& SceneRenderer::renderer() { return gpu_->renderer; }
+DeferredRenderer& SceneRenderer::renderer() {
+  return gpu_->renderer;
+}
 
-const terrasol::World& SceneRenderer::world() const { return world_->world.world(); }
+const terrasol::World& SceneRenderer::world() const {
+  return world_->world.world();
+}
 
 FrameInputs SceneRenderer::inputsFor(int frame) const {
   const CameraState camera = cameraAtFrame(scene_, frame);
@@ -152,11 +156,13 @@ RenderedFrame SceneRenderer::renderFrame(int frame, const FrameRequest& request)
   const GLuint fbo = gpu_->target.framebuffer();
   if (scene_.targetFps > 0) inputs.renderScale = resolution_.scale();
   const auto start = std::chrono::steady_clock::now();
-  gpu_->renderer.render(inputs, gpu_->meshes, fbo, gpu_->target.size(), request.timed ? &out.timings : nullptr);
+  gpu_->renderer.render(inputs, gpu_->meshes, fbo, gpu_->target.size(),
+                        request.timed ? &out.timings : nullptr);
   if (scene_.targetFps > 0) {
     glFinish();  // the frame's whole time, as the game measures it
-    resolution_.update(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count(),
-                       scene_.targetFps);
+    resolution_.update(
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count(),
+        scene_.targetFps);
   }
   out.stats = gpu_->renderer.lastFrame();
   if (request.checkNan || request.readBack) {

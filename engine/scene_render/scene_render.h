@@ -25,8 +25,8 @@ struct RenderedFrame {
   Image image;
   std::vector<PassTiming> timings;  // when asked for: glFinish after each pass
   FrameStats stats;
-  std::size_t nanPixels = 0;        // when asked for
-  GBufferPixels pixels;             // with checkNan or readBack
+  std::size_t nanPixels = 0;                    // when asked for
+  GBufferPixels pixels;                         // with checkNan or readBack
   std::optional<ReflectionPixels> reflections;  // with readBack, when the reflection pass ran
   FrameGeometry geometry;
 };
@@ -34,7 +34,7 @@ struct RenderedFrame {
 struct FrameRequest {
   bool timed = false;
   bool checkNan = false;
-  bool readBack = false;            // keep the G-buffer's pixels (shadow-error report)
+  bool readBack = false;               // keep the G-buffer's pixels (shadow-error report)
   glm::dvec3 shadowCentreOffset{0.0};  // moves the shadow map as if the camera had moved (flicker)
   std::optional<DebugView> debugView;  // overrides the scene's
   bool reuseShadowMap = false;         // FrameInputs::reuseShadowMap

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-
 #include <glm/geometric.hpp>
 #include <glm/mat4x4.hpp>
 
@@ -64,19 +63,25 @@ struct Surface {
   glm::dvec3 normal;
 };
 bool surfaceAt(const GBufferPixels& f, const FrameGeometry& g, int x, int y, Surface& s) {
-  const std::size_t i = static_cast<std::size_t>(y) * static_cast<std::size_t>(f.size.x) + static_cast<std::size_t>(x);
+  const std::size_t i =
+      static_cast<std::size_t>(y) * static_cast<std::size_t>(f.size.x) + static_cast<std::size_t>(x);
   const float depth = f.depth[i];
   if (!(depth < 1.0f)) return false;
-  const glm::vec4 ndc((x + 0.5f) / f.size.x * 2.0f - 1.0f, (y + 0.5f) / f.size.y * 2.0f - 1.0f, depth * 2.0f - 1.0f, 1.0f);
+  const glm::vec4 ndc((x + 0.5f) / f.size.x * 2.0f - 1.0f, (y + 0.5f) / f.size.y * 2.0f - 1.0f,
+                      depth * 2.0f - 1.0f, 1.0f);
   const glm::vec4 p = g.inverseViewProjection * ndc;
   s.relative = glm::dvec3(p) / static_cast<double>(p.w);
   s.normal = octDecode(glm::dvec2(f.normals[i].z, f.normals[i].w));
   return true;
 }
 
-bool facesLight(const Surface& s, const FrameGeometry& g) { return glm::dot(s.normal, glm::dvec3(g.toLight)) > 0.05; }
+bool facesLight(const Surface& s, const FrameGeometry& g) {
+  return glm::dot(s.normal, glm::dvec3(g.toLight)) > 0.05;
+}
 
-int bucketOf(double distance) { return distance < 8.0 ? 0 : distance < 32.0 ? 1 : distance < 64.0 ? 2 : 3; }
+int bucketOf(double distance) {
+  return distance < 8.0 ? 0 : distance < 32.0 ? 1 : distance < 64.0 ? 2 : 3;
+}
 
 }  // namespace
 
@@ -88,13 +93,15 @@ ShadowError measureShadowError(const World& world, const GBufferPixels& frame, c
     for (int x = 0; x < frame.size.x; ++x) {
       Surface s;
       if (!surfaceAt(frame, geometry, x, y, s) || !facesLight(s, geometry)) continue;
-      const std::size_t i = static_cast<std::size_t>(y) * static_cast<std::size_t>(frame.size.x) + static_cast<std::size_t>(x);
+      const std::size_t i =
+          static_cast<std::size_t>(y) * static_cast<std::size_t>(frame.size.x) + static_cast<std::size_t>(x);
       const float rendered = frame.scene[i].a;
       if (frame.light[i].g == 0 && rendered > 0.0f && geometry.shadowMapShown) ++e.caveLeakPixels;
       const double d = glm::length(s.relative);
       if (d > distance) continue;
       ShadowCounts& bucket = e.byDistance[static_cast<std::size_t>(bucketOf(d))];
-      const Ray truth = truthAt(world, geometry.camera + s.relative, s.normal, toLight, distance + static_cast<double>(kShadowCasterReach));
+      const Ray truth = truthAt(world, geometry.camera + s.relative, s.normal, toLight,
+                                distance + static_cast<double>(kShadowCasterReach));
       for (ShadowCounts* c : {&e.total, &bucket}) {
         if (truth == Ray::Ambiguous) {
           ++c->ambiguous;
@@ -108,15 +115,16 @@ ShadowError measureShadowError(const World& world, const GBufferPixels& frame, c
   return e;
 }
 
-double flickerPercent(const GBufferPixels& a, const GBufferPixels& b, const FrameGeometry& geometry, float distance,
-                      std::size_t& compared) {
+double flickerPercent(const GBufferPixels& a, const GBufferPixels& b, const FrameGeometry& geometry,
+                      float distance, std::size_t& compared) {
   compared = 0;
   std::size_t flips = 0;
   for (int y = 0; y < a.size.y; ++y)
     for (int x = 0; x < a.size.x; ++x) {
       Surface s;
       // The map's outer tenth is left out: a point there moves in and out of the map as it steps.
-      if (!surfaceAt(a, geometry, x, y, s) || !facesLight(s, geometry) || glm::length(s.relative) > 0.9 * distance) {
+      if (!surfaceAt(a, geometry, x, y, s) || !facesLight(s, geometry) ||
+          glm::length(s.relative) > 0.9 * distance) {
         continue;
       }
       const auto i = static_cast<std::size_t>(y * a.size.x + x);

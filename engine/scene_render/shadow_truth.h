@@ -6,7 +6,6 @@
 
 #include <array>
 #include <cstddef>
-
 #include <nlohmann/json.hpp>
 
 #include "render/deferred_renderer.h"
@@ -32,10 +31,10 @@ ShadowError measureShadowError(const World& world, const GBufferPixels& frame, c
                                float distance);
 
 // Of the pixels of `a` facing the light within 0.9 `distance` (inside the map's edge), the percentage
-// whose shadow (rendered term >= 0.5 or not) differs in `b`: the same view, the shadow map placed for a moved camera. `compared`
-// gets how many pixels were compared.
-double flickerPercent(const GBufferPixels& a, const GBufferPixels& b, const FrameGeometry& geometry, float distance,
-                      std::size_t& compared);
+// whose shadow (rendered term >= 0.5 or not) differs in `b`: the same view, the shadow map placed for a moved
+// camera. `compared` gets how many pixels were compared.
+double flickerPercent(const GBufferPixels& a, const GBufferPixels& b, const FrameGeometry& geometry,
+                      float distance, std::size_t& compared);
 
 nlohmann::json shadowErrorJson(const ShadowError& error, double flickerPct, std::size_t flickerPoints);
 

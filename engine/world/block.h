@@ -24,7 +24,17 @@ enum class RenderLayer : std::uint8_t { None, Opaque, Cutout, Translucent };
 // blocks.json's "placement": the rule a placed state follows (game/placement.h); None, the key
 // absent, keeps the held state.
 enum class PlacementRule : std::uint8_t {
-  None, Stairs, Slab, Axis, Facing, FacingBack, Door, Trapdoor, Wall, Torch, Layers
+  None,
+  Stairs,
+  Slab,
+  Axis,
+  Facing,
+  FacingBack,
+  Door,
+  Trapdoor,
+  Wall,
+  Torch,
+  Layers
 };
 inline constexpr EnumNames<PlacementRule, 11> kPlacementRules{
     {"", "stairs", "slab", "axis", "facing", "facing_back", "door", "trapdoor", "wall", "torch", "layers"}};

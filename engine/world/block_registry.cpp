@@ -198,7 +198,8 @@ BlockType parseBlock(const json& block, const std::string& where) {
                "properties", "default", "placement", "wall_variant", "connects", "opens", "collision"});
   type.shape = BlockShape::Cube;
   parseLooks(block, type, at);
-  type.opacity = static_cast<std::uint8_t>(parseLevel(block, "opacity", type.isOpaqueCube() ? kMaxLight : 0, at));
+  type.opacity =
+      static_cast<std::uint8_t>(parseLevel(block, "opacity", type.isOpaqueCube() ? kMaxLight : 0, at));
   type.emission = static_cast<std::uint8_t>(parseLevel(block, "emission", 0, at));
   if (const json* v = field(block, "shape_occludes_light")) {
     type.shapeOccludesLight = boolean(*v, member(at, "shape_occludes_light"));
@@ -283,8 +284,7 @@ BlockId BlockRegistry::find(std::string_view name, bool* found, std::string* pro
   const BlockType& type = types_[it->second];
   if (found) *found = true;
   if (open == std::string_view::npos) return type.defaultState;
-  if (name.back() != ']')
-    return report(type.defaultState, join({"'", name, "': expected ']' at the end"}));
+  if (name.back() != ']') return report(type.defaultState, join({"'", name, "': expected ']' at the end"}));
   std::vector<std::size_t> indices = valueIndicesOf(type, type.defaultState - type.firstState);
   const std::string_view list = name.substr(open + 1, name.size() - open - 2);
   std::size_t start = 0;
@@ -293,8 +293,7 @@ BlockId BlockRegistry::find(std::string_view name, bool* found, std::string* pro
     const std::string_view pair = list.substr(start, comma - start);
     const std::size_t eq = pair.find('=');
     if (eq == std::string_view::npos || eq == 0 || eq + 1 == pair.size()) {
-      return report(type.defaultState,
-                    join({"'", name, "': expected property=value, not '", pair, "'"}));
+      return report(type.defaultState, join({"'", name, "': expected property=value, not '", pair, "'"}));
     }
     const std::string_view key = pair.substr(0, eq), value = pair.substr(eq + 1);
     const auto p = std::find_if(type.properties.begin(), type.properties.end(),

@@ -94,7 +94,8 @@ std::unique_ptr<Chunk> decodeChunk(ChunkPos pos, const std::uint8_t* data, std::
   }
   std::vector<std::uint8_t> raw(rawSize);
   const std::size_t n = ZSTD_decompress(raw.data(), raw.size(), data, size);
-  if (ZSTD_isError(n) || n != rawSize) throw Error(std::string("cannot decompress chunk: ") + ZSTD_getErrorName(n));
+  if (ZSTD_isError(n) || n != rawSize)
+    throw Error(std::string("cannot decompress chunk: ") + ZSTD_getErrorName(n));
 
   Reader in(raw.data(), raw.size());
   if (const auto v = in.u8(); v != kVersion) throw Error("unsupported chunk version " + std::to_string(v));

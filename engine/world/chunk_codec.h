@@ -25,6 +25,7 @@ std::vector<std::uint8_t> encodeChunk(const Chunk& chunk, const BlockRegistry& b
 // blocks not in the registry become air, unknown properties or values the block's default state; both
 // are listed in `unknownBlocks` when it is given.
 std::unique_ptr<Chunk> decodeChunk(ChunkPos pos, const std::uint8_t* data, std::size_t size,
-                                   const BlockRegistry& blocks, std::vector<std::string>* unknownBlocks = nullptr);
+                                   const BlockRegistry& blocks,
+                                   std::vector<std::string>* unknownBlocks = nullptr);
 
 }  // namespace terrasol

@@ -1,12 +1,11 @@
 #include "world/chunk_loader.h"
 
-#include "core/thread_priority.h"
-
 #include <algorithm>
 #include <string>
 #include <utility>
 
 #include "core/log.h"
+#include "core/thread_priority.h"
 
 namespace terrasol {
 namespace {
@@ -20,10 +19,11 @@ std::int64_t distance2(ChunkPos a, ChunkPos b) {
 
 ChunkLoader::ChunkLoader(const ChunkGenerator& generator, WorldStorage* storage, int threads)
     : generator_(generator), storage_(storage) {
-  for (int i = 0; i < std::max(threads, 1); ++i) workers_.emplace_back([this] {
-    lowerThisThreadsPriority();
-    work();
-  });
+  for (int i = 0; i < std::max(threads, 1); ++i)
+    workers_.emplace_back([this] {
+      lowerThisThreadsPriority();
+      work();
+    });
 }
 
 ChunkLoader::~ChunkLoader() {

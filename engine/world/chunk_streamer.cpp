@@ -1,22 +1,24 @@
 #include "world/chunk_streamer.h"
 
-#include "core/log.h"
-
 #include <algorithm>
 #include <cstdlib>
 #include <exception>
 #include <string>
 #include <utility>
 
+#include "core/log.h"
+
 namespace terrasol {
 namespace {
 
-int chebyshev(ChunkPos a, ChunkPos b) { return std::max(std::abs(a.x - b.x), std::abs(a.z - b.z)); }
+int chebyshev(ChunkPos a, ChunkPos b) {
+  return std::max(std::abs(a.x - b.x), std::abs(a.z - b.z));
+}
 
 }  // namespace
 
-ChunkStreamer::ChunkStreamer(World& world, const ChunkGenerator& generator, WorldStorage* storage, int threads,
-                             int radius)
+ChunkStreamer::ChunkStreamer(World& world, const ChunkGenerator& generator, WorldStorage* storage,
+                             int threads, int radius)
     : world_(world), storage_(storage), radius_(radius), loader_(generator, storage, threads) {}
 
 std::vector<ChunkPos> ChunkStreamer::update(ChunkPos center, const std::function<bool()>& more) {

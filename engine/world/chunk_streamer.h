@@ -16,7 +16,8 @@ class ChunkStreamer {
  public:
   // Chunks within `radius` (in chunks, a square) of the centre are loaded; those beyond radius + 1
   // are unloaded (the margin keeps a player walking along a border from reloading chunks).
-  ChunkStreamer(World& world, const ChunkGenerator& generator, WorldStorage* storage, int threads, int radius);
+  ChunkStreamer(World& world, const ChunkGenerator& generator, WorldStorage* storage, int threads,
+                int radius);
 
   // Called right after a chunk is added to the World, and right before one is removed (e.g. the
   // light engine's chunkLoaded / chunkUnloading, the mesher's dirty marks).
@@ -45,7 +46,7 @@ class ChunkStreamer {
   int radius_;
   std::unordered_set<ChunkPos> requested_;
   std::vector<std::unique_ptr<Chunk>> ready_;  // finished, not added yet
-  ChunkLoader loader_;  // last: its workers stop before the rest is destroyed
+  ChunkLoader loader_;                         // last: its workers stop before the rest is destroyed
 };
 
 }  // namespace terrasol

@@ -108,9 +108,9 @@ BlockId connectedSides(const World& world, const BlockPos& pos, BlockId state, C
     const auto [side, name] = kSides[k];
     joined[k] = joins(world, kind, world.neighbour(pos, side), side);
     const char* value = kind != Connects::Wall ? (joined[k] ? "true" : "false")
-                        : !joined[k]   ? "none"
-                        : tall         ? "tall"
-                                       : "low";
+                        : !joined[k]           ? "none"
+                        : tall                 ? "tall"
+                                               : "low";
     state = blocks.with(state, name, value).value_or(state);
   }
   if (kind == Connects::Wall) {

@@ -75,7 +75,8 @@ std::vector<FlatLayer> defaultFlatLayers(const BlockRegistry& blocks) {
   return parseFlatLayers("bedrock,59*stone,3*dirt,grass_block", blocks);
 }
 
-std::unique_ptr<ChunkGenerator> makeGenerator(const GeneratorSettings& settings, const BlockRegistry& blocks) {
+std::unique_ptr<ChunkGenerator> makeGenerator(const GeneratorSettings& settings,
+                                              const BlockRegistry& blocks) {
   if (settings.type == "void") return std::make_unique<VoidGenerator>();
   if (settings.type == "flat") {
     return std::make_unique<FlatGenerator>(settings.flatLayers.empty() ? defaultFlatLayers(blocks)

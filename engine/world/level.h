@@ -4,10 +4,9 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <glm/vec3.hpp>
 #include <string>
 #include <vector>
-
-#include <glm/vec3.hpp>
 
 namespace terrasol {
 
@@ -23,11 +22,11 @@ struct LevelProp {
 struct Level {
   std::string generator = "terrain";
   std::uint64_t seed = 0;
-  std::int64_t time = 0;                 // world time in ticks (kTicksPerDay a day)
+  std::int64_t time = 0;  // world time in ticks (kTicksPerDay a day)
   glm::dvec3 playerPosition{0.0, 0.0, 0.0};
   float playerYaw = 0.0f, playerPitch = 0.0f;  // degrees
-  bool playerFlying = false;             // "flying" (absent in older files: false)
-  std::vector<LevelProp> props;          // "props" (absent in older files: none)
+  bool playerFlying = false;                   // "flying" (absent in older files: false)
+  std::vector<LevelProp> props;                // "props" (absent in older files: none)
 };
 
 // Throws Error naming the file and the key that is missing or wrong.

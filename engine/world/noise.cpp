@@ -5,37 +5,61 @@
 namespace terrasol {
 namespace {
 
-double fade(double t) { return t * t * t * (t * (t * 6.0 - 15.0) + 10.0); }
-double lerp(double a, double b, double t) { return a + (b - a) * t; }
+double fade(double t) {
+  return t * t * t * (t * (t * 6.0 - 15.0) + 10.0);
+}
+double lerp(double a, double b, double t) {
+  return a + (b - a) * t;
+}
 
 // Dot product of the fraction with one of 8 (2D) or 12 (3D) gradient directions picked by the hash.
 double grad2(std::uint64_t h, double x, double z) {
   switch (h >> 61) {  // top 3 bits
-    case 0: return x + z;
-    case 1: return x - z;
-    case 2: return -x + z;
-    case 3: return -x - z;
-    case 4: return x;
-    case 5: return -x;
-    case 6: return z;
-    default: return -z;
+    case 0:
+      return x + z;
+    case 1:
+      return x - z;
+    case 2:
+      return -x + z;
+    case 3:
+      return -x - z;
+    case 4:
+      return x;
+    case 5:
+      return -x;
+    case 6:
+      return z;
+    default:
+      return -z;
   }
 }
 
 double grad3(std::uint64_t h, double x, double y, double z) {
   switch ((h >> 32) % 12) {
-    case 0: return x + y;
-    case 1: return -x + y;
-    case 2: return x - y;
-    case 3: return -x - y;
-    case 4: return x + z;
-    case 5: return -x + z;
-    case 6: return x - z;
-    case 7: return -x - z;
-    case 8: return y + z;
-    case 9: return -y + z;
-    case 10: return y - z;
-    default: return -y - z;
+    case 0:
+      return x + y;
+    case 1:
+      return -x + y;
+    case 2:
+      return x - y;
+    case 3:
+      return -x - y;
+    case 4:
+      return x + z;
+    case 5:
+      return -x + z;
+    case 6:
+      return x - z;
+    case 7:
+      return -x - z;
+    case 8:
+      return y + z;
+    case 9:
+      return -y + z;
+    case 10:
+      return y - z;
+    default:
+      return -y - z;
   }
 }
 
@@ -55,7 +79,8 @@ double Noise::at(double x, double z) const {
 
 double Noise::at(double x, double y, double z) const {
   const double fx = std::floor(x), fy = std::floor(y), fz = std::floor(z);
-  const auto ix = static_cast<std::int64_t>(fx), iy = static_cast<std::int64_t>(fy), iz = static_cast<std::int64_t>(fz);
+  const auto ix = static_cast<std::int64_t>(fx), iy = static_cast<std::int64_t>(fy),
+             iz = static_cast<std::int64_t>(fz);
   const double dx = x - fx, dy = y - fy, dz = z - fz;
   const double u = fade(dx), v = fade(dy), w = fade(dz);
   double corners[2][2][2];

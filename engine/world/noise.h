@@ -18,7 +18,8 @@ constexpr std::uint64_t mix64(std::uint64_t x) {
 }
 
 // A deterministic hash of a seed and up to three integer coordinates.
-constexpr std::uint64_t hashCoords(std::uint64_t seed, std::int64_t x, std::int64_t y = 0, std::int64_t z = 0) {
+constexpr std::uint64_t hashCoords(std::uint64_t seed, std::int64_t x, std::int64_t y = 0,
+                                   std::int64_t z = 0) {
   std::uint64_t h = mix64(seed ^ 0x9E3779B97F4A7C15ull);
   h = mix64(h ^ static_cast<std::uint64_t>(x));
   h = mix64(h ^ static_cast<std::uint64_t>(y) * 0xD6E8FEB86659FD93ull);
@@ -26,7 +27,9 @@ constexpr std::uint64_t hashCoords(std::uint64_t seed, std::int64_t x, std::int6
 }
 
 // Uniform in [0, 1) from a hash.
-constexpr double unitFloat(std::uint64_t h) { return static_cast<double>(h >> 11) * 0x1.0p-53; }
+constexpr double unitFloat(std::uint64_t h) {
+  return static_cast<double>(h >> 11) * 0x1.0p-53;
+}
 
 class Noise {
  public:

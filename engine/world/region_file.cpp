@@ -20,7 +20,9 @@ std::uint32_t get32(const std::uint8_t* p) {
   return static_cast<std::uint32_t>(p[0]) | static_cast<std::uint32_t>(p[1]) << 8 |
          static_cast<std::uint32_t>(p[2]) << 16 | static_cast<std::uint32_t>(p[3]) << 24;
 }
-std::uint64_t get64(const std::uint8_t* p) { return get32(p) | static_cast<std::uint64_t>(get32(p + 4)) << 32; }
+std::uint64_t get64(const std::uint8_t* p) {
+  return get32(p) | static_cast<std::uint64_t>(get32(p + 4)) << 32;
+}
 void put32(std::uint8_t* p, std::uint32_t v) {
   for (int i = 0; i < 4; ++i) p[i] = static_cast<std::uint8_t>(v >> (8 * i));
 }
@@ -47,7 +49,9 @@ std::vector<std::uint8_t> makeRecord(ChunkPos chunk, const std::uint8_t* payload
   return record;
 }
 
-std::string errnoText() { return std::strerror(errno); }
+std::string errnoText() {
+  return std::strerror(errno);
+}
 
 // Makes a rename durable.
 void syncDirectory(const std::filesystem::path& dir) {
@@ -100,12 +104,15 @@ RegionFile::RecordView RegionFile::viewRecord(const std::vector<std::uint8_t>& b
   r.size = left >= kRecordHeaderSize ? get32(h + 12) : 0;
   r.name = coordsKnown ? "chunk (" + std::to_string(r.chunk.x) + ", " + std::to_string(r.chunk.z) + ")"
                        : "a chunk (its coordinates were not written)";
-  r.label = coordsKnown ? "chunk_" + std::to_string(r.chunk.x) + "_" + std::to_string(r.chunk.z) : "unknown_chunk";
-  r.whole = r.magicOk && left >= kRecordHeaderSize && r.size <= kMaxPayload && kRecordHeaderSize + r.size <= left;
+  r.label =
+      coordsKnown ? "chunk_" + std::to_string(r.chunk.x) + "_" + std::to_string(r.chunk.z) : "unknown_chunk";
+  r.whole =
+      r.magicOk && left >= kRecordHeaderSize && r.size <= kMaxPayload && kRecordHeaderSize + r.size <= left;
   return r;
 }
 
-RegionFile::RegionFile(std::filesystem::path path, RegionPos region) : path_(std::move(path)), region_(region) {
+RegionFile::RegionFile(std::filesystem::path path, RegionPos region)
+    : path_(std::move(path)), region_(region) {
   fd_ = ::open(path_.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
   if (fd_ < 0) throw Error(locate(path_, 0, "cannot open region file: " + errnoText()));
   try {
@@ -164,7 +171,8 @@ std::uint64_t RegionFile::scanRecord(const std::vector<std::uint8_t>& bytes, std
       cutTornTail(bytes, offset, r);
       return bytes.size();
     }
-    report(offset, r.magicOk ? "record header of " + r.name + " is corrupt" : "unreadable bytes up to the next record");
+    report(offset, r.magicOk ? "record header of " + r.name + " is corrupt"
+                             : "unreadable bytes up to the next record");
     keepAside(bytes, offset, next - offset, r.magicOk ? r.label : "garbage");
     return next;
   }
@@ -184,8 +192,10 @@ std::uint64_t RegionFile::scanRecord(const std::vector<std::uint8_t>& bytes, std
 }
 
 // What a kill during a save leaves: reported, kept aside, and cut off so new records follow valid ones.
-void RegionFile::cutTornTail(const std::vector<std::uint8_t>& bytes, std::uint64_t offset, const RecordView& r) {
-  report(offset, "torn record at the end of the file (an interrupted save); " + r.name + " keeps its previous save");
+void RegionFile::cutTornTail(const std::vector<std::uint8_t>& bytes, std::uint64_t offset,
+                             const RecordView& r) {
+  report(offset,
+         "torn record at the end of the file (an interrupted save); " + r.name + " keeps its previous save");
   keepAside(bytes, offset, bytes.size() - offset, r.label + "_torn");
   size_ = offset;
   if (::ftruncate(fd_, static_cast<off_t>(size_)) != 0) {
@@ -219,14 +229,15 @@ std::optional<std::vector<std::uint8_t>> RegionFile::read(ChunkPos chunk) const 
 
 void RegionFile::write(ChunkPos chunk, const std::vector<std::uint8_t>& payload) {
   if (payload.size() > kMaxPayload) throw Error(locate(path_, 0, "chunk payload too large"));
-  const auto record = makeRecord(chunk, payload.data(), static_cast<std::uint32_t>(payload.size()), nextSequence_);
+  const auto record =
+      makeRecord(chunk, payload.data(), static_cast<std::uint32_t>(payload.size()), nextSequence_);
   try {
     writeAll(fd_, record.data(), record.size(), size_);
   } catch (const Error& e) {
     [[maybe_unused]] const int ignored = ::ftruncate(fd_, static_cast<off_t>(size_));  // best effort
-    throw Error(locate(path_, 0,
-                       "cannot save chunk (" + std::to_string(chunk.x) + ", " + std::to_string(chunk.z) +
-                           "): " + e.what()));
+    throw Error(locate(
+        path_, 0,
+        "cannot save chunk (" + std::to_string(chunk.x) + ", " + std::to_string(chunk.z) + "): " + e.what()));
   }
   const Entry entry{size_, static_cast<std::uint32_t>(payload.size()), nextSequence_++};
   auto [it, inserted] = index_.try_emplace(localIndex(chunk), entry);

@@ -35,7 +35,8 @@ void fillGround(ColumnBlocks& blocks, const ColumnSamples& columns, ChunkPos pos
             y < 0 || (y < kDeepslateTop &&
                       static_cast<int>(hashCoords(t.seed ^ 0x0D, x0 + x, y, z0 + z) % kDeepslateTop) >= y);
         BlockId id = deep ? b.deepslate : b.stone;
-        if (y <= bedrockTop && (y == kMinY || ((r >> (16 + y - kMinY)) & 1))) {  // r from bit 16: a bit a layer
+        if (y <= bedrockTop &&
+            (y == kMinY || ((r >> (16 + y - kMinY)) & 1))) {  // r from bit 16: a bit a layer
           id = b.bedrock;
         } else if (y == h) {
           id = peak              ? b.snow

@@ -21,7 +21,8 @@ void blendTints(Chunk& chunk, const TerrainContext& terrain) {
     for (int i = 0; i < kSamples; ++i) {
       const int x = x0 + (i - kRadius) * kStep, z = z0 + (j - kRadius) * kStep;
       const TintClimate t = biomeTint(terrain.biomeAt(x, z));
-      samples[static_cast<std::size_t>(j * kSamples + i)] = {static_cast<float>(t.temperature), static_cast<float>(t.downfall)};
+      samples[static_cast<std::size_t>(j * kSamples + i)] = {static_cast<float>(t.temperature),
+                                                             static_cast<float>(t.downfall)};
     }
   std::array<Tint, kNodes * kNodes> nodes;
   constexpr float kArea = (2 * kRadius + 1) * (2 * kRadius + 1);

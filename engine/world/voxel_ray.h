@@ -5,9 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <optional>
-
 #include <glm/vec3.hpp>
+#include <optional>
 
 #include "core/model_units.h"
 
@@ -24,13 +23,15 @@ struct VoxelStep {
 // axis (no division by zero, no NaN).
 template <class Visit>
 std::optional<VoxelStep> walkVoxels(glm::dvec3 origin, glm::dvec3 dir, double maxDistance, Visit&& visit) {
-  VoxelStep s{glm::ivec3(std::floor(origin.x), std::floor(origin.y), std::floor(origin.z)), 0.0, glm::ivec3(0)};
+  VoxelStep s{glm::ivec3(std::floor(origin.x), std::floor(origin.y), std::floor(origin.z)), 0.0,
+              glm::ivec3(0)};
   glm::ivec3 step;
   glm::dvec3 tMax, tDelta;
   for (int a = 0; a < 3; ++a) {
     step[a] = dir[a] > 0.0 ? 1 : -1;
     const double d = std::abs(dir[a]);
-    const double boundary = dir[a] > 0.0 ? std::floor(origin[a]) + 1.0 - origin[a] : origin[a] - std::floor(origin[a]);
+    const double boundary =
+        dir[a] > 0.0 ? std::floor(origin[a]) + 1.0 - origin[a] : origin[a] - std::floor(origin[a]);
     tDelta[a] = d > 1e-12 ? 1.0 / d : 1e300;
     tMax[a] = d > 1e-12 ? boundary / d : 1e300;
   }

@@ -1,9 +1,10 @@
+#include "assets/atlas.h"
+
 #include <gtest/gtest.h>
 
 #include <glm/geometric.hpp>
 #include <set>
 
-#include "assets/atlas.h"
 #include "assets/labpbr.h"
 #include "assets/mipmap.h"
 #include "support/pack_builder.h"
@@ -37,8 +38,9 @@ std::array<int, 3> slot(const Atlas& a, int tile, int level) {
 TEST(Atlas, EachTexturesSmoothnessIsItsSmoothestTexel) {
   Image polished = solidImage(16, 16, 40, 0, 0, 255);
   polished.pixel(9, 3)[0] = 204;  // one texel of smoothness 0.8
-  const Atlas a = buildAtlas({plain("rough", 90, 90, 90), texture("polished", solidImage(16, 16, 200, 200, 200),
-                                                                   solidImage(16, 16, 127, 127, 255, 255), polished)});
+  const Atlas a =
+      buildAtlas({plain("rough", 90, 90, 90), texture("polished", solidImage(16, 16, 200, 200, 200),
+                                                      solidImage(16, 16, 127, 127, 255, 255), polished)});
   const std::vector<float> smoothness = textureSmoothness(a);
   ASSERT_EQ(smoothness.size(), 2u);
   EXPECT_FLOAT_EQ(smoothness[static_cast<std::size_t>(a.find("rough"))], 0.0f);
@@ -68,9 +70,11 @@ TEST(Atlas, ThreeAlignedAtlasesWithMipsDownToOneTexelAndNoBleeding) {
 }
 
 TEST(Atlas, OpenGlConventionNormalMapsAreFlippedToLabPbrs) {
-  LoadedTexture gl = texture("gl", solidImage(16, 16, 1, 1, 1), solidImage(16, 16, 127, 0, 255), solidImage(16, 16, 0, 0, 0, 0));
+  LoadedTexture gl = texture("gl", solidImage(16, 16, 1, 1, 1), solidImage(16, 16, 127, 0, 255),
+                             solidImage(16, 16, 0, 0, 0, 0));
   gl.openGlNormals = true;
-  LoadedTexture dx = texture("dx", solidImage(16, 16, 1, 1, 1), solidImage(16, 16, 127, 0, 255), solidImage(16, 16, 0, 0, 0, 0));
+  LoadedTexture dx = texture("dx", solidImage(16, 16, 1, 1, 1), solidImage(16, 16, 127, 0, 255),
+                             solidImage(16, 16, 0, 0, 0, 0));
   const Atlas a = buildAtlas({gl, dx});
   EXPECT_EQ(a.normal[0].pixel(16, 16)[1], 255) << "OpenGL green up becomes DirectX green down";
   EXPECT_EQ(a.normal[0].pixel(48, 16)[1], 0);
@@ -81,9 +85,11 @@ TEST(Atlas, PaddingRepeatsTheOppositeEdge) {
   for (int y = 0; y < 16; ++y)
     for (int x = 0; x < 16; ++x) {
       std::uint8_t* p = gradient.pixel(x, y);
-      p[0] = static_cast<std::uint8_t>(x * 16), p[1] = static_cast<std::uint8_t>(y * 16), p[2] = 0, p[3] = 255;
+      p[0] = static_cast<std::uint8_t>(x * 16), p[1] = static_cast<std::uint8_t>(y * 16), p[2] = 0,
+      p[3] = 255;
     }
-  const Atlas a = buildAtlas({texture("g", gradient, solidImage(16, 16, 127, 127, 255), solidImage(16, 16, 0, 0, 0, 0))});
+  const Atlas a =
+      buildAtlas({texture("g", gradient, solidImage(16, 16, 127, 127, 255), solidImage(16, 16, 0, 0, 0, 0))});
   // The tile starts 8 texels into its slot; the texel left of it is the tile's right edge.
   EXPECT_EQ(a.albedo[0].pixel(7, 8)[0], 15 * 16);
   EXPECT_EQ(a.albedo[0].pixel(8, 7)[1], 15 * 16);
@@ -114,12 +120,14 @@ TEST(Mipmap, SparseLeavesKeepTheirCoverageInTheDistance) {
     p[0] = p[1] = p[2] = 120;
     p[3] = (i * 37 % 100) < 40 ? 255 : 0;  // 40 % leaf, scattered
   }
-  const Atlas a = buildAtlas({texture("leaves", leaves, solidImage(16, 16, 127, 127, 255), solidImage(16, 16, 0, 0, 0, 0))});
+  const Atlas a = buildAtlas(
+      {texture("leaves", leaves, solidImage(16, 16, 127, 127, 255), solidImage(16, 16, 0, 0, 0, 0))});
   ASSERT_TRUE(a.textures[0].cutout);
   const double full = mip::coverage(a.albedo[0], {8, 8, 16, 16});
   for (int level = 1; level < a.levels() - 1; ++level) {
     const int size = 16 >> level;
-    const double c = mip::coverage(a.albedo[static_cast<std::size_t>(level)], {size / 2, size / 2, size, size});
+    const double c =
+        mip::coverage(a.albedo[static_cast<std::size_t>(level)], {size / 2, size / 2, size, size});
     // Averaging 2x2 blocks leaves only a few alpha values to choose between: at level 1 this pattern
     // can have 9 % or 69 % coverage and nothing in between, hence the tolerance.
     // A 2x2 tile has coverage 0, 25, 50, 75 or 100 %: there only "not vanished" can be asked.
@@ -162,13 +170,15 @@ Image quad(const std::uint8_t t[4][4]) {
 
 TEST(Mipmap, SpecularNeverBlendsAcrossMetalsEmissionOrPorosityAndSubsurface) {
   // Metal ids: the majority wins, never an in-between value.
-  const std::uint8_t metals[4][4] = {{200, 230, 0, 255}, {100, 10, 0, 255}, {200, 230, 0, 255}, {100, 12, 0, 255}};
+  const std::uint8_t metals[4][4] = {
+      {200, 230, 0, 255}, {100, 10, 0, 255}, {200, 230, 0, 255}, {100, 12, 0, 255}};
   const Image m = mip::halveSpecular(quad(metals));
   EXPECT_EQ(m.pixel(0, 0)[1], 230);
   EXPECT_EQ(m.pixel(0, 0)[0], 150) << "smoothness still averages";
   const std::uint8_t mixed[4][4] = {{0, 231, 0, 255}, {0, 234, 0, 255}, {0, 231, 0, 255}, {0, 237, 0, 255}};
   EXPECT_EQ(mip::halveSpecular(quad(mixed)).pixel(0, 0)[1], 231);
-  const std::uint8_t dielectric[4][4] = {{0, 0, 0, 255}, {0, 100, 0, 255}, {0, 200, 0, 255}, {0, 229, 0, 255}};
+  const std::uint8_t dielectric[4][4] = {
+      {0, 0, 0, 255}, {0, 100, 0, 255}, {0, 200, 0, 255}, {0, 229, 0, 255}};
   EXPECT_EQ(mip::halveSpecular(quad(dielectric)).pixel(0, 0)[1], 132);
   // Emission 255 means "none": three of four none stays none; mostly emissive averages the emissive ones.
   const std::uint8_t glow[4][4] = {{0, 0, 0, 255}, {0, 0, 0, 255}, {0, 0, 0, 255}, {0, 0, 0, 0}};
@@ -179,7 +189,8 @@ TEST(Mipmap, SpecularNeverBlendsAcrossMetalsEmissionOrPorosityAndSubsurface) {
   const std::uint8_t sss[4][4] = {{0, 0, 60, 255}, {0, 0, 200, 255}, {0, 0, 180, 255}, {0, 0, 190, 255}};
   EXPECT_EQ(mip::halveSpecular(quad(sss)).pixel(0, 0)[2], 190);
   // Alpha 0 is data: it does not weight anything.
-  const std::uint8_t zeroAlpha[4][4] = {{200, 20, 10, 0}, {200, 20, 10, 0}, {100, 20, 10, 0}, {100, 20, 10, 0}};
+  const std::uint8_t zeroAlpha[4][4] = {
+      {200, 20, 10, 0}, {200, 20, 10, 0}, {100, 20, 10, 0}, {100, 20, 10, 0}};
   EXPECT_EQ(mip::halveSpecular(quad(zeroAlpha)).pixel(0, 0)[0], 150);
   EXPECT_EQ(mip::halveSpecular(quad(zeroAlpha)).pixel(0, 0)[3], 0);
 }
@@ -189,12 +200,13 @@ TEST(Atlas, MetalIdsAndAlphaZeroSpecularSurviveTheWholeMipChain) {
   for (int y = 0; y < 16; ++y)
     for (int x = 0; x < 16; ++x) {
       std::uint8_t* p = spec.pixel(x, y);
-      p[0] = 220;                                             // smooth
-      p[1] = (x / 4 + y / 4) % 2 ? 230 : 231;                 // iron and gold checker
+      p[0] = 220;                              // smooth
+      p[1] = (x / 4 + y / 4) % 2 ? 230 : 231;  // iron and gold checker
       p[2] = 0;
-      p[3] = 0;                                               // alpha 0 on every texel, as real packs do
+      p[3] = 0;  // alpha 0 on every texel, as real packs do
     }
-  const Atlas a = buildAtlas({texture("metal", solidImage(16, 16, 200, 200, 200), solidImage(16, 16, 127, 127, 255), spec)});
+  const Atlas a = buildAtlas(
+      {texture("metal", solidImage(16, 16, 200, 200, 200), solidImage(16, 16, 127, 127, 255), spec)});
   for (int level = 0; level < a.levels(); ++level) {
     const auto [sx, sy, size] = slot(a, 0, level);
     std::set<int> ids;

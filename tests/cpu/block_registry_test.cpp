@@ -46,9 +46,10 @@ TEST(BlockRegistry, ShipsEveryRequiredBlockWithVanillaLightValues) {
   EXPECT_EQ(blocks.opacities().size(), blocks.size());
   // Broad enough for a pack to show itself: at least 150 blocks, named as Minecraft names them.
   EXPECT_GE(blocks.blockCount(), 150u);
-  for (const char* name : {"granite", "polished_andesite", "deepslate", "birch_log", "spruce_door", "acacia_fence_gate",
-                           "dark_oak_trapdoor", "cut_sandstone", "lime_wool",
-                           "black_concrete", "cyan_stained_glass", "bookshelf", "deepslate_diamond_ore", "lantern"}) {
+  for (const char* name :
+       {"granite", "polished_andesite", "deepslate", "birch_log", "spruce_door", "acacia_fence_gate",
+        "dark_oak_trapdoor", "cut_sandstone", "lime_wool", "black_concrete", "cyan_stained_glass",
+        "bookshelf", "deepslate_diamond_ore", "lantern"}) {
     EXPECT_NO_THROW(blocks.id(name)) << name;
   }
 }
@@ -67,22 +68,26 @@ TEST(BlockRegistry, BadDataNamesTheFileBlockAndKey) {
                 .find("blocks[1] (x).opacity: expected a whole number from 0 to 15, got 16"),
             std::string::npos);
   EXPECT_NE(errorOf(with(R"({"name":"x","shape":"sphere","textures":{"all":"x"}})"))
-                .find("blocks[1] (x).shape: expected one of \"none\", \"cube\", \"cross\", \"liquid\", \"torch\", \"model\", got \"sphere\""),
+                .find("blocks[1] (x).shape: expected one of \"none\", \"cube\", \"cross\", \"liquid\", "
+                      "\"torch\", \"model\", got \"sphere\""),
             std::string::npos);
   EXPECT_NE(errorOf(with(R"({"name":"x","textures":{"top":"x"}})")).find("leaves a face without a texture"),
             std::string::npos);
-  EXPECT_NE(errorOf(with(R"({"name":"x","textures":{"al":"x"}})")).find("blocks[1] (x).textures.al: unknown key"),
-            std::string::npos);
+  EXPECT_NE(
+      errorOf(with(R"({"name":"x","textures":{"al":"x"}})")).find("blocks[1] (x).textures.al: unknown key"),
+      std::string::npos);
   EXPECT_NE(errorOf(with(R"({"name":"x"})")).find("blocks[1] (x): needs \"textures\""), std::string::npos);
-  EXPECT_NE(errorOf(with(R"({"name":"air","shape":"none"})")).find("blocks[1].name: duplicate block name \"air\""),
-            std::string::npos);
+  EXPECT_NE(
+      errorOf(with(R"({"name":"air","shape":"none"})")).find("blocks[1].name: duplicate block name \"air\""),
+      std::string::npos);
   EXPECT_NE(errorOf(R"({"blocks":[{"name":"stone","textures":{"all":"stone"}}]})")
                 .find("blocks[0]: must be \"air\""),
             std::string::npos);
-  EXPECT_NE(errorOf(R"([1,2])").find("test/blocks.json: expected an object, got an array of 2"), std::string::npos);
-  EXPECT_NE(
-      errorOf(with(R"({"name":"x","emission":"bright","textures":{"all":"x"}})")).find("emission: expected a whole number"),
-      std::string::npos);
+  EXPECT_NE(errorOf(R"([1,2])").find("test/blocks.json: expected an object, got an array of 2"),
+            std::string::npos);
+  EXPECT_NE(errorOf(with(R"({"name":"x","emission":"bright","textures":{"all":"x"}})"))
+                .find("emission: expected a whole number"),
+            std::string::npos);
 }
 
 // blocks.json is Terrasol's own: an unknown key is a typo, named with its key path. The gameplay rules
@@ -92,29 +97,35 @@ TEST(BlockRegistry, UnknownKeysAndRulesAreNamedWithTheirKeyPath) {
   auto with = [&](const std::string& block) { return R"({"blocks":[)" + air + "," + block + "]}"; };
   EXPECT_EQ(errorOf(R"({"blocks":[)" + air + R"(],"version":2})"),
             "test/blocks.json: version: unknown key; expected one of \"blocks\"");
-  EXPECT_NE(errorOf(with(R"({"name":"x","textures":{"all":"x"},"emision":3})"))
-                .find("test/blocks.json: blocks[1] (x).emision: unknown key; expected one of \"name\", \"shape\""),
-            std::string::npos)
+  EXPECT_NE(
+      errorOf(with(R"({"name":"x","textures":{"all":"x"},"emision":3})"))
+          .find("test/blocks.json: blocks[1] (x).emision: unknown key; expected one of \"name\", \"shape\""),
+      std::string::npos)
       << errorOf(with(R"({"name":"x","textures":{"all":"x"},"emision":3})"));
   EXPECT_EQ(errorOf(with(R"({"name":"x","textures":{"all":"x"},"collision":{"hieght":24}})")),
-            "test/blocks.json: blocks[1] (x).collision.hieght: unknown key; expected one of \"height\", \"none_when\"");
+            "test/blocks.json: blocks[1] (x).collision.hieght: unknown key; expected one of \"height\", "
+            "\"none_when\"");
   EXPECT_EQ(errorOf(with(R"({"name":"x","textures":{"all":"x"},"placement":"stair"})")),
-            "test/blocks.json: blocks[1] (x).placement: expected one of \"stairs\", \"slab\", \"axis\", \"facing\", "
+            "test/blocks.json: blocks[1] (x).placement: expected one of \"stairs\", \"slab\", \"axis\", "
+            "\"facing\", "
             "\"facing_back\", \"door\", \"trapdoor\", \"wall\", \"torch\", \"layers\", got \"stair\"");
   EXPECT_EQ(errorOf(with(R"({"name":"x","textures":{"all":"x"},"connects":"fences"})")),
-            "test/blocks.json: blocks[1] (x).connects: expected one of \"fence\", \"pane\", \"wall\", \"gate\", got "
+            "test/blocks.json: blocks[1] (x).connects: expected one of \"fence\", \"pane\", \"wall\", "
+            "\"gate\", got "
             "\"fences\"");
-  EXPECT_EQ(errorOf(with(R"({"name":"x","textures":{"all":"x"},"properties":{"open":["false","true"]},
+  EXPECT_EQ(
+      errorOf(with(R"({"name":"x","textures":{"all":"x"},"properties":{"open":["false","true"]},
                             "collision":{"none_when":"open=yes"}})")),
-            "test/blocks.json: blocks[1] (x).collision.none_when: expected one of its property=value pairs, got "
-            "\"open=yes\"");
+      "test/blocks.json: blocks[1] (x).collision.none_when: expected one of its property=value pairs, got "
+      "\"open=yes\"");
   EXPECT_EQ(errorOf(with(R"({"name":"x","textures":{"all":"x"},"wall_variant":"nothing"})")),
             "test/blocks.json: blocks[1] (x).wall_variant: expected the name of a block, got \"nothing\"");
   EXPECT_EQ(errorOf(with(R"({"name":"x","textures":{"all":"x"},"placement":"torch"})")),
             "test/blocks.json: blocks[1] (x): placement \"torch\" needs \"wall_variant\"");
-  EXPECT_EQ(errorOf(with(R"({"name":"x","layer":"none","textures":{"all":"x"}})")),
-            "test/blocks.json: blocks[1] (x).layer: expected one of \"opaque\", \"cutout\", \"translucent\", got "
-            "\"none\"");
+  EXPECT_EQ(
+      errorOf(with(R"({"name":"x","layer":"none","textures":{"all":"x"}})")),
+      "test/blocks.json: blocks[1] (x).layer: expected one of \"opaque\", \"cutout\", \"translucent\", got "
+      "\"none\"");
   // The shipped rules, as read.
   const BlockRegistry& blocks = defaultBlocks();
   auto b = [&](const char* n) -> const BlockType& { return blocks[blocks.id(n)]; };
@@ -203,9 +214,9 @@ TEST(BlockRegistry, BadPropertiesNameTheBlockAndKey) {
   EXPECT_NE(error(R"({"name":"x","textures":{"all":"x"},"properties":{"axis":[]}})")
                 .find("blocks[1] (x).properties.axis: expected a non-empty array of values"),
             std::string::npos);
-  EXPECT_NE(
-      error(R"({"name":"x","textures":{"all":"x"},"properties":{"axis":["y","y"]}})").find("properties.axis[1]: lists \"y\" twice"),
-      std::string::npos);
+  EXPECT_NE(error(R"({"name":"x","textures":{"all":"x"},"properties":{"axis":["y","y"]}})")
+                .find("properties.axis[1]: lists \"y\" twice"),
+            std::string::npos);
   EXPECT_NE(
       error(R"({"name":"x","textures":{"all":"x"},"properties":{"axis":["a=b"]}})").find("may not contain"),
       std::string::npos);
@@ -216,9 +227,9 @@ TEST(BlockRegistry, BadPropertiesNameTheBlockAndKey) {
       error(R"({"name":"x","textures":{"all":"x"},"properties":{"axis":["y"]},"default":{"facing":"x"}})")
           .find("default.facing: is not one of its properties"),
       std::string::npos);
-  EXPECT_NE(
-      error(R"({"name":"x","textures":{"all":"x"},"default":{"axis":"x"}})").find("default: needs \"properties\""),
-      std::string::npos);
+  EXPECT_NE(error(R"({"name":"x","textures":{"all":"x"},"default":{"axis":"x"}})")
+                .find("default: needs \"properties\""),
+            std::string::npos);
   EXPECT_NE(error(R"({"name":"x","textures":{"all":"x"},"properties":{"a":["0","1","2","3","4","5","6","7"],
       "b":["0","1","2","3","4","5","6","7"],"c":["0","1","2","3","4","5","6","7"],"d":["0","1","2","3","4","5","6","7"],
       "e":["0","1"]}})")

@@ -1,15 +1,15 @@
+#include "scene/camera_path.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-
 #include <glm/geometric.hpp>
 
 #include "core/error.h"
 #include "support/error_of.h"
-#include "scene/camera_path.h"
 
 namespace terrasol {
 namespace {
@@ -21,15 +21,19 @@ CameraPath path(std::initializer_list<CameraKeyframe> keys, int frames = 9) {
   return p;
 }
 
-CameraKeyframe key(double t, glm::dvec3 position, glm::dvec3 lookAt, float fov = 70.0f, std::int64_t time = 6000) {
+CameraKeyframe key(double t, glm::dvec3 position, glm::dvec3 lookAt, float fov = 70.0f,
+                   std::int64_t time = 6000) {
   return {t, position, lookAt, fov, time};
 }
 
-double angle(glm::dvec3 a, glm::dvec3 b) { return std::acos(std::clamp(glm::dot(a, b), -1.0, 1.0)); }
+double angle(glm::dvec3 a, glm::dvec3 b) {
+  return std::acos(std::clamp(glm::dot(a, b), -1.0, 1.0));
+}
 
 TEST(CameraPath, KeyframesAreHitExactly) {
-  const CameraPath p = path({key(0.0, {0, 70, 0}, {0, 70, -10}, 60, 0), key(0.5, {10, 75, 0}, {20, 75, 0}, 80, 1000),
-                             key(1.0, {10, 80, 10}, {10, 80, 20}, 90, 3000)});
+  const CameraPath p =
+      path({key(0.0, {0, 70, 0}, {0, 70, -10}, 60, 0), key(0.5, {10, 75, 0}, {20, 75, 0}, 80, 1000),
+            key(1.0, {10, 80, 10}, {10, 80, 20}, 90, 3000)});
   for (const auto& k : p.keyframes) {
     const CameraState c = cameraOnPath(p, k.t);
     EXPECT_NEAR(glm::length(c.position - k.position), 0.0, 1e-9);
@@ -75,7 +79,8 @@ TEST(CameraPath, OrientationNeverFlipsThroughStraightDown) {
 
 TEST(CameraPath, FramesMapToEvenlySpacedT) {
   SceneFile scene;
-  scene.cameraPath = path({key(0.0, {0, 70, 0}, {0, 70, -1}, 70, 0), key(1.0, {0, 70, 0}, {0, 70, -1}, 70, 800)}, 5);
+  scene.cameraPath =
+      path({key(0.0, {0, 70, 0}, {0, 70, -1}, 70, 0), key(1.0, {0, 70, 0}, {0, 70, -1}, 70, 800)}, 5);
   EXPECT_EQ(cameraAtFrame(scene, 0).time, 0);
   EXPECT_EQ(cameraAtFrame(scene, 1).time, 200);
   EXPECT_EQ(cameraAtFrame(scene, 4).time, 800);
@@ -84,7 +89,8 @@ TEST(CameraPath, FramesMapToEvenlySpacedT) {
 }
 
 TEST(CameraPath, DegenerateInputsStayFinite) {
-  const CameraPath p = path({key(0.0, {1, 2, 3}, {1, 2, 3}), key(1.0, {1, 2, 3}, {1, 12, 3}, 1.0f, 1'000'000'000'000)});
+  const CameraPath p =
+      path({key(0.0, {1, 2, 3}, {1, 2, 3}), key(1.0, {1, 2, 3}, {1, 12, 3}, 1.0f, 1'000'000'000'000)});
   for (double t : {-1.0, 0.0, 0.3, 1.0, 2.0, std::nan("")}) {
     const CameraState c = cameraOnPath(p, t);
     EXPECT_TRUE(std::isfinite(c.forward.x) && std::isfinite(c.up.y) && std::isfinite(c.position.z)) << t;
@@ -109,26 +115,32 @@ TEST(CameraPath, ScenesParseKeyframesWithDefaultsAndFrameEdits) {
   EXPECT_EQ(scene.edits[0].atFrame, 3);
 }
 
-std::string errorOf(const std::string& json) { return testing::errorOf([&] { parseScene(json, "a.json"); }); }
+std::string errorOf(const std::string& json) {
+  return testing::errorOf([&] { parseScene(json, "a.json"); });
+}
 
 TEST(CameraPath, BadPathsNameTheKey) {
-  EXPECT_NE(errorOf(R"({"camera_path": {"keyframes": []}})").find("a.json: camera_path.keyframes: expected a non-empty"),
+  EXPECT_NE(errorOf(R"({"camera_path": {"keyframes": []}})")
+                .find("a.json: camera_path.keyframes: expected a non-empty"),
             std::string::npos);
   EXPECT_NE(errorOf(R"({"camera_path": {"frames": 2}})").find("a.json: camera_path: needs \"keyframes\""),
             std::string::npos);
   EXPECT_NE(errorOf(R"({"camera_path": {"keyframes": [{"t": 0, "look_at": [0,0,0]}]}})")
                 .find("camera_path.keyframes[0]: needs \"position\""),
             std::string::npos);
-  EXPECT_NE(errorOf(R"({"camera_path": {"keyframes": [{"t": -0.1, "position": [0,0,0], "look_at": [0,0,1]}]}})")
-                .find("camera_path.keyframes[0].t: expected a number from 0 to 1"),
-            std::string::npos);
+  EXPECT_NE(
+      errorOf(R"({"camera_path": {"keyframes": [{"t": -0.1, "position": [0,0,0], "look_at": [0,0,1]}]}})")
+          .find("camera_path.keyframes[0].t: expected a number from 0 to 1"),
+      std::string::npos);
   EXPECT_NE(errorOf(R"({"camera_path": {"keyframes": [{"t": 0.5, "position": [0,0,0], "look_at": [0,0,1]},
                                                       {"t": 0.5, "position": [0,0,0], "look_at": [0,0,1]}]}})")
                 .find("camera_path.keyframes[1].t: must be greater"),
             std::string::npos);
-  EXPECT_NE(errorOf(R"({"camera_path": {"frames": 0, "keyframes": [{"t": 0, "position": [0,0,0], "look_at": [0,0,1]}]}})")
-                .find("camera_path.frames"),
-            std::string::npos);
+  EXPECT_NE(
+      errorOf(
+          R"({"camera_path": {"frames": 0, "keyframes": [{"t": 0, "position": [0,0,0], "look_at": [0,0,1]}]}})")
+          .find("camera_path.frames"),
+      std::string::npos);
   EXPECT_NE(errorOf(R"({"world": {"edits": [{"set": [0,0,0], "block": "stone", "at_frame": 1}]}})")
                 .find("world.edits[0].at_frame: the scene has 1 frame(s)"),
             std::string::npos);
@@ -138,8 +150,8 @@ TEST(CameraPath, OverridesChangeAnyValueAndAreChecked) {
   const auto file = std::filesystem::temp_directory_path() / "terrasol_override_test.json";
   std::ofstream(file) << R"({"render": {"width": 320},
     "camera_path": {"keyframes": [{"t": 0, "position": [0, 70, 0], "look_at": [0, 70, -1]}]}})";
-  const SceneFile scene = loadScene(file, {"render.width=640", "camera_path.keyframes.0.time=777", "world.generator=flat",
-                                           "render.specular=\"ggx\""});
+  const SceneFile scene = loadScene(file, {"render.width=640", "camera_path.keyframes.0.time=777",
+                                           "world.generator=flat", "render.specular=\"ggx\""});
   EXPECT_EQ(scene.width, 640);
   EXPECT_EQ(scene.cameraPath->keyframes[0].time, 777);
   EXPECT_EQ(scene.generator, "flat");

@@ -1,8 +1,8 @@
+#include "core/camera.h"
+
 #include <gtest/gtest.h>
 
 #include <glm/gtc/matrix_access.hpp>
-
-#include "core/camera.h"
 
 namespace terrasol {
 namespace {
@@ -16,7 +16,8 @@ bool finite(const glm::mat4& m) {
 
 TEST(Camera, ExtremeViewsGiveFiniteMatrices) {
   const glm::vec3 p(1.0f, 64.0f, -3.0f);
-  for (const glm::vec3 target : {p + glm::vec3(0, 10, 0), p - glm::vec3(0, 10, 0), p, p + glm::vec3(1e-9f, 1, 0)}) {
+  for (const glm::vec3 target :
+       {p + glm::vec3(0, 10, 0), p - glm::vec3(0, 10, 0), p, p + glm::vec3(1e-9f, 1, 0)}) {
     Camera camera{p, target};
     EXPECT_TRUE(finite(camera.view())) << target.y;
   }

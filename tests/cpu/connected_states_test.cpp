@@ -79,7 +79,9 @@ TEST(ConnectedStates, FencesPanesAndWallsJoinTheirKindAndWholeFaces) {
   const BlockRegistry& b = defaultBlocks();
   World world(b, &testing::handShapes());
   world.insertChunk(std::make_unique<Chunk>(ChunkPos{0, 0}));
-  const auto stateAt = [&](const BlockPos& p) { return b.stateName(connectedState(world, p, world.getBlock(p))); };
+  const auto stateAt = [&](const BlockPos& p) {
+    return b.stateName(connectedState(world, p, world.getBlock(p)));
+  };
   const BlockPos fence{4, 64, 4};
   world.setBlock(fence, b.id("oak_fence"));
   EXPECT_EQ(stateAt(fence), "oak_fence[east=false,north=false,south=false,west=false]") << "alone: a post";
@@ -112,9 +114,11 @@ TEST(ConnectedStates, FencesPanesAndWallsJoinTheirKindAndWholeFaces) {
   EXPECT_EQ(stateAt(wall), "cobblestone_wall[east=none,north=low,south=low,up=false,west=none]")
       << "straight through: no post";
   world.setBlock({4, 65, 12}, b.id("stone"));
-  EXPECT_EQ(stateAt(wall), "cobblestone_wall[east=none,north=tall,south=tall,up=false,west=none]") << "under stone";
+  EXPECT_EQ(stateAt(wall), "cobblestone_wall[east=none,north=tall,south=tall,up=false,west=none]")
+      << "under stone";
   world.setBlock({5, 64, 12}, b.id("stone"));
-  EXPECT_EQ(stateAt(wall), "cobblestone_wall[east=tall,north=tall,south=tall,up=true,west=none]") << "a T: a post";
+  EXPECT_EQ(stateAt(wall), "cobblestone_wall[east=tall,north=tall,south=tall,up=true,west=none]")
+      << "a T: a post";
 
   // Changes reach the neighbours and the wall below.
   world.setBlock({4, 65, 12}, kAir);

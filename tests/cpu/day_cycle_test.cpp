@@ -1,3 +1,5 @@
+#include "core/day_cycle.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -5,7 +7,6 @@
 #include <limits>
 #include <vector>
 
-#include "core/day_cycle.h"
 #include "core/lightmap.h"
 
 namespace terrasol {

@@ -1,24 +1,25 @@
 // Dynamic resolution (render/dynamic_resolution.h) against a model of frame cost: a fixed part and
 // one that goes with the pixels, the square of the scale.
+#include "render/dynamic_resolution.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
 #include <random>
 
-#include "render/dynamic_resolution.h"
-
 namespace terrasol {
 namespace {
 
 struct Flight {
-  int steps = 0;          // scale changes over the last frames
-  double meanMs = 0.0;    // over the last frames
+  int steps = 0;        // scale changes over the last frames
+  double meanMs = 0.0;  // over the last frames
   float lowest = 1.0f, last = 1.0f;
 };
 
 // `frames` frames of cost fixed + perPixel * scale², with multiplicative noise of +-`noise`.
-Flight fly(double fixed, double perPixel, double targetFps, double noise, int frames = 400, int counted = 200) {
+Flight fly(double fixed, double perPixel, double targetFps, double noise, int frames = 400,
+           int counted = 200) {
   DynamicResolution dr;
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> jitter(1.0 - noise, 1.0 + noise);
@@ -55,7 +56,8 @@ TEST(DynamicResolution, StaysAtFullScaleWhenFramesAreCheapAndNeverLeavesItsRange
   // A frame that costs nothing, then a run of invalid times: nothing moves past the bounds or breaks.
   DynamicResolution dr(0.75f);
   EXPECT_EQ(dr.scale(), 0.75f);
-  for (double bad : {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity(), -5.0}) {
+  for (double bad :
+       {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity(), -5.0}) {
     EXPECT_EQ(dr.update(bad, 30.0), 0.75f);
     EXPECT_EQ(dr.update(20.0, bad), 0.75f);
   }

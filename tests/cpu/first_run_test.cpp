@@ -1,8 +1,9 @@
 // First-start settings (game/first_run.h) and their record in the settings file.
+#include "first_run.h"
+
 #include <gtest/gtest.h>
 
 #include "core/error.h"
-#include "first_run.h"
 #include "support/world_support.h"
 
 namespace terrasol {
@@ -17,7 +18,8 @@ TEST(FirstRun, SoftwareRenderingGetsLightSettingsThatStillShowShadows) {
   EXPECT_EQ(s.targetFps, 30);
   ASSERT_TRUE(s.firstRun);
   EXPECT_NE(s.firstRun->choice.find("software"), std::string::npos);
-  EXPECT_EQ(firstRunSettings({"llvmpipe (LLVM 15.0.6, 256 bits)", 20.0}).viewDistance, 3) << "slow even when empty";
+  EXPECT_EQ(firstRunSettings({"llvmpipe (LLVM 15.0.6, 256 bits)", 20.0}).viewDistance, 3)
+      << "slow even when empty";
 }
 
 TEST(FirstRun, AGpuGetsTheFullSettings) {

@@ -137,7 +137,6 @@ TEST(PlayerTest, WallsOneBlockHighAreNotSteppedOnto) {
   EXPECT_NEAR(p.position().y, 65.0, 1e-6) << "jumping gets on top";
 }
 
-
 TEST(PlayerTest, StepsOntoSlabsAndUpStairsWithoutJumping) {
   World world = flatWorld();
   world.setShapes(&defaultShapes());
@@ -193,7 +192,8 @@ TEST(PlayerTest, FencesStopAJumpAndOpenGatesLetThrough) {
     return p.position().z;
   };
   EXPECT_GT(reach("stone", true), 4.0) << "a block is jumped onto";
-  EXPECT_LT(reach("oak_fence", true), 3.5) << "a fence is not (its post, 6..10 / 16 into the cell, stops the player)";
+  EXPECT_LT(reach("oak_fence", true), 3.5)
+      << "a fence is not (its post, 6..10 / 16 into the cell, stops the player)";
   EXPECT_LT(reach("cobblestone_wall", true), 3.5);
   EXPECT_LT(reach("oak_fence_gate[facing=south]", true), 3.5);
   EXPECT_GT(reach("oak_fence_gate[facing=south,open=true]", false), 3.5) << "walked through an open gate";

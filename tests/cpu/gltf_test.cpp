@@ -1,11 +1,10 @@
-// glTF models (assets/gltf_model.h): the Khronos samples of the third-party test data (support/test_data.h) load in every form,
-// missing normals and tangents are generated, and bad files end in an Error naming the file and the
-// place, never a crash.
+// glTF models (assets/gltf_model.h): the Khronos samples of the third-party test data (support/test_data.h)
+// load in every form, missing normals and tangents are generated, and bad files end in an Error naming the
+// file and the place, never a crash.
 
 #include <gtest/gtest.h>
 
 #include <fstream>
-
 #include <glm/geometric.hpp>
 #include <nlohmann/json.hpp>
 
@@ -20,9 +19,13 @@ namespace terrasol {
 namespace {
 
 // The Khronos samples, where present (after TERRASOL_SKIP_WITHOUT_TEST_DATA).
-std::filesystem::path models() { return testing::testData() / "gltf"; }
+std::filesystem::path models() {
+  return testing::testData() / "gltf";
+}
 
-std::string errorOf(const std::filesystem::path& file) { return testing::errorOf([&] { loadModel(file); }); }
+std::string errorOf(const std::filesystem::path& file) {
+  return testing::errorOf([&] { loadModel(file); });
+}
 
 // A copy of a sample's folder to break one thing in.
 std::filesystem::path copyOf(const std::string& sample, const std::string& name) {
@@ -32,8 +35,12 @@ std::filesystem::path copyOf(const std::string& sample, const std::string& name)
   return dir;
 }
 
-nlohmann::json readJson(const std::filesystem::path& file) { return nlohmann::json::parse(readTextFile(file)); }
-void writeJson(const std::filesystem::path& file, const nlohmann::json& j) { std::ofstream(file) << j.dump(); }
+nlohmann::json readJson(const std::filesystem::path& file) {
+  return nlohmann::json::parse(readTextFile(file));
+}
+void writeJson(const std::filesystem::path& file, const nlohmann::json& j) {
+  std::ofstream(file) << j.dump();
+}
 
 // The error loading the tests' own box (support/gltf_box.h: accessors 0 indices, 1 positions,
 // 2 normals; buffer box.bin) after `edit` changed its JSON.
@@ -104,7 +111,8 @@ TEST(GltfModel, TheTexturedBoxIsTheSameInAllThreeForms) {
     ASSERT_EQ(m->materials[0].baseColorImage, 0);
     ASSERT_EQ(m->images.size(), 1u);
     EXPECT_GT(m->images[0].width, 0);
-    EXPECT_EQ(m->images[0].rgba.size(), static_cast<std::size_t>(m->images[0].width * m->images[0].height * 4));
+    EXPECT_EQ(m->images[0].rgba.size(),
+              static_cast<std::size_t>(m->images[0].width * m->images[0].height * 4));
   }
   for (std::size_t i = 0; i < 24; ++i) {
     EXPECT_EQ(separate.meshes[0].vertices[i].position, binary.meshes[0].vertices[i].position);
@@ -160,7 +168,8 @@ TEST(GltfModel, BadFilesNameTheFileAndThePlace) {
     EXPECT_NE(e.find("box.bin"), std::string::npos) << e;
   }
   {  // an accessor reaching past its buffer view
-    const std::string e = errorAfter("long_accessor", [](nlohmann::json& j) { j["accessors"][2]["count"] = 100000; });
+    const std::string e =
+        errorAfter("long_accessor", [](nlohmann::json& j) { j["accessors"][2]["count"] = 100000; });
     EXPECT_NE(e.find("accessors[2]"), std::string::npos) << e;
   }
   {  // an index past the vertices: every vertex attribute 3 long, the indices still up to 23
@@ -189,7 +198,8 @@ TEST(GltfModel, BadFilesNameTheFileAndThePlace) {
     std::ofstream(file, std::ios::trunc) << "{ \"asset\": ";
     EXPECT_NE(errorOf(file).find("box.gltf"), std::string::npos);
   }
-  EXPECT_NE(errorOf(testing::scratchDir("gltf_nowhere") / "nowhere.glb").find("nowhere.glb"), std::string::npos);
+  EXPECT_NE(errorOf(testing::scratchDir("gltf_nowhere") / "nowhere.glb").find("nowhere.glb"),
+            std::string::npos);
 }
 
 // The samples' own files broken: an image and a binary container.
@@ -197,7 +207,8 @@ TEST(GltfModel, BadSampleFilesNameTheFileAndThePlace) {
   TERRASOL_SKIP_WITHOUT_TEST_DATA();
   {  // a corrupt image
     const auto dir = copyOf("BoxTextured/glTF", "corrupt_image");
-    std::ofstream(dir / "CesiumLogoFlat.png", std::ios::binary | std::ios::trunc) << "\x89PNG\r\n\x1a\n but not really";
+    std::ofstream(dir / "CesiumLogoFlat.png", std::ios::binary | std::ios::trunc)
+        << "\x89PNG\r\n\x1a\n but not really";
     const std::string e = errorOf(dir / "BoxTextured.gltf");
     EXPECT_NE(e.find("BoxTextured.gltf"), std::string::npos) << e;
     EXPECT_NE(e.find("images[0]"), std::string::npos) << e;
@@ -207,7 +218,8 @@ TEST(GltfModel, BadSampleFilesNameTheFileAndThePlace) {
     std::ofstream(dir / "glTF" / "BoxTextured.gltf", std::ios::trunc) << "{ \"asset\": ";
     EXPECT_NE(errorOf(dir / "glTF" / "BoxTextured.gltf").find("BoxTextured.gltf"), std::string::npos);
     const std::string glb = readTextFile(dir / "glTF-Binary" / "BoxTextured.glb");
-    std::ofstream(dir / "glTF-Binary" / "BoxTextured.glb", std::ios::binary | std::ios::trunc) << glb.substr(0, glb.size() / 2);
+    std::ofstream(dir / "glTF-Binary" / "BoxTextured.glb", std::ios::binary | std::ios::trunc)
+        << glb.substr(0, glb.size() / 2);
     EXPECT_NE(errorOf(dir / "glTF-Binary" / "BoxTextured.glb").find("BoxTextured.glb"), std::string::npos);
   }
 }

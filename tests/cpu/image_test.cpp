@@ -1,8 +1,9 @@
+#include "assets/image.h"
+
 #include <gtest/gtest.h>
 
 #include <fstream>
 
-#include "assets/image.h"
 #include "core/error.h"
 #include "support/error_of.h"
 #include "support/golden.h"
@@ -23,7 +24,9 @@ Image gradient(int w, int h) {
   return image;
 }
 
-std::string errorOf(const std::filesystem::path& file) { return testing::errorOf([&] { loadImage(file); }); }
+std::string errorOf(const std::filesystem::path& file) {
+  return testing::errorOf([&] { loadImage(file); });
+}
 
 TEST(Image, PngRoundTripIsExact) {
   const Image image = gradient(37, 21);

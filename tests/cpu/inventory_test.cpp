@@ -1,8 +1,9 @@
 // The creative inventory's search and key (game/inventory.h, game/controls.h).
+#include "inventory.h"
+
 #include <gtest/gtest.h>
 
 #include "controls.h"
-#include "inventory.h"
 
 namespace terrasol {
 namespace {

@@ -1,16 +1,18 @@
+#include "assets/labpbr.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <glm/geometric.hpp>
-
-#include "assets/labpbr.h"
 
 namespace terrasol {
 namespace {
 
 using namespace labpbr;
 
-bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+bool finite(const glm::vec3& v) {
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
 
 TEST(LabPbrNormal, DefaultsAndConventions) {
   const auto flat = decodeNormal(kDefaultNormal);
@@ -65,7 +67,8 @@ TEST(LabPbrSpecular, SmoothnessAndDielectricF0) {
   EXPECT_NEAR(decodeSpecular(smooth, albedo).f0.x, 0.898f, 0.001f);
   EXPECT_EQ(decodeSpecular(smooth, albedo).reflectance, Reflectance::Dielectric);
   EXPECT_FLOAT_EQ(decodeSpecular(rough, albedo).roughness, 1.0f);
-  EXPECT_NEAR(decodeSpecular(half, albedo).roughness, (1.0f - 128.0f / 255.0f) * (1.0f - 128.0f / 255.0f), 1e-6f);
+  EXPECT_NEAR(decodeSpecular(half, albedo).roughness, (1.0f - 128.0f / 255.0f) * (1.0f - 128.0f / 255.0f),
+              1e-6f);
   EXPECT_NEAR(decodeSpecular(half, albedo).f0.y, 10.0f / 255.0f, 1e-6f);
 }
 
@@ -77,10 +80,10 @@ TEST(LabPbrSpecular, PredefinedMetalsUseTheStandardsIndices) {
     const char* name;
   };
   const Expected metals[] = {
-      {230, {0.531f, 0.512f, 0.496f}, "iron"},     {231, {0.944f, 0.776f, 0.373f}, "gold"},
+      {230, {0.531f, 0.512f, 0.496f}, "iron"},      {231, {0.944f, 0.776f, 0.373f}, "gold"},
       {232, {0.912f, 0.914f, 0.920f}, "aluminium"}, {233, {0.556f, 0.555f, 0.555f}, "chrome"},
-      {234, {0.926f, 0.721f, 0.504f}, "copper"},   {235, {0.632f, 0.626f, 0.641f}, "lead"},
-      {236, {0.679f, 0.642f, 0.588f}, "platinum"}, {237, {0.962f, 0.949f, 0.922f}, "silver"},
+      {234, {0.926f, 0.721f, 0.504f}, "copper"},    {235, {0.632f, 0.626f, 0.641f}, "lead"},
+      {236, {0.679f, 0.642f, 0.588f}, "platinum"},  {237, {0.962f, 0.949f, 0.922f}, "silver"},
   };
   for (const auto& m : metals) {
     const std::uint8_t texel[4] = {200, static_cast<std::uint8_t>(m.id), 0, 255};

@@ -5,9 +5,9 @@
 
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <regex>
-#include <functional>
 #include <set>
 #include <string>
 #include <vector>
@@ -45,7 +45,8 @@ struct Violation {
 // engine folder that `allowed(folder)` admits; one without ("x.h") must be a file beside the
 // includer, so game/ and tools/ (leaves over the engine) are reached by no other folder.
 std::vector<Violation> check(const std::filesystem::path& root, const std::string& area,
-                             const std::function<std::set<std::string>(const std::string&)>& allowed, int* files) {
+                             const std::function<std::set<std::string>(const std::string&)>& allowed,
+                             int* files) {
   const std::regex include(R"re(^\s*#\s*include\s*"([^"]+)")re");
   std::vector<Violation> found;
   for (const auto& entry : std::filesystem::recursive_directory_iterator(root / area)) {
@@ -65,7 +66,8 @@ std::vector<Violation> check(const std::filesystem::path& root, const std::strin
       const std::string where = entry.path().string() + ":" + std::to_string(lineNo);
       if (slash == std::string::npos) {
         if (!std::filesystem::exists(entry.path().parent_path() / target)) {
-          found.push_back({where, "includes \"" + target + "\", which is not beside it (another folder's own header)"});
+          found.push_back(
+              {where, "includes \"" + target + "\", which is not beside it (another folder's own header)"});
         }
       } else if (const std::string prefix = target.substr(0, slash); !kEngine.contains(prefix)) {
         found.push_back({where, "includes " + prefix + "/, which is not an engine folder"});
@@ -87,10 +89,13 @@ const std::filesystem::path kRoot = TERRASOL_SOURCE_DIR;
 
 TEST(Layering, EngineFoldersIncludeOnlyWhatTheyMayDependOn) {
   int files = 0;
-  const auto violations = check(kRoot, "engine", [](const std::string& folder) {
-    EXPECT_TRUE(kAllowed.contains(folder)) << "engine/" << folder << " has no layering rule here";
-    return kAllowed.contains(folder) ? kAllowed.at(folder) : std::set<std::string>{};
-  }, &files);
+  const auto violations = check(
+      kRoot, "engine",
+      [](const std::string& folder) {
+        EXPECT_TRUE(kAllowed.contains(folder)) << "engine/" << folder << " has no layering rule here";
+        return kAllowed.contains(folder) ? kAllowed.at(folder) : std::set<std::string>{};
+      },
+      &files);
   EXPECT_TRUE(violations.empty()) << describe(violations);
   EXPECT_GT(files, 100);
 }
@@ -110,9 +115,11 @@ TEST(Layering, GameAndToolsAreLeavesOverTheEngine) {
 TEST(Layering, TheCheckCatchesAWrongWayIncludeAndAnotherFoldersHeader) {
   const auto dir = terrasol::testing::scratchDir("layering");
   std::filesystem::create_directories(dir / "engine" / "world");
-  std::ofstream(dir / "engine" / "world" / "bad.cpp") << "#include \"render/gbuffer.h\"\n#include \"game_world.h\"\n";
+  std::ofstream(dir / "engine" / "world" / "bad.cpp")
+      << "#include \"render/gbuffer.h\"\n#include \"game_world.h\"\n";
   int files = 0;
-  const auto violations = check(dir, "engine", [](const std::string& f) { return kAllowed.at(f); }, &files);
+  const auto violations = check(
+      dir, "engine", [](const std::string& f) { return kAllowed.at(f); }, &files);
   ASSERT_EQ(violations.size(), 2u) << describe(violations);
   EXPECT_NE(violations[0].what.find("engine/world must not include render/"), std::string::npos);
   EXPECT_NE(violations[1].what.find("game_world.h"), std::string::npos);

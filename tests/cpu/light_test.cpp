@@ -24,7 +24,6 @@ using testing::compareWithReference;
 using testing::defaultBlocks;
 using testing::LitWorld;
 
-
 int manhattan(const BlockPos& a, const BlockPos& b) {
   return std::abs(a.x - b.x) + std::abs(a.y - b.y) + std::abs(a.z - b.z);
 }
@@ -106,7 +105,8 @@ TEST(Light, EveryKindOfBorderIsCrossed) {
   LitWorld w("void");
   w.loadArea(-2, -2, 1, 1);
   // On a chunk corner and a section corner at once: the diamond spans 4 chunks and 2 section layers.
-  for (const BlockPos at : {BlockPos{-1, -1, -1}, BlockPos{0, 15, 0}, BlockPos{15, 16, -16}, BlockPos{-16, 319, 15}}) {
+  for (const BlockPos at :
+       {BlockPos{-1, -1, -1}, BlockPos{0, 15, 0}, BlockPos{15, 16, -16}, BlockPos{-16, 319, 15}}) {
     w.set(at, "glowstone");
     expectDiamond(w, at, 15);
     EXPECT_EQ(compareWithReference(w.world), "");
@@ -293,7 +293,8 @@ TEST(Light, RelightingASectionFromDarknessOrFromLightThatIsGoneMatchesAFullRecom
   for (const BlockPos& at : torches) {
     ASSERT_TRUE(w.world.setBlock(at, kAir));
     w.light.relightSection({0, sectionOf(at.y), 0});
-    ASSERT_EQ(compareWithReference(w.world), "") << "after removing the torch at " << at.x << " " << at.y << " " << at.z;
+    ASSERT_EQ(compareWithReference(w.world), "")
+        << "after removing the torch at " << at.x << " " << at.y << " " << at.z;
   }
 }
 
@@ -478,8 +479,8 @@ TEST(Light, StaysCorrectWhileChunksStreamInAndOut) {
   }
 }
 
-// 100 000 random edits (shaped blocks among them), many on section and chunk borders, with chunks loading and unloading in
-// random order; after every batch the incremental light equals a recompute from scratch.
+// 100 000 random edits (shaped blocks among them), many on section and chunk borders, with chunks loading and
+// unloading in random order; after every batch the incremental light equals a recompute from scratch.
 TEST(Light, IncrementalUpdatesMatchAFullRecompute) {
   LitWorld w("flat", "bedrock,40*stone,dirt,grass_block");
   std::mt19937 rng(20261121);
@@ -496,9 +497,23 @@ TEST(Light, IncrementalUpdatesMatchAFullRecompute) {
       w.gen->generate(*unloaded.back());
     }
   }
-  const char* palette[] = {"air",        "air",   "air", "stone", "stone", "glass", "oak_leaves", "water",
-                           "torch",      "glowstone", "lava", "ice", "stone_slab", "stone_slab[type=top]",
-                           "stone_slab[type=double]", "oak_stairs[facing=north]", "oak_stairs[facing=east,half=top]"};
+  const char* palette[] = {"air",
+                           "air",
+                           "air",
+                           "stone",
+                           "stone",
+                           "glass",
+                           "oak_leaves",
+                           "water",
+                           "torch",
+                           "glowstone",
+                           "lava",
+                           "ice",
+                           "stone_slab",
+                           "stone_slab[type=top]",
+                           "stone_slab[type=double]",
+                           "oak_stairs[facing=north]",
+                           "oak_stairs[facing=east,half=top]"};
   auto coordinate = [&](int lo, int hi) {
     // Half the edits sit on a border: local 0 or 15.
     const int v = lo + static_cast<int>(rng() % static_cast<unsigned>(hi - lo));

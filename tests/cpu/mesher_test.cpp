@@ -1,15 +1,16 @@
+#include "mesh/mesher.h"
+
 #include <gtest/gtest.h>
+
+#include <chrono>
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
+#include <stdexcept>
+#include <string>
+#include <thread>
 
 #include "light/light_engine.h"
 #include "mesh/mesh_scheduler.h"
-#include "mesh/mesher.h"
-
-#include <chrono>
-#include <stdexcept>
-#include <string>
-#include <glm/geometric.hpp>
-#include <glm/vec3.hpp>
-#include <thread>
 #include "support/mesh_world.h"
 #include "support/world_support.h"
 #include "world/generator.h"
@@ -23,19 +24,23 @@ using testing::defaultBlocks;
 struct MeshWorld : testing::MeshWorld {
   explicit MeshWorld(const std::string& generator = "void")
       : testing::MeshWorld(
-            BlockMeshTable(defaultBlocks(), [](BlockId id, int face) { return static_cast<std::uint16_t>(id * 6 + face); }),
+            BlockMeshTable(defaultBlocks(),
+                           [](BlockId id, int face) { return static_cast<std::uint16_t>(id * 6 + face); }),
             generator) {}
 };
 
 // Vertices of the face of `mesh` with texture `texture` (the first such quad).
 std::vector<PackedVertex> quadWithTexture(const MeshData& mesh, int texture) {
   for (std::size_t i = 0; i < mesh.vertices.size(); i += 4) {
-    if (mesh.vertices[i].texture() == texture) return {mesh.vertices.begin() + i, mesh.vertices.begin() + i + 4};
+    if (mesh.vertices[i].texture() == texture)
+      return {mesh.vertices.begin() + i, mesh.vertices.begin() + i + 4};
   }
   return {};
 }
 
-TEST(Mesher, VertexIs16Bytes) { EXPECT_EQ(sizeof(PackedVertex), 16u); }
+TEST(Mesher, VertexIs16Bytes) {
+  EXPECT_EQ(sizeof(PackedVertex), 16u);
+}
 
 TEST(Mesher, FaceCountsForKnownShapes) {
   MeshWorld w;
@@ -93,12 +98,15 @@ TEST(Mesher, WaterSurfacesSitLowerUnlessWaterIsAbove) {
   w.set({3, 71, 3}, "water");
   mesh = w.mesh();
   int top = 0;
-  for (const auto& v : mesh.layers[static_cast<std::size_t>(MeshLayer::Translucent)].vertices) top = std::max(top, v.y32());
+  for (const auto& v : mesh.layers[static_cast<std::size_t>(MeshLayer::Translucent)].vertices)
+    top = std::max(top, v.y32());
   EXPECT_EQ(top, (71 & 15) * 32 + 28);
   const int lowerTop = defaultBlocks().id("water") * 6 + 3;
   int fullHeightLower = 0;
   for (const auto& v : mesh.layers[2].vertices)
-    if (v.texture() == lowerTop && v.z32() >= 3 * 32 && v.z32() <= 4 * 32 && v.x32() <= 4 * 32 && v.y32() == (70 & 15) * 32 + 32) ++fullHeightLower;
+    if (v.texture() == lowerTop && v.z32() >= 3 * 32 && v.z32() <= 4 * 32 && v.x32() <= 4 * 32 &&
+        v.y32() == (70 & 15) * 32 + 32)
+      ++fullHeightLower;
   EXPECT_EQ(fullHeightLower, 0) << "the covered water has no top face";
 }
 
@@ -127,12 +135,15 @@ TEST(Mesher, PlantsTorchesAndTints) {
   EXPECT_EQ(cutout.quads(), 4u + 5u + 6u) << "cross: 2 double-sided planes; torch: 4 sides and a top";
   for (const auto& v : cutout.vertices) {
     const BlockId id = static_cast<BlockId>(v.texture() / 6);
-    const int expected = id == defaultBlocks().id("short_grass") ? 1 : id == defaultBlocks().id("oak_leaves") ? 2 : 0;
+    const int expected = id == defaultBlocks().id("short_grass")  ? 1
+                         : id == defaultBlocks().id("oak_leaves") ? 2
+                                                                  : 0;
     EXPECT_EQ(v.tint(), expected) << defaultBlocks()[id].name;
   }
   const auto below = w.mesh({0, sectionOf(69), 0});
   for (const auto& v : below.layers[0].vertices) {
-    EXPECT_EQ(v.tint(), v.face() == static_cast<int>(Direction::Up) ? 1 : 0) << "grass blocks tint only the top";
+    EXPECT_EQ(v.tint(), v.face() == static_cast<int>(Direction::Up) ? 1 : 0)
+        << "grass blocks tint only the top";
   }
 }
 
@@ -159,7 +170,8 @@ TEST(Mesher, QuadsAgreeWithTheFaceBases) {
       EXPECT_GT(glm::dot(geometric, n), 0.99f) << "face " << v[0].face();
       for (int i = 1; i < 4; ++i) {
         const glm::vec3 d = pos(i) - pos(0);
-        const float du = static_cast<float>(v[i].u() - v[0].u()), dv = static_cast<float>(v[i].v() - v[0].v());
+        const float du = static_cast<float>(v[i].u() - v[0].u()),
+                    dv = static_cast<float>(v[i].v() - v[0].v());
         if (du != 0.0f) {
           EXPECT_GT(glm::dot(d, t) * du, 0.0f) << "face " << v[0].face();
         }
@@ -206,7 +218,8 @@ TEST(Mesher, AmbientOcclusionAtCornersAndTheDiagonalFlip) {
 TEST(Mesher, SmoothLightAveragesTheFourCellsInFront) {
   MeshWorld w;
   w.set({4, 70, 4}, "stone");
-  w.set({4, 71, 4}, "torch");  // in the cell in front of the floor's top face: 14 there, 13 beside, 12 diagonal
+  w.set({4, 71, 4},
+        "torch");  // in the cell in front of the floor's top face: 14 there, 13 beside, 12 diagonal
   const auto mesh = w.mesh();
   const auto q = quadWithTexture(mesh.layers[0], defaultBlocks().id("stone") * 6 + 3);
   ASSERT_EQ(q.size(), 4u);
@@ -247,7 +260,8 @@ TEST(Mesher, SmoothLightSumsHoldAtFullLightAndWithOneOpenCell) {
   }
   // Walls on two sides of the cell above: the corner between them is fully occluded and lit by the
   // front cell alone, even though the diagonal cell is open and lit.
-  s.light[static_cast<std::size_t>(SectionSnapshot::index(8, 9, 8))] = SectionSnapshot::lightTerm(false, 3, 0);
+  s.light[static_cast<std::size_t>(SectionSnapshot::index(8, 9, 8))] =
+      SectionSnapshot::lightTerm(false, 3, 0);
   solid(9, 9, 8);
   solid(8, 9, 9);
   const auto walled = quadWithTexture(meshSection(s, w.table).layers[0], stone * 6 + 3);
@@ -280,7 +294,8 @@ TEST(Mesher, EmptyAndBuriedSectionsAreSkippedBeforeCopying) {
   MeshWorld w("flat");
   SectionSnapshot snapshot;
   EXPECT_EQ(captureSection(w.world, {0, sectionOf(200), 0}, snapshot), CaptureResult::Empty);
-  EXPECT_EQ(captureSection(w.world, {0, sectionOf(20), 0}, snapshot), CaptureResult::Buried) << "stone from y 1 to 59";
+  EXPECT_EQ(captureSection(w.world, {0, sectionOf(20), 0}, snapshot), CaptureResult::Buried)
+      << "stone from y 1 to 59";
   EXPECT_EQ(captureSection(w.world, {0, sectionOf(60), 0}, snapshot), CaptureResult::Captured);
   w.set({3, 40, 3}, "air");  // a hole in the section above makes the stone below visible
   EXPECT_EQ(captureSection(w.world, {0, sectionOf(20), 0}, snapshot), CaptureResult::Buried);
@@ -337,15 +352,18 @@ TEST(MeshScheduler, RemeshesExactlyTheSectionsAnEditTouches) {
   bool sawEdited = false;
   for (const auto& m : results) {
     EXPECT_LE(std::abs(m.pos.x), 1);
-    EXPECT_LE(std::abs(m.pos.section - sectionOf(64)), 1) << "light 15 reaches one section up or down at most";
+    EXPECT_LE(std::abs(m.pos.section - sectionOf(64)), 1)
+        << "light 15 reaches one section up or down at most";
     const auto direct = w.mesh(m.pos);
     for (int l = 0; l < kMeshLayers; ++l) {
-      ASSERT_EQ(m.layers[static_cast<std::size_t>(l)].vertices.size(), direct.layers[static_cast<std::size_t>(l)].vertices.size());
+      ASSERT_EQ(m.layers[static_cast<std::size_t>(l)].vertices.size(),
+                direct.layers[static_cast<std::size_t>(l)].vertices.size());
     }
     sawEdited = sawEdited || (m.pos == SectionPos{0, sectionOf(64), 0} && m.quads() > 0);
   }
   EXPECT_TRUE(sawEdited);
-  for (const auto& m : results) EXPECT_NE(m.pos, (SectionPos{0, sectionOf(200), 0})) << "untouched sections stay";
+  for (const auto& m : results)
+    EXPECT_NE(m.pos, (SectionPos{0, sectionOf(200), 0})) << "untouched sections stay";
 }
 
 // A mesher that throws: the section is named on the main thread, and no mesh replaces its old one.

@@ -312,7 +312,8 @@ TEST(ResourcePack, MinecraftsOtherKeysLoad) {
       "features": {"enabled": []},
       "terrasol": {"normal_map_convention": "opengl", "normal_maps": "on"}})");
   pack.image("anim.png", solidImage(16, 32, 1, 1, 1));
-  pack.text("anim.png.mcmeta", R"({"animation": {"frametime": 2, "frames": [1, {"index": 0, "time": 3, "x": 1}],
+  pack.text("anim.png.mcmeta",
+            R"({"animation": {"frametime": 2, "frames": [1, {"index": 0, "time": 3, "x": 1}],
                                                 "mode": "x"},
                                   "texture": {"blur": true, "clamp": false}, "villager": {"hat": "full"},
                                   "gui": {"scaling": {"type": "stretch"}}})");

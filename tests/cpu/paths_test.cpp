@@ -1,8 +1,7 @@
-#include <gtest/gtest.h>
-
-#include <unistd.h>
-
 #include "core/paths.h"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
 
 namespace terrasol {
 namespace {

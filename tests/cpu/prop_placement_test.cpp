@@ -7,8 +7,8 @@
 #include <gtest/gtest.h>
 
 #include "core/error.h"
-#include "support/error_of.h"
 #include "scene/scene_world.h"
+#include "support/error_of.h"
 #include "support/world_support.h"
 
 namespace terrasol {
@@ -16,7 +16,9 @@ namespace {
 
 using testing::defaultBlocks;
 
-std::string errorOf(const std::string& json) { return testing::errorOf([&] { parseScene(json, "scenes/a.json"); }); }
+std::string errorOf(const std::string& json) {
+  return testing::errorOf([&] { parseScene(json, "scenes/a.json"); });
+}
 
 TEST(SceneProps, ParseWithDefaultsAndPathsBesideTheScene) {
   const SceneFile scene = parseScene(R"({ "props": [
@@ -37,14 +39,18 @@ TEST(SceneProps, ParseWithDefaultsAndPathsBesideTheScene) {
 
 TEST(SceneProps, BadPropsNameThePropAndWhatIsWrong) {
   EXPECT_EQ(errorOf(R"({ "props": {} })"), "scenes/a.json: props: expected an array of props, got an object");
-  EXPECT_NE(errorOf(R"({ "props": [ { "position": [0, 0, 0] } ] })").find("props[0]: needs \"model\""), std::string::npos);
-  EXPECT_NE(errorOf(R"({ "props": [ { "model": "" } ] })").find("props[0].model: expected a non-empty string"),
+  EXPECT_NE(errorOf(R"({ "props": [ { "position": [0, 0, 0] } ] })").find("props[0]: needs \"model\""),
             std::string::npos);
-  EXPECT_NE(errorOf(R"({ "props": [ { "model": "a.glb", "scale": 0 } ] })").find("props[0].scale"), std::string::npos);
+  EXPECT_NE(
+      errorOf(R"({ "props": [ { "model": "" } ] })").find("props[0].model: expected a non-empty string"),
+      std::string::npos);
+  EXPECT_NE(errorOf(R"({ "props": [ { "model": "a.glb", "scale": 0 } ] })").find("props[0].scale"),
+            std::string::npos);
   EXPECT_NE(errorOf(R"({ "props": [ { "model": "a.glb", "rotation": [1, 2] } ] })").find("props[0].rotation"),
             std::string::npos);
-  EXPECT_NE(errorOf(R"({ "props": [ { "model": "a.glb" }, { "model": "b.glb", "colour": 1 } ] })").find("props[1]"),
-            std::string::npos);
+  EXPECT_NE(
+      errorOf(R"({ "props": [ { "model": "a.glb" }, { "model": "b.glb", "colour": 1 } ] })").find("props[1]"),
+      std::string::npos);
 }
 
 TEST(PropPlacement, YawPitchRollThenScaleThenPosition) {
@@ -85,11 +91,11 @@ TEST(PropPlacement, VertexLightIsSmoothAndLeavesSolidCellsOut) {
   scene.edits.push_back({SceneEdit::Kind::Set, {0, 64, 0}, {0, 64, 0}, "torch", "world.edits[2]"});
   const SceneWorld world(scene, defaultBlocks());
   const std::vector<glm::dvec3> points = {
-      {1.5, 64.5, 0.5},   // the centre of the cell beside the torch: exactly its level, 13
-      {1.0, 64.5, 0.5},   // halfway between the torch's cell (14) and that one (13)
-      {2.5, 64.0, 0.5},   // on the floor: the stone below is left out, the air cell above counts alone
-      {0.5, 67.5, 0.5},   // outside, above the roof in the open sky
-      {0.5, 62.5, 0.5},   // inside the ground: all 8 cells solid, dark
+      {1.5, 64.5, 0.5},  // the centre of the cell beside the torch: exactly its level, 13
+      {1.0, 64.5, 0.5},  // halfway between the torch's cell (14) and that one (13)
+      {2.5, 64.0, 0.5},  // on the floor: the stone below is left out, the air cell above counts alone
+      {0.5, 67.5, 0.5},  // outside, above the roof in the open sky
+      {0.5, 62.5, 0.5},  // inside the ground: all 8 cells solid, dark
   };
   const std::vector<glm::vec2> light = smoothLightAt(world.world(), world.light(), points);
   EXPECT_FLOAT_EQ(light[0].x, 13.0f / 15.0f);

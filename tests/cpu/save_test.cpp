@@ -24,7 +24,8 @@ std::vector<std::uint8_t> readBytes(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
   return {std::istreambuf_iterator<char>(in), {}};
 }
-void writeBytes(const std::filesystem::path& file, const std::vector<std::uint8_t>& bytes, std::size_t count) {
+void writeBytes(const std::filesystem::path& file, const std::vector<std::uint8_t>& bytes,
+                std::size_t count) {
   std::ofstream(file, std::ios::binary | std::ios::trunc)
       .write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(count));
 }
@@ -57,7 +58,8 @@ TEST(ChunkCodec, RoundTripsBlocksExactly) {
 // an axis now) standing up, their default state; nothing is unknown.
 TEST(ChunkCodec, ASaveFromBeforeBlockStatesOpens) {
   const BlockRegistry& b = defaultBlocks();
-  const auto bytes = readBytes(std::filesystem::path(TERRASOL_SOURCE_DIR) / "tests" / "saves" / "chunk_before_block_states.bin");
+  const auto bytes = readBytes(std::filesystem::path(TERRASOL_SOURCE_DIR) / "tests" / "saves" /
+                               "chunk_before_block_states.bin");
   ASSERT_FALSE(bytes.empty());
   std::vector<std::string> unknown;
   const auto chunk = decodeChunk({0, 0}, bytes.data(), bytes.size(), b, &unknown);
@@ -99,7 +101,8 @@ TEST(RegionFile, SavesReloadAndTheNewestRecordWins) {
   for (const auto& [key, chunk] : saved) {
     const auto bytes = region.read(chunk->pos());
     ASSERT_TRUE(bytes);
-    EXPECT_TRUE(sameBlocks(*chunk, *decodeChunk(chunk->pos(), bytes->data(), bytes->size(), defaultBlocks())));
+    EXPECT_TRUE(
+        sameBlocks(*chunk, *decodeChunk(chunk->pos(), bytes->data(), bytes->size(), defaultBlocks())));
   }
   EXPECT_FALSE(region.read({31, 31}));
 }
@@ -172,7 +175,8 @@ TEST(RegionFile, ACorruptChunkIsReportedKeptAsideAndTheRestLoads) {
       ASSERT_EQ(region.problems().size(), 1u);
       const std::string& problem = region.problems()[0];
       EXPECT_NE(problem.find(path.string()), std::string::npos) << problem;
-      EXPECT_NE(problem.find(where == 13 ? "chunk (1, 2)" : "chunk (1, 2) fails its checksum"), std::string::npos)
+      EXPECT_NE(problem.find(where == 13 ? "chunk (1, 2)" : "chunk (1, 2) fails its checksum"),
+                std::string::npos)
           << problem;
       EXPECT_FALSE(region.read({1, 2}));
       EXPECT_TRUE(region.read({0, 0}));
@@ -234,21 +238,28 @@ TEST(Level, RoundTripsAndBadFilesNameTheKey) {
     return std::string("no error");
   };
   EXPECT_NE(error("{\"seed\": 1").find("bad.json:1:11: invalid JSON"), std::string::npos);
-  EXPECT_NE(error(R"({"generator":"terrain","seed":1,"time":0})").find("bad.json: needs \"player\""), std::string::npos);
-  EXPECT_NE(error(R"({"generator":"terrain","seed":"x","time":0})").find("bad.json: seed: expected a whole number from 0 to 18446744073709551615, got \"x\""),
+  EXPECT_NE(error(R"({"generator":"terrain","seed":1,"time":0})").find("bad.json: needs \"player\""),
             std::string::npos);
-  EXPECT_NE(error(R"({"generator":"terrain","seed":1,"time":0,"player":{"position":[1,2],"yaw":0,"pitch":0}})")
-                .find("bad.json: player.position: expected an array of 3 numbers"),
+  EXPECT_NE(error(R"({"generator":"terrain","seed":"x","time":0})")
+                .find("bad.json: seed: expected a whole number from 0 to 18446744073709551615, got \"x\""),
             std::string::npos);
-  const std::string player = R"("generator":"terrain","seed":1,"time":0,"player":{"position":[1,2,3],"yaw":0,"pitch":0})";
-  EXPECT_NE(error("{" + player + R"(,"props":[{"model":"a.glb","position":[0,0,0],"rotation":[0,0,0],"scale":-1}]})")
+  EXPECT_NE(
+      error(R"({"generator":"terrain","seed":1,"time":0,"player":{"position":[1,2],"yaw":0,"pitch":0}})")
+          .find("bad.json: player.position: expected an array of 3 numbers"),
+      std::string::npos);
+  const std::string player =
+      R"("generator":"terrain","seed":1,"time":0,"player":{"position":[1,2,3],"yaw":0,"pitch":0})";
+  EXPECT_NE(error("{" + player +
+                  R"(,"props":[{"model":"a.glb","position":[0,0,0],"rotation":[0,0,0],"scale":-1}]})")
                 .find("bad.json: props[0].scale: expected a number greater than 0 and at most 1000, got -1"),
             std::string::npos);
-  EXPECT_NE(error("{" + player + R"(,"props":[{"position":[0,0,0]}]})").find("bad.json: props[0]: needs \"model\""),
-            std::string::npos);
-  EXPECT_NE(error("{" + player + R"(,"props":[{"model":"a","position":[0,"x",0],"rotation":[0,0,0],"scale":1}]})")
-                .find("bad.json: props[0].position[1]: expected a number, got \"x\""),
-            std::string::npos);
+  EXPECT_NE(
+      error("{" + player + R"(,"props":[{"position":[0,0,0]}]})").find("bad.json: props[0]: needs \"model\""),
+      std::string::npos);
+  EXPECT_NE(
+      error("{" + player + R"(,"props":[{"model":"a","position":[0,"x",0],"rotation":[0,0,0],"scale":1}]})")
+          .find("bad.json: props[0].position[1]: expected a number, got \"x\""),
+      std::string::npos);
   EXPECT_EQ(error("{" + player + "}"), "no error") << "older files without props load";
   // level.json is Terrasol's own: an unknown key is a typo, named with its key path.
   const std::string root = R"({"version":1,"generator":"terrain","seed":1,"time":0,)";
@@ -257,9 +268,11 @@ TEST(Level, RoundTripsAndBadFilesNameTheKey) {
                 ": player.flyng: unknown key; expected one of \"position\", \"yaw\", \"pitch\", \"flying\"");
   EXPECT_EQ(error("{" + player + R"(,"weather":"rain"})"),
             (dir / "bad.json").string() +
-                ": weather: unknown key; expected one of \"version\", \"generator\", \"seed\", \"time\", \"player\", "
+                ": weather: unknown key; expected one of \"version\", \"generator\", \"seed\", \"time\", "
+                "\"player\", "
                 "\"props\"");
-  EXPECT_NE(error("{" + player + R"(,"props":[{"model":"a","position":[0,0,0],"rotation":[0,0,0],"scale":1,"tint":2}]})")
+  EXPECT_NE(error("{" + player +
+                  R"(,"props":[{"model":"a","position":[0,0,0],"rotation":[0,0,0],"scale":1,"tint":2}]})")
                 .find("bad.json: props[0].tint: unknown key"),
             std::string::npos);
 }
@@ -312,7 +325,8 @@ TEST(ChunkStreamer, EditedChunksSurviveUnloadingAndMemoryStaysBounded) {
   World world(blocks);
   ChunkStreamer streamer(world, *gen, &storage, 2, 2);
   auto settle = [&](ChunkPos center) {
-    for (int i = 0; i < 10000 && (streamer.update(center), streamer.pending() > 0 || !world.isLoaded(center)); ++i) {
+    for (int i = 0; i < 10000 && (streamer.update(center), streamer.pending() > 0 || !world.isLoaded(center));
+         ++i) {
       std::this_thread::sleep_for(std::chrono::milliseconds(1));
     }
     streamer.update(center);

@@ -1,15 +1,14 @@
 #include "scene/scene_file.h"
 
-#include <cstdlib>
-
 #include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <fstream>
 #include <nlohmann/json.hpp>
 
-#include <fstream>
-
 #include "core/error.h"
-#include "support/error_of.h"
 #include "core/paths.h"
+#include "support/error_of.h"
 #include "support/world_support.h"
 
 namespace terrasol {
@@ -17,7 +16,9 @@ namespace {
 
 constexpr const char* kFile = "scenes/a.json";
 
-std::string errorOf(const std::string& json, const std::filesystem::path& file = kFile) { return testing::errorOf([&] { parseScene(json, file); }); }
+std::string errorOf(const std::string& json, const std::filesystem::path& file = kFile) {
+  return testing::errorOf([&] { parseScene(json, file); });
+}
 
 // The message must contain `part`, typically "scenes/a.json: <key path>: <what>".
 ::testing::AssertionResult failsWith(const std::string& json, const std::string& part) {
@@ -214,17 +215,20 @@ TEST(SceneFile, WrongTypesNameTheKey) {
 }
 
 TEST(SceneFile, SpecularModelAndMaterialAo) {
-  const SceneFile scene = parseScene(R"({"render": {"specular": "ggx", "material_ao": false}})", "scenes/a.json");
+  const SceneFile scene =
+      parseScene(R"({"render": {"specular": "ggx", "material_ao": false}})", "scenes/a.json");
   EXPECT_EQ(scene.specular, SpecularModel::Ggx);
   EXPECT_FALSE(scene.materialAo);
-  EXPECT_TRUE(failsWith(R"({"render": {"specular": "phong"}})", "scenes/a.json: render.specular: expected one of"));
   EXPECT_TRUE(
-      failsWith(R"({"render": {"material_ao": 1}})", "scenes/a.json: render.material_ao: expected true or false"));
+      failsWith(R"({"render": {"specular": "phong"}})", "scenes/a.json: render.specular: expected one of"));
+  EXPECT_TRUE(failsWith(R"({"render": {"material_ao": 1}})",
+                        "scenes/a.json: render.material_ao: expected true or false"));
 }
 
 TEST(SceneFile, ReflectionSettings) {
   const SceneFile scene = parseScene(R"({"render": {"reflections": {"enabled": false, "max_steps": 64,
-      "thickness": 0.5, "resolution_scale": 0.5, "min_smoothness": 0.8, "max_distance": 32}}})", "scenes/a.json");
+      "thickness": 0.5, "resolution_scale": 0.5, "min_smoothness": 0.8, "max_distance": 32}}})",
+                                     "scenes/a.json");
   const ReflectionSettings& r = scene.reflections;
   EXPECT_FALSE(r.enabled);
   EXPECT_EQ(r.maxSteps, 64);
@@ -233,16 +237,19 @@ TEST(SceneFile, ReflectionSettings) {
   EXPECT_FLOAT_EQ(r.minSmoothness, 0.8f);
   EXPECT_FLOAT_EQ(r.maxDistance, 32.0f);
   EXPECT_EQ(parseScene("{}", "a.json").reflections, ReflectionSettings{}) << "absent: the defaults";
-  EXPECT_TRUE(failsWith(R"({"render": {"reflections": {"max_steps": 0}}})", "render.reflections.max_steps: expected"));
+  EXPECT_TRUE(failsWith(R"({"render": {"reflections": {"max_steps": 0}}})",
+                        "render.reflections.max_steps: expected"));
   EXPECT_TRUE(failsWith(R"({"render": {"reflections": {"resolution_scale": 0.1}}})",
                         "render.reflections.resolution_scale: expected"));
   EXPECT_TRUE(failsWith(R"({"render": {"reflections": {"min_smoothness": 1.5}}})",
                         "render.reflections.min_smoothness: expected"));
-  EXPECT_TRUE(failsWith(R"({"render": {"reflections": {"mirror": true}}})", "render.reflections.mirror: unknown key"));
+  EXPECT_TRUE(failsWith(R"({"render": {"reflections": {"mirror": true}}})",
+                        "render.reflections.mirror: unknown key"));
   EXPECT_TRUE(parseScene(R"({"render": {"water": {"waves": true}}})", "a.json").water.waves);
   EXPECT_FALSE(parseScene(R"({"render": {"water": {"waves": false}}})", "a.json").water.waves);
   EXPECT_TRUE(parseScene("{}", "a.json").water.waves) << "waves by default";
-  EXPECT_TRUE(failsWith(R"({"render": {"water": {"waves": 1}}})", "render.water.waves: expected true or false"));
+  EXPECT_TRUE(
+      failsWith(R"({"render": {"water": {"waves": 1}}})", "render.water.waves: expected true or false"));
 }
 
 // Every name a file may give parses to the enum value of the same index.
@@ -257,8 +264,9 @@ TEST(SceneFile, EveryEnumNameParsesToItsValue) {
   }
   for (std::size_t i = 0; i < kShadowWarps.size(); ++i) {
     ShadowSettings s;
-    parseShadow({{"warp", kShadowWarps[i]}, {"mode", kShadowModes[i % 2]}, {"pcf", {{"pattern", kPcfPatterns[i]}}}},
-                "shadow", s);
+    parseShadow(
+        {{"warp", kShadowWarps[i]}, {"mode", kShadowModes[i % 2]}, {"pcf", {{"pattern", kPcfPatterns[i]}}}},
+        "shadow", s);
     EXPECT_EQ(s.warp, static_cast<ShadowWarp>(i));
     EXPECT_EQ(s.mode, static_cast<ShadowMode>(i % 2));
     EXPECT_EQ(s.pcfPattern, static_cast<PcfPattern>(i));
@@ -266,10 +274,11 @@ TEST(SceneFile, EveryEnumNameParsesToItsValue) {
 }
 
 TEST(SceneFile, ShadowSettings) {
-  const SceneFile scene = parseScene(R"({"render": {"shadow": {"enabled": false, "mode": "cascaded", "cascades": 3,
+  const SceneFile scene =
+      parseScene(R"({"render": {"shadow": {"enabled": false, "mode": "cascaded", "cascades": 3,
       "resolution": 512, "distance": 64, "warp": "square", "warp_strength": 0.5, "shift_ahead": 0.3,
       "update_frames": 8, "pcf": {"samples": 2, "radius": 0.5, "radius_unit": "blocks", "pattern": "grid"}}}})",
-                                     "scenes/a.json");
+                 "scenes/a.json");
   const ShadowSettings& s = scene.shadow;
   EXPECT_FALSE(s.enabled);
   EXPECT_EQ(s.mode, ShadowMode::Cascaded);
@@ -287,15 +296,20 @@ TEST(SceneFile, ShadowSettings) {
   ShadowSettings back;
   parseShadow(shadowJson(s), "render.shadow", back);
   EXPECT_EQ(back, s) << "written and read back, every value is the same";
-  EXPECT_TRUE(failsWith(R"({"render": {"shadow": {"warp_strength": 1}}})", "render.shadow.warp_strength: expected"));
-  EXPECT_TRUE(failsWith(R"({"render": {"shadow": {"resolution": 8}}})", "render.shadow.resolution: expected"));
+  EXPECT_TRUE(
+      failsWith(R"({"render": {"shadow": {"warp_strength": 1}}})", "render.shadow.warp_strength: expected"));
+  EXPECT_TRUE(
+      failsWith(R"({"render": {"shadow": {"resolution": 8}}})", "render.shadow.resolution: expected"));
   EXPECT_TRUE(failsWith(R"({"render": {"shadow": {"cascades": 5}}})", "render.shadow.cascades: expected"));
   EXPECT_TRUE(failsWith(R"({"render": {"shadow": {"pcf": {"radius_unit": "feet"}}}})",
                         "render.shadow.pcf.radius_unit: expected one of"));
-  EXPECT_TRUE(failsWith(R"({"render": {"shadow": {"mode": "ray_traced"}}})", "render.shadow.mode: expected one of"));
+  EXPECT_TRUE(
+      failsWith(R"({"render": {"shadow": {"mode": "ray_traced"}}})", "render.shadow.mode: expected one of"));
   EXPECT_TRUE(failsWith(R"({"render": {"shadow": {"softness": 1}}})", "render.shadow.softness: unknown key"));
-  EXPECT_TRUE(failsWith(R"({"render": {"shadow": {"update_frames": 0}}})", "render.shadow.update_frames: expected"));
-  EXPECT_TRUE(failsWith(R"({"render": {"shadow": {"update_frames": 17}}})", "render.shadow.update_frames: expected"));
+  EXPECT_TRUE(
+      failsWith(R"({"render": {"shadow": {"update_frames": 0}}})", "render.shadow.update_frames: expected"));
+  EXPECT_TRUE(
+      failsWith(R"({"render": {"shadow": {"update_frames": 17}}})", "render.shadow.update_frames: expected"));
 }
 
 TEST(SceneFile, CaveCulling) {
@@ -304,7 +318,8 @@ TEST(SceneFile, CaveCulling) {
   EXPECT_TRUE(parseScene("{}", "scenes/a.json").shadowCasterCulling);
   EXPECT_FALSE(
       parseScene(R"({"render": {"shadow_caster_culling": false}})", "scenes/a.json").shadowCasterCulling);
-  EXPECT_TRUE(failsWith(R"({"render": {"cave_culling": "no"}})", "render.cave_culling: expected true or false"));
+  EXPECT_TRUE(
+      failsWith(R"({"render": {"cave_culling": "no"}})", "render.cave_culling: expected true or false"));
 }
 
 TEST(SceneFile, WrongArrayLengthsNameTheKey) {

@@ -1,7 +1,8 @@
+#include "scene/scene_world.h"
+
 #include <gtest/gtest.h>
 
 #include "core/error.h"
-#include "scene/scene_world.h"
 #include "support/world_support.h"
 
 namespace terrasol {
@@ -43,7 +44,10 @@ TEST(SceneWorld, LoadsOneRingMoreThanItMeshes) {
 
 TEST(SceneWorld, AHugeFillOnlyVisitsTheLoadedArea) {
   SceneFile scene = flatScene();
-  scene.edits.push_back({SceneEdit::Kind::Fill, {-2000000000, -64, -2000000000}, {2000000000, 63, 2000000000}, "air",
+  scene.edits.push_back({SceneEdit::Kind::Fill,
+                         {-2000000000, -64, -2000000000},
+                         {2000000000, 63, 2000000000},
+                         "air",
                          "world.edits[0]"});
   SceneWorld world(scene, defaultBlocks());
   EXPECT_EQ(world.world().getBlock({40, 10, 40}), kAir);

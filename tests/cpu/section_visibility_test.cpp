@@ -1,8 +1,8 @@
 // Cave culling's per-section face links (mesh/section_visibility.h).
 
-#include <gtest/gtest.h>
-
 #include "mesh/section_visibility.h"
+
+#include <gtest/gtest.h>
 
 namespace terrasol {
 namespace {
@@ -38,7 +38,7 @@ TEST(SectionVisibility, AFloorSplitsUpFromDownButNotTheSides) {
     for (int x = 0; x < 16; ++x) solid(s, x, 8, z);
   const FaceLinks links = sectionFaceLinks(s);
   EXPECT_FALSE(linked(links, kUp, kDown));
-  EXPECT_TRUE(linked(links, kUp, kWest));   // above the floor the sides are open
+  EXPECT_TRUE(linked(links, kUp, kWest));    // above the floor the sides are open
   EXPECT_TRUE(linked(links, kDown, kEast));  // and below it
   EXPECT_TRUE(linked(links, kNorth, kSouth));
   EXPECT_TRUE(linked(links, kEast, kWest));

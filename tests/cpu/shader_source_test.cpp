@@ -1,21 +1,25 @@
+#include "assets/shader_source.h"
+
 #include <gtest/gtest.h>
 
-
-#include "assets/shader_source.h"
-#include "support/memory_shaders.h"
 #include "core/error.h"
-#include "support/error_of.h"
 #include "core/paths.h"
+#include "support/error_of.h"
+#include "support/memory_shaders.h"
 
 namespace terrasol {
 namespace {
 
-std::string errorOf(const ShaderPreprocessor& pre, const std::string& file) { return testing::errorOf([&] { pre.process(file); }); }
+std::string errorOf(const ShaderPreprocessor& pre, const std::string& file) {
+  return testing::errorOf([&] { pre.process(file); });
+}
 
 TEST(ShaderPreprocessor, InjectsDefinesRightAfterVersion) {
   const auto pre = testing::memoryShaders({{"a.frag", "// header\n#version 450 core\nvoid main() {}\n"}});
   const auto out = pre.process("a.frag", {{"ATTRIB_POSITION", "0"}, {"FEATURE_FOG", "1"}});
-  EXPECT_EQ(out.text, "// header\n#version 450 core\n#define ATTRIB_POSITION 0\n#define FEATURE_FOG 1\nvoid main() {}\n");
+  EXPECT_EQ(
+      out.text,
+      "// header\n#version 450 core\n#define ATTRIB_POSITION 0\n#define FEATURE_FOG 1\nvoid main() {}\n");
   EXPECT_EQ(out.origin(3).file, "<defines>");
   EXPECT_EQ(out.origin(5).file, "shaders/a.frag");
   EXPECT_EQ(out.origin(5).line, 3);
@@ -45,7 +49,8 @@ TEST(ShaderPreprocessor, IncludesEachFileOnceEvenInDiamondsAndCycles) {
 }
 
 TEST(ShaderPreprocessor, MissingIncludeNamesTheIncludingFileAndLine) {
-  const auto pre = testing::memoryShaders({{"main.frag", "#version 450 core\n\n#include \"lib/nope.glsl\"\n"}});
+  const auto pre =
+      testing::memoryShaders({{"main.frag", "#version 450 core\n\n#include \"lib/nope.glsl\"\n"}});
   const std::string error = errorOf(pre, "main.frag");
   EXPECT_NE(error.find("shaders/main.frag:3:"), std::string::npos) << error;
   EXPECT_NE(error.find("shaders/lib/nope.glsl"), std::string::npos) << error;
@@ -62,14 +67,18 @@ TEST(ShaderPreprocessor, RejectsMalformedDirectives) {
       {"lib/x.glsl", "X\n"},
       {"lib/v.glsl", "\n#version 330\n"},
   });
-  EXPECT_NE(errorOf(pre, "noversion.frag").find("shaders/noversion.frag:1: missing #version"), std::string::npos);
-  EXPECT_NE(errorOf(pre, "early.frag").find("shaders/early.frag:1: #include before #version"), std::string::npos);
+  EXPECT_NE(errorOf(pre, "noversion.frag").find("shaders/noversion.frag:1: missing #version"),
+            std::string::npos);
+  EXPECT_NE(errorOf(pre, "early.frag").find("shaders/early.frag:1: #include before #version"),
+            std::string::npos);
   EXPECT_NE(errorOf(pre, "twice.frag").find("shaders/twice.frag:2: second #version"), std::string::npos);
-  EXPECT_NE(errorOf(pre, "unquoted.frag").find("shaders/unquoted.frag:2: malformed #include"), std::string::npos);
+  EXPECT_NE(errorOf(pre, "unquoted.frag").find("shaders/unquoted.frag:2: malformed #include"),
+            std::string::npos);
   EXPECT_NE(errorOf(pre, "escape.frag").find("shaders/escape.frag:2: include path"), std::string::npos);
   EXPECT_NE(errorOf(pre, "nested.frag").find("shaders/lib/v.glsl:2: #version in an included file"),
             std::string::npos);
-  EXPECT_NE(errorOf(pre, "absent.frag").find("cannot find shader file 'shaders/absent.frag'"), std::string::npos);
+  EXPECT_NE(errorOf(pre, "absent.frag").find("cannot find shader file 'shaders/absent.frag'"),
+            std::string::npos);
 }
 
 TEST(ShaderPreprocessor, MapsDriverLogPositionsBackToSourceFiles) {
@@ -82,7 +91,8 @@ TEST(ShaderPreprocessor, MapsDriverLogPositionsBackToSourceFiles) {
   EXPECT_EQ(out.mapLog("0:4(11): error: `c' undeclared"), "shaders/lib/x.glsl:2: error: `c' undeclared\n");
   EXPECT_EQ(out.mapLog("0(4) : error C1008: undefined variable \"c\""),
             "shaders/lib/x.glsl:2: error C1008: undefined variable \"c\"\n");
-  EXPECT_EQ(out.mapLog("ERROR: 0:5: 'main' : syntax error"), "shaders/main.frag:3: ERROR: 'main' : syntax error\n");
+  EXPECT_EQ(out.mapLog("ERROR: 0:5: 'main' : syntax error"),
+            "shaders/main.frag:3: ERROR: 'main' : syntax error\n");
   EXPECT_EQ(out.mapLog("a line without position"), "a line without position\n");
   EXPECT_EQ(out.mapLog("0:99(1): error: past the end"), "<unknown>:99: error: past the end\n");
 }

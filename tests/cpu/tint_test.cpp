@@ -4,9 +4,8 @@
 
 #include <algorithm>
 #include <chrono>
-#include <thread>
-
 #include <glm/common.hpp>
+#include <thread>
 
 #include "assets/tints.h"
 #include "core/paths.h"
@@ -83,7 +82,8 @@ TEST(Tints, ColormapsAreSampledLikeMinecraftAndDefaultsFillIn) {
       loadColormaps(stackOf({testing::testData() / "packs" / "pixel_perfection_ce"}), problems);
   EXPECT_TRUE(problems.empty());
   const glm::vec3 grass = tintColour(real, Tint::Grass);
-  EXPECT_GT(largestChannelStep(grass, kDefaultGrass), 1.0f / 255.0f) << "pixel_perfection_ce's grass colormap is used";
+  EXPECT_GT(largestChannelStep(grass, kDefaultGrass), 1.0f / 255.0f)
+      << "pixel_perfection_ce's grass colormap is used";
   EXPECT_GT(grass.g, grass.b) << "and it is green";
 }
 
@@ -99,12 +99,13 @@ TEST(Tints, DefaultPackColormapsGiveMinecraftsColours) {
   const glm::vec3 snowy = tintColour(maps, Tint::Grass, biomeTint(Biome::SnowyPlains));
   EXPECT_GT(desert.r, forest.r + 0.2f) << "dry heat yellows the grass";
   EXPECT_GT(snowy.b, forest.b + 0.15f) << "cold blues it";
-  EXPECT_EQ(tintColour(maps, Tint::Birch, biomeTint(Biome::Desert)), kBirchFoliage) << "fixed, whatever the biome";
+  EXPECT_EQ(tintColour(maps, Tint::Birch, biomeTint(Biome::Desert)), kBirchFoliage)
+      << "fixed, whatever the biome";
   EXPECT_EQ(tintColour(maps, Tint::Spruce, biomeTint(Biome::Taiga)), kSpruceFoliage);
 
   for (const auto& c : packgen::generateColormaps()) {
-    const Image committed =
-        loadImage(resourcePackDir() / "default" / "assets" / "minecraft" / "textures" / "colormap" / (c.name + ".png"));
+    const Image committed = loadImage(resourcePackDir() / "default" / "assets" / "minecraft" / "textures" /
+                                      "colormap" / (c.name + ".png"));
     EXPECT_EQ(committed.rgba, c.map.rgba) << c.name;
   }
 }
@@ -137,7 +138,8 @@ TEST(Tints, BiomeBordersBlendWithoutASeam) {
       for (int z = 0; z < 16; ++z)
         for (int x = 0; x < 16; ++x) {
           at(cx * 16 + x, cz * 16 + z) = tintColour(maps, Tint::Grass, chunk.tint(x, z));
-          biomes[static_cast<int>(gen.biomeAt(chunk.pos().minBlockX() + x, chunk.pos().minBlockZ() + z))] = true;
+          biomes[static_cast<int>(gen.biomeAt(chunk.pos().minBlockX() + x, chunk.pos().minBlockZ() + z))] =
+              true;
         }
     }
   ASSERT_TRUE(biomes[static_cast<int>(Biome::Desert)] && biomes[static_cast<int>(Biome::Forest)])
@@ -149,8 +151,8 @@ TEST(Tints, BiomeBordersBlendWithoutASeam) {
       if (z > 0) step = std::max(step, largestChannelStep(at(x, z), at(x, z - 1)));
       range = std::max(range, largestChannelStep(at(x, z), at(0, 0)));
     }
-  std::printf("largest step between neighbouring columns %.1f / 255, across the area %.1f / 255\n", step * 255.0f,
-              range * 255.0f);
+  std::printf("largest step between neighbouring columns %.1f / 255, across the area %.1f / 255\n",
+              step * 255.0f, range * 255.0f);
   EXPECT_LE(step, kBlendStepLimit);
   EXPECT_GT(range, 8.0f * kBlendStepLimit);
 }
@@ -158,7 +160,8 @@ TEST(Tints, BiomeBordersBlendWithoutASeam) {
 // Each tinted vertex carries the climate at its position: between column centres, interpolated; the
 // mesher reads neighbouring chunks' columns at a chunk's edge. Untinted vertices carry none.
 TEST(Tints, VerticesCarryTheirColumnsClimateInterpolated) {
-  testing::MeshWorld w(BlockMeshTable(testing::defaultBlocks(), [](BlockId, int) { return std::uint16_t{1}; }));
+  testing::MeshWorld w(
+      BlockMeshTable(testing::defaultBlocks(), [](BlockId, int) { return std::uint16_t{1}; }));
   w.set({5, 64, 5}, "grass_block");
   w.set({5, 65, 5}, "oak_leaves");
   int uniform = 0;
@@ -166,7 +169,8 @@ TEST(Tints, VerticesCarryTheirColumnsClimateInterpolated) {
     for (const PackedVertex& v : layer.vertices) {
       if (v.tint() == 0) continue;
       ++uniform;
-      EXPECT_EQ(v.tintTemperature(), kPlainsTint.temperature) << "one biome all round: its climate everywhere";
+      EXPECT_EQ(v.tintTemperature(), kPlainsTint.temperature)
+          << "one biome all round: its climate everywhere";
       EXPECT_EQ(v.tintDownfall(), kPlainsTint.downfall);
     }
   EXPECT_EQ(uniform, 4 * 6) << "the leaves' six faces (the grass top is hidden)";
@@ -195,7 +199,7 @@ TEST(Tints, VerticesCarryTheirColumnsClimateInterpolated) {
     const int x32 = v.x32();
     // Corners at x = 0..7 lie between warm columns, x = 8 between warm and cold, 9..15 between cold
     // ones, x = 16 between this chunk's cold column 15 and the east chunk's warm column 0.
-    const TintClimate expected = x32 < 8 * 32                     ? warm
+    const TintClimate expected = x32 < 8 * 32                    ? warm
                                  : x32 > 8 * 32 && x32 < 16 * 32 ? cold
                                                                  : TintClimate{120, 30};
     EXPECT_EQ(v.tintTemperature(), expected.temperature) << "corner x = " << x32 / 32;

@@ -1,8 +1,9 @@
+#include "world/world.h"
+
 #include <gtest/gtest.h>
 
 #include "support/world_support.h"
 #include "world/generator.h"
-#include "world/world.h"
 
 namespace terrasol {
 namespace {
@@ -43,11 +44,13 @@ std::vector<std::string> editsAround(const BlockPos& origin) {
   World world(blocks);
   const ChunkPos center = ChunkPos::of(origin);
   for (int dz = -1; dz <= 1; ++dz)
-    for (int dx = -1; dx <= 1; ++dx) world.insertChunk(std::make_unique<Chunk>(ChunkPos{center.x + dx, center.z + dz}));
+    for (int dx = -1; dx <= 1; ++dx)
+      world.insertChunk(std::make_unique<Chunk>(ChunkPos{center.x + dx, center.z + dz}));
   std::vector<std::string> log;
   const BlockId stone = blocks.id("stone"), torch = blocks.id("torch");
   // Local offsets spanning chunk and section borders in every direction.
-  const int offsets[][3] = {{0, 0, 0}, {-1, 0, 0}, {15, 15, 15}, {16, 16, 16}, {-16, -1, -17}, {5, 320 - 70, 5}};
+  const int offsets[][3] = {{0, 0, 0},    {-1, 0, 0},     {15, 15, 15},
+                            {16, 16, 16}, {-16, -1, -17}, {5, 320 - 70, 5}};
   for (const auto& o : offsets) {
     const BlockPos p = origin.offset(o[0], o[1], o[2]);
     auto change = world.setBlock(p, stone);
@@ -73,7 +76,8 @@ TEST(World, EditsAcrossBordersAreReportedAndReadBack) {
 }
 
 TEST(World, FarFromTheOriginBehavesExactlyLikeTheOrigin) {
-  // Same position inside its chunk (29 999 000 = 16 * 1 874 937 + 8), so the same edits cross the same borders.
+  // Same position inside its chunk (29 999 000 = 16 * 1 874 937 + 8), so the same edits cross the same
+  // borders.
   EXPECT_EQ(editsAround({8, 64, 8}), editsAround({29'999'000, 64, 29'999'000}));
   EXPECT_EQ(editsAround({0, 64, 0}), editsAround({-29'999'008, 64, -29'999'008}));
   EXPECT_EQ(ChunkPos::of({-29'999'999, 0, 29'999'999}).x, -1'875'000);

@@ -41,7 +41,9 @@ int main(int argc, char** argv) {
     for (const auto& entry : std::filesystem::recursive_directory_iterator(argv[i], ec)) {
       const auto path = entry.path();
       const std::string ext = path.extension().string();
-      if (ext.empty() || ("," + extensions + ",").find("," + ext + ",") == std::string::npos || seeds.size() > 60) continue;
+      if (ext.empty() || ("," + extensions + ",").find("," + ext + ",") == std::string::npos ||
+          seeds.size() > 60)
+        continue;
       std::string seed = readFile(path);
       const auto meta = path.string() + ".mcmeta";
       if (std::filesystem::exists(meta)) seed += "\n--mcmeta--\n" + readFile(meta);
@@ -50,7 +52,8 @@ int main(int argc, char** argv) {
   }
   seeds.push_back("");
   if (textures) {
-    seeds.push_back("\n--mcmeta--\n{\"animation\": {\"frames\": [0, {\"index\": 99999999999}], \"frametime\": -1}}");
+    seeds.push_back(
+        "\n--mcmeta--\n{\"animation\": {\"frames\": [0, {\"index\": 99999999999}], \"frametime\": -1}}");
     seeds.push_back("\n--mcmeta--\n{\"animation\": {\"width\": 0, \"height\": 18446744073709551615}}");
   }
   long count = 0;
@@ -58,10 +61,12 @@ int main(int argc, char** argv) {
   auto next = [&] { return state = state * 6364136223846793005ull + 1442695040888963407ull; };
   for (const auto& seed : seeds) {
     run(seed, count);
-    for (std::size_t cut = 0; cut < seed.size(); cut += std::max<std::size_t>(1, seed.size() / 24)) run(seed.substr(0, cut), count);
+    for (std::size_t cut = 0; cut < seed.size(); cut += std::max<std::size_t>(1, seed.size() / 24))
+      run(seed.substr(0, cut), count);
     for (int i = 0; i < 48 && !seed.empty(); ++i) {
       std::string mutated = seed;
-      for (int k = 0; k < 1 + static_cast<int>(next() % 4); ++k) mutated[next() % mutated.size()] = static_cast<char>(next());
+      for (int k = 0; k < 1 + static_cast<int>(next() % 4); ++k)
+        mutated[next() % mutated.size()] = static_cast<char>(next());
       run(mutated, count);
     }
     if (textures && seed.size() > 24) {  // the IHDR width and height fields set to extremes

@@ -11,7 +11,8 @@
 #include "core/error.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  static const std::filesystem::path empty = std::filesystem::temp_directory_path() / "terrasol-gltf-fuzz-empty";
+  static const std::filesystem::path empty =
+      std::filesystem::temp_directory_path() / "terrasol-gltf-fuzz-empty";
   std::filesystem::create_directories(empty);
   try {
     terrasol::parseModel(std::vector<std::uint8_t>(data, data + size), "fuzz.gltf", empty);

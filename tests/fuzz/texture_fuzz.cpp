@@ -18,15 +18,16 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::string_view png = input.substr(0, cut);
   int width = 16, height = 16;
   try {
-    const terrasol::Image image = terrasol::decodeImage(std::vector<std::uint8_t>(png.begin(), png.end()), "fuzz.png",
-                                                        terrasol::kTextureLimits);
+    const terrasol::Image image = terrasol::decodeImage(std::vector<std::uint8_t>(png.begin(), png.end()),
+                                                        "fuzz.png", terrasol::kTextureLimits);
     width = image.width;
     height = image.height;
   } catch (const terrasol::Error&) {
   }
   if (cut != std::string_view::npos) {
     try {
-      terrasol::parseAnimation(std::string(input.substr(cut + kSeparator.size())), width, height, "fuzz.png.mcmeta");
+      terrasol::parseAnimation(std::string(input.substr(cut + kSeparator.size())), width, height,
+                               "fuzz.png.mcmeta");
     } catch (const terrasol::Error&) {
     }
   }

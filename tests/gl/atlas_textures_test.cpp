@@ -1,6 +1,7 @@
+#include "render/atlas_textures.h"
+
 #include "assets/atlas.h"
 #include "core/paths.h"
-#include "render/atlas_textures.h"
 #include "support/gl_test.h"
 
 namespace terrasol {
@@ -34,11 +35,13 @@ TEST_F(AtlasTexturesTest, UploadsEveryLevelExactly) {
     const auto& expected = atlas.specular[static_cast<std::size_t>(level)];
     std::vector<std::uint8_t> back(expected.rgba.size());
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glGetTextureImage(gpu.specular(), level, GL_RGBA, GL_UNSIGNED_BYTE, static_cast<GLsizei>(back.size()), back.data());
+    glGetTextureImage(gpu.specular(), level, GL_RGBA, GL_UNSIGNED_BYTE, static_cast<GLsizei>(back.size()),
+                      back.data());
     EXPECT_EQ(back, expected.rgba) << "specular level " << level;
     const auto& albedo = atlas.albedo[static_cast<std::size_t>(level)];
     back.resize(albedo.rgba.size());
-    glGetTextureImage(gpu.albedo(), level, GL_RGBA, GL_UNSIGNED_BYTE, static_cast<GLsizei>(back.size()), back.data());
+    glGetTextureImage(gpu.albedo(), level, GL_RGBA, GL_UNSIGNED_BYTE, static_cast<GLsizei>(back.size()),
+                      back.data());
     EXPECT_EQ(back, albedo.rgba) << "albedo level " << level;
   }
 }

@@ -1,7 +1,8 @@
 // Inventory icons: every block the inventory offers gets one, drawn from its model and textures.
+#include "render/block_icons.h"
+
 #include "core/paths.h"
 #include "mesh/block_icon_mesh.h"
-#include "render/block_icons.h"
 #include "scene/block_atlas.h"
 #include "support/gl_test.h"
 #include "support/golden.h"

@@ -1,7 +1,8 @@
+#include "support/cube_scene.h"
+
 #include <set>
 
 #include "render/gl/render_target.h"
-#include "support/cube_scene.h"
 #include "support/gl_test.h"
 #include "support/golden.h"
 

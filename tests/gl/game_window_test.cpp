@@ -3,11 +3,10 @@
 // places a torch, saves and quits, and a second run of the same world finds both edits and the
 // torch's light.
 
-#include <cstdlib>
 #include <algorithm>
+#include <cstdlib>
 #include <fstream>
 #include <map>
-
 #include <nlohmann/json.hpp>
 
 #include "core/error.h"
@@ -23,8 +22,8 @@ namespace {
 class GameWindowTest : public testing::GlTest {};
 
 int runGame(const std::string& arguments) {
-  const std::string command = std::string(TERRASOL_XVFB_RUN) + " -a -s '-screen 0 640x480x24' " + TERRASOL_GAME_EXE +
-                              " " + arguments;
+  const std::string command =
+      std::string(TERRASOL_XVFB_RUN) + " -a -s '-screen 0 640x480x24' " + TERRASOL_GAME_EXE + " " + arguments;
   return std::system(command.c_str());
 }
 
@@ -32,7 +31,9 @@ TEST_F(GameWindowTest, WindowShowsWhatHeadlessRenders) {
   constexpr int kFrames = 5;
   const auto screenshot = testing::testOutputDir() / "game_window.png";
   std::filesystem::remove(screenshot);
-  ASSERT_EQ(runGame("--demo --frames " + std::to_string(kFrames) + " --size 320x180 --screenshot " + screenshot.string()), 0);
+  ASSERT_EQ(runGame("--demo --frames " + std::to_string(kFrames) + " --size 320x180 --screenshot " +
+                    screenshot.string()),
+            0);
   const Image window = loadImage(screenshot);
 
   // The same frames in the same order: the shadow map's centre keeps its place until the camera has
@@ -46,7 +47,9 @@ TEST_F(GameWindowTest, WindowShowsWhatHeadlessRenders) {
   EXPECT_TRUE(cmp.matches) << cmp.failingPercent << " % of pixels differ, max " << cmp.maxError * 255.0;
 }
 
-nlohmann::json readJson(const std::filesystem::path& file) { return nlohmann::json::parse(readTextFile(file)); }
+nlohmann::json readJson(const std::filesystem::path& file) {
+  return nlohmann::json::parse(readTextFile(file));
+}
 
 // A fresh folder for one run of the game, with small, quick settings: 2 chunks of view, a small
 // shadow map. `common` holds the arguments every run in it takes.
@@ -70,14 +73,17 @@ TEST_F(GameWindowTest, ScriptedPlayEditsSavesAndTheNextRunFindsTheEditsAndTheLig
 
   const auto first = dir / "first.json";
   ASSERT_EQ(runGame(common + " --seed 1 --input-script " + std::string(TERRASOL_SOURCE_DIR) +
-                    "/tests/scripts/game_smoke.json --report " + first.string()), 0);
+                    "/tests/scripts/game_smoke.json --report " + first.string()),
+            0);
   const nlohmann::json played = readJson(first);
   const auto& pos = played["player"]["position"];
-  EXPECT_GT(std::hypot(pos[0].get<double>() - 0.5, pos[2].get<double>() - 0.5), 2.0) << "the player walked from the spawn";
+  EXPECT_GT(std::hypot(pos[0].get<double>() - 0.5, pos[2].get<double>() - 0.5), 2.0)
+      << "the player walked from the spawn";
   // The last edit of each cell is what the world must hold.
   std::map<std::array<int, 3>, std::string> edited;
   for (const auto& e : played["edits"]) {
-    edited[{e["pos"][0].get<int>(), e["pos"][1].get<int>(), e["pos"][2].get<int>()}] = e["block"].get<std::string>();
+    edited[{e["pos"][0].get<int>(), e["pos"][1].get<int>(), e["pos"][2].get<int>()}] =
+        e["block"].get<std::string>();
   }
   const auto count = [&](const std::string& block) {
     return std::count_if(edited.begin(), edited.end(), [&](const auto& e) { return e.second == block; });
@@ -103,8 +109,10 @@ TEST_F(GameWindowTest, ScriptedPlayEditsSavesAndTheNextRunFindsTheEditsAndTheLig
     ++expected;
   }
   const auto& back = reopened["player"]["position"];
-  for (int i = 0; i < 3; ++i) EXPECT_NEAR(back[i].get<double>(), pos[i].get<double>(), 0.01) << "the player is where they saved";
-  EXPECT_EQ(reopened["time"].get<std::int64_t>() / 20, played["time"].get<std::int64_t>() / 20) << "the world time is kept";
+  for (int i = 0; i < 3; ++i)
+    EXPECT_NEAR(back[i].get<double>(), pos[i].get<double>(), 0.01) << "the player is where they saved";
+  EXPECT_EQ(reopened["time"].get<std::int64_t>() / 20, played["time"].get<std::int64_t>() / 20)
+      << "the world time is kept";
 }
 
 // E opens the creative inventory over the frozen game: every block's icon and the hotbar below. A
@@ -119,8 +127,8 @@ TEST_F(GameWindowTest, TheInventoryKeyOpensTheInventory) {
   std::ofstream(script) << R"({ "step": 0.05, "events": [ { "t": 0.1, "key": "E" } ] })";
   const auto report = game.dir / "report.json";
   const auto shot = game.dir / "inventory.png";
-  ASSERT_EQ(runGame(game.common + " --size 480x270 --input-script " + script.string() + " --frames 10 --screenshot " +
-                    shot.string() + " --report " + report.string()),
+  ASSERT_EQ(runGame(game.common + " --size 480x270 --input-script " + script.string() +
+                    " --frames 10 --screenshot " + shot.string() + " --report " + report.string()),
             0);
   EXPECT_EQ(readJson(report)["screen"], "inventory");
   EXPECT_TRUE(testing::matchesGolden(loadImage(shot), "game_inventory"));
@@ -133,7 +141,8 @@ TEST_F(GameWindowTest, APlacedPropIsLitSavedAndBackInTheNextRun) {
   // One model from the world's props folder (relative, as the menu offers it), one from anywhere.
   testing::writeBoxGltf(dir / "world" / "props");
   std::filesystem::create_directories(dir / "elsewhere");
-  const auto elsewhere = testing::writeBoxGltf(dir / "elsewhere", {{"pbrMetallicRoughness", {{"baseColorFactor", {0, 0, 0.8, 1}}}}});
+  const auto elsewhere = testing::writeBoxGltf(
+      dir / "elsewhere", {{"pbrMetallicRoughness", {{"baseColorFactor", {0, 0, 0.8, 1}}}}});
   const auto script = dir / "script.json";
   std::ofstream(script) << R"({ "step": 0.05, "events": [
       { "t": 0.0, "look": [0, 60] },
@@ -146,7 +155,9 @@ TEST_F(GameWindowTest, APlacedPropIsLitSavedAndBackInTheNextRun) {
       { "t": 1.2, "command": "quit" } ] })";
   const std::string& common = game.common;
   const auto first = dir / "first.json";
-  ASSERT_EQ(runGame("--seed 5 " + common + " --input-script " + script.string() + " --report " + first.string()), 0);
+  ASSERT_EQ(
+      runGame("--seed 5 " + common + " --input-script " + script.string() + " --report " + first.string()),
+      0);
   const nlohmann::json placed = readJson(first);
   ASSERT_EQ(placed["props"].size(), 2u) << placed.dump();
   EXPECT_EQ(placed["props"][0]["model"], "props/box.gltf");
@@ -167,7 +178,8 @@ TEST_F(GameWindowTest, APlacedPropIsLitSavedAndBackInTheNextRun) {
   const auto third = dir / "third.json";
   ASSERT_EQ(runGame(common + " --frames 2 --report " + third.string()), 0);
   EXPECT_EQ(readJson(third)["props"].size(), 1u);
-  EXPECT_EQ(readJson(dir / "world" / "level.json")["props"].size(), 2u) << "the broken one is kept for when the file comes back";
+  EXPECT_EQ(readJson(dir / "world" / "level.json")["props"].size(), 2u)
+      << "the broken one is kept for when the file comes back";
   // Back again, the box is where it was; looking at it as when it was placed and breaking removes it.
   std::filesystem::rename(dir / "box.gltf", dir / "world" / "props" / "box.gltf");
   const auto removeScript = dir / "remove.json";
@@ -189,11 +201,12 @@ TEST_F(GameWindowTest, AMinimisedWindowDrawsNothingWhileTheWorldGoesOnAndComesBa
   const auto report = dir / "report.json", log = dir / "log.txt";
   // Under a window manager (twm), started in the game's virtual display before the game; screenshots
   // land in the working directory.
-  const std::string command = "cd " + dir.string() + " && " + TERRASOL_XVFB_RUN + " -a -s '-screen 0 640x480x24' sh -c '" +
-                              "LC_ALL=C " + TERRASOL_TWM + " -f " + TERRASOL_SOURCE_DIR +
-                              "/tests/scripts/twmrc 2>/dev/null & sleep 1; exec " +
-                              TERRASOL_GAME_EXE + " " + game.common + " --seed 3 --input-script " + TERRASOL_SOURCE_DIR +
-                              "/tests/scripts/game_minimise.json --report " + report.string() + "' > " + log.string() + " 2>&1";
+  const std::string command = "cd " + dir.string() + " && " + TERRASOL_XVFB_RUN +
+                              " -a -s '-screen 0 640x480x24' sh -c '" + "LC_ALL=C " + TERRASOL_TWM + " -f " +
+                              TERRASOL_SOURCE_DIR + "/tests/scripts/twmrc 2>/dev/null & sleep 1; exec " +
+                              TERRASOL_GAME_EXE + " " + game.common + " --seed 3 --input-script " +
+                              TERRASOL_SOURCE_DIR + "/tests/scripts/game_minimise.json --report " +
+                              report.string() + "' > " + log.string() + " 2>&1";
   ASSERT_EQ(std::system(command.c_str()), 0) << readTextFile(log);
   const std::string output = readTextFile(log);
   EXPECT_NE(output.find("window minimised"), std::string::npos) << output;
@@ -212,7 +225,8 @@ TEST_F(GameWindowTest, AMinimisedWindowDrawsNothingWhileTheWorldGoesOnAndComesBa
   ASSERT_EQ(shots.size(), 1u);
   const Image shot = loadImage(shots[0]);
   EXPECT_EQ(shot.width, 320);
-  EXPECT_GT(*std::max_element(shot.rgba.begin(), shot.rgba.end()), 50) << "the restored window draws the world again";
+  EXPECT_GT(*std::max_element(shot.rgba.begin(), shot.rgba.end()), 50)
+      << "the restored window draws the world again";
 }
 
 }  // namespace

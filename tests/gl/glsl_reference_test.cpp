@@ -185,9 +185,9 @@ TEST_F(GlslReferenceTest, TheShadersLightmapIsTheCppTableAtWholeLevels) {
 // Every field at 0 and at its largest in all 16 384 combinations, then random vertices.
 std::vector<PackedVertex> verticesToUnpack() {
   using V = PackedVertex;
-  const BitField fields[] = {V::kX,          V::kY,        V::kZ,           V::kTexture,  V::kFace,
-                             V::kTint,        V::kRole,     V::kAo,          V::kBlockLight, V::kSkyLight,
-                             V::kTemperature, V::kDownfall, V::kU,           V::kV};
+  const BitField fields[] = {V::kX,           V::kY,        V::kZ,  V::kTexture,    V::kFace,
+                             V::kTint,        V::kRole,     V::kAo, V::kBlockLight, V::kSkyLight,
+                             V::kTemperature, V::kDownfall, V::kU,  V::kV};
   constexpr int kFields = static_cast<int>(std::size(fields));
   const auto vertex = [&](auto valueOf) {
     int f[kFields];
@@ -224,9 +224,9 @@ TEST_F(GlslReferenceTest, TheShaderUnpacksEveryFieldOfThePackedVertexAsCppPacksI
     outputs[i * per + 2u] = vec4(v.blockLight, v.skyLight, v.uv);
     outputs[i * per + 3u] = vec4(v.tintClimate, 0.0, 0.0);)",
                            words, 4);
-  constexpr const char* kNames[14] = {"x",    "y",           "z",         "texture", "face",
-                                      "tint", "merged",      "ao",        "block light", "sky light",
-                                      "u",    "v",           "temperature", "downfall"};
+  constexpr const char* kNames[14] = {"x",    "y",      "z",           "texture",     "face",
+                                      "tint", "merged", "ao",          "block light", "sky light",
+                                      "u",    "v",      "temperature", "downfall"};
   const float steps = static_cast<float>(V::kPositionSteps), uvSteps = static_cast<float>(V::kUvSteps);
   const float aoMax = static_cast<float>(V::kAo.mask());
   const float climateMax = static_cast<float>(V::kTemperature.mask());

@@ -7,9 +7,9 @@
 #include "render/shadow_schedule.h"
 #include "scene_render/scene_render.h"
 #include "support/gl_test.h"
-#include "support/test_data.h"
-#include "support/shader_variants.h"
 #include "support/golden.h"
+#include "support/shader_variants.h"
+#include "support/test_data.h"
 
 namespace terrasol {
 namespace {
@@ -20,7 +20,9 @@ const std::filesystem::path kScenes = std::filesystem::path(TERRASOL_SOURCE_DIR)
 
 class LeaveOutTest : public testing::GlTest {};
 
-bool identical(const Image& a, const Image& b) { return compareImages(a, b, {0.0f, 0.0f}).matches; }
+bool identical(const Image& a, const Image& b) {
+  return compareImages(a, b, {0.0f, 0.0f}).matches;
+}
 
 // Frame 0 with a leave-out rule on (the default) and off.
 struct WithAndWithout {
@@ -45,7 +47,8 @@ TEST_F(LeaveOutTest, CaveCullingHidesSectionsAndCastersButNoPixel) {
     // Sections no ray of the light reaches cast nothing (all three scenes have a shadow pass).
     EXPECT_EQ(all.stats.shadowCastersHidden, 0) << name;
     EXPECT_EQ(culled.stats.shadowCasters + culled.stats.shadowCastersHidden, all.stats.shadowCasters) << name;
-    EXPECT_TRUE(identical(culled.image, all.image)) << name << ": leaving hidden sections out changed the image";
+    EXPECT_TRUE(identical(culled.image, all.image))
+        << name << ": leaving hidden sections out changed the image";
     if (std::string(name) == "noon_terrain") {
       EXPECT_GT(culled.stats.shadowCastersHidden, 0) << "caves under the terrain cast nothing";
     }
@@ -172,7 +175,8 @@ TEST_F(LeaveOutTest, ASpreadShadowUpdateEndsWithTheMapAWholeUpdateDraws) {
   auto& [scene, spread, request, first] = run;
   const int whole = first.stats.shadowCasters;
   // Moved past the re-centring distance, well inside a quarter of the map: rebuilt over 4 frames.
-  request.shadowCentreOffset = glm::dvec3(12.0, 0.0, 0.0) * static_cast<double>(first.geometry.shadowTexelWorld);
+  request.shadowCentreOffset =
+      glm::dvec3(12.0, 0.0, 0.0) * static_cast<double>(first.geometry.shadowTexelWorld);
   int drawn = 0;
   RenderedFrame last;
   for (int i = 0; i < 4; ++i) {

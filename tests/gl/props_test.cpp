@@ -6,7 +6,6 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-
 #include <glm/geometric.hpp>
 #include <glm/vec4.hpp>
 #include <nlohmann/json.hpp>
@@ -14,11 +13,11 @@
 #include "core/day_cycle.h"
 #include "core/error.h"
 #include "scene_render/scene_render.h"
-#include "support/gl_test.h"
 #include "support/frame_probe.h"
+#include "support/gl_test.h"
 #include "support/gltf_box.h"
-#include "support/test_data.h"
 #include "support/shader_variants.h"
+#include "support/test_data.h"
 #include "support/world_support.h"
 
 namespace terrasol {
@@ -30,7 +29,9 @@ using testing::hasAnyVariantOf;
 using testing::hasVariant;
 
 // The Khronos samples, where present (after TERRASOL_SKIP_WITHOUT_TEST_DATA).
-std::filesystem::path models() { return testing::testData() / "gltf"; }
+std::filesystem::path models() {
+  return testing::testData() / "gltf";
+}
 
 class PropsTest : public testing::GlTest {
  protected:
@@ -60,8 +61,9 @@ SceneProp prop(const std::filesystem::path& model, glm::dvec3 position, float sc
   return p;
 }
 
-
-glm::vec3 toLightAt(const SceneFile& scene) { return dayStateAt(scene.time, scene.sunPathRotation).toShadowLight; }
+glm::vec3 toLightAt(const SceneFile& scene) {
+  return dayStateAt(scene.time, scene.sunPathRotation).toShadowLight;
+}
 
 TEST_F(PropsTest, APropCastsItsShadowOnTheGroundInBothShadowModes) {
   for (const ShadowMode mode : {ShadowMode::Warped, ShadowMode::Cascaded}) {
@@ -80,7 +82,8 @@ TEST_F(PropsTest, APropCastsItsShadowOnTheGroundInBothShadowModes) {
         << nameOf(mode, kShadowModes) << ": the ground under the box is in its shadow";
     // And away from it the ground is as it was.
     const glm::dvec3 open = shadow + glm::dvec3(4.0, 0.0, 0.0);
-    EXPECT_NEAR(brightness(colourAt(shaded, open)), brightness(colourAt(bare, open)), 0.05f) << nameOf(mode, kShadowModes);
+    EXPECT_NEAR(brightness(colourAt(shaded, open)), brightness(colourAt(bare, open)), 0.05f)
+        << nameOf(mode, kShadowModes);
   }
   context_->checkErrors("prop shadows");
 }
@@ -94,7 +97,8 @@ TEST_F(PropsTest, APropInTheShadowOfABlockIsDarkerInBothShadowModes) {
     // A stone block three blocks up the light's way from the box's top shades it.
     const glm::dvec3 above = centre + glm::dvec3(0.0, 0.5, 0.0) + glm::dvec3(toLightAt(scene)) * 3.0;
     const glm::ivec3 cell(glm::floor(above));
-    scene.edits.push_back({SceneEdit::Kind::Fill, cell - glm::ivec3(1, 0, 1), cell + glm::ivec3(1, 0, 1), "stone", "world.edits[0]"});
+    scene.edits.push_back({SceneEdit::Kind::Fill, cell - glm::ivec3(1, 0, 1), cell + glm::ivec3(1, 0, 1),
+                           "stone", "world.edits[0]"});
     const RenderedFrame shaded = SceneRenderer(scene).renderFrame(0);
     const glm::dvec3 top = centre + glm::dvec3(0.0, 0.5, 0.0);
     EXPECT_LT(brightness(colourAt(shaded, top)), 0.75f * brightness(colourAt(lit, top)))
@@ -138,21 +142,27 @@ TEST_F(PropsTest, AlphaModesMaskAndBlend) {
   const RenderedFrame opaque = opaqueRenderer.renderFrame(0);
   EXPECT_TRUE(hasVariant(opaqueRenderer, "prop"));
   EXPECT_FALSE(hasAnyVariantOf(opaqueRenderer, "prop+CUTOUT")) << "no MASK material: no alpha-tested variant";
-  EXPECT_FALSE(hasAnyVariantOf(opaqueRenderer, "prop_translucent")) << "no BLEND material: no forward variant";
+  EXPECT_FALSE(hasAnyVariantOf(opaqueRenderer, "prop_translucent"))
+      << "no BLEND material: no forward variant";
 
   // MASK below the cutoff: nothing drawn, and nothing cast either (the grass is as without the box).
-  scene.props[0].model = editedBox("mask_clear", {{"alphaMode", "MASK"}, {"pbrMetallicRoughness", {{"baseColorFactor", {0.8, 0, 0, 0.3}}}}});
+  scene.props[0].model =
+      editedBox("mask_clear",
+                {{"alphaMode", "MASK"}, {"pbrMetallicRoughness", {{"baseColorFactor", {0.8, 0, 0, 0.3}}}}});
   SceneRenderer clear(scene);
   EXPECT_TRUE(hasVariant(clear, "prop+CUTOUT"));
   EXPECT_TRUE(hasVariant(clear, "prop_shadow+CUTOUT"));
   EXPECT_EQ(compareImages(clear.renderFrame(0).image, bare.image, {0.0f, 0.0f}).failingPercent, 0.0);
   // MASK above it: the box as if opaque.
-  scene.props[0].model = editedBox("mask_solid", {{"alphaMode", "MASK"}, {"pbrMetallicRoughness", {{"baseColorFactor", {0.8, 0, 0, 0.7}}}}});
+  scene.props[0].model =
+      editedBox("mask_solid",
+                {{"alphaMode", "MASK"}, {"pbrMetallicRoughness", {{"baseColorFactor", {0.8, 0, 0, 0.7}}}}});
   const RenderedFrame solid = SceneRenderer(scene).renderFrame(0);
   EXPECT_NEAR(brightness(colourAt(solid, top)), brightness(colourAt(opaque, top)), 0.02f);
 
   // BLEND at half alpha: between the grass and the opaque box, drawn in the translucent pass.
-  scene.props[0].model = editedBox("blend", {{"alphaMode", "BLEND"}, {"pbrMetallicRoughness", {{"baseColorFactor", {0.8, 0, 0, 0.5}}}}});
+  scene.props[0].model = editedBox(
+      "blend", {{"alphaMode", "BLEND"}, {"pbrMetallicRoughness", {{"baseColorFactor", {0.8, 0, 0, 0.5}}}}});
   SceneRenderer blendRenderer(scene);
   const RenderedFrame blended = blendRenderer.renderFrame(0);
   EXPECT_TRUE(hasVariant(blendRenderer, "prop_translucent+SHADOWS+PCF_TENT"));
@@ -224,7 +234,8 @@ TEST_F(PropsTest, NormalMapsAndEmissionReachTheGBufferEvenWithoutPackMaps) {
   EXPECT_TRUE(renderer.renderer().gbufferContents().specular);
   request.debugView = DebugView::Emission;
   EXPECT_GT(colourAt(renderer.renderFrame(0, request), top).r, 0.5f) << "the glow is LabPBR emission";
-  EXPECT_LT(colourAt(renderer.renderFrame(0, request), centre + glm::dvec3(3.0, -0.5, 0.0)).r, 0.02f) << "the grass does not glow";
+  EXPECT_LT(colourAt(renderer.renderFrame(0, request), centre + glm::dvec3(3.0, -0.5, 0.0)).r, 0.02f)
+      << "the grass does not glow";
   context_->checkErrors("normal maps and emission");
 }
 

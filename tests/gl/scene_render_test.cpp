@@ -2,13 +2,14 @@
 // goldens (each looked at before it was committed), every debug view, reproducibility, and no NaN or
 // Inf in any float target.
 
-#include <limits>
-#include <filesystem>
-
 #include "scene_render/scene_render.h"
+
+#include <filesystem>
+#include <limits>
+
 #include "support/gl_test.h"
-#include "support/test_data.h"
 #include "support/golden.h"
+#include "support/test_data.h"
 
 namespace terrasol {
 namespace {
@@ -38,16 +39,18 @@ TEST_P(SceneGoldenTest, MatchesGolden) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, SceneGoldenTest,
-                         ::testing::Values("noon_terrain", "sunset_terrain", "night_cave_torches", "metal_emissive",
-                                           "stone_closeup", "water_glass", "pack_pixel_perfection", "shadow_noon",
-                                           "shadow_low_sun", "shadow_moon", "shadow_forest", "shadow_cave_mouth",
-                                           "props_beside_blocks", "props_night_torch", "mirror_floor", "lake_pillar",
-                                           "lake_sunset", "flooded_cave", "shapes"));
+                         ::testing::Values("noon_terrain", "sunset_terrain", "night_cave_torches",
+                                           "metal_emissive", "stone_closeup", "water_glass",
+                                           "pack_pixel_perfection", "shadow_noon", "shadow_low_sun",
+                                           "shadow_moon", "shadow_forest", "shadow_cave_mouth",
+                                           "props_beside_blocks", "props_night_torch", "mirror_floor",
+                                           "lake_pillar", "lake_sunset", "flooded_cave", "shapes"));
 
 TEST_F(SceneRenderTest, EveryDebugViewMatchesItsGolden) {
   SceneRenderer renderer(loadScene(kScenes / "metal_emissive.json"));
   for (std::size_t v = 1; v < kDebugViews.size(); ++v) {
-    if (showsReflections(static_cast<DebugView>(v))) continue;  // reflections are off here (reflection_test.cpp)
+    if (showsReflections(static_cast<DebugView>(v)))
+      continue;  // reflections are off here (reflection_test.cpp)
     const Image image = renderer.render(static_cast<DebugView>(v));
     const std::string name(kDebugViews[v]);
     context_->checkErrors(name.c_str());
@@ -123,9 +126,12 @@ TEST_F(SceneRenderTest, NoFloatTargetHoldsNanOrInf) {
     glm::ivec2 size;
   };
   const Case cases[] = {
-      {"sunrise", 0, {5, 64.5, 0}, 70, {64, 36}},          {"sunset", 12000, {5, 64.5, 0}, 70, {64, 36}},
-      {"noon, straight down", 6000, {5, 0, 7}, 70, {64, 36}}, {"midnight, straight up", 18000, {5, 300, 7}, 70, {64, 36}},
-      {"fov 1", 6000, {5, 64.5, 0}, 1, {64, 36}},          {"fov 170", 6000, {5, 64.5, 0}, 170, {64, 36}},
+      {"sunrise", 0, {5, 64.5, 0}, 70, {64, 36}},
+      {"sunset", 12000, {5, 64.5, 0}, 70, {64, 36}},
+      {"noon, straight down", 6000, {5, 0, 7}, 70, {64, 36}},
+      {"midnight, straight up", 18000, {5, 300, 7}, 70, {64, 36}},
+      {"fov 1", 6000, {5, 64.5, 0}, 1, {64, 36}},
+      {"fov 170", 6000, {5, 64.5, 0}, 170, {64, 36}},
       {"1x1", 6000, {5, 64.5, 0}, 70, {1, 1}},
   };
   for (const Case& c : cases) {

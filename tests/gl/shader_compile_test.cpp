@@ -42,7 +42,8 @@ TEST_F(GlTest, BrokenShaderErrorNamesTheOriginalFileAndLine) {
 TEST_F(GlTest, InjectedSlotDefinesReachTheShader) {
   const auto sources = testing::memoryShaders({
       {"t.vert", kVertex},
-      {"t.frag", "#version 450 core\nlayout(location = OUT_COLOR) out vec4 o;\nvoid main() { o = vec4(1.0); }\n"},
+      {"t.frag",
+       "#version 450 core\nlayout(location = OUT_COLOR) out vec4 o;\nvoid main() { o = vec4(1.0); }\n"},
   });
   const gl::Program program =
       buildProgram(sources, {{GL_VERTEX_SHADER, "t.vert"}, {GL_FRAGMENT_SHADER, "t.frag"}}, slotDefines());
@@ -52,7 +53,9 @@ TEST_F(GlTest, InjectedSlotDefinesReachTheShader) {
 
 TEST_F(GlTest, LinkErrorNamesTheStages) {
   const auto sources = testing::memoryShaders({
-      {"t.vert", "#version 450 core\nout vec3 v_missing;\nvoid main() { v_missing = vec3(0); gl_Position = vec4(0); }\n"},
+      {"t.vert",
+       "#version 450 core\nout vec3 v_missing;\nvoid main() { v_missing = vec3(0); gl_Position = vec4(0); "
+       "}\n"},
       {"t.frag", "#version 450 core\nin vec4 v_other;\nout vec4 o;\nvoid main() { o = v_other; }\n"},
   });
   try {

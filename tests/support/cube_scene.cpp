@@ -99,9 +99,10 @@ void CubeScene::draw(GLuint framebuffer, glm::ivec2 size, const Camera& camera, 
   const glm::mat4 viewProjection = camera.projection(aspect) * camera.view();
   const float lengthToLight = glm::length(towardLight);
   const glm::vec3 toLight = lengthToLight > 1e-6f ? towardLight / lengthToLight : glm::vec3(0.0f, 1.0f, 0.0f);
-  glProgramUniformMatrix4fv(program_.id(), glGetUniformLocation(program_.id(), "u_viewProjection"), 1, GL_FALSE,
-                            glm::value_ptr(viewProjection));
-  glProgramUniform3fv(program_.id(), glGetUniformLocation(program_.id(), "u_toLight"), 1, glm::value_ptr(toLight));
+  glProgramUniformMatrix4fv(program_.id(), glGetUniformLocation(program_.id(), "u_viewProjection"), 1,
+                            GL_FALSE, glm::value_ptr(viewProjection));
+  glProgramUniform3fv(program_.id(), glGetUniformLocation(program_.id(), "u_toLight"), 1,
+                      glm::value_ptr(toLight));
 
   glUseProgram(program_.id());
   glBindVertexArray(layout_.id());

@@ -34,8 +34,8 @@ ImageTolerance loosened(ImageTolerance tolerance) {
   }
   if (!std::filesystem::exists(golden)) {
     saveImage(testOutputDir() / (name + "_actual.png"), actual);
-    return ::testing::AssertionFailure() << "missing golden " << golden
-                                         << " (create it on purpose with tools/update-goldens.sh)";
+    return ::testing::AssertionFailure()
+           << "missing golden " << golden << " (create it on purpose with tools/update-goldens.sh)";
   }
   const ImageComparison cmp = compareImages(actual, loadImage(golden), tolerance);
   if (cmp.matches) return ::testing::AssertionSuccess();

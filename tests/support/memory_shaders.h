@@ -9,10 +9,11 @@
 namespace terrasol::testing {
 
 inline ShaderPreprocessor memoryShaders(std::map<std::string, std::string> files) {
-  return ShaderPreprocessor([files = std::move(files)](const std::string& path) -> std::optional<std::string> {
-    const auto it = files.find(path);
-    return it == files.end() ? std::nullopt : std::optional(it->second);
-  });
+  return ShaderPreprocessor(
+      [files = std::move(files)](const std::string& path) -> std::optional<std::string> {
+        const auto it = files.find(path);
+        return it == files.end() ? std::nullopt : std::optional(it->second);
+      });
 }
 
 }  // namespace terrasol::testing

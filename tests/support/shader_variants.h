@@ -11,7 +11,8 @@
 
 namespace terrasol::testing {
 
-inline ::testing::AssertionResult builtVariant(SceneRenderer& r, const std::string& name, bool withMoreDefines) {
+inline ::testing::AssertionResult builtVariant(SceneRenderer& r, const std::string& name,
+                                               bool withMoreDefines) {
   std::string list;
   for (const std::string& v : r.renderer().shaderVariants()) {
     if (v == name || (withMoreDefines && v.starts_with(name + "+"))) {
@@ -19,7 +20,8 @@ inline ::testing::AssertionResult builtVariant(SceneRenderer& r, const std::stri
     }
     list += "\n  " + v;
   }
-  return ::testing::AssertionFailure() << "no variant " << name << (withMoreDefines ? "[+...]" : "") << "; built:" << list;
+  return ::testing::AssertionFailure()
+         << "no variant " << name << (withMoreDefines ? "[+...]" : "") << "; built:" << list;
 }
 
 // Exactly this variant.

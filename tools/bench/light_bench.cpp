@@ -22,9 +22,10 @@ struct Scene : bench::LitArea {
 
 void report(benchmark::State& state, const LightStats& stats) {
   state.counters["block_reads_per_set"] =
-      stats.lightWrites ? static_cast<double>(stats.blockReads) / static_cast<double>(stats.lightWrites) : 0.0;
-  state.counters["sets_per_op"] = benchmark::Counter(static_cast<double>(stats.lightWrites),
-                                                     benchmark::Counter::kAvgIterations);
+      stats.lightWrites ? static_cast<double>(stats.blockReads) / static_cast<double>(stats.lightWrites)
+                        : 0.0;
+  state.counters["sets_per_op"] =
+      benchmark::Counter(static_cast<double>(stats.lightWrites), benchmark::Counter::kAvgIterations);
 }
 
 // Times only `op`; `undo` restores the scene between iterations, untimed.
@@ -49,7 +50,14 @@ void timed(benchmark::State& state, Scene& scene, Op op, Undo undo) {
 void BM_LightTorchPlace(benchmark::State& state) {
   Scene scene("flat");
   const BlockId torch = blocks().id("torch");
-  timed(state, scene, [&] { scene.set({8, 64, 8}, torch); }, [&] { scene.set({8, 64, 8}, kAir); });
+  timed(
+      state, scene,
+      [&] {
+        scene.set({8, 64, 8}, torch);
+      },
+      [&] {
+        scene.set({8, 64, 8}, kAir);
+      });
 }
 BENCHMARK(BM_LightTorchPlace)->UseManualTime()->Unit(benchmark::kMicrosecond);
 
@@ -57,7 +65,14 @@ void BM_LightTorchRemove(benchmark::State& state) {
   Scene scene("flat");
   const BlockId torch = blocks().id("torch");
   scene.set({8, 64, 8}, torch);
-  timed(state, scene, [&] { scene.set({8, 64, 8}, kAir); }, [&] { scene.set({8, 64, 8}, torch); });
+  timed(
+      state, scene,
+      [&] {
+        scene.set({8, 64, 8}, kAir);
+      },
+      [&] {
+        scene.set({8, 64, 8}, torch);
+      });
 }
 BENCHMARK(BM_LightTorchRemove)->UseManualTime()->Unit(benchmark::kMicrosecond);
 
@@ -65,7 +80,14 @@ BENCHMARK(BM_LightTorchRemove)->UseManualTime()->Unit(benchmark::kMicrosecond);
 void BM_LightGlowstoneOpenAir(benchmark::State& state) {
   Scene scene("void");
   const BlockId glowstone = blocks().id("glowstone");
-  timed(state, scene, [&] { scene.set({8, 100, 8}, glowstone); }, [&] { scene.set({8, 100, 8}, kAir); });
+  timed(
+      state, scene,
+      [&] {
+        scene.set({8, 100, 8}, glowstone);
+      },
+      [&] {
+        scene.set({8, 100, 8}, kAir);
+      });
 }
 BENCHMARK(BM_LightGlowstoneOpenAir)->UseManualTime()->Unit(benchmark::kMicrosecond);
 
@@ -81,7 +103,8 @@ void BM_LightFullRelight(benchmark::State& state) {
     light.sky[static_cast<std::size_t>(section.section)].fill(0);
   };
   clear();
-  timed(state, scene, [&] { scene.light.relightSection(section); }, clear);
+  timed(
+      state, scene, [&] { scene.light.relightSection(section); }, clear);
   state.counters["surface_y"] = surface;
 }
 BENCHMARK(BM_LightFullRelight)->UseManualTime()->Unit(benchmark::kMicrosecond);
@@ -90,14 +113,22 @@ BENCHMARK(BM_LightFullRelight)->UseManualTime()->Unit(benchmark::kMicrosecond);
 void BM_LightRelightUnchanged(benchmark::State& state) {
   Scene scene("terrain");
   const SectionPos section{0, sectionOf(scene.gen->surfaceHeight(8, 8)), 0};
-  timed(state, scene, [&] { scene.light.relightSection(section); }, [] {});
+  timed(
+      state, scene, [&] { scene.light.relightSection(section); }, [] {});
 }
 BENCHMARK(BM_LightRelightUnchanged)->UseManualTime()->Unit(benchmark::kMicrosecond);
 
 // Lighting a whole terrain chunk as it loads, next to lit neighbours.
 void BM_LightChunkLoad(benchmark::State& state) {
   Scene scene("terrain");
-  timed(state, scene, [&] { scene.light.chunkLoaded({0, 0}); }, [&] { scene.light.chunkUnloading({0, 0}); });
+  timed(
+      state, scene,
+      [&] {
+        scene.light.chunkLoaded({0, 0});
+      },
+      [&] {
+        scene.light.chunkUnloading({0, 0});
+      });
 }
 BENCHMARK(BM_LightChunkLoad)->UseManualTime()->Unit(benchmark::kMicrosecond);
 
@@ -111,7 +142,14 @@ void BM_LightSealedTorch(benchmark::State& state) {
   Scene scene("flat");
   const BlockId torch = blocks().id("torch");
   scene.set({8, 40, 8}, kAir);
-  timed(state, scene, [&] { scene.set({8, 40, 8}, torch); }, [&] { scene.set({8, 40, 8}, kAir); });
+  timed(
+      state, scene,
+      [&] {
+        scene.set({8, 40, 8}, torch);
+      },
+      [&] {
+        scene.set({8, 40, 8}, kAir);
+      });
 }
 BENCHMARK(BM_LightSealedTorch)->UseManualTime()->Unit(benchmark::kMicrosecond);
 }  // namespace

@@ -46,14 +46,21 @@ int run(int argc, char** argv) {
       if (i + 1 >= argc) throw Error(arg + ": missing value");
       return argv[++i];
     };
-    if (arg == "--region") region = parseRegion(value());
-    else if (arg == "--out") out = value();
-    else if (arg == "--pack") extraPacks.emplace_back(value());
-    else if (input.empty() && !arg.starts_with("--")) input = arg;
-    else throw Error("unknown argument '" + arg + "'");
+    if (arg == "--region")
+      region = parseRegion(value());
+    else if (arg == "--out")
+      out = value();
+    else if (arg == "--pack")
+      extraPacks.emplace_back(value());
+    else if (input.empty() && !arg.starts_with("--"))
+      input = arg;
+    else
+      throw Error("unknown argument '" + arg + "'");
   }
   if (input.empty() || !region || out.empty()) {
-    throw Error("usage: terrasol-export WORLD_DIR|SCENE.json --region x0,y0,z0,x1,y1,z1 --out region.glb [--pack PATH]...");
+    throw Error(
+        "usage: terrasol-export WORLD_DIR|SCENE.json --region x0,y0,z0,x1,y1,z1 --out region.glb [--pack "
+        "PATH]...");
   }
   const BlockRegistry blocks = BlockRegistry::fromFile(resourcePackDir() / "default" / "blocks.json");
   const glm::ivec3 centre = (region->min + region->max) / 2;
@@ -81,7 +88,8 @@ int run(int argc, char** argv) {
     const SceneWorld world(*scene, blocks);
     meshes = meshRegion(world.world(), *region, table);
   } else {
-    if (!std::filesystem::exists(input / "level.json")) throw Error(input.string() + ": not a world (no level.json)");
+    if (!std::filesystem::exists(input / "level.json"))
+      throw Error(input.string() + ": not a world (no level.json)");
     const BlockShapes shapes = defaultPackShapes(blocks);
     StreamedWorld world(input, 0, blocks, table, radius, 2, &shapes);
     const ChunkPos chunk = ChunkPos::of({centre.x, 0, centre.z});
@@ -94,8 +102,8 @@ int run(int argc, char** argv) {
     meshes = meshRegion(world.world(), *region, table);
   }
   const ExportStats stats = exportRegion(meshes, *region, atlas, colormaps, out);
-  std::printf("terrasol-export: %zu quads (%zu vertices, %zu triangles) from %zu sections written to %s\n", stats.quads,
-              stats.vertices, stats.triangles, meshes.size(), out.string().c_str());
+  std::printf("terrasol-export: %zu quads (%zu vertices, %zu triangles) from %zu sections written to %s\n",
+              stats.quads, stats.vertices, stats.triangles, meshes.size(), out.string().c_str());
   return 0;
 }
 

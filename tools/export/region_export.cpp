@@ -4,7 +4,6 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
-
 #include <glm/common.hpp>
 
 #include "core/error.h"
@@ -21,7 +20,8 @@ constexpr float kBlocksPer32 = 1.0f / 32.0f;
 
 glm::vec3 quadCorner(const SectionPos& s, const PackedVertex& v) {
   return glm::vec3(s.x * 16, kMinY + s.section * 16, s.z * 16) +
-         glm::vec3(static_cast<float>(v.x32()), static_cast<float>(v.y32()), static_cast<float>(v.z32())) * kBlocksPer32;
+         glm::vec3(static_cast<float>(v.x32()), static_cast<float>(v.y32()), static_cast<float>(v.z32())) *
+             kBlocksPer32;
 }
 
 // The PNG bytes of an image (through a file: OpenImageIO writes files).
@@ -80,7 +80,8 @@ glm::ivec3 quadBlock(const SectionPos& section, const PackedVertex* quad) {
 std::vector<SectionMesh> meshRegion(const World& world, const Region& region, const BlockMeshTable& table) {
   std::vector<SectionMesh> meshes;
   SectionSnapshot snapshot;
-  const int s0 = sectionOf(std::clamp(region.min.y, kMinY, kMaxY - 1)), s1 = sectionOf(std::clamp(region.max.y, kMinY, kMaxY - 1));
+  const int s0 = sectionOf(std::clamp(region.min.y, kMinY, kMaxY - 1)),
+            s1 = sectionOf(std::clamp(region.max.y, kMinY, kMaxY - 1));
   for (int cz = chunkOf(region.min.z); cz <= chunkOf(region.max.z); ++cz)
     for (int cx = chunkOf(region.min.x); cx <= chunkOf(region.max.x); ++cx)
       for (int s = s0; s <= s1; ++s) {
@@ -90,8 +91,9 @@ std::vector<SectionMesh> meshRegion(const World& world, const Region& region, co
   return meshes;
 }
 
-ExportStats exportRegion(const std::vector<SectionMesh>& meshes, const Region& region, const BlockAtlas& atlas,
-                         const BiomeColormaps& colormaps, const std::filesystem::path& file) {
+ExportStats exportRegion(const std::vector<SectionMesh>& meshes, const Region& region,
+                         const BlockAtlas& atlas, const BiomeColormaps& colormaps,
+                         const std::filesystem::path& file) {
   const glm::vec3 origin(region.min);
   LayerData layers[kMeshLayers];
   ExportStats stats;
@@ -111,16 +113,18 @@ ExportStats exportRegion(const std::vector<SectionMesh>& meshes, const Region& r
           out.positions.insert(out.positions.end(), {pos.x, pos.y, pos.z});
           out.normals.insert(out.normals.end(), {basis.normal[0], basis.normal[1], basis.normal[2]});
           const int texture = std::min(p.texture(), static_cast<int>(atlas.atlas.textures.size()) - 1);
-          const glm::vec4 rect = atlas.atlas.tileRect(texture >= 0 ? atlas.atlas.textures[static_cast<std::size_t>(texture)].firstTile : 0);
+          const glm::vec4 rect = atlas.atlas.tileRect(
+              texture >= 0 ? atlas.atlas.textures[static_cast<std::size_t>(texture)].firstTile : 0);
           out.uvs.push_back(rect.x + (rect.z - rect.x) * static_cast<float>(p.u()) / 16.0f);
           out.uvs.push_back(rect.y + (rect.w - rect.y) * static_cast<float>(p.v()) / 16.0f);
-          const glm::vec3 tint = tintColour(colormaps, static_cast<Tint>(p.tint()),
-                                            {static_cast<std::uint8_t>(p.tintTemperature()),
-                                             static_cast<std::uint8_t>(p.tintDownfall())});
+          const glm::vec3 tint = tintColour(
+              colormaps, static_cast<Tint>(p.tint()),
+              {static_cast<std::uint8_t>(p.tintTemperature()), static_cast<std::uint8_t>(p.tintDownfall())});
           const glm::vec3 c = tint * (0.4f + 0.6f * static_cast<float>(p.ao()) / 3.0f);
           out.colors.insert(out.colors.end(), {c.r, c.g, c.b});
         }
-        for (const std::uint32_t i : {0u, 1u, 2u, 0u, 2u, 3u}) out.indices.push_back(base + i);  // mesh_data.h's quads
+        for (const std::uint32_t i : {0u, 1u, 2u, 0u, 2u, 3u})
+          out.indices.push_back(base + i);  // mesh_data.h's quads
         ++stats.quads;
       }
     }
@@ -161,17 +165,22 @@ ExportStats exportRegion(const std::vector<SectionMesh>& meshes, const Region& r
     tinygltf::Primitive p;
     p.mode = TINYGLTF_MODE_TRIANGLES;
     p.material = static_cast<int>(m.materials.size()) - 1;
-    p.attributes["POSITION"] = addAccessor(m, addView(m, d.positions.data(), d.positions.size() * 4, TINYGLTF_TARGET_ARRAY_BUFFER),
-                                           TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, n,
-                                           {d.lo.x, d.lo.y, d.lo.z}, {d.hi.x, d.hi.y, d.hi.z});
-    p.attributes["NORMAL"] = addAccessor(m, addView(m, d.normals.data(), d.normals.size() * 4, TINYGLTF_TARGET_ARRAY_BUFFER),
-                                         TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, n);
-    p.attributes["TEXCOORD_0"] = addAccessor(m, addView(m, d.uvs.data(), d.uvs.size() * 4, TINYGLTF_TARGET_ARRAY_BUFFER),
-                                             TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC2, n);
-    p.attributes["COLOR_0"] = addAccessor(m, addView(m, d.colors.data(), d.colors.size() * 4, TINYGLTF_TARGET_ARRAY_BUFFER),
-                                          TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, n);
-    p.indices = addAccessor(m, addView(m, d.indices.data(), d.indices.size() * 4, TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER),
-                            TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TYPE_SCALAR, d.indices.size());
+    p.attributes["POSITION"] =
+        addAccessor(m, addView(m, d.positions.data(), d.positions.size() * 4, TINYGLTF_TARGET_ARRAY_BUFFER),
+                    TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, n, {d.lo.x, d.lo.y, d.lo.z},
+                    {d.hi.x, d.hi.y, d.hi.z});
+    p.attributes["NORMAL"] =
+        addAccessor(m, addView(m, d.normals.data(), d.normals.size() * 4, TINYGLTF_TARGET_ARRAY_BUFFER),
+                    TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, n);
+    p.attributes["TEXCOORD_0"] =
+        addAccessor(m, addView(m, d.uvs.data(), d.uvs.size() * 4, TINYGLTF_TARGET_ARRAY_BUFFER),
+                    TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC2, n);
+    p.attributes["COLOR_0"] =
+        addAccessor(m, addView(m, d.colors.data(), d.colors.size() * 4, TINYGLTF_TARGET_ARRAY_BUFFER),
+                    TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, n);
+    p.indices = addAccessor(
+        m, addView(m, d.indices.data(), d.indices.size() * 4, TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER),
+        TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TYPE_SCALAR, d.indices.size());
     mesh.primitives.push_back(p);
     stats.vertices += n;
     stats.triangles += d.indices.size() / 3;

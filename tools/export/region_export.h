@@ -5,9 +5,8 @@
 // (OPAQUE, MASK for cutout, BLEND for translucent). Opens in Blender or any glTF viewer.
 
 #include <filesystem>
-#include <vector>
-
 #include <glm/vec3.hpp>
+#include <vector>
 
 #include "assets/tints.h"
 #include "mesh/mesher.h"
@@ -33,7 +32,8 @@ struct ExportStats {
 };
 
 // Writes `meshes` (sections covering the region) clipped to `region`. Throws Error naming the file.
-ExportStats exportRegion(const std::vector<SectionMesh>& meshes, const Region& region, const BlockAtlas& atlas,
-                         const BiomeColormaps& colormaps, const std::filesystem::path& file);
+ExportStats exportRegion(const std::vector<SectionMesh>& meshes, const Region& region,
+                         const BlockAtlas& atlas, const BiomeColormaps& colormaps,
+                         const std::filesystem::path& file);
 
 }  // namespace terrasol

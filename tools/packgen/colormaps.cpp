@@ -24,7 +24,8 @@ Image blend(const Corners& c) {
       const float d = std::min(1.0f - static_cast<float>(y) / 255.0f, t);
       const glm::vec3 colour = c.cold * (1.0f - t) + c.hotDry * (t - d) + c.hotWet * d;
       std::uint8_t* p = map.pixel(x, y);
-      for (int i = 0; i < 3; ++i) p[i] = static_cast<std::uint8_t>(std::clamp(std::lround(colour[i]), 0l, 255l));
+      for (int i = 0; i < 3; ++i)
+        p[i] = static_cast<std::uint8_t>(std::clamp(std::lround(colour[i]), 0l, 255l));
       p[3] = 255;
     }
   return map;

@@ -1,28 +1,30 @@
 #include "packgen.h"
 
-#include "recipes.h"
-
 #include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <functional>
-
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
 #include "assets/labpbr.h"
+#include "recipes.h"
 #include "world/noise.h"
 
 namespace terrasol::packgen {
 
-float hash01(std::uint64_t seed, int x, int y, int z) { return static_cast<float>(unitFloat(hashCoords(seed, x, y, z))); }
+float hash01(std::uint64_t seed, int x, int y, int z) {
+  return static_cast<float>(unitFloat(hashCoords(seed, x, y, z)));
+}
 
 // Tileable value noise over a 16-texel period, `cells` cells per period.
 float tileNoise(std::uint64_t seed, float x, float y, int cells, int frame) {
   const float cx = x * cells / kSize, cy = y * cells / kSize;
   const int x0 = static_cast<int>(std::floor(cx)), y0 = static_cast<int>(std::floor(cy));
   const float fx = cx - x0, fy = cy - y0;
-  auto at = [&](int i, int j) { return hash01(seed, ((i % cells) + cells) % cells, ((j % cells) + cells) % cells, frame); };
+  auto at = [&](int i, int j) {
+    return hash01(seed, ((i % cells) + cells) % cells, ((j % cells) + cells) % cells, frame);
+  };
   auto smooth = [](float t) { return t * t * (3.0f - 2.0f * t); };
   const float a = at(x0, y0) + (at(x0 + 1, y0) - at(x0, y0)) * smooth(fx);
   const float b = at(x0, y0 + 1) + (at(x0 + 1, y0 + 1) - at(x0, y0 + 1)) * smooth(fx);
@@ -42,20 +44,25 @@ Cells voronoi(std::uint64_t seed, int x, int y, int count) {
       for (int ox = -1; ox <= 1; ++ox) {
         const float dx = x + 0.5f - (px + ox * kSize), dy = y + 0.5f - (py + oy * kSize);
         const float d = std::sqrt(dx * dx + dy * dy);
-        if (d < c.d1) c.d2 = c.d1, c.d1 = d, c.id = i;
-        else if (d < c.d2) c.d2 = d;
+        if (d < c.d1)
+          c.d2 = c.d1, c.d1 = d, c.id = i;
+        else if (d < c.d2)
+          c.d2 = d;
       }
   }
   return c;
 }
 
-glm::vec3 rgb(int r, int g, int b) { return glm::vec3(r, g, b) / 255.0f; }
+glm::vec3 rgb(int r, int g, int b) {
+  return glm::vec3(r, g, b) / 255.0f;
+}
 
 Canvas paint(int frames, const std::function<Texel(int x, int y, int frame)>& f) {
   Canvas canvas(static_cast<std::size_t>(kSize * kSize * frames));
   for (int fr = 0; fr < frames; ++fr)
     for (int y = 0; y < kSize; ++y)
-      for (int x = 0; x < kSize; ++x) canvas[static_cast<std::size_t>((fr * kSize + y) * kSize + x)] = f(x, y, fr);
+      for (int x = 0; x < kSize; ++x)
+        canvas[static_cast<std::size_t>((fr * kSize + y) * kSize + x)] = f(x, y, fr);
   return canvas;
 }
 
@@ -71,7 +78,9 @@ Texel rock(std::uint64_t seed, int x, int y, glm::vec3 base, float contrast) {
   return t;
 }
 
-Texel stone(int x, int y) { return rock(11, x, y, rgb(125, 125, 125), 0.18f); }
+Texel stone(int x, int y) {
+  return rock(11, x, y, rgb(125, 125, 125), 0.18f);
+}
 
 Texel cobblestone(int x, int y) {
   const Cells c = voronoi(21, x, y, 7);
@@ -91,7 +100,9 @@ Texel dirt(int x, int y) {
   return t;
 }
 
-Texel ore(int x, int y, std::uint64_t seed, glm::vec3 speck, int specular) { return oreIn(x, y, seed, speck, specular, stone); }
+Texel ore(int x, int y, std::uint64_t seed, glm::vec3 speck, int specular) {
+  return oreIn(x, y, seed, speck, specular, stone);
+}
 
 Texel oreIn(int x, int y, std::uint64_t seed, glm::vec3 speck, int specular, Texel (*ground)(int, int)) {
   Texel t = ground(x, y);
@@ -118,7 +129,9 @@ Texel metalBlock(int x, int y, glm::vec3 base, int metal, int smoothness) {
   return t;
 }
 
-Texel planks(int x, int y) { return planksOf(x, y, rgb(162, 130, 78)); }
+Texel planks(int x, int y) {
+  return planksOf(x, y, rgb(162, 130, 78));
+}
 
 Texel planksOf(int x, int y, glm::vec3 colour) {
   const int board = y / 4;
@@ -132,7 +145,9 @@ Texel planksOf(int x, int y, glm::vec3 colour) {
   return t;
 }
 
-Texel logSide(int x, int y) { return logSideOf(x, y, rgb(109, 85, 50)); }
+Texel logSide(int x, int y) {
+  return logSideOf(x, y, rgb(109, 85, 50));
+}
 
 Texel logSideOf(int x, int y, glm::vec3 bark) {
   const float stripe = tileNoise(61, x * 1.0f, y * 0.25f, 8);
@@ -144,7 +159,9 @@ Texel logSideOf(int x, int y, glm::vec3 bark) {
   return t;
 }
 
-Texel logTop(int x, int y) { return logTopOf(x, y, rgb(109, 85, 50), rgb(176, 143, 88)); }
+Texel logTop(int x, int y) {
+  return logTopOf(x, y, rgb(109, 85, 50), rgb(176, 143, 88));
+}
 
 Texel logTopOf(int x, int y, glm::vec3 bark, glm::vec3 wood) {
   const float dx = x - 7.5f, dy = y - 7.5f, r = std::sqrt(dx * dx + dy * dy);
@@ -157,7 +174,9 @@ Texel logTopOf(int x, int y, glm::vec3 bark, glm::vec3 wood) {
   return t;
 }
 
-Texel leaves(int x, int y) { return leavesOf(x, y, 71); }
+Texel leaves(int x, int y) {
+  return leavesOf(x, y, 71);
+}
 
 Texel leavesOf(int x, int y, std::uint64_t seed) {
   const float n = fbm(seed, static_cast<float>(x), static_cast<float>(y));
@@ -190,13 +209,16 @@ Texel plant(int x, int y, std::uint64_t seed, glm::vec3 flower) {
   const bool leaf = (y == 11 && (x == 6 || x == 8)) || (y == 10 && (x == 5 || x == 9));
   if (flower.r >= 0.0f) {
     const float dx = x - 7.0f, dy = y - 4.5f;
-    if (dx * dx + dy * dy < 7.0f) t.color = flower * (0.85f + 0.3f * hash01(seed, x, y)), t.alpha = 1.0f;
-    else if (stem || leaf) t.color = rgb(70, 130, 40), t.alpha = 1.0f;
+    if (dx * dx + dy * dy < 7.0f)
+      t.color = flower * (0.85f + 0.3f * hash01(seed, x, y)), t.alpha = 1.0f;
+    else if (stem || leaf)
+      t.color = rgb(70, 130, 40), t.alpha = 1.0f;
     return t;
   }
   // Grass blades: grey, tinted by the grass colour.
   const float blade = hash01(seed, x, 0);
-  if (y > 16 - 4 - static_cast<int>(blade * 11) && blade > 0.35f) t.color = glm::vec3(0.55f + 0.4f * blade), t.alpha = 1.0f;
+  if (y > 16 - 4 - static_cast<int>(blade * 11) && blade > 0.35f)
+    t.color = glm::vec3(0.55f + 0.4f * blade), t.alpha = 1.0f;
   return t;
 }
 
@@ -233,7 +255,8 @@ Texel liquid(int x, int y, int frame, bool lava, bool flowing) {
 Texel torch(int x, int y) {
   Texel t;
   t.alpha = 0.0f;
-  if ((x == 7 || x == 8) && y >= 9 && y <= 15) t.color = rgb(110, 80, 45) * (x == 7 ? 1.0f : 0.8f), t.alpha = 1.0f;
+  if ((x == 7 || x == 8) && y >= 9 && y <= 15)
+    t.color = rgb(110, 80, 45) * (x == 7 ? 1.0f : 0.8f), t.alpha = 1.0f;
   if ((x == 7 || x == 8) && y >= 6 && y <= 8) {
     t.color = y == 6 ? rgb(255, 240, 170) : rgb(255, 170, 50);
     t.alpha = 1.0f;
@@ -247,7 +270,9 @@ namespace {
 
 // --- encoding ------------------------------------------------------------------------------------
 
-std::uint8_t byte(float v) { return static_cast<std::uint8_t>(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f)); }
+std::uint8_t byte(float v) {
+  return static_cast<std::uint8_t>(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f));
+}
 
 GeneratedTexture encode(const std::string& name, const Canvas& c, int frames, int frametime) {
   const int h = kSize * frames;
@@ -267,7 +292,8 @@ GeneratedTexture encode(const std::string& name, const Canvas& c, int frames, in
       const float ao = std::clamp(1.0f - 2.0f * std::max(0.0f, around - t.height), 0.3f, 1.0f);
       std::uint8_t* a = g.albedo.pixel(x, y);
       a[0] = byte(t.color.r), a[1] = byte(t.color.g), a[2] = byte(t.color.b), a[3] = byte(t.alpha);
-      labpbr::encodeNormal(glm::normalize(n), ao, 0.25f * (1.0f - std::max(t.height, 1.0f / 255.0f)), g.normal.pixel(x, y));
+      labpbr::encodeNormal(glm::normalize(n), ao, 0.25f * (1.0f - std::max(t.height, 1.0f / 255.0f)),
+                           g.normal.pixel(x, y));
       std::uint8_t* s = g.specular.pixel(x, y);
       s[0] = static_cast<std::uint8_t>(std::clamp(t.smoothness, 0, 255));
       s[1] = static_cast<std::uint8_t>(std::clamp(t.f0, 0, 255));
@@ -275,7 +301,8 @@ GeneratedTexture encode(const std::string& name, const Canvas& c, int frames, in
       s[3] = static_cast<std::uint8_t>(std::clamp(t.emission, 0, 255));
     }
   if (frames > 1) {
-    g.mcmeta = "{\n  \"animation\": {\n    \"frametime\": " + std::to_string(frametime) + ",\n    \"interpolate\": true\n  }\n}\n";
+    g.mcmeta = "{\n  \"animation\": {\n    \"frametime\": " + std::to_string(frametime) +
+               ",\n    \"interpolate\": true\n  }\n}\n";
   }
   return g;
 }
@@ -343,15 +370,22 @@ std::vector<GeneratedTexture> generateDefaultTextures() {
   out.push_back(still("coal_ore", [](int x, int y) { return ore(x, y, 181, rgb(45, 45, 45), 12); }));
   out.push_back(still("iron_ore", [](int x, int y) { return ore(x, y, 182, rgb(216, 175, 147), 230); }));
   out.push_back(still("gold_ore", [](int x, int y) { return ore(x, y, 183, rgb(250, 220, 80), 231); }));
-  out.push_back(still("iron_block", [](int x, int y) { return metalBlock(x, y, rgb(220, 220, 220), 230, 210); }));
-  out.push_back(still("gold_block", [](int x, int y) { return metalBlock(x, y, rgb(250, 210, 60), 231, 230); }));
-  out.push_back(still("copper_block", [](int x, int y) { return metalBlock(x, y, rgb(192, 107, 79), 234, 190); }));
+  out.push_back(
+      still("iron_block", [](int x, int y) { return metalBlock(x, y, rgb(220, 220, 220), 230, 210); }));
+  out.push_back(
+      still("gold_block", [](int x, int y) { return metalBlock(x, y, rgb(250, 210, 60), 231, 230); }));
+  out.push_back(
+      still("copper_block", [](int x, int y) { return metalBlock(x, y, rgb(192, 107, 79), 234, 190); }));
   out.push_back(still("glowstone", glowstone));
   out.push_back(still("torch", torch));
-  out.push_back(encode("water_still", paint(8, [](int x, int y, int f) { return liquid(x, y, f, false, false); }), 8, 3));
-  out.push_back(encode("water_flow", paint(8, [](int x, int y, int f) { return liquid(x, y, f, false, true); }), 8, 2));
-  out.push_back(encode("lava_still", paint(8, [](int x, int y, int f) { return liquid(x, y, f, true, false); }), 8, 4));
-  out.push_back(encode("lava_flow", paint(8, [](int x, int y, int f) { return liquid(x, y, f, true, true); }), 8, 3));
+  out.push_back(encode("water_still",
+                       paint(8, [](int x, int y, int f) { return liquid(x, y, f, false, false); }), 8, 3));
+  out.push_back(
+      encode("water_flow", paint(8, [](int x, int y, int f) { return liquid(x, y, f, false, true); }), 8, 2));
+  out.push_back(
+      encode("lava_still", paint(8, [](int x, int y, int f) { return liquid(x, y, f, true, false); }), 8, 4));
+  out.push_back(
+      encode("lava_flow", paint(8, [](int x, int y, int f) { return liquid(x, y, f, true, true); }), 8, 3));
   addCraftedTextures(out);
   addFamilyTextures(out);
   return out;

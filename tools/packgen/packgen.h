@@ -4,19 +4,18 @@
 // program writes the same pixels, so the committed pack can be checked against it.
 
 #include <filesystem>
+#include <glm/vec3.hpp>
 #include <string>
 #include <vector>
-
-#include <glm/vec3.hpp>
 
 #include "assets/image.h"
 
 namespace terrasol::packgen {
 
 struct GeneratedTexture {
-  std::string name;           // file name without ".png"
+  std::string name;  // file name without ".png"
   Image albedo, normal, specular;
-  std::string mcmeta;         // "" when not animated
+  std::string mcmeta;  // "" when not animated
 };
 
 std::vector<GeneratedTexture> generateDefaultTextures();

@@ -1,26 +1,26 @@
 // terrasol-render: renders a scene file headless (EGL), one PNG per frame of its camera path.
 //
 //   terrasol-render SCENE.json --out DIR [--set KEY=VALUE]... [--compare GOLDEN_DIR [--update-goldens]]
-//                   [--threshold X] [--max-failing PERCENT] [--report FILE.json] [--timings] [--no-images] [--game-shadows]
+//                   [--threshold X] [--max-failing PERCENT] [--report FILE.json] [--timings] [--no-images]
+//                   [--game-shadows]
 //
 // Exit status: 0 done (and every frame matched); 1 a frame differs from its golden, a golden is
 // missing, or rendering failed; 2 bad arguments or a bad scene (nothing is written then).
 
 #include <cstdio>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <random>
 #include <string>
-
-#include <nlohmann/json.hpp>
 
 #include "core/error.h"
 #include "core/tool_main.h"
 #include "platform/egl/egl_context.h"
 #include "progress.h"
 #include "render/gl/program.h"
-#include "scene_render/scene_render.h"
 #include "scene_render/reflection_truth.h"
+#include "scene_render/scene_render.h"
 #include "scene_render/shadow_truth.h"
 #include "sweep.h"
 
@@ -77,19 +77,32 @@ Options parseOptions(int argc, char** argv) {
   };
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
-    if (arg == "--out") o.out = value(i, arg);
-    else if (arg == "--set") o.overrides.push_back(value(i, arg));
-    else if (arg == "--compare") o.compare = value(i, arg);
-    else if (arg == "--update-goldens") o.updateGoldens = true;
-    else if (arg == "--threshold") o.threshold = numberArgument(arg, value(i, arg));
-    else if (arg == "--max-failing") o.maxFailing = numberArgument(arg, value(i, arg));
-    else if (arg == "--report") o.report = value(i, arg);
-    else if (arg == "--timings") o.timings = true;
-    else if (arg == "--no-images") o.noImages = true;
-    else if (arg == "--game-shadows") o.gameShadows = true;
-    else if (arg == "--sweep") o.sweeps.push_back(parseSweep(value(i, arg)));
-    else if (!arg.empty() && arg[0] != '-' && o.scene.empty()) o.scene = arg;
-    else throw UsageError("unknown argument \"" + arg + "\"");
+    if (arg == "--out")
+      o.out = value(i, arg);
+    else if (arg == "--set")
+      o.overrides.push_back(value(i, arg));
+    else if (arg == "--compare")
+      o.compare = value(i, arg);
+    else if (arg == "--update-goldens")
+      o.updateGoldens = true;
+    else if (arg == "--threshold")
+      o.threshold = numberArgument(arg, value(i, arg));
+    else if (arg == "--max-failing")
+      o.maxFailing = numberArgument(arg, value(i, arg));
+    else if (arg == "--report")
+      o.report = value(i, arg);
+    else if (arg == "--timings")
+      o.timings = true;
+    else if (arg == "--no-images")
+      o.noImages = true;
+    else if (arg == "--game-shadows")
+      o.gameShadows = true;
+    else if (arg == "--sweep")
+      o.sweeps.push_back(parseSweep(value(i, arg)));
+    else if (!arg.empty() && arg[0] != '-' && o.scene.empty())
+      o.scene = arg;
+    else
+      throw UsageError("unknown argument \"" + arg + "\"");
   }
   if (o.scene.empty() || o.out.empty()) throw UsageError("a scene and --out DIR are required");
   if (o.updateGoldens && o.compare.empty()) throw UsageError("--update-goldens needs --compare GOLDEN_DIR");
@@ -105,7 +118,8 @@ std::string frameName(const char* prefix, int frame) {
 // The frame's shadows against ray-traced truth, and their flicker: the same frame again with the shadow
 // map placed as if the camera had moved by a random fraction of a texel (the sun frozen, the view kept,
 // so every pixel shows the same world point in both).
-nlohmann::json shadowReport(SceneRenderer& renderer, int index, const RenderedFrame& frame, const FrameRequest& request) {
+nlohmann::json shadowReport(SceneRenderer& renderer, int index, const RenderedFrame& frame,
+                            const FrameRequest& request) {
   const float distance = renderer.scene().shadow.distance;
   const ShadowError error = measureShadowError(renderer.world(), frame.pixels, frame.geometry, distance);
   std::mt19937 random(static_cast<std::uint32_t>(index) * 2654435761u + 1u);
@@ -114,7 +128,8 @@ nlohmann::json shadowReport(SceneRenderer& renderer, int index, const RenderedFr
   moved.timed = false;
   moved.readBack = true;
   const double texel = frame.geometry.shadowTexelWorld;
-  moved.shadowCentreOffset = glm::dvec3(within(random) * texel, within(random) * texel, within(random) * texel);
+  moved.shadowCentreOffset =
+      glm::dvec3(within(random) * texel, within(random) * texel, within(random) * texel);
   const RenderedFrame again = renderer.renderFrame(index, moved);
   std::size_t compared = 0;
   const double flicker = flickerPercent(frame.pixels, again.pixels, frame.geometry, distance, compared);
@@ -150,7 +165,8 @@ nlohmann::json frameReport(int index, const RenderedFrame& frame) {
 }
 
 // One line per frame; true when it matches (or the golden was written on purpose).
-bool compareFrame(const Options& o, const SceneFile& scene, int index, const Image& image, Progress& progress) {
+bool compareFrame(const Options& o, const SceneFile& scene, int index, const Image& image,
+                  Progress& progress) {
   const auto golden = o.compare / frameName("frame", index);
   if (o.updateGoldens) {
     saveImage(golden, image);
@@ -165,7 +181,8 @@ bool compareFrame(const Options& o, const SceneFile& scene, int index, const Ima
                                  o.maxFailing.value_or(scene.compare.maxFailingPercent)};
   const ImageComparison c = compareImages(image, loadImage(golden), tolerance);
   char detail[160];
-  std::snprintf(detail, sizeof detail, "%.3f %% of pixels over %.1f/255 (allowed %.3f %%), max difference %.1f/255",
+  std::snprintf(detail, sizeof detail,
+                "%.3f %% of pixels over %.1f/255 (allowed %.3f %%), max difference %.1f/255",
                 c.failingPercent, tolerance.pixel * 255.0, tolerance.percent, c.maxError * 255.0);
   if (c.matches) {
     progress.line(frameName("frame", index) + ": ok, " + detail);
@@ -201,21 +218,24 @@ int renderScene(const Options& o, const SceneFile& scene, SceneRenderer& rendere
     if (!o.noImages) saveImage(o.out / frameName("frame", i), frame.image);
     if (!o.report.empty()) {
       frames.push_back(frameReport(i, frame));
-      if (frame.geometry.shadowMapShown) frames.back()["shadow_error"] = shadowReport(renderer, i, frame, request);
+      if (frame.geometry.shadowMapShown)
+        frames.back()["shadow_error"] = shadowReport(renderer, i, frame, request);
       if (frame.reflections) {
-        const ReflectionError error =
-            measureReflectionError(renderer.world(), frame.pixels, *frame.reflections, frame.geometry,
-                                   scene.reflections.maxDistance, renderer.renderer().gbufferContents().surfaceNormals);
+        const ReflectionError error = measureReflectionError(
+            renderer.world(), frame.pixels, *frame.reflections, frame.geometry, scene.reflections.maxDistance,
+            renderer.renderer().gbufferContents().surfaceNormals);
         frames.back()["reflection_error"] = reflectionErrorJson(error);
       }
     }
     if (o.timings) {
       std::string line = frameName("frame", i) + ":";
-      for (const PassTiming& t : frame.timings) line += " " + t.pass + " " + std::to_string(t.ms).substr(0, 6) + " ms";
+      for (const PassTiming& t : frame.timings)
+        line += " " + t.pass + " " + std::to_string(t.ms).substr(0, 6) + " ms";
       progress.line(line);
     }
     if (!o.compare.empty()) allMatch = compareFrame(o, scene, i, frame.image, progress) && allMatch;
-    progress.frameDone(i + 1, std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+    progress.frameDone(
+        i + 1, std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
   }
   progress.finish();
   if (!o.report.empty()) {
@@ -223,15 +243,18 @@ int renderScene(const Options& o, const SceneFile& scene, SceneRenderer& rendere
                                               {"gl", gl},
                                               {"size", {scene.width, scene.height}},
                                               {"shader_variants", renderer.renderer().shaderVariants()},
-                                              {"gbuffer_bytes_per_pixel", renderer.renderer().gbufferContents().bytesPerPixel()},
-                                              {"frames", frames}}.dump(2)
+                                              {"gbuffer_bytes_per_pixel",
+                                               renderer.renderer().gbufferContents().bytesPerPixel()},
+                                              {"frames", frames}}
+                                   .dump(2)
                             << "\n";
   }
   const SceneRenderStats& stats = renderer.stats();
   std::printf("terrasol-render: %s: %d frame(s), %zu sections, %zu quads, loaded in %.0f ms; wrote %s\n",
               scene.file.string().c_str(), renderer.frames(), stats.sections, stats.quads, stats.loadMs,
               o.out.string().c_str());
-  if (!allMatch) std::printf("terrasol-render: some frames differ from their goldens in %s\n", o.compare.string().c_str());
+  if (!allMatch)
+    std::printf("terrasol-render: some frames differ from their goldens in %s\n", o.compare.string().c_str());
   return allMatch ? 0 : 1;
 }
 
@@ -251,7 +274,8 @@ int run(int argc, char** argv) {
         }
     }
   } catch (const Error& e) {
-    std::fprintf(stderr, "terrasol-render: error: %s\n%s", e.what(), dynamic_cast<const UsageError*>(&e) ? kUsage : "");
+    std::fprintf(stderr, "terrasol-render: error: %s\n%s", e.what(),
+                 dynamic_cast<const UsageError*>(&e) ? kUsage : "");
     return kBadInput;
   }
   auto context = createHeadlessContext(GlErrorPolicy::Throw);
@@ -270,8 +294,8 @@ int run(int argc, char** argv) {
     return kBadInput;
   }
   for (const auto& p : renderer->stats().problems) {
-    std::fprintf(stderr, "terrasol-render: %s: %s\n", p.severity == PackProblem::Severity::Error ? "error" : "warning",
-                 p.message.c_str());
+    std::fprintf(stderr, "terrasol-render: %s: %s\n",
+                 p.severity == PackProblem::Severity::Error ? "error" : "warning", p.message.c_str());
   }
   const int status = renderScene(options, *scene, *renderer, context->description());
   context->checkErrors("rendering the scene");

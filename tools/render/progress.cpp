@@ -6,7 +6,8 @@
 
 namespace terrasol {
 
-Progress::Progress(int frames, std::FILE* out) : frames_(std::max(frames, 1)), out_(out), terminal_(isatty(fileno(out)) != 0) {}
+Progress::Progress(int frames, std::FILE* out)
+    : frames_(std::max(frames, 1)), out_(out), terminal_(isatty(fileno(out)) != 0) {}
 
 void Progress::frameDone(int done, double ms) {
   done_ = done;
@@ -39,8 +40,8 @@ void Progress::drawBar() {
   const double etaSeconds = perFrame * (frames_ - done_) / 1000.0;
   std::string bar(static_cast<std::size_t>(filled), '#');
   bar.resize(kWidth, '.');
-  std::fprintf(out_, "\r\033[K[%s] %d/%d frames  %.1f ms/frame  ETA %.1f s", bar.c_str(), done_, frames_, perFrame,
-               etaSeconds);
+  std::fprintf(out_, "\r\033[K[%s] %d/%d frames  %.1f ms/frame  ETA %.1f s", bar.c_str(), done_, frames_,
+               perFrame, etaSeconds);
   barShown_ = true;
   std::fflush(out_);
 }

@@ -5,8 +5,8 @@
 #include <fstream>
 
 #include "core/error.h"
-#include "scene_render/scene_render.h"
 #include "scene_render/reflection_truth.h"
+#include "scene_render/scene_render.h"
 #include "scene_render/shadow_truth.h"
 #include "sweep_plot.h"
 
@@ -27,13 +27,17 @@ struct Row {
 
 std::vector<const char*> columnNames(Measure m) {
   if (m == Measure::Reflections) {
-    return {"evaluated_pixels", "agree_pct", "wrong_hit_pct", "missed_on_screen_pct", "missed_off_screen_pct",
-            "false_hit_pct", "sky_leak_pixels", "error_pct", "reflection_ms", "lighting_ms"};
+    return {"evaluated_pixels",      "agree_pct",     "wrong_hit_pct",   "missed_on_screen_pct",
+            "missed_off_screen_pct", "false_hit_pct", "sky_leak_pixels", "error_pct",
+            "reflection_ms",         "lighting_ms"};
   }
-  return {"evaluated_pixels", "false_shadow_pct", "false_lit_pct", "error_pct", "ambiguous_pct", "shadow_ms", "lighting_ms"};
+  return {"evaluated_pixels", "false_shadow_pct", "false_lit_pct", "error_pct",
+          "ambiguous_pct",    "shadow_ms",        "lighting_ms"};
 }
 
-double pct(std::size_t n, std::size_t of) { return of ? 100.0 * static_cast<double>(n) / static_cast<double>(of) : 0.0; }
+double pct(std::size_t n, std::size_t of) {
+  return of ? 100.0 * static_cast<double>(n) / static_cast<double>(of) : 0.0;
+}
 
 double msOf(const RenderedFrame& frame, const char* pass) {
   for (const PassTiming& t : frame.timings) {
@@ -45,14 +49,20 @@ double msOf(const RenderedFrame& frame, const char* pass) {
 void measureShadows(SceneRenderer& renderer, const RenderedFrame& frame, Row& row) {
   ShadowCounts c;
   if (frame.geometry.shadowMapShown) {
-    c = measureShadowError(renderer.world(), frame.pixels, frame.geometry, renderer.scene().shadow.distance).total;
+    c = measureShadowError(renderer.world(), frame.pixels, frame.geometry, renderer.scene().shadow.distance)
+            .total;
   }
   const double shadow = msOf(frame, "shadow"), lighting = msOf(frame, "lighting");
   row.evaluated = c.evaluated;
   row.errorPct = pct(c.falseLit + c.falseShadow, c.evaluated);
   row.costMs = shadow + lighting;
-  row.columns = {static_cast<double>(c.evaluated), pct(c.falseShadow, c.evaluated), pct(c.falseLit, c.evaluated),
-                 row.errorPct, pct(c.ambiguous, c.evaluated + c.ambiguous), shadow, lighting};
+  row.columns = {static_cast<double>(c.evaluated),
+                 pct(c.falseShadow, c.evaluated),
+                 pct(c.falseLit, c.evaluated),
+                 row.errorPct,
+                 pct(c.ambiguous, c.evaluated + c.ambiguous),
+                 shadow,
+                 lighting};
 }
 
 void measureReflections(SceneRenderer& renderer, const RenderedFrame& frame, Row& row) {
@@ -67,9 +77,16 @@ void measureReflections(SceneRenderer& renderer, const RenderedFrame& frame, Row
   row.evaluated = c.evaluated;
   row.errorPct = 100.0 - pct(c.agree, c.evaluated);
   row.costMs = reflection;
-  row.columns = {static_cast<double>(c.evaluated), pct(c.agree, c.evaluated), pct(c.wrongHit, c.evaluated),
-                 pct(c.missedOnScreen, c.evaluated), pct(c.missedOffScreen, c.evaluated), pct(c.falseHit, c.evaluated),
-                 static_cast<double>(e.skyLeakPixels), row.errorPct, reflection, msOf(frame, "lighting")};
+  row.columns = {static_cast<double>(c.evaluated),
+                 pct(c.agree, c.evaluated),
+                 pct(c.wrongHit, c.evaluated),
+                 pct(c.missedOnScreen, c.evaluated),
+                 pct(c.missedOffScreen, c.evaluated),
+                 pct(c.falseHit, c.evaluated),
+                 static_cast<double>(e.skyLeakPixels),
+                 row.errorPct,
+                 reflection,
+                 msOf(frame, "lighting")};
 }
 
 Measure measureOf(const std::vector<Sweep>& sweeps) {
@@ -94,8 +111,8 @@ std::vector<std::vector<std::string>> combinations(const std::vector<Sweep>& swe
   return out;
 }
 
-Row measure(const std::filesystem::path& file, std::vector<std::string> settings, const std::vector<Sweep>& sweeps,
-            const std::vector<std::string>& values, Measure what) {
+Row measure(const std::filesystem::path& file, std::vector<std::string> settings,
+            const std::vector<Sweep>& sweeps, const std::vector<std::string>& values, Measure what) {
   for (std::size_t i = 0; i < sweeps.size(); ++i) settings.push_back(sweeps[i].key + "=" + values[i]);
   const SceneFile scene = loadScene(file, settings);
   SceneRenderer renderer(scene);
@@ -126,8 +143,8 @@ void markPareto(std::vector<Row>& rows) {
   }
 }
 
-void writeCsv(const std::filesystem::path& file, const std::vector<Sweep>& sweeps, const std::vector<Row>& rows,
-              Measure what) {
+void writeCsv(const std::filesystem::path& file, const std::vector<Sweep>& sweeps,
+              const std::vector<Row>& rows, Measure what) {
   std::ofstream out(file);
   for (const Sweep& s : sweeps) out << s.key << ",";
   for (const char* name : columnNames(what)) out << name << ",";
@@ -140,8 +157,8 @@ void writeCsv(const std::filesystem::path& file, const std::vector<Sweep>& sweep
 }
 
 // Points coloured by the shadow mode or else the warp when swept (else by the first sweep's value).
-void writePlot(const std::filesystem::path& file, const std::vector<Sweep>& sweeps, const std::vector<Row>& rows,
-               Measure what) {
+void writePlot(const std::filesystem::path& file, const std::vector<Sweep>& sweeps,
+               const std::vector<Row>& rows, Measure what) {
   std::size_t by = 0;
   for (const char* key : {"render.shadow.warp", "render.shadow.mode"})
     for (std::size_t i = 0; i < sweeps.size(); ++i) {
@@ -154,8 +171,9 @@ void writePlot(const std::filesystem::path& file, const std::vector<Sweep>& swee
     points.push_back({r.costMs, r.errorPct, group, r.pareto});
   }
   const bool reflections = what == Measure::Reflections;
-  saveImage(file, scatterPlot(points, reflections ? "reflection ms" : "shadow + lighting ms",
-                              reflections ? "disagreeing with the truth %" : "misclassified %", sweeps[by].values));
+  saveImage(file,
+            scatterPlot(points, reflections ? "reflection ms" : "shadow + lighting ms",
+                        reflections ? "disagreeing with the truth %" : "misclassified %", sweeps[by].values));
 }
 
 }  // namespace
@@ -186,15 +204,16 @@ int runSweep(const std::filesystem::path& scene, const std::vector<std::string>&
     std::string name;
     for (std::size_t i = 0; i < sweeps.size(); ++i) name += (i ? " " : "") + sweeps[i].key + "=" + values[i];
     std::printf("%s: %s %.3f %% of %zu px, %.1f ms\n", name.c_str(),
-                what == Measure::Reflections ? "disagreeing" : "misclassified", r.errorPct, r.evaluated, r.costMs);
+                what == Measure::Reflections ? "disagreeing" : "misclassified", r.errorPct, r.evaluated,
+                r.costMs);
     std::fflush(stdout);
   }
   markPareto(rows);
   std::filesystem::create_directories(out);
   writeCsv(out / "sweep.csv", sweeps, rows, what);
   writePlot(out / "sweep.png", sweeps, rows, what);
-  std::printf("terrasol-render: %zu combinations; wrote %s and %s\n", rows.size(), (out / "sweep.csv").string().c_str(),
-              (out / "sweep.png").string().c_str());
+  std::printf("terrasol-render: %zu combinations; wrote %s and %s\n", rows.size(),
+              (out / "sweep.csv").string().c_str(), (out / "sweep.png").string().c_str());
   return static_cast<int>(rows.size());
 }
 

@@ -13,8 +13,8 @@ namespace terrasol {
 
 struct PlotPoint {
   double x, y;
-  int group;     // colour index
-  bool marked;   // on the highlighted polyline (sorted by x)
+  int group;    // colour index
+  bool marked;  // on the highlighted polyline (sorted by x)
 };
 
 // `xLabel`/`yLabel` use digits, letters a-z, space and ".%+-/()".

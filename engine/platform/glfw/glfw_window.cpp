@@ -57,13 +57,29 @@ glm::ivec2 GlfwWindow::framebufferSize() const {
   return size;
 }
 
-void GlfwWindow::swapBuffers() { glfwSwapBuffers(window_); }
-void GlfwWindow::pollEvents() { glfwPollEvents(); }
-bool GlfwWindow::shouldClose() const { return glfwWindowShouldClose(window_); }
-double GlfwWindow::time() const { return glfwGetTime(); }
-void GlfwWindow::setVsync(bool on) { glfwSwapInterval(on ? 1 : 0); }
-bool GlfwWindow::minimised() const { return glfwGetWindowAttrib(window_, GLFW_ICONIFIED) == GLFW_TRUE; }
-void GlfwWindow::minimise() { glfwIconifyWindow(window_); }
-void GlfwWindow::restore() { glfwRestoreWindow(window_); }
+void GlfwWindow::swapBuffers() {
+  glfwSwapBuffers(window_);
+}
+void GlfwWindow::pollEvents() {
+  glfwPollEvents();
+}
+bool GlfwWindow::shouldClose() const {
+  return glfwWindowShouldClose(window_);
+}
+double GlfwWindow::time() const {
+  return glfwGetTime();
+}
+void GlfwWindow::setVsync(bool on) {
+  glfwSwapInterval(on ? 1 : 0);
+}
+bool GlfwWindow::minimised() const {
+  return glfwGetWindowAttrib(window_, GLFW_ICONIFIED) == GLFW_TRUE;
+}
+void GlfwWindow::minimise() {
+  glfwIconifyWindow(window_);
+}
+void GlfwWindow::restore() {
+  glfwRestoreWindow(window_);
+}
 
 }  // namespace terrasol

@@ -43,16 +43,16 @@ class Object {
 };
 
 // Traits for the DSA (GL 4.5) create functions, which give fully initialised objects.
-#define TERRASOL_GL_TRAITS(Name, createCall, destroyCall)  \
-  struct Name##Traits {                                     \
-    template <class... Args>                                \
-    static GLuint create(Args... args) {                    \
-      GLuint id = 0;                                        \
-      createCall;                                           \
-      return id;                                            \
-    }                                                       \
-    static void destroy(GLuint id) { destroyCall; }         \
-  };                                                        \
+#define TERRASOL_GL_TRAITS(Name, createCall, destroyCall) \
+  struct Name##Traits {                                   \
+    template <class... Args>                              \
+    static GLuint create(Args... args) {                  \
+      GLuint id = 0;                                      \
+      createCall;                                         \
+      return id;                                          \
+    }                                                     \
+    static void destroy(GLuint id) { destroyCall; }       \
+  };                                                      \
   using Name = Object<Name##Traits>;
 
 TERRASOL_GL_TRAITS(Buffer, glCreateBuffers(1, &id), glDeleteBuffers(1, &id))

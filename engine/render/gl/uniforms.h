@@ -21,8 +21,12 @@
 
 namespace terrasol::gl {
 
-inline void write(GLuint p, GLint at, const float* v, GLsizei n) { glProgramUniform1fv(p, at, n, v); }
-inline void write(GLuint p, GLint at, const int* v, GLsizei n) { glProgramUniform1iv(p, at, n, v); }
+inline void write(GLuint p, GLint at, const float* v, GLsizei n) {
+  glProgramUniform1fv(p, at, n, v);
+}
+inline void write(GLuint p, GLint at, const int* v, GLsizei n) {
+  glProgramUniform1iv(p, at, n, v);
+}
 inline void write(GLuint p, GLint at, const glm::vec2* v, GLsizei n) {
   glProgramUniform2fv(p, at, n, glm::value_ptr(*v));
 }

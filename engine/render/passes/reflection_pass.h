@@ -88,7 +88,7 @@ class ReflectionPass final : public RenderPass {
   LinkedProgram depthCopy_;  // water and glass
   gl::ProgramWith<SurfaceDepth> surfaceDepth_;
   gl::ProgramWith<SurfaceMarch> surfaceMarch_;
-  bool opaque_ = false, surfaces_ = false;               // this frame's parts
+  bool opaque_ = false, surfaces_ = false;  // this frame's parts
   glm::ivec2 size_{0};
   gl::Texture colour_;  // RGBA16F: rgb added to the scene, a: 1 where the ray hit something on screen
   gl::Texture hits_;    // RGBA32F: where each ray hit (ReflectionPixels::hits)

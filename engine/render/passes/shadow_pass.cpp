@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-
 namespace terrasol {
 
 ShadowPass::ShadowPass(const VariantBuilder& build, PassShared& shared)
