@@ -31,7 +31,8 @@ void BlockInteraction::update(const FrameInput& in, double dt, PlayWorld& world)
   if (!target_) return;
   if (in.wasPressed(MouseButton::Middle)) hotbar_.pick(pickedBy(world.world(), target_->block));
   if (fires(in, MouseButton::Left, breakCooldown_)) {
-    for (const BlockPos& cell : brokenBy(world.world(), target_->block)) world.editBlock(cell, kAir);
+    for (const Placement& cell : brokenBy(world.world(), target_->block))
+      world.editBlock(cell.at, cell.state);
     breakCooldown_ = kBreakRepeat;
     target_ = targetBlock(world.world(), player.eye(), player.forward());
     return;

@@ -54,7 +54,7 @@ GameRenderer::GameRenderer(const BlockRegistry& blocks, const GameSettings& sett
       renderer_(makeRenderer(*assets_, settings.shadow, settings.reflections, {})),
       shadow_(settings.shadow),
       reflections_(settings.reflections),
-      iconStates_(terrasol::iconStates(blocks)),
+      iconStates_(terrasol::iconStates(blocks, assets_->atlas.placeholders)),
       iconOfBlock_(blocks.blockCount(), -1) {
   for (std::size_t i = 0; i < iconStates_.size(); ++i) {
     iconOfBlock_[blocks.blockIndex(iconStates_[i])] = static_cast<int>(i);

@@ -79,10 +79,17 @@ std::string hingeOf(const World& world, BlockId door, const BlockPos& at, const 
   return leftHalf ? "left" : "right";
 }
 
-}  // namespace
+// Whether the cell holds water: a water block, or a block standing in water.
+bool holdsWater(const World& world, const BlockPos& pos) {
+  const BlockRegistry& blocks = world.blocks();
+  const BlockId state = world.getBlock(pos);
+  return blocks.holdsWater()[state] != 0 ||
+         (blocks.waterState() != kAir && &blocks[state] == &blocks[blocks.waterState()]);
+}
 
-std::vector<Placement> placementOf(const World& world, BlockId held, const Target& target, BlockPos at,
-                                   glm::dvec3 hit, glm::dvec3 look) {
+// The cells and states by the held block's rule, before water is kept.
+std::vector<Placement> placedStates(const World& world, BlockId held, const Target& target, BlockPos at,
+                                    glm::dvec3 hit, glm::dvec3 look) {
   const BlockRegistry& blocks = world.blocks();
   const BlockType& type = blocks[held];
   const BlockId there = world.getBlock(target.block);
@@ -145,6 +152,20 @@ std::vector<Placement> placementOf(const World& world, BlockId held, const Targe
   return {{at, held}};
 }
 
+}  // namespace
+
+std::vector<Placement> placementOf(const World& world, BlockId held, const Target& target, BlockPos at,
+                                   glm::dvec3 hit, glm::dvec3 look) {
+  std::vector<Placement> cells = placedStates(world, held, target, at, hit, look);
+  // A block that can stand in water keeps the water of the cell it goes in; a double slab cannot.
+  for (Placement& cell : cells) {
+    const bool water = holdsWater(world, cell.at) && valueOf(world.blocks(), cell.state, "type") != "double";
+    cell.state =
+        world.blocks().with(cell.state, "waterlogged", water ? "true" : "false").value_or(cell.state);
+  }
+  return cells;
+}
+
 std::vector<Placement> useOf(const World& world, const BlockPos& pos, glm::dvec3 look) {
   const BlockRegistry& blocks = world.blocks();
   const BlockId state = world.getBlock(pos);
@@ -176,13 +197,17 @@ BlockId pickedBy(const World& world, const BlockPos& pos) {
   return type.defaultState;
 }
 
-std::vector<BlockPos> brokenBy(const World& world, const BlockPos& pos) {
+std::vector<Placement> brokenBy(const World& world, const BlockPos& pos) {
   const BlockRegistry& blocks = world.blocks();
   const BlockId state = world.getBlock(pos);
-  std::vector<BlockPos> cells = {pos};
+  // A block standing in water leaves the water.
+  const auto left = [&](const BlockPos& p) {
+    return Placement{p, blocks.holdsWater()[world.getBlock(p)] != 0 ? blocks.waterState() : kAir};
+  };
+  std::vector<Placement> cells = {left(pos)};
   if (blocks[state].placement == PlacementRule::Door) {
     const BlockPos other = pos.offset(0, valueOf(blocks, state, "half") == "lower" ? 1 : -1, 0);
-    if (&blocks[world.getBlock(other)] == &blocks[state]) cells.push_back(other);
+    if (&blocks[world.getBlock(other)] == &blocks[state]) cells.push_back(left(other));
   }
   return cells;
 }

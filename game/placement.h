@@ -6,7 +6,8 @@
 // face's axis; gates face the way the player looks and furnaces face the player; doors take two
 // cells, their hinge on the side their neighbours or the click decide; trapdoors hang from the
 // clicked side's upper or lower half; ladders and wall torches go on a wall's side, a torch on a side
-// becomes a wall torch. Using a block that opens toggles it (a door's two halves together).
+// becomes a wall torch. A block that can stand in water placed in water keeps it (waterlogged), and
+// leaves it when broken. Using a block that opens toggles it (a door's two halves together).
 
 #include <glm/vec3.hpp>
 #include <vector>
@@ -36,7 +37,8 @@ std::vector<Placement> useOf(const World& world, const BlockPos& pos, glm::dvec3
 // torch for a wall torch.
 BlockId pickedBy(const World& world, const BlockPos& pos);
 
-// The cells breaking the block at `pos` clears: it, and a door's other half.
-std::vector<BlockPos> brokenBy(const World& world, const BlockPos& pos);
+// The cells breaking the block at `pos` changes, and what is left in them: it, and a door's other
+// half; air, or the water a block stood in.
+std::vector<Placement> brokenBy(const World& world, const BlockPos& pos);
 
 }  // namespace terrasol

@@ -163,8 +163,12 @@ BlockStates BlockStates::parse(const json& root, const std::string& file) {
   return out;
 }
 
+std::string BlockStates::pathOf(const std::string& block) {
+  return "assets/minecraft/blockstates/" + block + ".json";
+}
+
 BlockStates BlockStates::load(const PackStack& packs, const std::string& block) {
-  const std::string path = "assets/minecraft/blockstates/" + block + ".json";
+  const std::string path = pathOf(block);
   const auto found = packs.find(path);
   if (!found) throw Error(join({"no pack has the blockstates of ", block, " (", path, ")"}));
   const std::string file = found->pack->files().displayName(path);

@@ -43,6 +43,8 @@ class BlockStates {
   static BlockStates parse(const nlohmann::json& root, const std::string& file);
   // assets/minecraft/blockstates/<block>.json from the topmost pack that has it.
   static BlockStates load(const PackStack& packs, const std::string& block);
+  // Where a pack keeps a block's blockstates: "assets/minecraft/blockstates/<block>.json".
+  static std::string pathOf(const std::string& block);
 
   // The models `state` is drawn with at block position `pos`: the first variant (in the file's key
   // order) whose every property matches, or every multipart part that holds; each a weighted pick.

@@ -26,6 +26,7 @@ struct BakedQuad {
   int tintIndex = -1;
   bool shade = true;
   bool ambientOcclusion = true;  // the model's; never on an element turned by a non-right angle
+  bool operator==(const BakedQuad&) const = default;
 };
 
 std::vector<BakedQuad> bakeModel(const BlockModel& model, const ModelPlacement& placement);

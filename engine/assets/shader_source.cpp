@@ -1,5 +1,7 @@
 #include "assets/shader_source.h"
 
+#include <algorithm>
+#include <cctype>
 #include <regex>
 #include <set>
 #include <sstream>
@@ -100,15 +102,57 @@ struct Expander {
 }  // namespace
 
 std::vector<std::string> declaredUniforms(std::string_view source) {
-  static const std::regex comment(R"(//[^\n]*|/\*[\s\S]*?\*/)");
-  // "uniform <type> a, b[N];": the names between the type and the semicolon.
-  static const std::regex declaration(R"(\buniform\s+(?:(?:lowp|mediump|highp)\s+)?\w+\s+([^;{]*);)");
-  static const std::regex name(R"((\w+)\s*(?:\[[^\]]*\])?\s*(?:,|$))");
-  const std::string code = std::regex_replace(std::string(source), comment, " ");
+  // Comments become a space; one pass, as every program's sources are read at link (a regex took a
+  // tenth of the renderer's start).
+  std::string code;
+  code.reserve(source.size());
+  for (std::size_t i = 0; i < source.size();) {
+    if (source.compare(i, 2, "//") == 0) {
+      i = std::min(source.find('\n', i), source.size());
+    } else if (source.compare(i, 2, "/*") == 0) {
+      const std::size_t close = source.find("*/", i + 2);
+      i = close == std::string_view::npos ? source.size() : close + 2;
+      code += ' ';
+    } else {
+      code += source[i++];
+    }
+  }
+  const auto isWord = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_'; };
+  const auto skipSpace = [&](std::size_t i) {
+    while (i < code.size() && std::isspace(static_cast<unsigned char>(code[i])) != 0) ++i;
+    return i;
+  };
+  const auto wordEnd = [&](std::size_t i) {
+    while (i < code.size() && isWord(code[i])) ++i;
+    return i;
+  };
+  // "uniform [precision] <type> a, b[N];": the names between the type and the semicolon (a block,
+  // "uniform Name { ... }", has none).
   std::vector<std::string> names;
-  for (std::sregex_iterator d(code.begin(), code.end(), declaration), end; d != end; ++d) {
-    const std::string list = (*d)[1];
-    for (std::sregex_iterator n(list.begin(), list.end(), name); n != end; ++n) names.push_back((*n)[1]);
+  constexpr std::string_view kUniform = "uniform";
+  for (std::size_t at = code.find(kUniform); at != std::string::npos; at = code.find(kUniform, at + 1)) {
+    const std::size_t after = at + kUniform.size();
+    if ((at > 0 && isWord(code[at - 1])) || after >= code.size() || isWord(code[after])) continue;
+    const std::size_t end = code.find_first_of(";{", after);
+    if (end == std::string::npos || code[end] == '{') continue;
+    std::size_t i = skipSpace(after);
+    std::size_t typeEnd = wordEnd(i);
+    const std::string_view first(code.data() + i, typeEnd - i);
+    if (first == "lowp" || first == "mediump" || first == "highp") typeEnd = wordEnd(skipSpace(typeEnd));
+    int depth = 0;
+    bool expectName = true;
+    for (i = typeEnd; i < end; ++i) {
+      const char c = code[i];
+      if (c == '[') ++depth;
+      if (c == ']') --depth;
+      if (c == ',' && depth == 0) expectName = true;
+      if (expectName && isWord(c)) {
+        const std::size_t e = wordEnd(i);
+        names.emplace_back(code, i, e - i);
+        expectName = false;
+        i = e - 1;
+      }
+    }
   }
   return names;
 }

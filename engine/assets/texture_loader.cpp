@@ -2,6 +2,7 @@
 
 #include <cstring>
 
+#include "assets/block_model.h"
 #include "assets/labpbr.h"
 #include "core/error.h"
 
@@ -139,7 +140,7 @@ LoadedTexture loadBlockTexture(const PackStack& packs, const std::vector<std::st
       t.normal = std::move(n.frames);
       t.specular = std::move(s.frames);
     }
-  } else {
+  } else if (candidates != std::vector<std::string>{kMissingTexture}) {  // asked for on purpose: no warning
     std::string tried;
     for (const auto& name : candidates) tried += (tried.empty() ? "" : ", ") + name + ".png";
     problems.push_back(

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <memory>
+#include <set>
+#include <string_view>
 
 #include "core/light_level.h"
 #include "mesh/section_snapshot.h"
@@ -24,17 +26,17 @@ SectionMesh iconMesh(const BlockMeshTable& table, const BlockRegistry& blocks, B
   return meshSection(*snapshot, table);
 }
 
-std::vector<BlockId> iconStates(const BlockRegistry& blocks) {
+std::vector<BlockId> iconStates(const BlockRegistry& blocks, std::span<const std::string> placeholders) {
+  const std::set<std::string_view> leftOut(placeholders.begin(), placeholders.end());
+  std::set<std::size_t> wallVariants;
+  for (std::size_t j = 0; j < blocks.blockCount(); ++j)
+    if (blocks.block(j).wallVariant != kAir)
+      wallVariants.insert(blocks.blockIndex(blocks.block(j).wallVariant));
   std::vector<BlockId> states;
   for (std::size_t i = 0; i < blocks.blockCount(); ++i) {
     const BlockType& type = blocks.block(i);
     if (type.defaultState == kAir || type.shape == BlockShape::None) continue;
-    const bool wallVariant = [&] {
-      for (std::size_t j = 0; j < blocks.blockCount(); ++j)
-        if (blocks.block(j).wallVariant != kAir && &blocks[blocks.block(j).wallVariant] == &type) return true;
-      return false;
-    }();
-    if (wallVariant) continue;
+    if (wallVariants.contains(i) || leftOut.contains(type.name)) continue;
     // Fences, panes and walls show a piece running across, not their lone post.
     BlockId state = type.defaultState;
     if (type.connects != Connects::None && type.connects != Connects::Gate) {

@@ -118,10 +118,17 @@ BlockMeshTable::BlockMeshTable(const BlockRegistry& blocks,
                                const std::function<std::vector<ModelQuad>(BlockId)>& modelQuadsOf,
                                const std::function<std::vector<ModelChoice>(BlockId)>& modelChoicesOf) {
   entries_.resize(blocks.size());
+  waterState_ = blocks.waterState();
+  const auto liquidOf = [&](BlockId state) {
+    return static_cast<std::uint16_t>(1 + blocks.blockIndex(state));
+  };
+  std::vector<ModelQuad> input;  // the previous model state's quads, as given
   for (BlockId id = 0; id < blocks.size(); ++id) {
     const BlockType& type = blocks[id];
     Entry& e = entries_[id];
     e.shape = type.shape;
+    e.water = blocks.holdsWater()[id] != 0 && waterState_ != kAir && type.shape != BlockShape::Liquid;
+    e.liquid = type.shape == BlockShape::Liquid ? liquidOf(id) : e.water ? liquidOf(waterState_) : 0;
     e.layer = layerOf(type.layer);
     e.opaque = type.isOpaqueCube();
     // Translucent blocks and clear cubes (glass: opacity 0) hide faces against themselves; leaves do not.
@@ -131,9 +138,21 @@ BlockMeshTable::BlockMeshTable(const BlockRegistry& blocks,
     e.tint = type.tint;
     if (type.shape == BlockShape::Model) {
       if (modelQuadsOf) e.quads = modelQuadsOf(id);
+      if (modelChoicesOf) e.choices = modelChoicesOf(id);
+      // A state drawn as the one before it (its waterlogged twin) takes its entry, all but its water.
+      const bool asBefore = id > 0 && blocks.blockIndex(id) == blocks.blockIndex(id - 1) &&
+                            e.choices.empty() && entries_[id - 1].choices.empty() && e.quads == input;
+      input = e.quads;
+      if (asBefore) {
+        const bool water = e.water;
+        const std::uint16_t liquid = e.liquid;
+        e = entries_[id - 1];
+        e.water = water;
+        e.liquid = liquid;
+        continue;
+      }
       FaceCoverage* coverage = e.layer == MeshLayer::Opaque ? &e.coverage : nullptr;
       for (ModelQuad& q : e.quads) describeModelQuad(q, coverage);
-      if (modelChoicesOf) e.choices = modelChoicesOf(id);
       for (ModelChoice& c : e.choices) {
         for (ModelQuad& q : c.quads) describeModelQuad(q, nullptr);  // coverage is the origin pick's
         TERRASOL_ASSERT(c.weight >= 1, "mesh table: a model choice of weight " + std::to_string(c.weight));

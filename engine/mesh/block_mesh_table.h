@@ -31,6 +31,7 @@ struct ModelQuad {
   // cell's side (lit from the cell beyond, as vanilla lights a face flush with the block's bounds).
   SideRect rect;
   bool onSide = false;
+  friend bool operator==(const ModelQuad&, const ModelQuad&) = default;
 };
 
 // One of the weighted models a state picks among by position (core/position_random.h), as quads.
@@ -60,6 +61,10 @@ class BlockMeshTable {
     bool opaque;    // an opaque cube: hides neighbours' faces, darkens corners
     bool cullSame;  // hides faces against the same block
     bool foliage;   // a see-through cube that keeps its faces against others of its kind: leaves
+    bool water;     // the cell holds water besides the block (waterlogged): drawn as waterState()'s
+    // The liquid a cell of it holds, 1 + the liquid block's index (water's for a waterlogged one), 0
+    // for none: a liquid's faces are hidden against the same liquid, whatever its level.
+    std::uint16_t liquid;
     Tint tint;
     std::array<std::uint16_t, 6> texture;
     std::array<std::uint32_t, 6> material;  // PackedVertex::material of each cube face
@@ -72,6 +77,8 @@ class BlockMeshTable {
     std::uint8_t fullSides = 0;
   };
   const Entry& operator[](BlockId id) const { return entries_[id]; }
+  // The water drawn in waterlogged cells (BlockRegistry::waterState).
+  BlockId waterState() const { return waterState_; }
 
   // PackedVertex::material for a texture on face `face` (kFaceBases' index) of a block drawn as `e`.
   static std::uint32_t material(const Entry& e, int texture, int face) {
@@ -83,6 +90,7 @@ class BlockMeshTable {
 
  private:
   std::vector<Entry> entries_;
+  BlockId waterState_ = kAir;
 };
 
 }  // namespace terrasol

@@ -85,6 +85,8 @@ class Mesher {
             case BlockShape::None:
               break;
           }
+          if (e.water) [[unlikely]]
+            cube(x, y, z, table_.waterState(), table_[table_.waterState()]);
         }
       }
     for (int l = 0; l < kMeshLayers; ++l) {
@@ -138,7 +140,9 @@ class Mesher {
 
   bool faceVisible(BlockId id, const BlockMeshTable::Entry& e, int neighbourIndex) const {
     if (opaqueAt(neighbourIndex)) return false;
-    return !(e.cullSame && s_.blocks[static_cast<std::size_t>(neighbourIndex)] == id);
+    const BlockId neighbour = s_.blocks[static_cast<std::size_t>(neighbourIndex)];
+    if (e.shape == BlockShape::Liquid) return table_[neighbour].liquid != e.liquid;
+    return !(e.cullSame && neighbour == id);
   }
 
   // Whether the block at `neighbour` (a model block) covers the whole side facing a face in direction D.
@@ -151,7 +155,8 @@ class Mesher {
   void cube(int x, int y, int z, BlockId id, const BlockMeshTable::Entry& e) {
     const bool liquid = e.shape == BlockShape::Liquid;
     // A liquid's surface sits 2/16 lower unless more of the same liquid is above it.
-    const int top32 = liquid && block(x, y + 1, z) != id ? 32 - kLiquidSurfaceDrop32 : 32;
+    const int top32 =
+        liquid && table_[block(x, y + 1, z)].liquid != e.liquid ? 32 - kLiquidSurfaceDrop32 : 32;
     const int here = SectionSnapshot::index(x, y, z);
     forEachDirection([&](auto d) {
       const bool loweredTop = d == static_cast<int>(Direction::Up) && top32 < 32;

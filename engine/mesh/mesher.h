@@ -4,8 +4,8 @@
 // Cube faces are emitted where the neighbour is not an opaque cube; translucent blocks and clear
 // cubes (glass) also hide faces against the same block (water-water, glass-glass), while leaves show
 // their inner faces, as Minecraft's fancy leaves do. Liquid surfaces sit 2/16 below the block top
-// unless the same liquid is above. Cross plants are two double-sided diagonal planes, torches a small
-// box with Minecraft's torch UVs.
+// unless the same liquid is above; a waterlogged cell draws its block and water. Cross plants are two
+// double-sided diagonal planes, torches a small box with Minecraft's torch UVs.
 //
 // Smooth lighting as vanilla's: each corner of a face averages block and sky light over the four
 // cells in front of it (the front cell, the two beside it towards the corner, and the diagonal one),

@@ -4,6 +4,7 @@
 #include <glm/geometric.hpp>
 #include <map>
 #include <set>
+#include <tuple>
 
 #include "assets/block_model.h"
 #include "assets/block_states.h"
@@ -41,10 +42,12 @@ BlockModel missingModel() {
 // its blockstates file picks them at the origin, and alternative(state, k, model, placement) for each
 // of the weighted models k a state picks among by position (the mesher's per-cell pick). A block
 // whose blockstates or models cannot be read gets the missing cube instead, and the reason goes to
-// `problems`.
+// `problems`; one of Minecraft's blocks that blocks.json leaves out and no pack describes gets it too,
+// as a placeholder named in `placeholders`.
 template <class Use, class Alternative>
 void forEachModelOfEachState(const BlockRegistry& blocks, const PackStack& packs,
-                             std::vector<PackProblem>& problems, Use&& use, Alternative&& alternative) {
+                             std::vector<PackProblem>& problems, std::vector<std::string>* placeholders,
+                             Use&& use, Alternative&& alternative) {
   ModelLibrary library(packs);
   static const BlockModel kMissing = missingModel();
   for (std::size_t b = 0; b < blocks.blockCount(); ++b) {
@@ -52,6 +55,12 @@ void forEachModelOfEachState(const BlockRegistry& blocks, const PackStack& packs
     if (type.shape != BlockShape::Model) continue;
     using Models = std::vector<std::pair<const BlockModel*, ModelPlacement>>;
     std::vector<Models> models(type.stateCount), choices(type.stateCount);
+    if (!type.inBlocksJson && !packs.find(BlockStates::pathOf(type.name))) {
+      if (placeholders) placeholders->push_back(type.name);
+      for (std::uint16_t i = 0; i < type.stateCount; ++i)
+        use(static_cast<BlockId>(type.firstState + i), kMissing, ModelPlacement{});
+      continue;
+    }
     try {
       const BlockStates states = BlockStates::load(packs, type.name);
       for (std::uint16_t i = 0; i < type.stateCount; ++i) {
@@ -98,17 +107,25 @@ struct BakedStates {
   std::vector<std::vector<BakedChoice>> choices;
 };
 BakedStates bakeModelStates(const BlockRegistry& blocks, const PackStack& packs,
-                            std::vector<PackProblem>& problems) {
+                            std::vector<PackProblem>& problems,
+                            std::vector<std::string>* placeholders = nullptr) {
   BakedStates baked{std::vector<std::vector<BakedQuad>>(blocks.size()),
                     std::vector<std::vector<ShapeBox>>(blocks.size()),
                     std::vector<std::vector<BakedChoice>>(blocks.size())};
+  // Most states share their models with others (every waterlogged twin, every placeholder): each
+  // model and placement is baked once.
+  struct Baked {
+    std::vector<BakedQuad> quads;
+    std::vector<ShapeBox> boxes;
+  };
+  std::map<std::tuple<const BlockModel*, int, int, bool>, Baked> bakedOnce;
   forEachModelOfEachState(
-      blocks, packs, problems,
+      blocks, packs, problems, placeholders,
       [&](BlockId s, const BlockModel& m, const ModelPlacement& p) {
-        const std::vector<BakedQuad> quads = bakeModel(m, p);
-        baked.quads[s].insert(baked.quads[s].end(), quads.begin(), quads.end());
-        const std::vector<ShapeBox> boxes = boxesOf(m, p);
-        baked.boxes[s].insert(baked.boxes[s].end(), boxes.begin(), boxes.end());
+        auto [it, added] = bakedOnce.try_emplace({&m, p.x, p.y, p.uvlock});
+        if (added) it->second = {bakeModel(m, p), boxesOf(m, p)};
+        baked.quads[s].insert(baked.quads[s].end(), it->second.quads.begin(), it->second.quads.end());
+        baked.boxes[s].insert(baked.boxes[s].end(), it->second.boxes.begin(), it->second.boxes.end());
       },
       [&](BlockId s, std::size_t, const BlockModel& m, const ModelPlacement& p) {
         baked.choices[s].push_back({p.weight, bakeModel(m, p), boxesOf(m, p)});
@@ -160,10 +177,19 @@ ModelQuad meshQuad(const BakedQuad& q, std::uint16_t texture) {
 
 BlockAtlas buildBlockAtlas(const BlockRegistry& blocks, const PackStack& packs) {
   BlockAtlas result;
-  const BakedStates baked = bakeModelStates(blocks, packs, result.problems);
+  const BakedStates baked = bakeModelStates(blocks, packs, result.problems, &result.placeholders);
+  // A state drawn as the one before it (its waterlogged twin, a placeholder's every state) takes its
+  // textures and quads.
+  std::vector<bool> asBefore(blocks.size());
+  for (BlockId id = 1; id < blocks.size(); ++id) {
+    asBefore[id] = baked.choices[id].empty() && baked.choices[id - 1].empty() &&
+                   baked.quads[id] == baked.quads[id - 1] && baked.boxes[id] == baked.boxes[id - 1] &&
+                   blocks[id].textures == blocks[id - 1].textures;
+  }
   // Each distinct candidate list is loaded once, in a stable order.
   std::map<std::vector<std::string>, std::uint16_t> index;
   for (BlockId id = 0; id < blocks.size(); ++id) {
+    if (asBefore[id]) continue;
     for (const auto& face : blocks[id].textures) {
       if (!face.empty()) index.emplace(face, 0);
     }
@@ -185,6 +211,10 @@ BlockAtlas buildBlockAtlas(const BlockRegistry& blocks, const PackStack& packs) 
     for (int f = 0; f < 6; ++f) {
       const auto& face = blocks[id].textures[static_cast<std::size_t>(f)];
       result.faceTextures[id][static_cast<std::size_t>(f)] = face.empty() ? 0 : index.at(face);
+    }
+    if (asBefore[id]) {
+      result.modelQuads[id] = result.modelQuads[id - 1];
+      continue;
     }
     for (const BakedQuad& q : baked.quads[id])
       result.modelQuads[id].push_back(meshQuad(q, index.at(candidatesOf(q.texture))));
@@ -235,11 +265,13 @@ BlockShapes blockShapesOf(const BlockRegistry& blocks, const PackStack& packs) {
   BlockShapes shapes(blocks);
   std::vector<std::vector<ShapeBox>> boxes(blocks.size());
   std::vector<PackProblem> problems;  // the atlas reports them
+  std::map<std::tuple<const BlockModel*, int, int>, std::vector<ShapeBox>> placedOnce;
   forEachModelOfEachState(
-      blocks, packs, problems,
+      blocks, packs, problems, nullptr,
       [&](BlockId s, const BlockModel& m, const ModelPlacement& p) {
-        const std::vector<ShapeBox> placed = boxesOf(m, p);
-        boxes[s].insert(boxes[s].end(), placed.begin(), placed.end());
+        auto [it, added] = placedOnce.try_emplace({&m, p.x, p.y});
+        if (added) it->second = boxesOf(m, p);
+        boxes[s].insert(boxes[s].end(), it->second.begin(), it->second.end());
       },
       [](BlockId, std::size_t, const BlockModel&, const ModelPlacement&) {});  // collision: the origin's pick
   for (BlockId s = 0; s < blocks.size(); ++s) {

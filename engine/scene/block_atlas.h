@@ -21,6 +21,8 @@ struct BlockAtlas {
   std::vector<std::vector<ModelQuad>> modelQuads;          // per state of a model block
   std::vector<std::vector<ModelChoice>> modelChoices;      // per state picking among weighted models
   std::vector<PackProblem> problems;                       // never fatal: missing textures show as such
+  // Minecraft's blocks drawn as the missing cube because no pack describes them (sorted by id).
+  std::vector<std::string> placeholders;
   std::uint16_t textureOf(BlockId id, int face) const {
     return faceTextures[id][static_cast<std::size_t>(face)];
   }

@@ -37,7 +37,7 @@ double msSince(std::chrono::steady_clock::time_point start) {
 // The CPU side: blocks, atlas, the mesher's table and the world, kept for edits keyed to frames.
 struct SceneRenderer::World {
   World(const SceneFile& scene, const PackStack& packs)
-      : blocks(BlockRegistry::fromFile(resourcePackDir() / "default" / "blocks.json")),
+      : blocks(BlockRegistry::load(resourcePackDir() / "default" / "blocks.json")),
         atlas(buildBlockAtlas(blocks, packs)),
         table(meshTableOf(blocks, atlas)),
         world(scene, blocks) {}

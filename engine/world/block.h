@@ -1,10 +1,12 @@
 #pragma once
 // Block types as data: everything the light, mesh and render code needs to know about a block.
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/enum_names.h"
@@ -58,6 +60,11 @@ using FaceTextures = std::array<std::vector<std::string>, 6>;
 struct BlockProperty {
   std::string name;
   std::vector<std::string> values;
+
+  // The value's index, values.size() when it is not one of them.
+  std::size_t indexOf(std::string_view value) const {
+    return static_cast<std::size_t>(std::find(values.begin(), values.end(), value) - values.begin());
+  }
 };
 
 struct BlockType {
@@ -69,7 +76,14 @@ struct BlockType {
   BlockShape shape = BlockShape::None;
   RenderLayer layer = RenderLayer::None;
   std::uint8_t opacity = 0;   // light lost passing through, 0..15; 15 stops light
-  std::uint8_t emission = 0;  // light level emitted, 0..15
+  std::uint8_t emission = 0;  // light level emitted by its default state, 0..15 (per state: the registry)
+  // One of Minecraft's blocks (world/block_table.h): its states, light and collision are Minecraft's.
+  bool minecraft = false;
+  // A pack's blocks.json lists it; one of Minecraft's blocks it leaves out is drawn by the packs'
+  // blockstates, or as a placeholder where none has them.
+  bool inBlocksJson = false;
+  // Stands in water in every state (seagrass, kelp); other blocks hold water where "waterlogged=true".
+  bool alwaysInWater = false;
   // Light stops at the sides its shape covers whole (vanilla's useShapeForLightOcclusion): a bottom
   // slab keeps sky light from the cell below it but lets it in through its open top half.
   bool shapeOccludesLight = false;
@@ -89,6 +103,23 @@ struct BlockType {
 
   // A full opaque cube: hides neighbouring faces and is solid to walk on.
   bool isOpaqueCube() const { return shape == BlockShape::Cube && layer == RenderLayer::Opaque; }
+
+  // A state's offset among the block's states from its values' indices: the last property counts
+  // fastest, as Minecraft numbers them.
+  std::size_t stateOffset(const std::vector<std::size_t>& valueIndices) const {
+    std::size_t offset = 0;
+    for (std::size_t i = 0; i < properties.size(); ++i)
+      offset = offset * properties[i].values.size() + valueIndices[i];
+    return offset;
+  }
+  std::vector<std::size_t> valueIndices(std::size_t offset) const {
+    std::vector<std::size_t> indices(properties.size());
+    for (std::size_t i = properties.size(); i-- > 0;) {
+      indices[i] = offset % properties[i].values.size();
+      offset /= properties[i].values.size();
+    }
+    return indices;
+  }
 };
 
 }  // namespace terrasol

@@ -1,8 +1,11 @@
 #pragma once
-// The table of block types, loaded from JSON (resourcepacks/default/blocks.json). Immutable after
-// loading, so worker threads read it freely.
+// The table of block types: Minecraft's (world/block_table.h, so a Minecraft block's states carry
+// Minecraft's state ids), with a pack's blocks.json over it (resourcepacks/default/blocks.json: how
+// each block looks and the game's rules for it, and the blocks the pack adds after Minecraft's).
+// Immutable after loading, so worker threads read it freely.
 
 #include <filesystem>
+#include <nlohmann/json_fwd.hpp>
 #include <optional>
 #include <string_view>
 #include <unordered_map>
@@ -10,13 +13,18 @@
 
 #include "core/state_values.h"
 #include "world/block.h"
+#include "world/block_table.h"
 
 namespace terrasol {
 
 class BlockRegistry {
  public:
   // Throws Error naming the file, the block (by index and name) and the key that is wrong.
-  static BlockRegistry fromFile(const std::filesystem::path& file);
+  static BlockRegistry load(const BlockTable& table, std::string_view blocksJson,
+                            const std::string& fileName);
+  // The shipped table (BlockTable::shippedFile) with `blocksJson` over it.
+  static BlockRegistry load(const std::filesystem::path& blocksJson);
+  // A pack's blocks.json alone, air first: small registries for tests.
   static BlockRegistry fromJson(std::string_view json, const std::string& fileName);
 
   // The block type of a state.
@@ -40,15 +48,35 @@ class BlockRegistry {
   // The state with `property` set to `value`; nothing when its block has no such property or value.
   std::optional<BlockId> with(BlockId state, std::string_view property, std::string_view value) const;
 
-  // Per-state tables for hot loops (light, meshing): one byte each, indexed by BlockId.
+  // How many blocks come from Minecraft's table: blocks 0 .. minecraftBlockCount() - 1.
+  std::size_t minecraftBlockCount() const { return minecraftBlocks_; }
+
+  // Per-state tables for hot loops (light, meshing): one byte each, indexed by BlockId. A state that
+  // holds water filters light as water does.
   const std::vector<std::uint8_t>& opacities() const { return opacity_; }
   const std::vector<std::uint8_t>& emissions() const { return emission_; }
   // 1 where the block is an opaque cube (hides neighbouring faces, darkens corners).
   const std::vector<std::uint8_t>& opaqueCubes() const { return opaqueCube_; }
+  // 1 where the cell holds water besides its block: "waterlogged=true", and blocks always in water.
+  const std::vector<std::uint8_t>& holdsWater() const { return water_; }
+  // The water that such cells hold: water's default state; kAir where there is no "water" block.
+  BlockId waterState() const { return waterState_; }
+  // Minecraft's collision boxes for a Minecraft block's state; null for a block a pack added.
+  const std::vector<ShapeBox>* minecraftCollision(BlockId state) const {
+    const std::uint16_t shape = collision_[state];
+    return shape == kNoShape ? nullptr : &shapes_[shape];
+  }
 
  private:
-  // Appends the next block read, its defaultState relative to its first; throws Error for a bad one.
-  void add(BlockType type);
+  static constexpr std::uint16_t kNoShape = 0xffff;
+  // Appends a block, its defaultState relative to its first; `emission` and `collision` per state
+  // (empty: the type's emission, no Minecraft collision). Throws Error for a bad one.
+  void add(BlockType type, const std::vector<std::uint8_t>& emission = {},
+           const std::vector<std::uint16_t>& collision = {});
+  // blocks.json over the blocks added so far: looks and rules for known ones, the rest added.
+  void overlay(const nlohmann::json& blocksJson);
+  // The per-state tables, once every block is known.
+  void finish();
 
   std::vector<BlockType> types_;
   std::vector<std::uint16_t> blockOf_;  // per state: its block's index in types_
@@ -56,6 +84,11 @@ class BlockRegistry {
   std::vector<std::uint8_t> opacity_;
   std::vector<std::uint8_t> emission_;
   std::vector<std::uint8_t> opaqueCube_;
+  std::vector<std::uint8_t> water_;
+  std::vector<std::uint16_t> collision_;  // per state: an index into shapes_, or kNoShape
+  std::vector<std::vector<ShapeBox>> shapes_;
+  std::size_t minecraftBlocks_ = 0;
+  BlockId waterState_ = kAir;
 };
 
 }  // namespace terrasol

@@ -14,7 +14,8 @@ BlockShapes::BlockShapes(const BlockRegistry& blocks)
       opaqueModel_(blocks.size()),
       lightSides_(blocks.size()),
       opaqueCubes_(blocks.opaqueCubes()),
-      lightFaces_(blocks.size()) {
+      lightFaces_(blocks.size()),
+      minecraftCollision_(blocks.size()) {
   for (BlockId s = 0; s < blocks.size(); ++s) {
     shapeOccludesLight_[s] = blocks[s].shapeOccludesLight;
     opaqueModel_[s] = blocks[s].shape == BlockShape::Model && blocks[s].layer == RenderLayer::Opaque;
@@ -25,19 +26,17 @@ BlockShapes::BlockShapes(const BlockRegistry& blocks)
       const auto v = values.find(type.passableWhen->property);
       if (v != values.end() && v->second == type.passableWhen->value) collisionHeight_[s] = 0;
     }
+    if (const std::vector<ShapeBox>* boxes = blocks.minecraftCollision(s)) {
+      minecraftCollision_[s] = true;
+      collision_[s] = *boxes;
+    }
     if (blocks[s].shape == BlockShape::Cube) setBoxes(s, {ShapeBox{}});
   }
 }
 
 void BlockShapes::setBoxes(BlockId state, std::vector<ShapeBox> boxes) {
   boxes_[state] = std::move(boxes);
-  collision_[state].clear();
-  for (ShapeBox b : boxes_[state]) {
-    const bool flat = b.from[0] == b.to[0] || b.from[1] == b.to[1] || b.from[2] == b.to[2];
-    if (flat || collisionHeight_[state] == 0) continue;
-    if (collisionHeight_[state] != 255) b.to[1] = collisionHeight_[state];
-    collision_[state].push_back(b);
-  }
+  if (!minecraftCollision_[state]) collideWithBoxes(state);
   std::uint8_t sides = 0;
   lightFaces_[state] = {};
   if (shapeOccludesLight_[state]) {
@@ -55,6 +54,17 @@ void BlockShapes::setBoxes(BlockId state, std::vector<ShapeBox> boxes) {
   }
   lightSides_[state] = sides;
   if (opaqueModel_[state]) opaqueCubes_[state] = wholeCell(state) ? 1 : 0;
+}
+
+// A pack's block collides with its model's boxes, raised to its collision height.
+void BlockShapes::collideWithBoxes(BlockId state) {
+  collision_[state].clear();
+  for (ShapeBox b : boxes_[state]) {
+    const bool flat = b.from[0] == b.to[0] || b.from[1] == b.to[1] || b.from[2] == b.to[2];
+    if (flat || collisionHeight_[state] == 0) continue;
+    if (collisionHeight_[state] != 255) b.to[1] = collisionHeight_[state];
+    collision_[state].push_back(b);
+  }
 }
 
 }  // namespace terrasol

@@ -17,15 +17,17 @@ namespace terrasol {
 
 class BlockShapes {
  public:
-  // Opaque and see-through cubes a full box, every other state none.
+  // Opaque and see-through cubes a full box, every other state none; Minecraft's blocks collide as
+  // Minecraft's table says.
   explicit BlockShapes(const BlockRegistry& blocks);
 
   const std::vector<ShapeBox>& boxes(BlockId state) const { return boxes_[state]; }
   // Whether the state's shape is the whole cell (a cube, glass, a double slab).
   bool wholeCell(BlockId state) const { return boxes_[state].size() == 1 && boxes_[state][0] == ShapeBox{}; }
   void setBoxes(BlockId state, std::vector<ShapeBox> boxes);
-  // What a player collides with: the boxes, raised to the block's collision height (a fence's 1.5
-  // blocks), none for a passable state (an open gate) and without flat ones (a ladder's plane).
+  // What a player collides with: Minecraft's boxes for its blocks (world/block_table.h); for a block a
+  // pack adds, the boxes raised to the block's collision height (a fence's 1.5 blocks), none for a
+  // passable state (an open gate) and without flat ones (a ladder's plane).
   const std::vector<ShapeBox>& collision(BlockId state) const { return collision_[state]; }
 
   // Light through shaped blocks, as vanilla's useShapeForLightOcclusion decides it: light moves from a
@@ -44,12 +46,15 @@ class BlockShapes {
   const std::vector<std::uint8_t>& opaqueCubes() const { return opaqueCubes_; }
 
  private:
+  void collideWithBoxes(BlockId state);
+
   std::vector<std::vector<ShapeBox>> boxes_, collision_;
   std::vector<std::uint8_t> collisionHeight_;  // per state: BlockType::collisionHeight, 0 when passable
   std::vector<bool> shapeOccludesLight_, opaqueModel_;
   std::vector<std::uint8_t> lightSides_, opaqueCubes_;
   std::vector<std::array<std::uint8_t, 6>> lightFaces_;
   std::vector<SideMask> faceMasks_{SideMask{}};  // index 0: nothing covered
+  std::vector<bool> minecraftCollision_;
 };
 
 }  // namespace terrasol

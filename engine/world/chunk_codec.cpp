@@ -9,7 +9,9 @@
 namespace terrasol {
 namespace {
 
-constexpr std::uint8_t kVersion = 1;
+// 2: names are Minecraft's throughout. 1 named the full snow block "snow" and the snow layer
+// "snow_layer", as Terrasol did before it followed Minecraft's block table.
+constexpr std::uint8_t kVersion = 2;
 // Largest possible uncompressed chunk: header, a full palette, 24 dense sections.
 constexpr std::size_t kMaxRaw = 3 + 65536 * 256 + kSectionCount * (1 + 2 * Section::kVolume);
 constexpr int kZstdLevel = 3;  // zstd's default: fast, and chunks shrink 20-100x anyway
@@ -17,6 +19,13 @@ constexpr int kZstdLevel = 3;  // zstd's default: fast, and chunks shrink 20-100
 void put16(std::vector<std::uint8_t>& out, std::uint16_t v) {
   out.push_back(static_cast<std::uint8_t>(v & 0xFF));
   out.push_back(static_cast<std::uint8_t>(v >> 8));
+}
+
+// A version-1 state name as today's registry names it.
+std::string fromVersion1(const std::string& name) {
+  if (name == "snow") return "snow_block";
+  if (name.rfind("snow_layer", 0) == 0) return "snow" + name.substr(std::string_view("snow_layer").size());
+  return name;
 }
 
 class Reader {
@@ -98,10 +107,13 @@ std::unique_ptr<Chunk> decodeChunk(ChunkPos pos, const std::uint8_t* data, std::
     throw Error(std::string("cannot decompress chunk: ") + ZSTD_getErrorName(n));
 
   Reader in(raw.data(), raw.size());
-  if (const auto v = in.u8(); v != kVersion) throw Error("unsupported chunk version " + std::to_string(v));
+  const std::uint8_t version = in.u8();
+  if (version != 1 && version != kVersion)
+    throw Error("unsupported chunk version " + std::to_string(version));
   std::vector<BlockId> palette(in.u16());
   for (auto& id : palette) {
-    const std::string name = in.bytes(in.u8());
+    std::string name = in.bytes(in.u8());
+    if (version == 1) name = fromVersion1(name);
     bool found = false;
     id = blocks.find(name, &found);
     if (!found && unknownBlocks) unknownBlocks->push_back(name);

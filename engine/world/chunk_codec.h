@@ -4,7 +4,7 @@
 // name saved before its block had properties opens as the block's default state.
 //
 // Uncompressed layout (little-endian), then compressed with zstd as one frame:
-//   u8 version (1)
+//   u8 version (2; 1 is read too, its two renamed snow blocks renamed)
 //   u16 palette size N, then N x (u8 length, name bytes)
 //   24 sections bottom to top: u8 kind; kind 0 (uniform): u16 palette index;
 //                                    kind 1 (dense): 4096 x u16 palette index in Section::index order

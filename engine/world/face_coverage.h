@@ -27,6 +27,7 @@ struct ShapeBox {
 // north/south: x, y), in 1/16: [a0, a1) x [b0, b1).
 struct SideRect {
   int a0 = 0, b0 = 0, a1 = kModelUnits, b1 = kModelUnits;
+  friend bool operator==(const SideRect&, const SideRect&) = default;
 };
 
 class FaceCoverage {

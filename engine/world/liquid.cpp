@@ -4,8 +4,16 @@
 
 namespace terrasol {
 
+std::optional<std::size_t> liquidIn(const World& world, const BlockPos& pos) {
+  const BlockRegistry& blocks = world.blocks();
+  const BlockId id = world.getBlock(pos);
+  if (blocks[id].shape == BlockShape::Liquid) return blocks.blockIndex(id);
+  if (blocks.holdsWater()[id]) return blocks.blockIndex(blocks.waterState());
+  return std::nullopt;
+}
+
 bool isLiquid(const World& world, const BlockPos& pos) {
-  return world.blocks()[world.getBlock(pos)].shape == BlockShape::Liquid;
+  return liquidIn(world, pos).has_value();
 }
 
 std::optional<double> liquidSurfaceAbove(const World& world, glm::dvec3 point) {
@@ -13,10 +21,10 @@ std::optional<double> liquidSurfaceAbove(const World& world, glm::dvec3 point) {
   if (point.y < kMinY || point.y >= kMaxY) return std::nullopt;
   const BlockPos start{static_cast<int>(std::floor(point.x)), static_cast<int>(std::floor(point.y)),
                        static_cast<int>(std::floor(point.z))};
-  const BlockId liquid = world.getBlock(start);
-  if (world.blocks()[liquid].shape != BlockShape::Liquid) return std::nullopt;
+  const std::optional<std::size_t> liquid = liquidIn(world, start);
+  if (!liquid) return std::nullopt;
   BlockPos top = start;
-  while (top.y + 1 < kMaxY && world.getBlock(top.offset(0, 1, 0)) == liquid) top = top.offset(0, 1, 0);
+  while (top.y + 1 < kMaxY && liquidIn(world, top.offset(0, 1, 0)) == liquid) top = top.offset(0, 1, 0);
   const double surface = top.y + 1.0 - kLiquidSurfaceDrop32 / 32.0;
   if (point.y >= surface) return std::nullopt;  // in the top cell, above its lowered surface
   return surface;

@@ -63,13 +63,15 @@ TEST(ConnectedStates, AChangeUpdatesItselfAndItsNeighbours) {
   const auto updates = connectionUpdates(world, {4, 64, 5});
   ASSERT_EQ(updates.size(), 1u);
   EXPECT_EQ(updates[0].first, (BlockPos{4, 64, 4}));
-  EXPECT_EQ(b.stateName(updates[0].second), "oak_stairs[facing=north,half=bottom,shape=inner_right]");
+  EXPECT_EQ(b.stateName(updates[0].second),
+            "oak_stairs[facing=north,half=bottom,shape=inner_right,waterlogged=false]");
   world.setBlock(updates[0].first, updates[0].second);
   EXPECT_TRUE(connectionUpdates(world, {4, 64, 5}).empty()) << "settled";
   world.setBlock({4, 64, 5}, kAir);
   const auto back = connectionUpdates(world, {4, 64, 5});
   ASSERT_EQ(back.size(), 1u);
-  EXPECT_EQ(b.stateName(back[0].second), "oak_stairs[facing=north,half=bottom,shape=straight]");
+  EXPECT_EQ(b.stateName(back[0].second),
+            "oak_stairs[facing=north,half=bottom,shape=straight,waterlogged=false]");
 }
 
 // Fences join fences, gates across their line and whole faces; panes join panes, walls and whole
@@ -84,19 +86,21 @@ TEST(ConnectedStates, FencesPanesAndWallsJoinTheirKindAndWholeFaces) {
   };
   const BlockPos fence{4, 64, 4};
   world.setBlock(fence, b.id("oak_fence"));
-  EXPECT_EQ(stateAt(fence), "oak_fence[east=false,north=false,south=false,west=false]") << "alone: a post";
+  EXPECT_EQ(stateAt(fence), "oak_fence[east=false,north=false,south=false,waterlogged=false,west=false]")
+      << "alone: a post";
   world.setBlock({5, 64, 4}, b.id("oak_fence"));
   world.setBlock({4, 64, 3}, b.id("stone"));
   world.setBlock({3, 64, 4}, b.id("stone_slab"));
   world.setBlock({4, 64, 5}, b.id("glass_pane"));
-  EXPECT_EQ(stateAt(fence), "oak_fence[east=true,north=true,south=false,west=false]")
+  EXPECT_EQ(stateAt(fence), "oak_fence[east=true,north=true,south=false,waterlogged=false,west=false]")
       << "a fence and stone; not half a side, nor a pane";
   world.setBlock({3, 64, 4}, b.id("stone_slab[type=double]"));
   world.setBlock({4, 64, 5}, b.id("oak_fence_gate[facing=east]"));
-  EXPECT_EQ(stateAt(fence), "oak_fence[east=true,north=true,south=true,west=true]")
+  EXPECT_EQ(stateAt(fence), "oak_fence[east=true,north=true,south=true,waterlogged=false,west=true]")
       << "a double slab, and a gate whose bars run north-south";
   world.setBlock({4, 64, 5}, b.id("oak_fence_gate[facing=south]"));
-  EXPECT_EQ(stateAt(fence), "oak_fence[east=true,north=true,south=false,west=true]") << "not one across";
+  EXPECT_EQ(stateAt(fence), "oak_fence[east=true,north=true,south=false,waterlogged=false,west=true]")
+      << "not one across";
 
   const BlockPos pane{10, 64, 10};
   world.setBlock(pane, b.id("glass_pane"));
@@ -104,20 +108,23 @@ TEST(ConnectedStates, FencesPanesAndWallsJoinTheirKindAndWholeFaces) {
   world.setBlock({9, 64, 10}, b.id("oak_leaves"));
   world.setBlock({10, 64, 9}, b.id("cobblestone_wall"));
   world.setBlock({10, 64, 11}, b.id("oak_fence"));
-  EXPECT_EQ(stateAt(pane), "glass_pane[east=true,north=true,south=false,west=false]")
+  EXPECT_EQ(stateAt(pane), "glass_pane[east=true,north=true,south=false,waterlogged=false,west=false]")
       << "glass and a wall; not leaves, nor a fence";
 
   const BlockPos wall{4, 64, 12};
   world.setBlock(wall, b.id("cobblestone_wall"));
   world.setBlock({4, 64, 11}, b.id("cobblestone_wall"));
   world.setBlock({4, 64, 13}, b.id("glass_pane"));
-  EXPECT_EQ(stateAt(wall), "cobblestone_wall[east=none,north=low,south=low,up=false,west=none]")
+  EXPECT_EQ(stateAt(wall),
+            "cobblestone_wall[east=none,north=low,south=low,up=false,waterlogged=false,west=none]")
       << "straight through: no post";
   world.setBlock({4, 65, 12}, b.id("stone"));
-  EXPECT_EQ(stateAt(wall), "cobblestone_wall[east=none,north=tall,south=tall,up=false,west=none]")
+  EXPECT_EQ(stateAt(wall),
+            "cobblestone_wall[east=none,north=tall,south=tall,up=false,waterlogged=false,west=none]")
       << "under stone";
   world.setBlock({5, 64, 12}, b.id("stone"));
-  EXPECT_EQ(stateAt(wall), "cobblestone_wall[east=tall,north=tall,south=tall,up=true,west=none]")
+  EXPECT_EQ(stateAt(wall),
+            "cobblestone_wall[east=tall,north=tall,south=tall,up=true,waterlogged=false,west=none]")
       << "a T: a post";
 
   // Changes reach the neighbours and the wall below.

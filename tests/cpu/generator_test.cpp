@@ -271,7 +271,7 @@ TEST(Biomes, EachBiomeHasItsGroundAndTrees) {
   EXPECT_TRUE(has("desert", "sand") && has("desert", "sandstone") && has("desert", "dead_bush") &&
               has("desert", "cactus"));
   EXPECT_FALSE(has("desert", "grass_block"));
-  EXPECT_TRUE(has("snowy_plains", "snow_layer") && has("snowy_plains", "spruce_log"));
+  EXPECT_TRUE(has("snowy_plains", "snow") && has("snowy_plains", "spruce_log"));
   EXPECT_TRUE(has("taiga", "spruce_log") && has("taiga", "spruce_leaves") && has("taiga", "fern"));
   EXPECT_TRUE(has("birch_forest", "birch_log") && has("birch_forest", "birch_leaves"));
   EXPECT_TRUE(has("savanna", "acacia_log"));

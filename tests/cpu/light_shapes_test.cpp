@@ -88,5 +88,24 @@ TEST(Light, RelightingASectionKnowsItsShapedBlocks) {
   EXPECT_EQ(compareWithReference(w.world), "");
 }
 
+// A waterlogged cell filters light as water does: in a shaft through stone, sky light loses a level
+// in each of a column of waterlogged glass panes, and none through dry ones.
+TEST(Light, WaterloggedBlocksFilterLightAsWater) {
+  LitWorld w("void");
+  w.loadArea(-1, -1, 1, 1);
+  w.fill({0, 66, 0}, {5, 72, 2}, "stone");
+  for (int y = 66; y <= 72; ++y) {
+    w.set({1, y, 1}, y >= 70 ? "glass_pane[waterlogged=true]" : "air");
+    w.set({4, y, 1}, y >= 70 ? "glass_pane[waterlogged=false]" : "air");
+  }
+  EXPECT_EQ(w.sky({1, 72, 1}), 14);
+  EXPECT_EQ(w.sky({1, 71, 1}), 13);
+  EXPECT_EQ(w.sky({1, 70, 1}), 12);
+  EXPECT_EQ(w.sky({1, 69, 1}), 11) << "below, what is left of the sky steps down as everywhere";
+  EXPECT_EQ(w.sky({4, 70, 1}), 15);
+  EXPECT_EQ(w.sky({4, 66, 1}), 15);
+  EXPECT_EQ(compareWithReference(w.world), "");
+}
+
 }  // namespace
 }  // namespace terrasol

@@ -493,5 +493,20 @@ TEST(Mesher, AnOpenFloorIsOneQuadSeenFromAbove) {
   EXPECT_GE(facesMerged, 256u);
 }
 
+// A cell holding water besides its block draws the water too: seagrass (always in water) alone in
+// the air shows six faces of water, its top lowered; water beside it hides the faces between them, as
+// water beside water does; a waterlogged pane joins them, a dry one does not.
+TEST(Mesher, WaterloggedCellsDrawTheirWater) {
+  MeshWorld w;
+  w.set({3, 70, 3}, "seagrass");
+  EXPECT_EQ(w.quads(MeshLayer::Translucent), 6u) << "seagrass's water";
+  w.set({4, 70, 3}, "water");
+  EXPECT_EQ(w.quads(MeshLayer::Translucent), 5u + 5u) << "the faces between them hidden";
+  w.set({5, 70, 3}, "glass_pane[waterlogged=true]");
+  EXPECT_EQ(w.quads(MeshLayer::Translucent), 5u + 4u + 5u);
+  w.set({5, 70, 3}, "glass_pane[waterlogged=false]");
+  EXPECT_EQ(w.quads(MeshLayer::Translucent), 5u + 5u);
+}
+
 }  // namespace
 }  // namespace terrasol

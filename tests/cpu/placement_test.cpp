@@ -44,33 +44,33 @@ TEST(PlacementTest, SlabsAndStairsTakeTheirStateFromWhereAndHowTheyArePlaced) {
   };
   const auto name = [&](const std::vector<Placement>& cells) { return b.stateName(one(cells).state); };
   EXPECT_EQ(name(placementOf(world, slab, floor, floor.place, {0.5, 64.0, 0.5}, south)),
-            "stone_slab[type=bottom]");
+            "stone_slab[type=bottom,waterlogged=false]");
   // On a wall's side, above or below its middle.
   const Target side{{0, 64, 3}, {0, 0, -1}, {0, 64, 2}, 2.0};
   EXPECT_EQ(name(placementOf(world, slab, side, side.place, {0.5, 64.7, 3.0}, south)),
-            "stone_slab[type=top]");
+            "stone_slab[type=top,waterlogged=false]");
   EXPECT_EQ(name(placementOf(world, slab, side, side.place, {0.5, 64.3, 3.0}, south)),
-            "stone_slab[type=bottom]");
+            "stone_slab[type=bottom,waterlogged=false]");
   // Against a ceiling.
   const Target ceiling{{0, 70, 0}, {0, -1, 0}, {0, 69, 0}, 2.0};
   EXPECT_EQ(name(placementOf(world, slab, ceiling, ceiling.place, {0.5, 70.0, 0.5}, south)),
-            "stone_slab[type=top]");
+            "stone_slab[type=top,waterlogged=false]");
   EXPECT_EQ(name(placementOf(world, stairs, ceiling, ceiling.place, {0.5, 70.0, 0.5}, south)),
-            "oak_stairs[facing=south,half=top,shape=straight]");
+            "oak_stairs[facing=south,half=top,shape=straight,waterlogged=false]");
   // Clicking a bottom slab's top joins them where it is; its side does not.
   world.setBlock({0, 64, 0}, slab);
   const Target onSlab{{0, 64, 0}, {0, 1, 0}, {0, 65, 0}, 1.0};
   const Placement joined = one(placementOf(world, slab, onSlab, onSlab.place, {0.5, 64.5, 0.5}, south));
   EXPECT_EQ(joined.at, (BlockPos{0, 64, 0}));
-  EXPECT_EQ(b.stateName(joined.state), "stone_slab[type=double]");
+  EXPECT_EQ(b.stateName(joined.state), "stone_slab[type=double,waterlogged=false]");
   const Target slabSide{{0, 64, 0}, {0, 0, 1}, {0, 64, 1}, 1.0};
   EXPECT_EQ(one(placementOf(world, slab, slabSide, slabSide.place, {0.5, 64.2, 1.0}, south)).at,
             (BlockPos{0, 64, 1}));
   // Stairs face the way the player looks.
   EXPECT_EQ(name(placementOf(world, stairs, floor, floor.place, {0.5, 64.0, 0.5}, south)),
-            "oak_stairs[facing=south,half=bottom,shape=straight]");
+            "oak_stairs[facing=south,half=bottom,shape=straight,waterlogged=false]");
   EXPECT_EQ(name(placementOf(world, stairs, floor, floor.place, {0.5, 64.0, 0.5}, west)),
-            "oak_stairs[facing=west,half=bottom,shape=straight]");
+            "oak_stairs[facing=west,half=bottom,shape=straight,waterlogged=false]");
   // A block without a placement rule keeps its state.
   EXPECT_EQ(one(placementOf(world, b.id("stone"), side, side.place, {0.5, 64.7, 3.0}, south)).state,
             b.id("stone"));
@@ -100,19 +100,21 @@ TEST(PlacementTest, EveryRuleOfThePack) {
   };
   EXPECT_EQ(place("oak_log", floor, {0.5, 64.0, 0.5}), "oak_log[axis=y]");
   EXPECT_EQ(place("oak_log", wallSide, {0.5, 64.5, 3.0}), "oak_log[axis=z]");
-  EXPECT_EQ(place("furnace", floor, {0.5, 64.0, 0.5}), "furnace[facing=north]") << "its front to the player";
-  EXPECT_EQ(place("oak_fence_gate", floor, {0.5, 64.0, 0.5}), "oak_fence_gate[facing=south,open=false]");
-  EXPECT_EQ(place("ladder", wallSide, {0.5, 64.5, 3.0}), "ladder[facing=north]");
+  EXPECT_EQ(place("furnace", floor, {0.5, 64.0, 0.5}), "furnace[facing=north,lit=false]")
+      << "its front to the player";
+  EXPECT_EQ(place("oak_fence_gate", floor, {0.5, 64.0, 0.5}),
+            "oak_fence_gate[facing=south,in_wall=false,open=false,powered=false]");
+  EXPECT_EQ(place("ladder", wallSide, {0.5, 64.5, 3.0}), "ladder[facing=north,waterlogged=false]");
   EXPECT_EQ(place("ladder", floor, {0.5, 64.0, 0.5}), "") << "not on a floor";
   EXPECT_EQ(place("torch", wallSide, {0.5, 64.5, 3.0}), "wall_torch[facing=north]");
   EXPECT_EQ(place("torch", floor, {0.5, 64.0, 0.5}), "torch");
   EXPECT_EQ(place("oak_trapdoor", wallSide, {0.5, 64.8, 3.0}),
-            "oak_trapdoor[facing=north,half=top,open=false]");
+            "oak_trapdoor[facing=north,half=top,open=false,powered=false,waterlogged=false]");
   EXPECT_EQ(place("oak_trapdoor", floor, {0.5, 64.0, 0.5}),
-            "oak_trapdoor[facing=north,half=bottom,open=false]");
-  world.setBlock({0, 64, 0}, b.id("snow_layer"));
+            "oak_trapdoor[facing=north,half=bottom,open=false,powered=false,waterlogged=false]");
+  world.setBlock({0, 64, 0}, b.id("snow"));
   const Target onSnow{{0, 64, 0}, {0, 1, 0}, {0, 65, 0}, 1.0};
-  EXPECT_EQ(place("snow_layer", onSnow, {0.5, 64.125, 0.5}), "snow_layer[layers=2]");
+  EXPECT_EQ(place("snow", onSnow, {0.5, 64.125, 0.5}), "snow[layers=2]");
   // A door facing south: its left is east, as Minecraft turns south anticlockwise. Its hinge goes
   // against a wall beside it, and away from a door it pairs with.
   const Target ground{{5, 63, 5}, {0, 1, 0}, {5, 64, 5}, 1.0};
@@ -123,12 +125,12 @@ TEST(PlacementTest, EveryRuleOfThePack) {
   };
   world.setBlock({6, 64, 5}, b.id("stone"));
   EXPECT_EQ(place("oak_door", ground, {5.5, 64.0, 5.5}),
-            "oak_door[facing=south,half=lower,hinge=left,open=false] "
-            "oak_door[facing=south,half=upper,hinge=left,open=false]");
+            "oak_door[facing=south,half=lower,hinge=left,open=false,powered=false] "
+            "oak_door[facing=south,half=upper,hinge=left,open=false,powered=false]");
   world.setBlock({6, 64, 5}, kAir);
   world.setBlock({4, 64, 5}, b.id("stone"));
   EXPECT_EQ(hinge(), "right") << "stone on its right (west)";
-  world.setBlock({4, 64, 5}, b.id("oak_door[facing=south,half=lower,hinge=left]"));
+  world.setBlock({4, 64, 5}, b.id("oak_door[facing=south,half=lower,hinge=left,open=false,powered=false]"));
   EXPECT_EQ(hinge(), "left") << "a door on its right: the pair's hinges on the outer sides";
   world.setBlock({4, 64, 5}, kAir);
   EXPECT_EQ(hinge(), "left") << "alone, clicked on the cell's west half (x 0.5 counts as the left)";
@@ -139,21 +141,24 @@ TEST(PlacementTest, EveryRuleOfThePack) {
 TEST(PlacementTest, DoorsGatesAndTrapdoorsOpenAndClose) {
   World world = flatWorld();
   const BlockRegistry& b = defaultBlocks();
-  world.setBlock({0, 64, 0}, b.id("oak_door[facing=south,half=lower]"));
-  world.setBlock({0, 65, 0}, b.id("oak_door[facing=south,half=upper]"));
+  world.setBlock({0, 64, 0}, b.id("oak_door[facing=south,half=lower,hinge=left,open=false,powered=false]"));
+  world.setBlock({0, 65, 0}, b.id("oak_door[facing=south,half=upper,hinge=left,open=false,powered=false]"));
   const auto used = useOf(world, {0, 65, 0}, {0.0, 0.0, 1.0});
   ASSERT_EQ(used.size(), 2u);
-  EXPECT_EQ(b.stateName(used[0].state), "oak_door[facing=south,half=upper,hinge=left,open=true]");
+  EXPECT_EQ(b.stateName(used[0].state),
+            "oak_door[facing=south,half=upper,hinge=left,open=true,powered=false]");
   EXPECT_EQ(used[1].at, (BlockPos{0, 64, 0}));
-  EXPECT_EQ(b.stateName(used[1].state), "oak_door[facing=south,half=lower,hinge=left,open=true]");
+  EXPECT_EQ(b.stateName(used[1].state),
+            "oak_door[facing=south,half=lower,hinge=left,open=true,powered=false]");
   EXPECT_EQ(brokenBy(world, {0, 64, 0}).size(), 2u);
-  world.setBlock({3, 64, 0}, b.id("oak_fence_gate[facing=south]"));
+  world.setBlock({3, 64, 0}, b.id("oak_fence_gate[facing=south,in_wall=false,open=false,powered=false]"));
   const auto gate = useOf(world, {3, 64, 0}, {0.0, 0.0, -1.0});
   ASSERT_EQ(gate.size(), 1u);
-  EXPECT_EQ(b.stateName(gate[0].state), "oak_fence_gate[facing=north,open=true]") << "opened from the south";
+  EXPECT_EQ(b.stateName(gate[0].state), "oak_fence_gate[facing=north,in_wall=false,open=true,powered=false]")
+      << "opened from the south";
   world.setBlock({5, 64, 0}, b.id("oak_trapdoor"));
   EXPECT_EQ(b.stateName(useOf(world, {5, 64, 0}, {0.0, 0.0, 1.0}).at(0).state),
-            "oak_trapdoor[facing=north,half=bottom,open=true]");
+            "oak_trapdoor[facing=north,half=bottom,open=true,powered=false,waterlogged=false]");
   EXPECT_TRUE(useOf(world, {0, 63, 0}, {0.0, 0.0, 1.0}).empty()) << "stone does not open";
   // Picking gives the block's default state, a torch for a wall torch.
   EXPECT_EQ(pickedBy(world, {0, 65, 0}), b.id("oak_door"));
@@ -186,6 +191,37 @@ TEST(TargetingTest, ShapedBlocksAreHitByTheirBoxesAndOutlinedByThem) {
   EXPECT_EQ(outline.min, glm::dvec3(0.0, 64.0, 2.0));
   EXPECT_EQ(outline.max, glm::dvec3(1.0, 64.5, 3.0));
   EXPECT_EQ(outlineOf(world, {0, 64, 4}).max, glm::dvec3(1.0, 65.0, 5.0));
+}
+
+// A block that can stand in water placed in water keeps it, and leaves it when broken; one that
+// cannot (stone), and a slab joined into a double slab, do not.
+TEST(PlacementTest, BlocksPlacedInWaterKeepTheWater) {
+  World world = flatWorld();
+  world.setShapes(&defaultShapes());
+  const BlockRegistry& b = defaultBlocks();
+  const glm::dvec3 south(0.0, -0.5, 1.0);
+  const Target floor{{0, 63, 0}, {0, 1, 0}, {0, 64, 0}, 1.0};
+  world.setBlock({0, 64, 0}, b.id("water"));
+  const auto placed = [&](const char* block) {
+    const std::vector<Placement> cells =
+        placementOf(world, b.id(block), floor, floor.place, {0.5, 64.0, 0.5}, south);
+    return cells.size() == 1 ? b.stateName(cells[0].state) : std::string("?");
+  };
+  EXPECT_EQ(placed("oak_stairs"), "oak_stairs[facing=south,half=bottom,shape=straight,waterlogged=true]");
+  EXPECT_EQ(placed("glass_pane"),
+            "glass_pane[east=false,north=false,south=false,waterlogged=true,west=false]");
+  EXPECT_EQ(placed("lantern"), "lantern[hanging=false,waterlogged=true]");
+  EXPECT_EQ(placed("stone"), "stone");
+  world.setBlock({0, 64, 0}, b.id("stone_slab[type=bottom,waterlogged=true]"));
+  const Target onSlab{{0, 64, 0}, {0, 1, 0}, {0, 65, 0}, 1.0};
+  const auto joined = placementOf(world, b.id("stone_slab"), onSlab, onSlab.place, {0.5, 64.5, 0.5}, south);
+  ASSERT_EQ(joined.size(), 1u);
+  EXPECT_EQ(b.stateName(joined[0].state), "stone_slab[type=double,waterlogged=false]");
+  // Broken, a waterlogged block leaves its water; a dry one air.
+  const std::vector<Placement> broken = brokenBy(world, {0, 64, 0});
+  ASSERT_EQ(broken.size(), 1u);
+  EXPECT_EQ(broken[0].state, b.waterState());
+  EXPECT_EQ(brokenBy(world, {0, 63, 0})[0].state, kAir);
 }
 
 }  // namespace

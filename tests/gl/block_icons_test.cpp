@@ -23,7 +23,7 @@ TEST_F(BlockIconsTest, EveryBlockGetsAnIcon) {
   const BiomeColormaps colormaps = loadColormaps(packs, problems);
   ASSERT_TRUE(problems.empty());
   const BlockMeshTable table = meshTableOf(blocks, atlas);
-  const std::vector<BlockId> states = iconStates(blocks);
+  const std::vector<BlockId> states = iconStates(blocks, atlas.placeholders);
   std::vector<SectionMesh> meshes;
   for (const BlockId s : states) meshes.push_back(iconMesh(table, blocks, s));
   constexpr int kCell = 32;

@@ -29,11 +29,11 @@ ReferenceLight::ReferenceLight(const World& world) {
       for (int z = 0; z < 16; ++z)
         for (int x = 0; x < 16; ++x) {
           const BlockPos p{c.pos().minBlockX() + x, y, c.pos().minBlockZ() + z};
-          const BlockType& type = blocks[c.get(x, y, z)];
-          opacity_[index(p)] = type.opacity;
+          const BlockId state = c.get(x, y, z);
+          opacity_[index(p)] = blocks.opacities()[state];
           sides_[index(p)] = world.shapes() ? world.shapes()->lightSides()[c.get(x, y, z)] : 0;
           state_[index(p)] = c.get(x, y, z);
-          block_[index(p)] = type.emission;
+          block_[index(p)] = blocks.emissions()[state];
         }
     // Sky: 15 straight down until the first block with opacity or a light side up or down; that one
     // is lit from above.

@@ -11,7 +11,7 @@ std::filesystem::path testOutputDir() {
 }
 
 const BlockRegistry& defaultBlocks() {
-  static const BlockRegistry blocks = BlockRegistry::fromFile(resourcePackDir() / "default" / "blocks.json");
+  static const BlockRegistry blocks = BlockRegistry::load(resourcePackDir() / "default" / "blocks.json");
   return blocks;
 }
 

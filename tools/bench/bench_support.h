@@ -11,8 +11,7 @@
 namespace terrasol::bench {
 
 inline const BlockRegistry& blocks() {
-  static const BlockRegistry registry =
-      BlockRegistry::fromFile(resourcePackDir() / "default" / "blocks.json");
+  static const BlockRegistry registry = BlockRegistry::load(resourcePackDir() / "default" / "blocks.json");
   return registry;
 }
 

@@ -14,7 +14,7 @@ namespace {
 
 // The texture names the game asks for: every face of every block in the registry.
 std::vector<std::vector<std::string>> blockTextureNames() {
-  const BlockRegistry blocks = BlockRegistry::fromFile(resourcePackDir() / "default" / "blocks.json");
+  const BlockRegistry blocks = BlockRegistry::load(resourcePackDir() / "default" / "blocks.json");
   std::set<std::vector<std::string>> names;
   for (BlockId id = 1; id < blocks.size(); ++id)
     for (const auto& face : blocks[id].textures) names.insert(face);

@@ -62,7 +62,7 @@ int run(int argc, char** argv) {
         "usage: terrasol-export WORLD_DIR|SCENE.json --region x0,y0,z0,x1,y1,z1 --out region.glb [--pack "
         "PATH]...");
   }
-  const BlockRegistry blocks = BlockRegistry::fromFile(resourcePackDir() / "default" / "blocks.json");
+  const BlockRegistry blocks = BlockRegistry::load(resourcePackDir() / "default" / "blocks.json");
   const glm::ivec3 centre = (region->min + region->max) / 2;
   const int radius = (std::max(region->max.x - region->min.x, region->max.z - region->min.z) + 1) / 32 + 1;
 

@@ -74,11 +74,11 @@ MapOptions parse(int argc, char** argv) {
 const std::map<std::string, std::array<int, 3>> kColours = {
     {"stone", {125, 125, 125}},      {"dirt", {134, 96, 67}},         {"grass_block", {95, 159, 53}},
     {"sand", {219, 207, 163}},       {"gravel", {136, 126, 126}},     {"bedrock", {60, 60, 60}},
-    {"water", {52, 95, 218}},        {"lava", {230, 100, 20}},        {"snow", {245, 250, 250}},
+    {"water", {52, 95, 218}},        {"lava", {230, 100, 20}},        {"snow_block", {245, 250, 250}},
     {"oak_log", {110, 85, 50}},      {"oak_leaves", {50, 120, 30}},   {"short_grass", {110, 170, 60}},
     {"dandelion", {240, 220, 40}},   {"poppy", {220, 30, 30}},        {"coal_ore", {50, 50, 50}},
     {"iron_ore", {200, 160, 130}},   {"gold_ore", {250, 220, 80}},    {"glowstone", {255, 230, 140}},
-    {"sandstone", {216, 203, 155}},  {"ice", {160, 190, 240}},        {"snow_layer", {245, 250, 250}},
+    {"sandstone", {216, 203, 155}},  {"ice", {160, 190, 240}},        {"snow", {245, 250, 250}},
     {"birch_log", {216, 215, 210}},  {"birch_leaves", {90, 140, 60}}, {"spruce_log", {58, 37, 16}},
     {"spruce_leaves", {40, 90, 50}}, {"acacia_log", {103, 96, 86}},   {"acacia_leaves", {90, 130, 40}},
     {"cactus", {80, 130, 40}},       {"dead_bush", {148, 100, 40}},   {"fern", {80, 140, 50}},
@@ -122,7 +122,7 @@ int biomeMap(const MapOptions& o, const BlockRegistry& blocks) {
 
 int run(int argc, char** argv) {
   const MapOptions o = parse(argc, argv);
-  const BlockRegistry blocks = BlockRegistry::fromFile(resourcePackDir() / "default" / "blocks.json");
+  const BlockRegistry blocks = BlockRegistry::load(resourcePackDir() / "default" / "blocks.json");
   if (o.biomes) return biomeMap(o, blocks);
   const auto generator = makeGenerator(o.generator, blocks);
   std::vector<std::array<std::uint8_t, 3>> palette(blocks.size(), {255, 0, 255});

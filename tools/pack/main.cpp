@@ -77,7 +77,7 @@ int inspect(const PackStack& packs) {
 }
 
 int atlas(const PackStack& packs, const std::filesystem::path& out) {
-  const BlockRegistry blocks = BlockRegistry::fromFile(resourcePackDir() / "default" / "blocks.json");
+  const BlockRegistry blocks = BlockRegistry::load(resourcePackDir() / "default" / "blocks.json");
   const auto start = std::chrono::steady_clock::now();
   const BlockAtlas blockAtlas = buildBlockAtlas(blocks, packs);  // exactly what the renderer gets
   const Atlas& built = blockAtlas.atlas;
@@ -102,7 +102,7 @@ int atlas(const PackStack& packs, const std::filesystem::path& out) {
 }
 
 int coverage(const PackStack& packs) {
-  const BlockRegistry blocks = BlockRegistry::fromFile(resourcePackDir() / "default" / "blocks.json");
+  const BlockRegistry blocks = BlockRegistry::load(resourcePackDir() / "default" / "blocks.json");
   const TextureCoverage c = textureCoverage(blocks, packs);
   for (const std::string& name : c.unused) std::printf("unused: %s\n", name.c_str());
   std::printf("used %zu of %zu block textures\n", c.used.size(), c.used.size() + c.unused.size());
