@@ -9,7 +9,6 @@ namespace {
 
 using namespace json_check;
 
-
 constexpr EnumNames<BlockShape, 6> kShapes{{"none", "cube", "cross", "liquid", "torch", "model"}};
 constexpr EnumNames<RenderLayer, 4> kLayers{{"", "opaque", "cutout", "translucent"}};  // None: shape none's
 constexpr EnumNames<Tint, kTintCount> kTints{{"none", "grass", "foliage", "water", "birch", "spruce"}};
@@ -196,11 +195,13 @@ BlockType parsePackBlock(const json& block, const std::string& where) {
 void parseLooksAndRules(const json& block, BlockType& type, const std::string& where) {
   if (!block.is_object()) expected(where, "an object", block);
   const std::string at = join({where, " (", type.name, ")"});
-  for (const char* fact : {"properties", "default", "opacity", "emission", "shape_occludes_light", "collision"}) {
+  for (const char* fact :
+       {"properties", "default", "opacity", "emission", "shape_occludes_light", "collision"}) {
     if (field(block, fact)) fail(member(at, fact), "is Minecraft's, given by its block table: leave it out");
   }
-  checkObject(block, at, {"name", "shape", "layer", "textures", "tint", "placement", "wall_variant", "connects",
-                          "opens"});
+  checkObject(
+      block, at,
+      {"name", "shape", "layer", "textures", "tint", "placement", "wall_variant", "connects", "opens"});
   type.shape = BlockShape::Cube;
   type.inBlocksJson = true;
   parseLooks(block, type, at);

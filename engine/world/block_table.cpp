@@ -28,12 +28,14 @@ ShapeBox parseBox(const json& value, const std::string& key) {
 }
 
 std::vector<std::vector<ShapeBox>> parseShapes(const json& shapes) {
-  if (!shapes.is_array() || shapes.size() < 2) expected("shapes", "an array of shapes, empty and full first", shapes);
+  if (!shapes.is_array() || shapes.size() < 2)
+    expected("shapes", "an array of shapes, empty and full first", shapes);
   std::vector<std::vector<ShapeBox>> out(shapes.size());
   for (std::size_t i = 0; i < shapes.size(); ++i) {
     const std::string key = element("shapes", i);
     if (!shapes[i].is_array()) expected(key, "an array of boxes", shapes[i]);
-    for (std::size_t b = 0; b < shapes[i].size(); ++b) out[i].push_back(parseBox(shapes[i][b], element(key, b)));
+    for (std::size_t b = 0; b < shapes[i].size(); ++b)
+      out[i].push_back(parseBox(shapes[i][b], element(key, b)));
   }
   return out;
 }
@@ -42,9 +44,11 @@ std::vector<std::vector<ShapeBox>> parseShapes(const json& shapes) {
 template <class T>
 std::vector<T> perState(const json& value, const std::string& key, std::size_t states, std::int64_t hi) {
   if (!value.is_array()) return std::vector<T>(states, static_cast<T>(wholeNumber(value, key, 0, hi)));
-  if (value.size() != states) expected(key, join({"a number or one per state (", std::to_string(states), ")"}), value);
+  if (value.size() != states)
+    expected(key, join({"a number or one per state (", std::to_string(states), ")"}), value);
   std::vector<T> out(states);
-  for (std::size_t s = 0; s < states; ++s) out[s] = static_cast<T>(wholeNumber(value[s], element(key, s), 0, hi));
+  for (std::size_t s = 0; s < states; ++s)
+    out[s] = static_cast<T>(wholeNumber(value[s], element(key, s), 0, hi));
   return out;
 }
 
@@ -59,18 +63,23 @@ TableBlock parseTableBlock(const json& block, const std::string& where, std::siz
                "in_water", "collision"});
   parseStates(block, type, at);
   type.minecraft = true;
-  type.opacity = static_cast<std::uint8_t>(wholeNumber(required(block, at, "opacity"), member(at, "opacity"), 0, kMaxLight));
-  t.emission = perState<std::uint8_t>(required(block, at, "emission"), member(at, "emission"), type.stateCount, kMaxLight);
+  type.opacity = static_cast<std::uint8_t>(
+      wholeNumber(required(block, at, "opacity"), member(at, "opacity"), 0, kMaxLight));
+  t.emission = perState<std::uint8_t>(required(block, at, "emission"), member(at, "emission"),
+                                      type.stateCount, kMaxLight);
   type.emission = t.emission[type.defaultState];
-  const auto flag = [&](const char* name) { const json* v = field(block, name); return v && boolean(*v, member(at, name)); };
+  const auto flag = [&](const char* name) {
+    const json* v = field(block, name);
+    return v && boolean(*v, member(at, name));
+  };
   type.shapeOccludesLight = flag("light_by_shape");
   type.alwaysInWater = flag("in_water");
   if (!flag("air")) {
     type.shape = BlockShape::Model;
     type.layer = flag("transparent") ? RenderLayer::Cutout : RenderLayer::Opaque;
   }
-  t.collision = perState<std::uint16_t>(required(block, at, "collision"), member(at, "collision"), type.stateCount,
-                                        static_cast<std::int64_t>(shapeCount) - 1);
+  t.collision = perState<std::uint16_t>(required(block, at, "collision"), member(at, "collision"),
+                                        type.stateCount, static_cast<std::int64_t>(shapeCount) - 1);
   return t;
 }
 
@@ -94,8 +103,12 @@ BlockTable BlockTable::fromJson(std::string_view text, const std::string& fileNa
   }
 }
 
-BlockTable BlockTable::fromFile(const std::filesystem::path& file) { return fromJson(readTextFile(file), file.string()); }
+BlockTable BlockTable::fromFile(const std::filesystem::path& file) {
+  return fromJson(readTextFile(file), file.string());
+}
 
-std::filesystem::path BlockTable::shippedFile() { return dataRoot() / "data" / "minecraft_blocks.json"; }
+std::filesystem::path BlockTable::shippedFile() {
+  return dataRoot() / "data" / "minecraft_blocks.json";
+}
 
 }  // namespace terrasol

@@ -1,18 +1,23 @@
+#include "world/block_table.h"
+
 #include <gtest/gtest.h>
 
 #include "core/error.h"
 #include "support/error_of.h"
 #include "support/world_support.h"
 #include "world/block_shapes.h"
-#include "world/block_table.h"
 
 namespace terrasol {
 namespace {
 
 using testing::defaultBlocks;
 
-int emission(const char* state) { return defaultBlocks().emissions()[defaultBlocks().id(state)]; }
-int opacity(const char* state) { return defaultBlocks().opacities()[defaultBlocks().id(state)]; }
+int emission(const char* state) {
+  return defaultBlocks().emissions()[defaultBlocks().id(state)];
+}
+int opacity(const char* state) {
+  return defaultBlocks().opacities()[defaultBlocks().id(state)];
+}
 
 // Minecraft 1.21.11's blocks, states numbered as Minecraft numbers them (minecraft-data's
 // minStateId / defaultState), then the blocks the default pack adds.
@@ -28,7 +33,8 @@ TEST(BlockTable, EveryMinecraftBlockWithMinecraftsStateIds) {
   EXPECT_EQ(b.id("oak_leaves[distance=1,persistent=true,waterlogged=true]"), 252);
   EXPECT_EQ(b.block(b.minecraftBlockCount() - 1).firstState + b.block(b.minecraftBlockCount() - 1).stateCount,
             29671);
-  for (std::size_t i = 0; i < b.minecraftBlockCount(); ++i) EXPECT_TRUE(b.block(i).minecraft) << b.block(i).name;
+  for (std::size_t i = 0; i < b.minecraftBlockCount(); ++i)
+    EXPECT_TRUE(b.block(i).minecraft) << b.block(i).name;
 }
 
 // Light by state as Minecraft gives it: lit furnaces and lamps, candles by count, sea pickles in
@@ -99,8 +105,7 @@ TEST(BlockTable, BlocksJsonMayNotRestateMinecraftsFacts) {
                             R"({"name": "oak_log", "properties": {"axis": ["x", "y", "z"]}})",
                             R"({"name": "oak_fence", "collision": {"height": 24}})"}) {
     const std::string json = std::string(R"({"blocks": [{"name": "air", "shape": "none"}, )") + entry + "]}";
-    const std::string error =
-        testing::errorOf([&] { BlockRegistry::load(table, json, "test/blocks.json"); });
+    const std::string error = testing::errorOf([&] { BlockRegistry::load(table, json, "test/blocks.json"); });
     EXPECT_NE(error.find("test/blocks.json: blocks[1] ("), std::string::npos) << error;
     EXPECT_NE(error.find("is Minecraft's, given by its block table"), std::string::npos) << error;
   }
@@ -118,15 +123,17 @@ TEST(BlockTable, BlocksJsonMayNotRestateMinecraftsFacts) {
 TEST(BlockTable, BadTableNamesTheFileBlockAndKey) {
   const auto errorOf = [](const std::string& blocks) {
     return testing::errorOf([&] {
-      BlockTable::fromJson(R"({"version": "1", "shapes": [[], [[0, 0, 0, 16, 16, 16]]], "blocks": [)" + blocks + "]}",
-                           "data/t.json");
+      BlockTable::fromJson(
+          R"({"version": "1", "shapes": [[], [[0, 0, 0, 16, 16, 16]]], "blocks": [)" + blocks + "]}",
+          "data/t.json");
     });
   };
   EXPECT_EQ(errorOf(R"({"name": "air", "opacity": 0, "emission": 0, "collision": 2})"),
             "data/t.json: blocks[0] (air).collision: expected a whole number from 0 to 1, got 2");
-  EXPECT_EQ(errorOf(R"({"name": "lamp", "properties": {"lit": ["true", "false"]}, "opacity": 15,
+  EXPECT_EQ(
+      errorOf(R"({"name": "lamp", "properties": {"lit": ["true", "false"]}, "opacity": 15,
                        "emission": [15], "collision": 1})"),
-            "data/t.json: blocks[0] (lamp).emission: expected a number or one per state (2), got an array of 1");
+      "data/t.json: blocks[0] (lamp).emission: expected a number or one per state (2), got an array of 1");
   EXPECT_EQ(errorOf(R"({"name": "air", "opacity": 16, "emission": 0, "collision": 0})"),
             "data/t.json: blocks[0] (air).opacity: expected a whole number from 0 to 15, got 16");
 }

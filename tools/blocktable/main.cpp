@@ -10,8 +10,8 @@
 #include <cstdio>
 #include <fstream>
 #include <map>
-#include <optional>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -36,7 +36,9 @@ bool endsWith(const std::string& s, const std::string& tail) {
   return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
 }
 
-int number(const Values& v, const char* property) { return std::stoi(v.at(property)); }
+int number(const Values& v, const char* property) {
+  return std::stoi(v.at(property));
+}
 
 // The light a state emits, where Minecraft varies it by state (BlockBehaviour.Properties.lightLevel
 // of each block); nothing where the block's one value holds for every state.
@@ -80,18 +82,21 @@ std::optional<int> emissionByState(const std::string& name, const Values& v) {
 // Blocks whose light passes by their shape (Minecraft's useShapeForLightOcclusion): a bottom slab
 // lets sky light in through its open top half.
 bool lightByShape(const std::string& name) {
-  static const std::set<std::string> kNamed = {"snow",           "farmland",          "dirt_path",
-                                               "lectern",        "stonecutter",       "enchanting_table",
-                                               "daylight_detector", "end_portal_frame"};
+  static const std::set<std::string> kNamed = {
+      "snow",        "farmland",         "dirt_path",         "lectern",
+      "stonecutter", "enchanting_table", "daylight_detector", "end_portal_frame"};
   return endsWith(name, "_slab") || endsWith(name, "_stairs") || kNamed.count(name) > 0;
 }
 
 // Minecraft's air blocks (its AirBlock): nothing drawn, nothing in the way.
-bool isAir(const std::string& name) { return name == "air" || name == "cave_air" || name == "void_air"; }
+bool isAir(const std::string& name) {
+  return name == "air" || name == "cave_air" || name == "void_air";
+}
 
 // Blocks that always stand in water, without a "waterlogged" property.
 bool alwaysInWater(const std::string& name) {
-  static const std::set<std::string> kNamed = {"seagrass", "tall_seagrass", "kelp", "kelp_plant", "bubble_column"};
+  static const std::set<std::string> kNamed = {"seagrass", "tall_seagrass", "kelp", "kelp_plant",
+                                               "bubble_column"};
   return kNamed.count(name) > 0;
 }
 
@@ -148,9 +153,9 @@ ordered_json boxesInSixteenths(const json& boxes) {
 }
 
 struct Table {
-  std::vector<std::string> lines;     // one block each
-  std::map<int, int> shapeIndex;      // upstream shape id -> index in `shapes`
-  std::vector<std::string> shapes;    // one line each
+  std::vector<std::string> lines;   // one block each
+  std::map<int, int> shapeIndex;    // upstream shape id -> index in `shapes`
+  std::vector<std::string> shapes;  // one line each
 };
 
 int shapeOf(Table& table, const json& upstreamShapes, int id) {
@@ -190,7 +195,8 @@ ordered_json convertBlock(const json& block, const json& collision, const json& 
     if (const auto e = emissionByState(name, valuesOf(props, s))) {
       emission[s] = *e;
       varies = varies || *e != emission[0];
-      if (s == defaultOffset && *e != upstreamEmission) throw Error(name + ": light rule disagrees at its default");
+      if (s == defaultOffset && *e != upstreamEmission)
+        throw Error(name + ": light rule disagrees at its default");
     }
   }
   out["emission"] = varies ? json(emission) : json(emission[0]);
@@ -239,8 +245,8 @@ int main(int argc, char** argv) {
     std::size_t nextState = 0;
     for (const json& block : blocks) {
       const ordered_json row =
-          convertBlock(block, shapes.at("blocks").at(block.at("name").get<std::string>()), shapes.at("shapes"),
-                       table, nextState);
+          convertBlock(block, shapes.at("blocks").at(block.at("name").get<std::string>()),
+                       shapes.at("shapes"), table, nextState);
       nextState = block.at("maxStateId").get<std::size_t>() + 1;
       table.lines.push_back(row.dump());
     }

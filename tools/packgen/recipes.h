@@ -46,6 +46,15 @@ Texel dirt(int x, int y);
 Texel planks(int x, int y);
 Texel logSide(int x, int y);
 Texel glass(int x, int y);
+Texel logTop(int x, int y);
+Texel leaves(int x, int y);
+Texel glowstone(int x, int y);
+// Minecraft's torch layout: the model shows columns 7..8, the flame in rows 6..8 and the stick below.
+Texel torch(int x, int y);
+// Specks of an ore in stone.
+Texel ore(int x, int y, std::uint64_t seed, glm::vec3 speck, int specular);
+// Water or lava, still or flowing, frame `frame` of its animation.
+Texel liquid(int x, int y, int frame, bool lava, bool flowing);
 // The same recipes in other colours and seeds, for the other woods, stones and ores.
 Texel planksOf(int x, int y, glm::vec3 colour);
 Texel logSideOf(int x, int y, glm::vec3 bark);
