@@ -183,7 +183,7 @@ void Menu::packsTab(GameSettings& s, const std::vector<std::string>& loadedPacks
   }
   char buffer[512];
   std::snprintf(buffer, sizeof buffer, "%s", newPack_.c_str());
-  if (ImGui::InputText("Pack path (folder or .zip)", buffer, sizeof buffer)) newPack_ = buffer;
+  if (ImGui::InputText("Pack path (folder, .zip or .jar)", buffer, sizeof buffer)) newPack_ = buffer;
   if (ImGui::Button("Add on top") && !newPack_.empty()) {
     s.packs.push_back({newPack_, true});
     newPack_.clear();

@@ -53,14 +53,28 @@ PackInfo parseMcmeta(const std::vector<std::uint8_t>& bytes, const std::string& 
   }
 }
 
+// Minecraft's own assets need no pack.mcmeta: its client jar, or a folder holding its assets/.
+bool holdsMinecraftAssets(const PackSource& source) {
+  return !source.list("assets/minecraft/blockstates").empty() || !source.list(kBlockDirs[0]).empty();
+}
+
 }  // namespace
 
 ResourcePack ResourcePack::open(const std::filesystem::path& path) {
   ResourcePack pack;
-  pack.source_ = PackSource::open(path);
+  // An extracted assets/ folder itself: its parent is the pack.
+  std::error_code ec;
+  const bool assetsFolder =
+      path.filename() == "assets" && std::filesystem::is_directory(path / "minecraft", ec);
+  pack.source_ = PackSource::open(assetsFolder ? path.parent_path() : path);
   const auto mcmeta = pack.source_->read("pack.mcmeta");
-  if (!mcmeta) throw Error(pack.source_->displayName("pack.mcmeta") + ": missing: not a resource pack");
-  pack.info_ = parseMcmeta(*mcmeta, pack.source_->displayName("pack.mcmeta"));
+  if (mcmeta) {
+    pack.info_ = parseMcmeta(*mcmeta, pack.source_->displayName("pack.mcmeta"));
+  } else if (holdsMinecraftAssets(*pack.source_)) {
+    pack.info_.description = "Minecraft's assets";
+  } else {
+    throw Error(pack.source_->displayName("pack.mcmeta") + ": missing: not a resource pack");
+  }
   for (const char* dir : kBlockDirs) {
     for (const auto& name : pack.source_->list(dir))
       pack.blockFiles_.emplace(name, std::string(dir) + "/" + name);

@@ -24,7 +24,9 @@ struct PackInfo {
 
 class ResourcePack {
  public:
-  // Throws Error naming the file for a missing or malformed pack.mcmeta.
+  // A folder or zip with pack.mcmeta, or Minecraft's own assets without one: its client jar
+  // (.minecraft/versions/<v>/<v>.jar) or a folder holding its extracted assets/ (or that assets/
+  // folder itself). Throws Error naming the file for a missing or malformed pack.mcmeta.
   static ResourcePack open(const std::filesystem::path& path);
 
   const PackInfo& info() const { return info_; }

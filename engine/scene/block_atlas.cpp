@@ -286,6 +286,19 @@ BlockShapes defaultPackShapes(const BlockRegistry& blocks) {
   return blockShapesOf(blocks, packs);
 }
 
+std::vector<BlockDrawing> blockDrawings(const BlockRegistry& blocks, const BlockAtlas& atlas) {
+  const std::set<std::string> placeholders(atlas.placeholders.begin(), atlas.placeholders.end());
+  std::vector<BlockDrawing> drawings(blocks.blockCount());
+  for (std::size_t i = 0; i < blocks.blockCount(); ++i) {
+    const BlockType& type = blocks.block(i);
+    drawings[i] = type.shape == BlockShape::None     ? BlockDrawing::Nothing
+                  : placeholders.contains(type.name) ? BlockDrawing::Placeholder
+                  : type.shape == BlockShape::Model  ? BlockDrawing::Model
+                                                     : BlockDrawing::Derived;
+  }
+  return drawings;
+}
+
 BlockMeshTable meshTableOf(const BlockRegistry& blocks, const BlockAtlas& atlas) {
   return BlockMeshTable(
       blocks, [&](BlockId id, int face) { return atlas.textureOf(id, face); },

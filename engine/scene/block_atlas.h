@@ -9,6 +9,7 @@
 
 #include "assets/atlas.h"
 #include "assets/resource_pack.h"
+#include "core/enum_names.h"
 #include "mesh/mesher.h"
 #include "world/block_registry.h"
 #include "world/block_shapes.h"
@@ -45,6 +46,14 @@ struct TextureCoverage {
   std::vector<std::string> used, unused;
 };
 TextureCoverage textureCoverage(const BlockRegistry& blocks, const PackStack& packs);
+
+// How a block is drawn with a pack stack, for listings: by the stack's models (Model), by its own
+// blocks.json shape from its textures (Derived: a cube, a cross, a torch, a liquid), nothing by design
+// (air, barrier, light, structure_void), or as the placeholder where no pack describes it.
+enum class BlockDrawing : std::uint8_t { Model, Derived, Nothing, Placeholder };
+inline constexpr EnumNames<BlockDrawing, 4> kBlockDrawings{{"model", "derived", "nothing", "placeholder"}};
+// Per block (BlockRegistry::block's index).
+std::vector<BlockDrawing> blockDrawings(const BlockRegistry& blocks, const BlockAtlas& atlas);
 
 // The mesher's table for `blocks` drawn with `atlas`'s textures and model quads.
 BlockMeshTable meshTableOf(const BlockRegistry& blocks, const BlockAtlas& atlas);

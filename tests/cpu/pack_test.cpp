@@ -278,6 +278,51 @@ TEST(ResourcePack, ZipPacksLoadAndUnsafeEntriesAreRefused) {
   EXPECT_THROW(ResourcePack::open(dir / "notazip.zip"), Error);
 }
 
+// Minecraft's own assets as a pack: a client jar (a zip of classes and assets/minecraft/, no
+// pack.mcmeta) over the default pack draws a block the default pack leaves as a placeholder with the
+// jar's blockstates, model and texture, and its textures override the default's; its extracted
+// assets/ folder does the same.
+TEST(ResourcePack, MinecraftsJarAndAssetsFolderArePacks) {
+  const auto dir = testing::scratchDir("minecraft_jar");
+  const std::vector<std::pair<std::string, std::string>> assets = {
+      {"assets/minecraft/blockstates/amethyst_block.json",
+       R"({"variants": {"": {"model": "block/amethyst_block"}}})"},
+      {"assets/minecraft/models/block/amethyst_block.json",
+       R"({"parent": "block/cube_all", "textures": {"all": "block/amethyst_block"}})"},
+      {"assets/minecraft/textures/block/amethyst_block.png", pngBytes(solidImage(16, 16, 200, 100, 220))},
+      {"assets/minecraft/textures/block/stone.png", pngBytes(solidImage(16, 16, 7, 7, 7))}};
+  auto jar = assets;
+  jar.push_back({"net/minecraft/client/main/Main.class", "\xca\xfe\xba\xbe"});
+  writeZip(dir / "1.21.11.jar", jar);
+  for (const auto& [name, data] : assets) {
+    std::filesystem::create_directories((dir / "extracted" / name).parent_path());
+    std::ofstream(dir / "extracted" / name, std::ios::binary) << data;
+  }
+  const BlockRegistry& blocks = testing::defaultBlocks();
+  const auto drawingsOf = [&](const PackStack& stack) {
+    const BlockAtlas atlas = buildBlockAtlas(blocks, stack);
+    for (const PackProblem& p : atlas.problems) ADD_FAILURE() << p.message;
+    return blockDrawings(blocks, atlas);
+  };
+  const auto of = [&](const char* block) { return blocks.blockIndex(blocks.id(block)); };
+  EXPECT_EQ(drawingsOf(stackOf({resourcePackDir() / "default"}))[of("amethyst_block")],
+            BlockDrawing::Placeholder);
+  for (const auto& minecraft : {dir / "1.21.11.jar", dir / "extracted", dir / "extracted" / "assets"}) {
+    const PackStack stack = stackOf({resourcePackDir() / "default", minecraft});
+    EXPECT_EQ(stack.packs().back()->info().description, "Minecraft's assets") << minecraft;
+    const std::vector<BlockDrawing> drawings = drawingsOf(stack);
+    EXPECT_EQ(drawings[of("amethyst_block")], BlockDrawing::Model) << minecraft;
+    EXPECT_EQ(drawings[of("barrier")], BlockDrawing::Nothing);
+    EXPECT_EQ(drawings[of("stone")], BlockDrawing::Derived);
+    std::vector<PackProblem> problems;
+    const auto stone = load(stack, {"stone"}, problems);
+    EXPECT_EQ(stone.albedo[0].pixel(0, 0)[0], 7) << stone.source;
+  }
+  // A zip with neither pack.mcmeta nor Minecraft's assets is still not a pack.
+  writeZip(dir / "other.zip", {{"readme.txt", "hello"}});
+  EXPECT_THROW(ResourcePack::open(dir / "other.zip"), Error);
+}
+
 TEST(ResourcePack, MalformedPackMcmetaIsNamed) {
   for (const auto& [text, expected] : std::vector<std::pair<std::string, std::string>>{
            {"{", "invalid JSON"},

@@ -3,6 +3,9 @@
 //   terrasol-pack atlas PACK... --out DIR     albedo/normal/specular atlases and their mip levels as PNG
 //   terrasol-pack coverage PACK...            the top pack's block textures the blocks do not draw, then
 //                                             "used U of N block textures"
+//   terrasol-pack blocks PACK...              every block, its state count and how the stack draws it
+//                                             (model, derived, nothing, placeholder), then
+//                                             "blocks B, states S, drawn D, placeholder P"
 // Packs are stacked bottom to top in the order given; the default pack is not added implicitly.
 
 #include <chrono>
@@ -26,7 +29,8 @@ int usage() {
   std::fputs(
       "usage: terrasol-pack inspect PACK...\n"
       "       terrasol-pack atlas PACK... --out DIR\n"
-      "       terrasol-pack coverage PACK...\n",
+      "       terrasol-pack coverage PACK...\n"
+      "       terrasol-pack blocks PACK...\n",
       stderr);
   return 2;
 }
@@ -109,6 +113,26 @@ int coverage(const PackStack& packs) {
   return 0;
 }
 
+int listBlocks(const PackStack& packs) {
+  const BlockRegistry blocks = BlockRegistry::load(resourcePackDir() / "default" / "blocks.json");
+  const BlockAtlas atlas = buildBlockAtlas(blocks, packs);
+  for (const auto& p : atlas.problems) {
+    if (p.severity == PackProblem::Severity::Error) std::printf("error: %s\n", p.message.c_str());
+  }
+  const std::vector<BlockDrawing> drawings = blockDrawings(blocks, atlas);
+  std::size_t drawn = 0, placeholders = 0;
+  for (std::size_t i = 0; i < blocks.blockCount(); ++i) {
+    const BlockType& type = blocks.block(i);
+    std::printf("%s %u %s\n", type.name.c_str(), static_cast<unsigned>(type.stateCount),
+                std::string(kBlockDrawings.nameOf(drawings[i])).c_str());
+    drawn += drawings[i] == BlockDrawing::Model || drawings[i] == BlockDrawing::Derived;
+    placeholders += drawings[i] == BlockDrawing::Placeholder;
+  }
+  std::printf("blocks %zu, states %zu, drawn %zu, placeholder %zu\n", blocks.blockCount(), blocks.size(),
+              drawn, placeholders);
+  return 0;
+}
+
 int run(int argc, char** argv) {
   if (argc < 3) return usage();
   const std::string command = argv[1];
@@ -125,6 +149,7 @@ int run(int argc, char** argv) {
   if (packs.packs().empty()) return usage();
   if (command == "inspect") return inspect(packs);
   if (command == "coverage") return coverage(packs);
+  if (command == "blocks") return listBlocks(packs);
   if (command == "atlas" && !out.empty()) return atlas(packs, out);
   return usage();
 }

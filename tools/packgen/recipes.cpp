@@ -1,10 +1,11 @@
+#include "recipes.h"
+
 #include <algorithm>
 #include <cmath>
 #include <functional>
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
-#include "recipes.h"
 #include "world/noise.h"
 
 namespace terrasol::packgen {
