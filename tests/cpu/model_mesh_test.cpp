@@ -47,7 +47,7 @@ TEST_F(ModelMesh, EachStateHasItsModelsQuads) {
   for (BlockId s = 0; s < blocks.size(); ++s) {
     // A wall with no post and no sides is nothing, as in Minecraft (its neighbours never leave it so).
     const auto values = blocks.stateValues(s);
-    const bool bareWall = blocks[s].name == "cobblestone_wall" && values.at("up") == "false" &&
+    const bool bareWall = blocks[s].connects == Connects::Wall && values.at("up") == "false" &&
                           values.at("north") == "none" && values.at("east") == "none" &&
                           values.at("south") == "none" && values.at("west") == "none";
     if (blocks[s].shape == BlockShape::Model && !bareWall) {

@@ -437,6 +437,24 @@ TEST(DefaultPack, IsExactlyWhatTheGeneratorMakes) {
   }
 }
 
+// The shaped blocks' blockstates and models are the generator's output, and each of those blocks
+// draws with them, none as a placeholder.
+TEST(DefaultPack, ShapedBlocksAreTheGeneratorsAndDraw) {
+  const auto root = resourcePackDir() / "default";
+  const auto files = packgen::generateShapedBlockFiles();
+  EXPECT_GE(files.size(), 170u);
+  for (const packgen::GeneratedFile& f : files) {
+    std::ifstream in(root / f.path, std::ios::binary);
+    EXPECT_EQ(std::string(std::istreambuf_iterator<char>(in), {}), f.text) << f.path;
+  }
+  const BlockRegistry& blocks = testing::defaultBlocks();
+  const BlockAtlas atlas = buildBlockAtlas(blocks, stackOf({root}));
+  EXPECT_TRUE(atlas.problems.empty()) << problemsText(atlas.problems);
+  const std::vector<BlockDrawing> drawings = blockDrawings(blocks, atlas);
+  for (const std::string& name : packgen::shapedBlockNames())
+    EXPECT_EQ(drawings[blocks.blockIndex(blocks.id(name))], BlockDrawing::Model) << name;
+}
+
 TEST(DefaultPack, CoversEveryBlockWithNormalAndSpecularMaps) {
   const PackStack stack = stackOf({resourcePackDir() / "default"});
   const BlockRegistry& blocks = testing::defaultBlocks();

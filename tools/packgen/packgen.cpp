@@ -150,6 +150,10 @@ void writeDefaultPack(const std::filesystem::path& dir) {
   const auto colormapDir = dir / "assets" / "minecraft" / "textures" / "colormap";
   std::filesystem::create_directories(colormapDir);
   for (const auto& c : generateColormaps()) saveImage(colormapDir / (c.name + ".png"), c.map);
+  for (const GeneratedFile& f : generateShapedBlockFiles()) {
+    std::filesystem::create_directories((dir / f.path).parent_path());
+    std::ofstream(dir / f.path, std::ios::binary) << f.text;
+  }
 }
 
 }  // namespace terrasol::packgen

@@ -26,8 +26,18 @@ struct GeneratedColormap {
 };
 std::vector<GeneratedColormap> generateColormaps();
 
-// Writes every texture (and _n, _s, .png.mcmeta) into DIR/assets/minecraft/textures/block/, and the
-// colormaps into DIR/assets/minecraft/textures/colormap/.
+// A text file of the pack: its path under the pack's root and its contents.
+struct GeneratedFile {
+  std::string path;  // "assets/minecraft/blockstates/granite_slab.json"
+  std::string text;
+};
+// The blockstates and models of the slabs, stairs and walls of the pack's stones, bricks and
+// sandstones (shaped_blocks.cpp), and the names of those blocks.
+std::vector<GeneratedFile> generateShapedBlockFiles();
+std::vector<std::string> shapedBlockNames();
+
+// Writes every texture (and _n, _s, .png.mcmeta) into DIR/assets/minecraft/textures/block/, the
+// colormaps into DIR/assets/minecraft/textures/colormap/, and the shaped blocks' blockstates and models.
 void writeDefaultPack(const std::filesystem::path& dir);
 
 }  // namespace terrasol::packgen

@@ -1,0 +1,162 @@
+// The slabs, stairs and walls of the default pack's materials: blockstates and models in Minecraft's
+// format, on Minecraft's templates (block/slab, block/stairs, block/template_wall_*), as Minecraft's
+// own files are laid out, so a pack that retextures a material retextures its shapes too.
+
+#include <array>
+#include <nlohmann/json.hpp>
+
+#include "packgen.h"
+
+namespace terrasol::packgen {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+// A material's shapes: `prefix` names them (brick_slab), `block` is its full block (bricks), with its
+// side, top and bottom textures.
+struct Material {
+  const char* prefix;
+  const char* block;
+  const char *side, *top, *bottom;
+  bool slab, stairs, wall;
+};
+
+constexpr Material kMaterials[] = {
+    {"cobblestone", "cobblestone", "cobblestone", "cobblestone", "cobblestone", true, true, true},
+    {"granite", "granite", "granite", "granite", "granite", true, true, true},
+    {"polished_granite", "polished_granite", "polished_granite", "polished_granite", "polished_granite", true, true,
+     false},
+    {"diorite", "diorite", "diorite", "diorite", "diorite", true, true, true},
+    {"polished_diorite", "polished_diorite", "polished_diorite", "polished_diorite", "polished_diorite", true, true,
+     false},
+    {"andesite", "andesite", "andesite", "andesite", "andesite", true, true, true},
+    {"polished_andesite", "polished_andesite", "polished_andesite", "polished_andesite", "polished_andesite", true,
+     true, false},
+    {"brick", "bricks", "bricks", "bricks", "bricks", true, true, true},
+    {"stone_brick", "stone_bricks", "stone_bricks", "stone_bricks", "stone_bricks", true, true, true},
+    {"mossy_stone_brick", "mossy_stone_bricks", "mossy_stone_bricks", "mossy_stone_bricks", "mossy_stone_bricks", true,
+     true, true},
+    {"mossy_cobblestone", "mossy_cobblestone", "mossy_cobblestone", "mossy_cobblestone", "mossy_cobblestone", true,
+     true, true},
+    {"sandstone", "sandstone", "sandstone", "sandstone_top", "sandstone_bottom", true, true, true},
+    {"cut_sandstone", "cut_sandstone", "cut_sandstone", "sandstone_top", "sandstone_top", true, false, false},
+    {"smooth_stone", "smooth_stone", "smooth_stone", "smooth_stone", "smooth_stone", true, false, false},
+    {"tuff", "tuff", "tuff", "tuff", "tuff", true, true, true},
+    {"cobbled_deepslate", "cobbled_deepslate", "cobbled_deepslate", "cobbled_deepslate", "cobbled_deepslate", true,
+     true, true},
+    {"polished_deepslate", "polished_deepslate", "polished_deepslate", "polished_deepslate", "polished_deepslate",
+     true, true, true},
+};
+
+std::string block(const std::string& name) { return "block/" + name; }
+
+GeneratedFile file(const std::string& kind, const std::string& name, const Json& json) {
+  const std::string dir = kind == "blockstates" ? "assets/minecraft/blockstates/" : "assets/minecraft/models/block/";
+  return {dir + name + ".json", json.dump(2) + "\n"};
+}
+
+Json texturedModel(const std::string& parent, const Material& m) {
+  Json textures;
+  textures["bottom"] = block(m.bottom);
+  textures["top"] = block(m.top);
+  textures["side"] = block(m.side);
+  return Json{{"parent", block(parent)}, {"textures", textures}};
+}
+
+// A variant's model turned by x and y degrees; uvlock keeps its textures on the world's grid.
+Json turned(const std::string& model, int x, int y) {
+  Json v{{"model", block(model)}};
+  if (x != 0) v["x"] = x;
+  if (y != 0) v["y"] = y;
+  if (x != 0 || y != 0) v["uvlock"] = true;
+  return v;
+}
+
+// The full block's own model, which a double slab shows.
+void addFullBlock(const Material& m, std::vector<GeneratedFile>& out) {
+  const bool sameAllRound = std::string(m.side) == m.top && std::string(m.top) == m.bottom;
+  Json model = sameAllRound ? Json{{"parent", "block/cube_all"}, {"textures", {{"all", block(m.side)}}}}
+                            : texturedModel("cube_bottom_top", m);
+  out.push_back(file("model", m.block, model));
+}
+
+void addSlab(const Material& m, std::vector<GeneratedFile>& out) {
+  const std::string name = std::string(m.prefix) + "_slab";
+  out.push_back(file("model", name, texturedModel("slab", m)));
+  out.push_back(file("model", name + "_top", texturedModel("slab_top", m)));
+  Json variants;
+  variants["type=bottom"] = Json{{"model", block(name)}};
+  variants["type=top"] = Json{{"model", block(name + "_top")}};
+  variants["type=double"] = Json{{"model", block(m.block)}};
+  out.push_back(file("blockstates", name, Json{{"variants", variants}}));
+}
+
+// Minecraft's stairs: east unturned, the others by 90 degrees each; a left corner is the right one
+// turned a quarter back, and upside down (x 180) the turns swap.
+void addStairs(const Material& m, std::vector<GeneratedFile>& out) {
+  const std::string name = std::string(m.prefix) + "_stairs";
+  out.push_back(file("model", name, texturedModel("stairs", m)));
+  out.push_back(file("model", name + "_inner", texturedModel("inner_stairs", m)));
+  out.push_back(file("model", name + "_outer", texturedModel("outer_stairs", m)));
+  constexpr std::array<std::pair<const char*, int>, 4> kFacings{
+      {{"east", 0}, {"south", 90}, {"west", 180}, {"north", 270}}};
+  Json variants;
+  for (const auto& [facing, turn] : kFacings) {
+    for (const bool top : {false, true}) {
+      for (const char* shape : {"straight", "inner_left", "inner_right", "outer_left", "outer_right"}) {
+        const std::string s = shape;
+        const std::string model = s == "straight" ? name : name + (s.starts_with("inner") ? "_inner" : "_outer");
+        const bool left = s.ends_with("_left"), right = s.ends_with("_right");
+        const int y = (turn + (!top && left ? 270 : 0) + (top && right ? 90 : 0)) % 360;
+        const std::string key = "facing=" + std::string(facing) + ",half=" + (top ? "top" : "bottom") + ",shape=" + s;
+        variants[key] = turned(model, top ? 180 : 0, y);
+      }
+    }
+  }
+  out.push_back(file("blockstates", name, Json{{"variants", variants}}));
+}
+
+void addWall(const Material& m, std::vector<GeneratedFile>& out) {
+  const std::string name = std::string(m.prefix) + "_wall";
+  for (const char* part : {"post", "side", "side_tall"}) {
+    out.push_back(file("model", name + "_" + part,
+                       Json{{"parent", block(std::string("template_wall_") + part)},
+                            {"textures", {{"wall", block(m.side)}}}}));
+  }
+  Json parts = Json::array();
+  parts.push_back(Json{{"when", {{"up", "true"}}}, {"apply", {{"model", block(name + "_post")}}}});
+  constexpr std::array<std::pair<const char*, int>, 4> kSides{{{"north", 0}, {"east", 90}, {"south", 180}, {"west", 270}}};
+  for (const auto& [side, y] : kSides) {
+    for (const char* height : {"low", "tall"}) {
+      Json apply{{"model", block(name + (std::string(height) == "low" ? "_side" : "_side_tall"))}, {"uvlock", true}};
+      if (y != 0) apply["y"] = y;
+      parts.push_back(Json{{"when", {{side, height}}}, {"apply", apply}});
+    }
+  }
+  out.push_back(file("blockstates", name, Json{{"multipart", parts}}));
+}
+
+}  // namespace
+
+std::vector<GeneratedFile> generateShapedBlockFiles() {
+  std::vector<GeneratedFile> out;
+  for (const Material& m : kMaterials) {
+    if (m.slab) addFullBlock(m, out);
+    if (m.slab) addSlab(m, out);
+    if (m.stairs) addStairs(m, out);
+    if (m.wall) addWall(m, out);
+  }
+  return out;
+}
+
+std::vector<std::string> shapedBlockNames() {
+  std::vector<std::string> names;
+  for (const Material& m : kMaterials) {
+    if (m.slab) names.push_back(std::string(m.prefix) + "_slab");
+    if (m.stairs) names.push_back(std::string(m.prefix) + "_stairs");
+    if (m.wall) names.push_back(std::string(m.prefix) + "_wall");
+  }
+  return names;
+}
+
+}  // namespace terrasol::packgen
