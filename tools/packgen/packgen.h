@@ -32,7 +32,7 @@ struct GeneratedFile {
   std::string text;
 };
 // The blockstates and models of the slabs, stairs and walls of the pack's stones, bricks and
-// sandstones (shaped_blocks.cpp), and the names of those blocks.
+// sandstones, and of its woods' bark blocks (shaped_blocks.cpp), and the names of those blocks.
 std::vector<GeneratedFile> generateShapedBlockFiles();
 std::vector<std::string> shapedBlockNames();
 

@@ -1,6 +1,7 @@
-// The slabs, stairs and walls of the default pack's materials: blockstates and models in Minecraft's
-// format, on Minecraft's templates (block/slab, block/stairs, block/template_wall_*), as Minecraft's
-// own files are laid out, so a pack that retextures a material retextures its shapes too.
+// The slabs, stairs and walls of the default pack's materials, and its woods' bark blocks: blockstates
+// and models in Minecraft's format, on Minecraft's templates (block/slab, block/stairs,
+// block/template_wall_*, block/cube_column), as Minecraft's own files are laid out, so a pack that
+// retextures a material retextures its shapes too.
 
 #include <array>
 #include <nlohmann/json.hpp>
@@ -24,34 +25,37 @@ struct Material {
 constexpr Material kMaterials[] = {
     {"cobblestone", "cobblestone", "cobblestone", "cobblestone", "cobblestone", true, true, true},
     {"granite", "granite", "granite", "granite", "granite", true, true, true},
-    {"polished_granite", "polished_granite", "polished_granite", "polished_granite", "polished_granite", true, true,
-     false},
-    {"diorite", "diorite", "diorite", "diorite", "diorite", true, true, true},
-    {"polished_diorite", "polished_diorite", "polished_diorite", "polished_diorite", "polished_diorite", true, true,
-     false},
-    {"andesite", "andesite", "andesite", "andesite", "andesite", true, true, true},
-    {"polished_andesite", "polished_andesite", "polished_andesite", "polished_andesite", "polished_andesite", true,
+    {"polished_granite", "polished_granite", "polished_granite", "polished_granite", "polished_granite", true,
      true, false},
+    {"diorite", "diorite", "diorite", "diorite", "diorite", true, true, true},
+    {"polished_diorite", "polished_diorite", "polished_diorite", "polished_diorite", "polished_diorite", true,
+     true, false},
+    {"andesite", "andesite", "andesite", "andesite", "andesite", true, true, true},
+    {"polished_andesite", "polished_andesite", "polished_andesite", "polished_andesite", "polished_andesite",
+     true, true, false},
     {"brick", "bricks", "bricks", "bricks", "bricks", true, true, true},
     {"stone_brick", "stone_bricks", "stone_bricks", "stone_bricks", "stone_bricks", true, true, true},
-    {"mossy_stone_brick", "mossy_stone_bricks", "mossy_stone_bricks", "mossy_stone_bricks", "mossy_stone_bricks", true,
-     true, true},
-    {"mossy_cobblestone", "mossy_cobblestone", "mossy_cobblestone", "mossy_cobblestone", "mossy_cobblestone", true,
-     true, true},
+    {"mossy_stone_brick", "mossy_stone_bricks", "mossy_stone_bricks", "mossy_stone_bricks",
+     "mossy_stone_bricks", true, true, true},
+    {"mossy_cobblestone", "mossy_cobblestone", "mossy_cobblestone", "mossy_cobblestone", "mossy_cobblestone",
+     true, true, true},
     {"sandstone", "sandstone", "sandstone", "sandstone_top", "sandstone_bottom", true, true, true},
     {"cut_sandstone", "cut_sandstone", "cut_sandstone", "sandstone_top", "sandstone_top", true, false, false},
     {"smooth_stone", "smooth_stone", "smooth_stone", "smooth_stone", "smooth_stone", true, false, false},
     {"tuff", "tuff", "tuff", "tuff", "tuff", true, true, true},
-    {"cobbled_deepslate", "cobbled_deepslate", "cobbled_deepslate", "cobbled_deepslate", "cobbled_deepslate", true,
-     true, true},
-    {"polished_deepslate", "polished_deepslate", "polished_deepslate", "polished_deepslate", "polished_deepslate",
+    {"cobbled_deepslate", "cobbled_deepslate", "cobbled_deepslate", "cobbled_deepslate", "cobbled_deepslate",
      true, true, true},
+    {"polished_deepslate", "polished_deepslate", "polished_deepslate", "polished_deepslate",
+     "polished_deepslate", true, true, true},
 };
 
-std::string block(const std::string& name) { return "block/" + name; }
+std::string block(const std::string& name) {
+  return "block/" + name;
+}
 
 GeneratedFile file(const std::string& kind, const std::string& name, const Json& json) {
-  const std::string dir = kind == "blockstates" ? "assets/minecraft/blockstates/" : "assets/minecraft/models/block/";
+  const std::string dir =
+      kind == "blockstates" ? "assets/minecraft/blockstates/" : "assets/minecraft/models/block/";
   return {dir + name + ".json", json.dump(2) + "\n"};
 }
 
@@ -105,10 +109,12 @@ void addStairs(const Material& m, std::vector<GeneratedFile>& out) {
     for (const bool top : {false, true}) {
       for (const char* shape : {"straight", "inner_left", "inner_right", "outer_left", "outer_right"}) {
         const std::string s = shape;
-        const std::string model = s == "straight" ? name : name + (s.starts_with("inner") ? "_inner" : "_outer");
+        const std::string model =
+            s == "straight" ? name : name + (s.starts_with("inner") ? "_inner" : "_outer");
         const bool left = s.ends_with("_left"), right = s.ends_with("_right");
         const int y = (turn + (!top && left ? 270 : 0) + (top && right ? 90 : 0)) % 360;
-        const std::string key = "facing=" + std::string(facing) + ",half=" + (top ? "top" : "bottom") + ",shape=" + s;
+        const std::string key =
+            "facing=" + std::string(facing) + ",half=" + (top ? "top" : "bottom") + ",shape=" + s;
         variants[key] = turned(model, top ? 180 : 0, y);
       }
     }
@@ -125,15 +131,42 @@ void addWall(const Material& m, std::vector<GeneratedFile>& out) {
   }
   Json parts = Json::array();
   parts.push_back(Json{{"when", {{"up", "true"}}}, {"apply", {{"model", block(name + "_post")}}}});
-  constexpr std::array<std::pair<const char*, int>, 4> kSides{{{"north", 0}, {"east", 90}, {"south", 180}, {"west", 270}}};
+  constexpr std::array<std::pair<const char*, int>, 4> kSides{
+      {{"north", 0}, {"east", 90}, {"south", 180}, {"west", 270}}};
   for (const auto& [side, y] : kSides) {
     for (const char* height : {"low", "tall"}) {
-      Json apply{{"model", block(name + (std::string(height) == "low" ? "_side" : "_side_tall"))}, {"uvlock", true}};
+      Json apply{{"model", block(name + (std::string(height) == "low" ? "_side" : "_side_tall"))},
+                 {"uvlock", true}};
       if (y != 0) apply["y"] = y;
       parts.push_back(Json{{"when", {{side, height}}}, {"apply", apply}});
     }
   }
   out.push_back(file("blockstates", name, Json{{"multipart", parts}}));
+}
+
+// The woods whose logs the pack has: their bark blocks ("oak_wood", "stripped_oak_wood") are the log's
+// side all round, standing along their axis as logs do.
+constexpr const char* kWoods[] = {"oak", "birch", "spruce", "acacia", "dark_oak"};
+
+std::vector<std::string> woodBlocks() {
+  std::vector<std::string> names;
+  for (const char* wood : kWoods) {
+    names.push_back(std::string(wood) + "_wood");
+    names.push_back("stripped_" + std::string(wood) + "_wood");
+  }
+  return names;
+}
+
+void addWood(const std::string& name, std::vector<GeneratedFile>& out) {
+  const std::string log = name.substr(0, name.size() - std::string("_wood").size()) + "_log";
+  out.push_back(
+      file("model", name,
+           Json{{"parent", "block/cube_column"}, {"textures", {{"end", block(log)}, {"side", block(log)}}}}));
+  Json variants;
+  variants["axis=x"] = Json{{"model", block(name)}, {"x", 90}, {"y", 90}};
+  variants["axis=y"] = Json{{"model", block(name)}};
+  variants["axis=z"] = Json{{"model", block(name)}, {"x", 90}};
+  out.push_back(file("blockstates", name, Json{{"variants", variants}}));
 }
 
 }  // namespace
@@ -146,6 +179,7 @@ std::vector<GeneratedFile> generateShapedBlockFiles() {
     if (m.stairs) addStairs(m, out);
     if (m.wall) addWall(m, out);
   }
+  for (const std::string& wood : woodBlocks()) addWood(wood, out);
   return out;
 }
 
@@ -156,6 +190,7 @@ std::vector<std::string> shapedBlockNames() {
     if (m.stairs) names.push_back(std::string(m.prefix) + "_stairs");
     if (m.wall) names.push_back(std::string(m.prefix) + "_wall");
   }
+  for (const std::string& wood : woodBlocks()) names.push_back(wood);
   return names;
 }
 
