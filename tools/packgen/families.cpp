@@ -10,52 +10,6 @@
 namespace terrasol::packgen {
 namespace {
 
-// A rock's colour with a second mineral speckled through it (granite, diorite).
-Texel speckled(int x, int y, std::uint64_t seed, glm::vec3 base, glm::vec3 speck, float amount) {
-  Texel t = rock(seed, x, y, base, 0.12f);
-  if (hash01(seed + 7, x, y) < amount)
-    t.color = speck * (0.85f + 0.3f * hash01(seed + 8, x, y)), t.height = 0.9f;
-  return t;
-}
-
-// Cut and polished: a bevelled rim, a smooth face that reflects.
-Texel polished(Texel t, int x, int y) {
-  const bool rim = x == 0 || y == 0 || x == kSize - 1 || y == kSize - 1;
-  t.color *= rim ? 0.82f : 1.05f;
-  t.height = rim ? 0.75f : 1.0f;
-  t.smoothness = rim ? 90 : 180;
-  return t;
-}
-
-// Bricks laid in courses of `rows` texels, every other course shifted by half a brick.
-Texel bricks(int x, int y, std::uint64_t seed, glm::vec3 brick, glm::vec3 mortar, int rows, int width) {
-  const int course = y / rows, shift = course % 2 ? width / 2 : 0;
-  const bool joint = y % rows == rows - 1 || (x + shift) % width == width - 1;
-  if (joint) {
-    Texel t = rock(seed + 1, x, y, mortar, 0.1f);
-    t.height = 0.45f;
-    t.porosity = 60;
-    return t;
-  }
-  Texel t = rock(seed, x, y, brick * (0.9f + 0.2f * hash01(seed, (x + shift) / width, course)), 0.1f);
-  t.height = 0.9f + 0.1f * t.height;
-  return t;
-}
-
-Texel crack(Texel t, int x, int y) {
-  if (y == 4 + (x * 3) % 7 / 2 && x > 2 && x < 13) t.color *= 0.45f, t.height = 0.3f;
-  return t;
-}
-
-Texel moss(Texel t, int x, int y, std::uint64_t seed) {
-  if (fbm(seed, static_cast<float>(x), static_cast<float>(y)) > 0.58f) {
-    t.color = rgb(88, 112, 55) * (0.8f + 0.3f * hash01(seed, x, y));
-    t.porosity = 120;
-    t.smoothness = 20;
-  }
-  return t;
-}
-
 Texel deepslate(int x, int y) {
   Texel t = rock(301, x, y / 2, rgb(80, 80, 86), 0.2f);  // stretched: its layers run across
   t.height = 0.5f + 0.5f * t.height;
@@ -64,13 +18,6 @@ Texel deepslate(int x, int y) {
 Texel cobbledDeepslate(int x, int y) {
   Texel t = cobblestone(x, y);
   t.color *= rgb(80, 80, 90) / rgb(120, 120, 120);
-  return t;
-}
-
-Texel smooth(int x, int y, std::uint64_t seed, glm::vec3 colour, float contrast, int smoothness) {
-  Texel t = rock(seed, x, y, colour, contrast);
-  t.height = 0.9f + 0.1f * t.height;
-  t.smoothness = smoothness;
   return t;
 }
 
@@ -95,12 +42,6 @@ Texel wool(int x, int y, glm::vec3 colour) {
 }
 Texel concrete(int x, int y, glm::vec3 colour) {
   return smooth(x, y, 411, colour, 0.03f, 120);
-}
-Texel terracotta(int x, int y, glm::vec3 colour) {
-  Texel t = rock(421, x, y, colour, 0.08f);
-  t.smoothness = 60;
-  t.porosity = 50;
-  return t;
 }
 Texel stainedGlass(int x, int y, glm::vec3 colour) {
   Texel t = glass(x, y);
@@ -129,30 +70,6 @@ void addWood(std::vector<GeneratedTexture>& out, const Wood& w) {
   out.push_back(still(n + "_door_bottom", [w](int x, int y) { return doorBottom(x, y, w.planks); }));
   out.push_back(still(n + "_door_top", [w](int x, int y) { return doorTop(x, y, w.planks); }));
   out.push_back(still(n + "_trapdoor", [w](int x, int y) { return trapdoor(x, y, w.planks); }));
-}
-
-// Minecraft's sixteen dye colours, in its order.
-constexpr std::array<std::pair<const char*, std::array<int, 3>>, 16> kDyes = {{
-    {"white", {233, 236, 236}},
-    {"orange", {240, 118, 19}},
-    {"magenta", {189, 68, 179}},
-    {"light_blue", {58, 175, 217}},
-    {"yellow", {248, 197, 39}},
-    {"lime", {112, 185, 25}},
-    {"pink", {237, 141, 172}},
-    {"gray", {62, 68, 71}},
-    {"light_gray", {142, 142, 134}},
-    {"cyan", {21, 137, 145}},
-    {"purple", {121, 42, 172}},
-    {"blue", {53, 57, 157}},
-    {"brown", {114, 71, 40}},
-    {"green", {84, 109, 27}},
-    {"red", {160, 39, 34}},
-    {"black", {20, 21, 25}},
-}};
-
-glm::vec3 dye(std::size_t i) {
-  return rgb(kDyes[i].second[0], kDyes[i].second[1], kDyes[i].second[2]);
 }
 
 Texel bookshelf(int x, int y) {

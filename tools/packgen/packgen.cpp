@@ -135,6 +135,7 @@ std::vector<GeneratedTexture> generateDefaultTextures() {
       encode("lava_flow", paint(8, [](int x, int y, int f) { return liquid(x, y, f, true, true); }), 8, 3));
   addCraftedTextures(out);
   addFamilyTextures(out);
+  addBuildingBlockTextures(out);
   return out;
 }
 

@@ -263,4 +263,64 @@ Texel torch(int x, int y) {
   return t;
 }
 
+// A rock's colour with a second mineral speckled through it (granite, diorite).
+Texel speckled(int x, int y, std::uint64_t seed, glm::vec3 base, glm::vec3 speck, float amount) {
+  Texel t = rock(seed, x, y, base, 0.12f);
+  if (hash01(seed + 7, x, y) < amount)
+    t.color = speck * (0.85f + 0.3f * hash01(seed + 8, x, y)), t.height = 0.9f;
+  return t;
+}
+
+// Cut and polished: a bevelled rim, a smooth face that reflects.
+Texel polished(Texel t, int x, int y) {
+  const bool rim = x == 0 || y == 0 || x == kSize - 1 || y == kSize - 1;
+  t.color *= rim ? 0.82f : 1.05f;
+  t.height = rim ? 0.75f : 1.0f;
+  t.smoothness = rim ? 90 : 180;
+  return t;
+}
+
+// Bricks laid in courses of `rows` texels, every other course shifted by half a brick.
+Texel bricks(int x, int y, std::uint64_t seed, glm::vec3 brick, glm::vec3 mortar, int rows, int width) {
+  const int course = y / rows, shift = course % 2 ? width / 2 : 0;
+  const bool joint = y % rows == rows - 1 || (x + shift) % width == width - 1;
+  if (joint) {
+    Texel t = rock(seed + 1, x, y, mortar, 0.1f);
+    t.height = 0.45f;
+    t.porosity = 60;
+    return t;
+  }
+  Texel t = rock(seed, x, y, brick * (0.9f + 0.2f * hash01(seed, (x + shift) / width, course)), 0.1f);
+  t.height = 0.9f + 0.1f * t.height;
+  return t;
+}
+
+Texel crack(Texel t, int x, int y) {
+  if (y == 4 + (x * 3) % 7 / 2 && x > 2 && x < 13) t.color *= 0.45f, t.height = 0.3f;
+  return t;
+}
+
+Texel moss(Texel t, int x, int y, std::uint64_t seed) {
+  if (fbm(seed, static_cast<float>(x), static_cast<float>(y)) > 0.58f) {
+    t.color = rgb(88, 112, 55) * (0.8f + 0.3f * hash01(seed, x, y));
+    t.porosity = 120;
+    t.smoothness = 20;
+  }
+  return t;
+}
+
+Texel smooth(int x, int y, std::uint64_t seed, glm::vec3 colour, float contrast, int smoothness) {
+  Texel t = rock(seed, x, y, colour, contrast);
+  t.height = 0.9f + 0.1f * t.height;
+  t.smoothness = smoothness;
+  return t;
+}
+
+Texel terracotta(int x, int y, glm::vec3 colour) {
+  Texel t = rock(421, x, y, colour, 0.08f);
+  t.smoothness = 60;
+  t.porosity = 50;
+  return t;
+}
+
 }  // namespace terrasol::packgen

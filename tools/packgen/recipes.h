@@ -2,6 +2,7 @@
 // The texel recipes behind the default pack: what each texel of a generated texture holds, the noise
 // they are painted with, and the shared recipes (stone, planks, glass...). Internal to packgen.
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <glm/vec3.hpp>
@@ -64,6 +65,41 @@ Texel oreIn(int x, int y, std::uint64_t seed, glm::vec3 speck, int specular, Tex
 Texel metalBlock(int x, int y, glm::vec3 base, int metal, int smoothness);
 Texel plant(int x, int y, std::uint64_t seed, glm::vec3 flower);
 
+// Minecraft's sixteen dye colours, in its order.
+inline constexpr std::array<std::pair<const char*, std::array<int, 3>>, 16> kDyes = {{
+    {"white", {233, 236, 236}},
+    {"orange", {240, 118, 19}},
+    {"magenta", {189, 68, 179}},
+    {"light_blue", {58, 175, 217}},
+    {"yellow", {248, 197, 39}},
+    {"lime", {112, 185, 25}},
+    {"pink", {237, 141, 172}},
+    {"gray", {62, 68, 71}},
+    {"light_gray", {142, 142, 134}},
+    {"cyan", {21, 137, 145}},
+    {"purple", {121, 42, 172}},
+    {"blue", {53, 57, 157}},
+    {"brown", {114, 71, 40}},
+    {"green", {84, 109, 27}},
+    {"red", {160, 39, 34}},
+    {"black", {20, 21, 25}},
+}};
+inline glm::vec3 dye(std::size_t i) {
+  return rgb(kDyes[i].second[0], kDyes[i].second[1], kDyes[i].second[2]);
+}
+
+// Finishes and patterns shared by the families.
+// A rock's colour with a second mineral speckled through it (granite, diorite).
+Texel speckled(int x, int y, std::uint64_t seed, glm::vec3 base, glm::vec3 speck, float amount);
+// Cut and polished: a bevelled rim, a smooth face that reflects.
+Texel polished(Texel t, int x, int y);
+// Bricks laid in courses of `rows` texels, every other course shifted by half a brick.
+Texel bricks(int x, int y, std::uint64_t seed, glm::vec3 brick, glm::vec3 mortar, int rows, int width);
+Texel crack(Texel t, int x, int y);
+Texel moss(Texel t, int x, int y, std::uint64_t seed);
+Texel smooth(int x, int y, std::uint64_t seed, glm::vec3 colour, float contrast, int smoothness);
+Texel terracotta(int x, int y, glm::vec3 colour);
+
 // A wood's door halves and trapdoor: boards running up, a frame, windows (crafted.cpp).
 Texel doorBottom(int x, int y, glm::vec3 wood);
 Texel doorTop(int x, int y, glm::vec3 wood);
@@ -78,5 +114,8 @@ void addCraftedTextures(std::vector<GeneratedTexture>& out);
 // More stones, the other woods, sandstone, the sixteen colours, crafted blocks, plants, ores, metal
 // and gem blocks (families.cpp).
 void addFamilyTextures(std::vector<GeneratedTexture>& out);
+// Terracotta and concrete powder in sixteen colours, the newer woods' planks, more bricks and tiles,
+// stones, soils, corals and weathered coppers (building_blocks.cpp).
+void addBuildingBlockTextures(std::vector<GeneratedTexture>& out);
 
 }  // namespace terrasol::packgen
