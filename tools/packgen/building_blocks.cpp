@@ -30,7 +30,9 @@ constexpr std::array<std::array<int, 3>, 16> kTerracotta = {{{209, 178, 161},
                                                              {143, 61, 46},
                                                              {37, 22, 16}}};
 
-glm::vec3 rgbOf(const std::array<int, 3>& c) { return rgb(c[0], c[1], c[2]); }
+glm::vec3 rgbOf(const std::array<int, 3>& c) {
+  return rgb(c[0], c[1], c[2]);
+}
 
 // Concrete before water sets it: its colour, lighter, in loose grains.
 Texel powder(int x, int y, glm::vec3 colour) {
@@ -81,12 +83,12 @@ void addTerracottaAndPowder(std::vector<GeneratedTexture>& out) {
 
 void addPlanks(std::vector<GeneratedTexture>& out) {
   const std::array<std::pair<const char*, glm::vec3>, 7> woods = {{{"jungle", rgb(160, 115, 80)},
-                                                                    {"cherry", rgb(226, 178, 172)},
-                                                                    {"mangrove", rgb(117, 54, 48)},
-                                                                    {"bamboo", rgb(193, 173, 80)},
-                                                                    {"crimson", rgb(101, 48, 70)},
-                                                                    {"warped", rgb(43, 104, 99)},
-                                                                    {"pale_oak", rgb(223, 212, 208)}}};
+                                                                   {"cherry", rgb(226, 178, 172)},
+                                                                   {"mangrove", rgb(117, 54, 48)},
+                                                                   {"bamboo", rgb(193, 173, 80)},
+                                                                   {"crimson", rgb(101, 48, 70)},
+                                                                   {"warped", rgb(43, 104, 99)},
+                                                                   {"pale_oak", rgb(223, 212, 208)}}};
   for (const auto& [wood, colour] : woods) {
     const glm::vec3 c = colour;
     out.push_back(still(std::string(wood) + "_planks", [c](int x, int y) { return planksOf(x, y, c); }));
@@ -113,7 +115,8 @@ void addBricksAndTiles(std::vector<GeneratedTexture>& out) {
   brick("quartz_bricks", rgb(236, 231, 223), rgb(208, 202, 193), 871, false);
   brick("resin_bricks", rgb(208, 102, 30), rgb(158, 70, 20), 881, false);
   brick("prismarine_bricks", rgb(99, 171, 158), rgb(66, 128, 118), 891, false);
-  const auto tile = [&](const char* name, glm::vec3 t, glm::vec3 j, std::uint64_t seed, int size, bool cracked) {
+  const auto tile = [&](const char* name, glm::vec3 t, glm::vec3 j, std::uint64_t seed, int size,
+                        bool cracked) {
     out.push_back(still(name, [=](int x, int y) {
       const Texel texel = tiles(x, y, seed, t, j, size);
       return cracked ? crack(texel, x, y) : texel;
@@ -126,7 +129,8 @@ void addBricksAndTiles(std::vector<GeneratedTexture>& out) {
 }
 
 void addStonesAndSoils(std::vector<GeneratedTexture>& out) {
-  const auto rockOf = [&](const char* name, std::uint64_t seed, glm::vec3 colour, float contrast, int porosity) {
+  const auto rockOf = [&](const char* name, std::uint64_t seed, glm::vec3 colour, float contrast,
+                          int porosity) {
     out.push_back(still(name, [=](int x, int y) {
       Texel t = rock(seed, x, y, colour, contrast);
       t.porosity = porosity;
@@ -154,41 +158,47 @@ void addStonesAndSoils(std::vector<GeneratedTexture>& out) {
     if ((x * 5 + y * 3) % 11 == 0) t.color = rgb(150, 110, 80), t.height = 0.8f;
     return t;
   }));
-  out.push_back(still("smooth_basalt", [](int x, int y) { return smooth(x, y, 971, rgb(72, 72, 78), 0.08f, 80); }));
-  out.push_back(still("polished_blackstone", [](int x, int y) {
-    return polished(rock(972, x, y, rgb(53, 48, 56), 0.12f), x, y);
-  }));
-  out.push_back(still("polished_tuff", [](int x, int y) {
-    return polished(rock(973, x, y, rgb(98, 102, 91), 0.12f), x, y);
-  }));
-  out.push_back(still("coal_block", [](int x, int y) { return smooth(x, y, 974, rgb(22, 22, 24), 0.25f, 90); }));
-  out.push_back(still("redstone_block", [](int x, int y) { return smooth(x, y, 975, rgb(175, 24, 5), 0.15f, 120); }));
-  out.push_back(still("amethyst_block", [](int x, int y) { return smooth(x, y, 976, rgb(133, 97, 191), 0.2f, 150); }));
-  out.push_back(still("blue_ice", [](int x, int y) { return smooth(x, y, 977, rgb(116, 167, 253), 0.06f, 210); }));
+  out.push_back(
+      still("smooth_basalt", [](int x, int y) { return smooth(x, y, 971, rgb(72, 72, 78), 0.08f, 80); }));
+  out.push_back(still("polished_blackstone",
+                      [](int x, int y) { return polished(rock(972, x, y, rgb(53, 48, 56), 0.12f), x, y); }));
+  out.push_back(still("polished_tuff",
+                      [](int x, int y) { return polished(rock(973, x, y, rgb(98, 102, 91), 0.12f), x, y); }));
+  out.push_back(
+      still("coal_block", [](int x, int y) { return smooth(x, y, 974, rgb(22, 22, 24), 0.25f, 90); }));
+  out.push_back(
+      still("redstone_block", [](int x, int y) { return smooth(x, y, 975, rgb(175, 24, 5), 0.15f, 120); }));
+  out.push_back(
+      still("amethyst_block", [](int x, int y) { return smooth(x, y, 976, rgb(133, 97, 191), 0.2f, 150); }));
+  out.push_back(
+      still("blue_ice", [](int x, int y) { return smooth(x, y, 977, rgb(116, 167, 253), 0.06f, 210); }));
   out.push_back(still("crying_obsidian", [](int x, int y) {
     Texel t = smooth(x, y, 978, rgb(32, 10, 60), 0.4f, 220);
     if (hash01(979, x, y) < 0.15f) t.color = rgb(140, 40, 230), t.emission = 120;
     return t;
   }));
-  out.push_back(still("netherite_block", [](int x, int y) { return metalBlock(x, y, rgb(66, 61, 63), 255, 190); }));
+  out.push_back(
+      still("netherite_block", [](int x, int y) { return metalBlock(x, y, rgb(66, 61, 63), 255, 190); }));
 }
 
 void addCoralsAndCoppers(std::vector<GeneratedTexture>& out) {
   const std::array<std::pair<const char*, glm::vec3>, 5> corals = {{{"tube", rgb(49, 87, 207)},
-                                                                     {"brain", rgb(207, 91, 159)},
-                                                                     {"bubble", rgb(165, 26, 162)},
-                                                                     {"fire", rgb(163, 35, 46)},
-                                                                     {"horn", rgb(216, 199, 66)}}};
+                                                                    {"brain", rgb(207, 91, 159)},
+                                                                    {"bubble", rgb(165, 26, 162)},
+                                                                    {"fire", rgb(163, 35, 46)},
+                                                                    {"horn", rgb(216, 199, 66)}}};
   std::uint64_t seed = 981;
   for (const auto& [kind, colour] : corals) {
     const glm::vec3 c = colour;
     const std::uint64_t s = seed++;
-    out.push_back(still(std::string(kind) + "_coral_block", [c, s](int x, int y) { return coral(x, y, c, s); }));
+    out.push_back(
+        still(std::string(kind) + "_coral_block", [c, s](int x, int y) { return coral(x, y, c, s); }));
     out.push_back(still("dead_" + std::string(kind) + "_coral_block",
                         [s](int x, int y) { return coral(x, y, rgb(130, 123, 119), s); }));
   }
   // Cut copper as its full blocks weather (families.cpp), in four plates.
-  out.push_back(still("cut_copper", [](int x, int y) { return cutMetal(x, y, rgb(192, 107, 79), 234, 190); }));
+  out.push_back(
+      still("cut_copper", [](int x, int y) { return cutMetal(x, y, rgb(192, 107, 79), 234, 190); }));
   out.push_back(
       still("exposed_cut_copper", [](int x, int y) { return cutMetal(x, y, rgb(160, 120, 95), 234, 150); }));
   out.push_back(still("weathered_cut_copper", [](int x, int y) {
