@@ -1,8 +1,8 @@
 // Minecraft's plain building blocks beyond the first families: terracotta in sixteen colours,
-// concrete powder, the newer woods' planks, bricks and tiles of deepslate, blackstone, the Nether, the
-// End, mud, tuff, prismarine, purpur, quartz and resin, raw ore and mineral blocks, corals living and
-// dead, the weathered coppers, and the soils. Each texture is named as its block, which draws it on
-// every side.
+// concrete powder, stained panes' edges, the newer woods' planks, bricks and tiles of deepslate, blackstone,
+// the Nether, the End, mud, tuff, prismarine, purpur, quartz and resin, raw ore and mineral blocks, corals
+// living and dead, the weathered coppers, and the soils. Each texture is named as its block, which draws it
+// on every side.
 
 #include <array>
 #include <string>
@@ -72,12 +72,22 @@ Texel coral(int x, int y, glm::vec3 colour, std::uint64_t seed) {
   return t;
 }
 
-void addTerracottaAndPowder(std::vector<GeneratedTexture>& out) {
+// A stained pane's edge: its glass's colour, opaque, lighter along the middle.
+Texel paneEdgeOf(int x, int y, glm::vec3 colour) {
+  Texel t = glass(0, y);
+  t.color = colour * (x == 7 || x == 8 ? 0.9f : 0.8f);
+  t.alpha = 1.0f;
+  return t;
+}
+
+void addDyedBlocks(std::vector<GeneratedTexture>& out) {
   for (std::size_t i = 0; i < kDyes.size(); ++i) {
     const std::string c = kDyes[i].first;
     const glm::vec3 fired = rgbOf(kTerracotta[i]), colour = dye(i);
     out.push_back(still(c + "_terracotta", [fired](int x, int y) { return terracotta(x, y, fired); }));
     out.push_back(still(c + "_concrete_powder", [colour](int x, int y) { return powder(x, y, colour); }));
+    out.push_back(
+        still(c + "_stained_glass_pane_top", [colour](int x, int y) { return paneEdgeOf(x, y, colour); }));
   }
 }
 
@@ -217,7 +227,7 @@ void addCoralsAndCoppers(std::vector<GeneratedTexture>& out) {
 }  // namespace
 
 void addBuildingBlockTextures(std::vector<GeneratedTexture>& out) {
-  addTerracottaAndPowder(out);
+  addDyedBlocks(out);
   addPlanks(out);
   addBricksAndTiles(out);
   addStonesAndSoils(out);

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "packgen.h"
+#include "recipes.h"
 
 namespace terrasol::packgen {
 namespace {
@@ -217,6 +218,52 @@ void addWood(const std::string& name, std::vector<GeneratedFile>& out) {
   out.push_back(file("blockstates", name, Json{{"variants", variants}}));
 }
 
+// A carpet of each colour: Minecraft's carpet template with its wool.
+std::vector<std::string> carpets() {
+  std::vector<std::string> names;
+  for (const auto& [colour, rgb] : kDyes) names.push_back(std::string(colour) + "_carpet");
+  return names;
+}
+
+void addCarpet(const std::string& name, std::vector<GeneratedFile>& out) {
+  const std::string wool = name.substr(0, name.size() - std::string("_carpet").size()) + "_wool";
+  out.push_back(file("model", name, Json{{"parent", "block/carpet"}, {"textures", {{"wool", block(wool)}}}}));
+  out.push_back(file("blockstates", name, Json{{"variants", {{"", {{"model", block(name)}}}}}}));
+}
+
+// Glass panes, clear and in each colour: a post, and a side or its absence toward each neighbour, as
+// Minecraft's glass_pane is put together.
+std::vector<std::string> panes() {
+  std::vector<std::string> names{"glass_pane"};
+  for (const auto& [colour, rgb] : kDyes) names.push_back(std::string(colour) + "_stained_glass_pane");
+  return names;
+}
+
+void addPane(const std::string& name, std::vector<GeneratedFile>& out) {
+  const std::string glass = name.substr(0, name.size() - std::string("_pane").size());
+  for (const char* part : {"post", "side", "side_alt", "noside", "noside_alt"}) {
+    out.push_back(file("model", name + "_" + part,
+                       Json{{"parent", block(std::string("template_glass_pane_") + part)},
+                            {"textures", {{"pane", block(glass)}, {"edge", block(name + "_top")}}}}));
+  }
+  const auto part = [&](const char* side, const char* value, const std::string& model, int y) {
+    Json apply{{"model", block(name + "_" + model)}};
+    if (y != 0) apply["y"] = y;
+    return Json{{"when", {{side, value}}}, {"apply", apply}};
+  };
+  Json parts = Json::array();
+  parts.push_back(Json{{"apply", {{"model", block(name + "_post")}}}});
+  parts.push_back(part("north", "true", "side", 0));
+  parts.push_back(part("east", "true", "side", 90));
+  parts.push_back(part("south", "true", "side_alt", 0));
+  parts.push_back(part("west", "true", "side_alt", 90));
+  parts.push_back(part("north", "false", "noside", 0));
+  parts.push_back(part("east", "false", "noside_alt", 0));
+  parts.push_back(part("south", "false", "noside_alt", 90));
+  parts.push_back(part("west", "false", "noside", 270));
+  out.push_back(file("blockstates", name, Json{{"multipart", parts}}));
+}
+
 }  // namespace
 
 std::vector<GeneratedFile> generateShapedBlockFiles() {
@@ -228,6 +275,8 @@ std::vector<GeneratedFile> generateShapedBlockFiles() {
     if (m.wall) addWall(m, out);
   }
   for (const std::string& wood : woodBlocks()) addWood(wood, out);
+  for (const std::string& carpet : carpets()) addCarpet(carpet, out);
+  for (const std::string& pane : panes()) addPane(pane, out);
   return out;
 }
 
@@ -239,6 +288,8 @@ std::vector<std::string> shapedBlockNames() {
     if (m.wall) names.push_back(std::string(m.prefix) + "_wall");
   }
   for (const std::string& wood : woodBlocks()) names.push_back(wood);
+  for (const std::string& carpet : carpets()) names.push_back(carpet);
+  for (const std::string& pane : panes()) names.push_back(pane);
   return names;
 }
 
