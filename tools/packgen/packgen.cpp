@@ -136,6 +136,7 @@ std::vector<GeneratedTexture> generateDefaultTextures() {
   addCraftedTextures(out);
   addFamilyTextures(out);
   addBuildingBlockTextures(out);
+  addPlantTextures(out);
   return out;
 }
 

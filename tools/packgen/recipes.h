@@ -117,5 +117,7 @@ void addFamilyTextures(std::vector<GeneratedTexture>& out);
 // Terracotta and concrete powder in sixteen colours, the newer woods' planks, more bricks and tiles,
 // stones, soils, corals and weathered coppers (building_blocks.cpp).
 void addBuildingBlockTextures(std::vector<GeneratedTexture>& out);
+// Tulips and the other flowers, saplings, mushrooms, the Nether's fungi and roots, seagrass (plants.cpp).
+void addPlantTextures(std::vector<GeneratedTexture>& out);
 
 }  // namespace terrasol::packgen
