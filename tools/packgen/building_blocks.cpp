@@ -92,13 +92,9 @@ void addDyedBlocks(std::vector<GeneratedTexture>& out) {
 }
 
 void addPlanks(std::vector<GeneratedTexture>& out) {
-  const std::array<std::pair<const char*, glm::vec3>, 7> woods = {{{"jungle", rgb(160, 115, 80)},
-                                                                   {"cherry", rgb(226, 178, 172)},
-                                                                   {"mangrove", rgb(117, 54, 48)},
-                                                                   {"bamboo", rgb(193, 173, 80)},
-                                                                   {"crimson", rgb(101, 48, 70)},
-                                                                   {"warped", rgb(43, 104, 99)},
-                                                                   {"pale_oak", rgb(223, 212, 208)}}};
+  // The woods without logs here; the others' planks come with their logs (families.cpp).
+  const std::array<std::pair<const char*, glm::vec3>, 3> woods = {
+      {{"bamboo", rgb(193, 173, 80)}, {"crimson", rgb(101, 48, 70)}, {"warped", rgb(43, 104, 99)}}};
   for (const auto& [wood, colour] : woods) {
     const glm::vec3 c = colour;
     out.push_back(still(std::string(wood) + "_planks", [c](int x, int y) { return planksOf(x, y, c); }));

@@ -55,6 +55,7 @@ struct Wood {
   const char* name;
   glm::vec3 planks, bark, core;
   std::uint64_t leafSeed;
+  glm::vec3 leaves{-1.0f};  // the leaves' own colour; negative: grey, for the biome's foliage tint
 };
 
 void addWood(std::vector<GeneratedTexture>& out, const Wood& w) {
@@ -66,7 +67,11 @@ void addWood(std::vector<GeneratedTexture>& out, const Wood& w) {
       still("stripped_" + n + "_log", [w](int x, int y) { return logSideOf(x, y, w.core * 0.85f); }));
   out.push_back(still("stripped_" + n + "_log_top",
                       [w](int x, int y) { return logTopOf(x, y, w.core * 0.85f, w.core); }));
-  out.push_back(still(n + "_leaves", [w](int x, int y) { return leavesOf(x, y, w.leafSeed); }));
+  out.push_back(still(n + "_leaves", [w](int x, int y) {
+    Texel t = leavesOf(x, y, w.leafSeed);
+    if (w.leaves.r >= 0.0f) t.color *= w.leaves / glm::vec3(0.6f);
+    return t;
+  }));
   out.push_back(still(n + "_door_bottom", [w](int x, int y) { return doorBottom(x, y, w.planks); }));
   out.push_back(still(n + "_door_top", [w](int x, int y) { return doorTop(x, y, w.planks); }));
   out.push_back(still(n + "_trapdoor", [w](int x, int y) { return trapdoor(x, y, w.planks); }));
@@ -198,10 +203,15 @@ void addFamilyTextures(std::vector<GeneratedTexture>& out) {
     out.push_back(still(c + "_stained_glass", [colour](int x, int y) { return stainedGlass(x, y, colour); }));
   }
   // Woods.
-  for (const Wood& w : {Wood{"birch", rgb(192, 175, 121), rgb(216, 215, 210), rgb(200, 180, 130), 731},
-                        Wood{"spruce", rgb(114, 84, 48), rgb(58, 37, 16), rgb(120, 90, 55), 741},
-                        Wood{"acacia", rgb(168, 90, 50), rgb(103, 96, 86), rgb(175, 95, 55), 751},
-                        Wood{"dark_oak", rgb(66, 43, 20), rgb(60, 46, 26), rgb(75, 50, 25), 761}}) {
+  for (const Wood& w :
+       {Wood{"birch", rgb(192, 175, 121), rgb(216, 215, 210), rgb(200, 180, 130), 731},
+        Wood{"spruce", rgb(114, 84, 48), rgb(58, 37, 16), rgb(120, 90, 55), 741},
+        Wood{"acacia", rgb(168, 90, 50), rgb(103, 96, 86), rgb(175, 95, 55), 751},
+        Wood{"dark_oak", rgb(66, 43, 20), rgb(60, 46, 26), rgb(75, 50, 25), 761},
+        Wood{"jungle", rgb(160, 115, 80), rgb(85, 67, 25), rgb(170, 120, 80), 771},
+        Wood{"cherry", rgb(226, 178, 172), rgb(54, 33, 44), rgb(226, 160, 160), 781, rgb(235, 170, 200)},
+        Wood{"mangrove", rgb(117, 54, 48), rgb(84, 66, 50), rgb(118, 54, 48), 791},
+        Wood{"pale_oak", rgb(223, 212, 208), rgb(90, 85, 80), rgb(230, 220, 215), 801, rgb(160, 170, 160)}}) {
     addWood(out, w);
   }
   out.push_back(

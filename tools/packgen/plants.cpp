@@ -61,29 +61,31 @@ Texel blades(int x, int y, std::uint64_t seed, glm::vec3 colour, int tallest) {
 }  // namespace
 
 void addPlantTextures(std::vector<GeneratedTexture>& out) {
-  const std::array<std::pair<const char*, glm::vec3>, 9> flowers = {{{"red_tulip", rgb(200, 40, 35)},
-                                                                      {"orange_tulip", rgb(230, 120, 30)},
-                                                                      {"white_tulip", rgb(235, 235, 230)},
-                                                                      {"pink_tulip", rgb(235, 160, 190)},
-                                                                      {"lily_of_the_valley", rgb(245, 245, 240)},
-                                                                      {"wither_rose", rgb(35, 30, 30)},
-                                                                      {"torchflower", rgb(240, 140, 40)},
-                                                                      {"open_eyeblossom", rgb(245, 150, 60)},
-                                                                      {"closed_eyeblossom", rgb(120, 120, 135)}}};
+  const std::array<std::pair<const char*, glm::vec3>, 9> flowers = {
+      {{"red_tulip", rgb(200, 40, 35)},
+       {"orange_tulip", rgb(230, 120, 30)},
+       {"white_tulip", rgb(235, 235, 230)},
+       {"pink_tulip", rgb(235, 160, 190)},
+       {"lily_of_the_valley", rgb(245, 245, 240)},
+       {"wither_rose", rgb(35, 30, 30)},
+       {"torchflower", rgb(240, 140, 40)},
+       {"open_eyeblossom", rgb(245, 150, 60)},
+       {"closed_eyeblossom", rgb(120, 120, 135)}}};
   std::uint64_t seed = 1101;
   for (const auto& [name, colour] : flowers) {
     const glm::vec3 c = colour;
     const std::uint64_t s = seed++;
     out.push_back(still(name, [c, s](int x, int y) { return plant(x, y, s, c); }));
   }
-  const std::array<std::pair<const char*, glm::vec3>, 8> saplings = {{{"oak_sapling", rgb(60, 120, 30)},
-                                                                       {"spruce_sapling", rgb(40, 80, 45)},
-                                                                       {"birch_sapling", rgb(100, 145, 55)},
-                                                                       {"jungle_sapling", rgb(50, 130, 30)},
-                                                                       {"acacia_sapling", rgb(105, 130, 30)},
-                                                                       {"dark_oak_sapling", rgb(40, 90, 20)},
-                                                                       {"cherry_sapling", rgb(235, 170, 200)},
-                                                                       {"pale_oak_sapling", rgb(160, 170, 160)}}};
+  const std::array<std::pair<const char*, glm::vec3>, 8> saplings = {
+      {{"oak_sapling", rgb(60, 120, 30)},
+       {"spruce_sapling", rgb(40, 80, 45)},
+       {"birch_sapling", rgb(100, 145, 55)},
+       {"jungle_sapling", rgb(50, 130, 30)},
+       {"acacia_sapling", rgb(105, 130, 30)},
+       {"dark_oak_sapling", rgb(40, 90, 20)},
+       {"cherry_sapling", rgb(235, 170, 200)},
+       {"pale_oak_sapling", rgb(160, 170, 160)}}};
   for (const auto& [name, colour] : saplings) {
     const glm::vec3 c = colour;
     const std::uint64_t s = seed++;
@@ -102,9 +104,12 @@ void addPlantTextures(std::vector<GeneratedTexture>& out) {
   out.push_back(still("warped_fungus", [](int x, int y) {
     return mushroom(x, y, 1204, rgb(20, 140, 125), rgb(230, 120, 40), rgb(250, 130, 40));
   }));
-  out.push_back(still("crimson_roots", [](int x, int y) { return blades(x, y, 1205, rgb(150, 20, 40), 11); }));
-  out.push_back(still("warped_roots", [](int x, int y) { return blades(x, y, 1206, rgb(20, 150, 135), 11); }));
-  out.push_back(still("nether_sprouts", [](int x, int y) { return blades(x, y, 1207, rgb(20, 160, 140), 6); }));
+  out.push_back(
+      still("crimson_roots", [](int x, int y) { return blades(x, y, 1205, rgb(150, 20, 40), 11); }));
+  out.push_back(
+      still("warped_roots", [](int x, int y) { return blades(x, y, 1206, rgb(20, 150, 135), 11); }));
+  out.push_back(
+      still("nether_sprouts", [](int x, int y) { return blades(x, y, 1207, rgb(20, 160, 140), 6); }));
   out.push_back(still("seagrass", [](int x, int y) { return blades(x, y, 1208, rgb(50, 130, 45), 13); }));
 }
 

@@ -4,8 +4,11 @@
 // retextures a material retextures its shapes too.
 
 #include <array>
+#include <filesystem>
 #include <nlohmann/json.hpp>
 
+#include "core/error.h"
+#include "core/paths.h"
 #include "packgen.h"
 #include "recipes.h"
 
@@ -195,7 +198,46 @@ void addWall(const Material& m, std::vector<GeneratedFile>& out) {
 
 // The woods whose logs the pack has: their bark blocks ("oak_wood", "stripped_oak_wood") are the log's
 // side all round, standing along their axis as logs do.
-constexpr const char* kWoods[] = {"oak", "birch", "spruce", "acacia", "dark_oak"};
+constexpr const char* kWoods[] = {"oak",    "birch",  "spruce",   "acacia",  "dark_oak",
+                                  "jungle", "cherry", "mangrove", "pale_oak"};
+
+// The newer woods' logs, fences, gates, doors and trapdoors are oak's files renamed: the same models on
+// their own textures (families.cpp paints them).
+constexpr const char* kOakLikeWoods[] = {"jungle", "cherry", "mangrove", "pale_oak"};
+constexpr const char* kOakFiles[] = {"blockstates/oak_log",
+                                     "blockstates/stripped_oak_log",
+                                     "blockstates/oak_fence",
+                                     "blockstates/oak_fence_gate",
+                                     "blockstates/oak_door",
+                                     "blockstates/oak_trapdoor",
+                                     "models/block/oak_log",
+                                     "models/block/stripped_oak_log",
+                                     "models/block/oak_fence_post",
+                                     "models/block/oak_fence_side",
+                                     "models/block/oak_fence_gate",
+                                     "models/block/oak_fence_gate_open",
+                                     "models/block/oak_door_bottom_left",
+                                     "models/block/oak_door_bottom_right",
+                                     "models/block/oak_door_top_left",
+                                     "models/block/oak_door_top_right",
+                                     "models/block/oak_trapdoor_bottom",
+                                     "models/block/oak_trapdoor_open",
+                                     "models/block/oak_trapdoor_top"};
+
+std::string replaceAll(std::string text, const std::string& from, const std::string& to) {
+  for (std::size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size()))
+    text.replace(at, from.size(), to);
+  return text;
+}
+
+void addOakLike(const std::string& wood, std::vector<GeneratedFile>& out) {
+  const std::filesystem::path pack = resourcePackDir() / "default" / "assets" / "minecraft";
+  for (const char* oak : kOakFiles) {
+    const std::string text = readTextFile(pack / (std::string(oak) + ".json"));
+    out.push_back({"assets/minecraft/" + replaceAll(oak, "oak_", wood + "_") + ".json",
+                   replaceAll(text, "oak_", wood + "_")});
+  }
+}
 
 std::vector<std::string> woodBlocks() {
   std::vector<std::string> names;
@@ -277,6 +319,7 @@ std::vector<GeneratedFile> generateShapedBlockFiles() {
   for (const std::string& wood : woodBlocks()) addWood(wood, out);
   for (const std::string& carpet : carpets()) addCarpet(carpet, out);
   for (const std::string& pane : panes()) addPane(pane, out);
+  for (const char* wood : kOakLikeWoods) addOakLike(wood, out);
   return out;
 }
 
@@ -290,6 +333,11 @@ std::vector<std::string> shapedBlockNames() {
   for (const std::string& wood : woodBlocks()) names.push_back(wood);
   for (const std::string& carpet : carpets()) names.push_back(carpet);
   for (const std::string& pane : panes()) names.push_back(pane);
+  for (const char* wood : kOakLikeWoods) {
+    for (const char* block : {"_log", "_fence", "_fence_gate", "_door", "_trapdoor"})
+      names.push_back(wood + std::string(block));
+    names.push_back("stripped_" + std::string(wood) + "_log");
+  }
   return names;
 }
 
