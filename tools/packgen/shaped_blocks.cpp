@@ -306,6 +306,69 @@ void addPane(const std::string& name, std::vector<GeneratedFile>& out) {
   out.push_back(file("blockstates", name, Json{{"multipart", parts}}));
 }
 
+// Minecraft's pressure-plate templates: a plate a sixteenth high (half that pressed) inset by one on
+// each side, its rim showing the texture's bottom row.
+Json number(double v) {
+  return v == static_cast<int>(v) ? Json(static_cast<int>(v)) : Json(v);
+}
+
+Json plateTemplate(double height) {
+  const auto face = [](std::array<double, 4> uv, const char* cullface) {
+    Json f{{"uv", {number(uv[0]), number(uv[1]), number(uv[2]), number(uv[3])}}, {"texture", "#texture"}};
+    if (cullface) f["cullface"] = cullface;
+    return f;
+  };
+  const double rim = 16.0 - height;
+  Json faces;
+  faces["down"] = face({1, 1, 15, 15}, "down");
+  faces["up"] = face({1, 1, 15, 15}, nullptr);
+  for (const char* side : {"north", "south", "west", "east"}) faces[side] = face({1, rim, 15, 16}, nullptr);
+  Json element{{"from", {1, 0, 1}}, {"to", {15, number(height), 15}}, {"faces", faces}};
+  return Json{{"parent", "block/block"}, {"textures", {{"particle", "#texture"}}}, {"elements", {element}}};
+}
+
+// Pressure plates and what they are made of; weighted plates go down with any power.
+constexpr std::array<std::pair<const char*, const char*>, 16> kPlates = {
+    {{"oak", "oak_planks"},
+     {"spruce", "spruce_planks"},
+     {"birch", "birch_planks"},
+     {"jungle", "jungle_planks"},
+     {"acacia", "acacia_planks"},
+     {"cherry", "cherry_planks"},
+     {"dark_oak", "dark_oak_planks"},
+     {"pale_oak", "pale_oak_planks"},
+     {"mangrove", "mangrove_planks"},
+     {"bamboo", "bamboo_planks"},
+     {"crimson", "crimson_planks"},
+     {"warped", "warped_planks"},
+     {"stone", "stone"},
+     {"polished_blackstone", "polished_blackstone"},
+     {"light_weighted", "gold_block"},
+     {"heavy_weighted", "iron_block"}}};
+
+void addPlates(std::vector<GeneratedFile>& out) {
+  out.push_back(file("model", "pressure_plate_up", plateTemplate(1.0)));
+  out.push_back(file("model", "pressure_plate_down", plateTemplate(0.5)));
+  for (const auto& [material, texture] : kPlates) {
+    const std::string name = std::string(material) + "_pressure_plate";
+    for (const char* pose : {"", "_down"}) {
+      out.push_back(file("model", name + pose,
+                         Json{{"parent", block(std::string("pressure_plate_") + (*pose ? "down" : "up"))},
+                              {"textures", {{"texture", block(texture)}}}}));
+    }
+    Json variants;
+    if (std::string(material).ends_with("weighted")) {
+      for (int power = 0; power <= 15; ++power)
+        variants["power=" + std::to_string(power)] =
+            Json{{"model", block(name + (power > 0 ? "_down" : ""))}};
+    } else {
+      variants["powered=false"] = Json{{"model", block(name)}};
+      variants["powered=true"] = Json{{"model", block(name + "_down")}};
+    }
+    out.push_back(file("blockstates", name, Json{{"variants", variants}}));
+  }
+}
+
 }  // namespace
 
 std::vector<GeneratedFile> generateShapedBlockFiles() {
@@ -320,6 +383,7 @@ std::vector<GeneratedFile> generateShapedBlockFiles() {
   for (const std::string& carpet : carpets()) addCarpet(carpet, out);
   for (const std::string& pane : panes()) addPane(pane, out);
   for (const char* wood : kOakLikeWoods) addOakLike(wood, out);
+  addPlates(out);
   return out;
 }
 
@@ -338,6 +402,7 @@ std::vector<std::string> shapedBlockNames() {
       names.push_back(wood + std::string(block));
     names.push_back("stripped_" + std::string(wood) + "_log");
   }
+  for (const auto& [material, texture] : kPlates) names.push_back(std::string(material) + "_pressure_plate");
   return names;
 }
 
