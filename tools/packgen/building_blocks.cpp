@@ -97,7 +97,11 @@ void addPlanks(std::vector<GeneratedTexture>& out) {
       {{"bamboo", rgb(193, 173, 80)}, {"crimson", rgb(101, 48, 70)}, {"warped", rgb(43, 104, 99)}}};
   for (const auto& [wood, colour] : woods) {
     const glm::vec3 c = colour;
-    out.push_back(still(std::string(wood) + "_planks", [c](int x, int y) { return planksOf(x, y, c); }));
+    const std::string w = wood;
+    out.push_back(still(w + "_planks", [c](int x, int y) { return planksOf(x, y, c); }));
+    out.push_back(still(w + "_door_bottom", [c](int x, int y) { return doorBottom(x, y, c); }));
+    out.push_back(still(w + "_door_top", [c](int x, int y) { return doorTop(x, y, c); }));
+    out.push_back(still(w + "_trapdoor", [c](int x, int y) { return trapdoor(x, y, c); }));
   }
 }
 

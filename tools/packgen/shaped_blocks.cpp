@@ -204,6 +204,8 @@ constexpr const char* kWoods[] = {"oak",    "birch",  "spruce",   "acacia",  "da
 // The newer woods' logs, fences, gates, doors and trapdoors are oak's files renamed: the same models on
 // their own textures (families.cpp paints them).
 constexpr const char* kOakLikeWoods[] = {"jungle", "cherry", "mangrove", "pale_oak"};
+// Woods without logs here (the Nether's stems, bamboo): their fences, gates, doors and trapdoors.
+constexpr const char* kOakLikeCrafts[] = {"crimson", "warped", "bamboo"};
 constexpr const char* kOakFiles[] = {"blockstates/oak_log",
                                      "blockstates/stripped_oak_log",
                                      "blockstates/oak_fence",
@@ -230,9 +232,10 @@ std::string replaceAll(std::string text, const std::string& from, const std::str
   return text;
 }
 
-void addOakLike(const std::string& wood, std::vector<GeneratedFile>& out) {
+void addOakLike(const std::string& wood, bool logs, std::vector<GeneratedFile>& out) {
   const std::filesystem::path pack = resourcePackDir() / "default" / "assets" / "minecraft";
   for (const char* oak : kOakFiles) {
+    if (!logs && std::string(oak).find("_log") != std::string::npos) continue;
     const std::string text = readTextFile(pack / (std::string(oak) + ".json"));
     out.push_back({"assets/minecraft/" + replaceAll(oak, "oak_", wood + "_") + ".json",
                    replaceAll(text, "oak_", wood + "_")});
@@ -382,7 +385,8 @@ std::vector<GeneratedFile> generateShapedBlockFiles() {
   for (const std::string& wood : woodBlocks()) addWood(wood, out);
   for (const std::string& carpet : carpets()) addCarpet(carpet, out);
   for (const std::string& pane : panes()) addPane(pane, out);
-  for (const char* wood : kOakLikeWoods) addOakLike(wood, out);
+  for (const char* wood : kOakLikeWoods) addOakLike(wood, true, out);
+  for (const char* wood : kOakLikeCrafts) addOakLike(wood, false, out);
   addPlates(out);
   return out;
 }
@@ -401,6 +405,10 @@ std::vector<std::string> shapedBlockNames() {
     for (const char* block : {"_log", "_fence", "_fence_gate", "_door", "_trapdoor"})
       names.push_back(wood + std::string(block));
     names.push_back("stripped_" + std::string(wood) + "_log");
+  }
+  for (const char* wood : kOakLikeCrafts) {
+    for (const char* block : {"_fence", "_fence_gate", "_door", "_trapdoor"})
+      names.push_back(wood + std::string(block));
   }
   for (const auto& [material, texture] : kPlates) names.push_back(std::string(material) + "_pressure_plate");
   return names;
