@@ -224,6 +224,67 @@ void addCoralsAndCoppers(std::vector<GeneratedTexture>& out) {
   }));
 }
 
+// Blocks that glow from within: their lit texels carry LabPBR emission.
+Texel glowing(int x, int y, std::uint64_t seed, glm::vec3 base, glm::vec3 glow, float share, int emission) {
+  Texel t = rock(seed, x, y, base, 0.2f);
+  if (fbm(seed + 1, static_cast<float>(x), static_cast<float>(y)) > 1.0f - share)
+    t.color = glow, t.emission = emission;
+  return t;
+}
+
+void addGlowingAndLiving(std::vector<GeneratedTexture>& out) {
+  out.push_back(still("magma_block", [](int x, int y) {
+    return glowing(x, y, 1001, rgb(90, 35, 20), rgb(250, 120, 30), 0.35f, 90);
+  }));
+  out.push_back(still("shroomlight", [](int x, int y) {
+    return glowing(x, y, 1002, rgb(240, 150, 70), rgb(255, 220, 140), 0.45f, 200);
+  }));
+  out.push_back(still("sea_lantern", [](int x, int y) {
+    return glowing(x, y, 1003, rgb(170, 200, 190), rgb(235, 250, 245), 0.6f, 220);
+  }));
+  out.push_back(still("nether_wart_block", [](int x, int y) {
+    Texel t = rock(1004, x, y, rgb(115, 3, 3), 0.25f);
+    t.porosity = 160;
+    return t;
+  }));
+  out.push_back(still("warped_wart_block", [](int x, int y) {
+    Texel t = rock(1005, x, y, rgb(22, 119, 121), 0.25f);
+    t.porosity = 160;
+    return t;
+  }));
+  out.push_back(still("mud", [](int x, int y) { return smooth(x, y, 1006, rgb(60, 57, 60), 0.12f, 150); }));
+  out.push_back(still("soul_sand", [](int x, int y) {
+    Texel t = rock(1007, x, y, rgb(81, 62, 50), 0.25f);
+    if (hash01(1008, x / 3, y / 3) < 0.2f && (x % 3 == 1) && (y % 3 == 1)) t.color *= 0.4f, t.height = 0.2f;
+    return t;
+  }));
+  out.push_back(still("prismarine", [](int x, int y) { return rock(1009, x, y, rgb(99, 156, 151), 0.2f); }));
+  out.push_back(still("sculk", [](int x, int y) {
+    return glowing(x, y, 1010, rgb(13, 30, 36), rgb(40, 150, 160), 0.15f, 40);
+  }));
+  out.push_back(still("budding_amethyst", [](int x, int y) {
+    Texel t = smooth(x, y, 976, rgb(133, 97, 191), 0.2f, 150);
+    if (hash01(1011, x / 4, y / 4) < 0.3f && x % 4 == 2 && y % 4 == 2) t.color = rgb(220, 190, 250);
+    return t;
+  }));
+  out.push_back(still("pale_moss_block", [](int x, int y) {
+    Texel t = rock(1012, x, y, rgb(106, 112, 104), 0.2f);
+    t.porosity = 160;
+    return t;
+  }));
+  out.push_back(still("powder_snow", [](int x, int y) {
+    Texel t = rock(1013, x, y, rgb(248, 253, 253), 0.05f);
+    t.porosity = 200;
+    return t;
+  }));
+  out.push_back(still("tinted_glass", [](int x, int y) {
+    Texel t = glass(x, y);
+    t.color *= rgb(60, 50, 70) / glm::vec3(0.6f);
+    t.alpha = t.alpha > 0.5f ? 1.0f : 0.85f;
+    return t;
+  }));
+}
+
 }  // namespace
 
 void addBuildingBlockTextures(std::vector<GeneratedTexture>& out) {
@@ -232,6 +293,7 @@ void addBuildingBlockTextures(std::vector<GeneratedTexture>& out) {
   addBricksAndTiles(out);
   addStonesAndSoils(out);
   addCoralsAndCoppers(out);
+  addGlowingAndLiving(out);
 }
 
 }  // namespace terrasol::packgen
