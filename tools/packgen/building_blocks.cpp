@@ -4,7 +4,9 @@
 // living and dead, the weathered coppers, and the soils. Each texture is named as its block, which draws it
 // on every side.
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <string>
 
 #include "recipes.h"
@@ -285,6 +287,49 @@ void addGlowingAndLiving(std::vector<GeneratedTexture>& out) {
   }));
 }
 
+// Bands across a column's side, rings on its end.
+Texel banded(int x, int y, std::uint64_t seed, glm::vec3 colour, int period) {
+  Texel t = rock(seed, x, y, colour, 0.1f);
+  if (y % period == 0) t.color *= 0.82f, t.height = 0.7f;
+  return t;
+}
+Texel ringed(int x, int y, std::uint64_t seed, glm::vec3 colour) {
+  Texel t = rock(seed, x, y, colour, 0.1f);
+  const float r = std::max(std::abs(x - 7.5f), std::abs(y - 7.5f));
+  if (static_cast<int>(r) % 3 == 0) t.color *= 0.85f;
+  return t;
+}
+
+void addColumns(std::vector<GeneratedTexture>& out) {
+  const auto column = [&](const std::string& side, const std::string& end, std::uint64_t seed,
+                          glm::vec3 colour, int period) {
+    out.push_back(still(side, [=](int x, int y) { return banded(x, y, seed, colour, period); }));
+    out.push_back(still(end, [=](int x, int y) { return ringed(x, y, seed + 1, colour * 1.05f); }));
+  };
+  column("bone_block_side", "bone_block_top", 1021, rgb(229, 225, 207), 16);
+  column("hay_block_side", "hay_block_top", 1023, rgb(166, 136, 38), 4);
+  column("quartz_pillar", "quartz_pillar_top", 1025, rgb(235, 230, 222), 16);
+  column("purpur_pillar", "purpur_pillar_top", 1027, rgb(171, 129, 171), 16);
+  column("basalt_side", "basalt_top", 1029, rgb(80, 81, 86), 3);
+  column("polished_basalt_side", "polished_basalt_top", 1031, rgb(99, 98, 100), 8);
+  const auto stem = [&](const std::string& name, glm::vec3 bark, glm::vec3 core) {
+    out.push_back(still(name, [=](int x, int y) { return logSideOf(x, y, bark); }));
+    out.push_back(still(name + "_top", [=](int x, int y) { return logTopOf(x, y, bark, core); }));
+    out.push_back(still("stripped_" + name, [=](int x, int y) { return logSideOf(x, y, core * 0.85f); }));
+    out.push_back(
+        still("stripped_" + name + "_top", [=](int x, int y) { return logTopOf(x, y, core * 0.85f, core); }));
+  };
+  stem("crimson_stem", rgb(92, 25, 29), rgb(137, 57, 90));
+  stem("warped_stem", rgb(57, 58, 78), rgb(58, 142, 140));
+  const auto bamboo = [&](const std::string& name, glm::vec3 colour) {
+    out.push_back(still(
+        name, [=](int x, int y) { return banded(x / 4 * 4 + (x % 4 == 0 ? 0 : 1), y, 1033, colour, 5); }));
+    out.push_back(still(name + "_top", [=](int x, int y) { return ringed(x, y, 1034, colour); }));
+  };
+  bamboo("bamboo_block", rgb(127, 143, 54));
+  bamboo("stripped_bamboo_block", rgb(193, 173, 80));
+}
+
 }  // namespace
 
 void addBuildingBlockTextures(std::vector<GeneratedTexture>& out) {
@@ -294,6 +339,7 @@ void addBuildingBlockTextures(std::vector<GeneratedTexture>& out) {
   addStonesAndSoils(out);
   addCoralsAndCoppers(out);
   addGlowingAndLiving(out);
+  addColumns(out);
 }
 
 }  // namespace terrasol::packgen

@@ -372,6 +372,43 @@ void addPlates(std::vector<GeneratedFile>& out) {
   }
 }
 
+// Blocks standing along their axis like logs: a side texture round, an end texture on top and bottom
+// (hyphae: the stem's side all round, as wood is).
+struct Column {
+  const char* name;
+  const char* side;
+  const char* end;
+};
+constexpr Column kColumns[] = {
+    {"bone_block", "bone_block_side", "bone_block_top"},
+    {"hay_block", "hay_block_side", "hay_block_top"},
+    {"quartz_pillar", "quartz_pillar", "quartz_pillar_top"},
+    {"purpur_pillar", "purpur_pillar", "purpur_pillar_top"},
+    {"basalt", "basalt_side", "basalt_top"},
+    {"polished_basalt", "polished_basalt_side", "polished_basalt_top"},
+    {"crimson_stem", "crimson_stem", "crimson_stem_top"},
+    {"stripped_crimson_stem", "stripped_crimson_stem", "stripped_crimson_stem_top"},
+    {"crimson_hyphae", "crimson_stem", "crimson_stem"},
+    {"stripped_crimson_hyphae", "stripped_crimson_stem", "stripped_crimson_stem"},
+    {"warped_stem", "warped_stem", "warped_stem_top"},
+    {"stripped_warped_stem", "stripped_warped_stem", "stripped_warped_stem_top"},
+    {"warped_hyphae", "warped_stem", "warped_stem"},
+    {"stripped_warped_hyphae", "stripped_warped_stem", "stripped_warped_stem"},
+    {"bamboo_block", "bamboo_block", "bamboo_block_top"},
+    {"stripped_bamboo_block", "stripped_bamboo_block", "stripped_bamboo_block_top"},
+};
+
+void addColumn(const Column& c, std::vector<GeneratedFile>& out) {
+  out.push_back(file(
+      "model", c.name,
+      Json{{"parent", "block/cube_column"}, {"textures", {{"end", block(c.end)}, {"side", block(c.side)}}}}));
+  Json variants;
+  variants["axis=x"] = Json{{"model", block(c.name)}, {"x", 90}, {"y", 90}};
+  variants["axis=y"] = Json{{"model", block(c.name)}};
+  variants["axis=z"] = Json{{"model", block(c.name)}, {"x", 90}};
+  out.push_back(file("blockstates", c.name, Json{{"variants", variants}}));
+}
+
 }  // namespace
 
 std::vector<GeneratedFile> generateShapedBlockFiles() {
@@ -388,6 +425,7 @@ std::vector<GeneratedFile> generateShapedBlockFiles() {
   for (const char* wood : kOakLikeWoods) addOakLike(wood, true, out);
   for (const char* wood : kOakLikeCrafts) addOakLike(wood, false, out);
   addPlates(out);
+  for (const Column& c : kColumns) addColumn(c, out);
   return out;
 }
 
@@ -411,6 +449,7 @@ std::vector<std::string> shapedBlockNames() {
       names.push_back(wood + std::string(block));
   }
   for (const auto& [material, texture] : kPlates) names.push_back(std::string(material) + "_pressure_plate");
+  for (const Column& c : kColumns) names.push_back(c.name);
   return names;
 }
 
