@@ -149,7 +149,7 @@ void addStonesAndSoils(std::vector<GeneratedTexture>& out) {
       return t;
     }));
   };
-  rockOf("netherrack", 941, rgb(98, 38, 38), 0.3f, 80);
+  out.push_back(still("netherrack", netherrack));
   rockOf("end_stone", 942, rgb(219, 222, 158), 0.12f, 40);
   rockOf("soul_soil", 943, rgb(75, 57, 46), 0.22f, 120);
   rockOf("packed_mud", 944, rgb(142, 106, 79), 0.1f, 60);

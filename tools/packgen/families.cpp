@@ -256,6 +256,16 @@ void addFamilyTextures(std::vector<GeneratedTexture>& out) {
   out.push_back(still("cornflower", [](int x, int y) { return plant(x, y, 555, rgb(70, 100, 220)); }));
   out.push_back(still("lantern", lantern));
   // Ores, in stone and in deepslate, and the metal and gem blocks.
+  out.push_back(still("nether_gold_ore",
+                      [](int x, int y) { return oreIn(x, y, 191, rgb(250, 210, 60), 231, netherrack); }));
+  out.push_back(still("nether_quartz_ore",
+                      [](int x, int y) { return oreIn(x, y, 192, rgb(235, 230, 220), 40, netherrack); }));
+  out.push_back(
+      still("redstone_ore", [](int x, int y) { return oreIn(x, y, 193, rgb(210, 20, 10), 60, stone); }));
+  out.push_back(still("deepslate_redstone_ore",
+                      [](int x, int y) { return oreIn(x, y, 193, rgb(210, 20, 10), 60, deepslate); }));
+  out.push_back(still("deepslate_emerald_ore",
+                      [](int x, int y) { return oreIn(x, y, 194, rgb(50, 200, 100), 60, deepslate); }));
   out.push_back(still("deepslate_coal_ore",
                       [](int x, int y) { return oreIn(x, y, 181, rgb(45, 45, 45), 12, deepslate); }));
   out.push_back(still("deepslate_iron_ore",

@@ -323,4 +323,10 @@ Texel terracotta(int x, int y, glm::vec3 colour) {
   return t;
 }
 
+Texel netherrack(int x, int y) {
+  Texel t = rock(941, x, y, rgb(98, 38, 38), 0.3f);
+  t.porosity = 80;
+  return t;
+}
+
 }  // namespace terrasol::packgen

@@ -50,6 +50,7 @@ Texel glass(int x, int y);
 Texel logTop(int x, int y);
 Texel leaves(int x, int y);
 Texel glowstone(int x, int y);
+Texel netherrack(int x, int y);
 // Minecraft's torch layout: the model shows columns 7..8, the flame in rows 6..8 and the stick below.
 Texel torch(int x, int y);
 // Specks of an ore in stone.
