@@ -187,6 +187,45 @@ void addFamilyTextures(std::vector<GeneratedTexture>& out) {
   out.push_back(still("cut_sandstone", [sandstone](int x, int y) {
     return polished(smooth(x, y, 703, sandstone, 0.05f, 40), x, y);
   }));
+  // Red sandstone, as sandstone in the badlands' red sand; chiseled: a carved band across the middle.
+  const glm::vec3 red = rgb(186, 99, 29);
+  out.push_back(still("red_sandstone", [red](int x, int y) { return sandstoneSide(x, y, red); }));
+  out.push_back(
+      still("red_sandstone_top", [red](int x, int y) { return smooth(x, y, 704, red, 0.05f, 40); }));
+  out.push_back(still("red_sandstone_bottom", [red](int x, int y) { return rock(705, x, y, red, 0.1f); }));
+  out.push_back(still("cut_red_sandstone",
+                      [red](int x, int y) { return polished(smooth(x, y, 706, red, 0.05f, 40), x, y); }));
+  out.push_back(still("chiseled_red_sandstone", [red](int x, int y) {
+    Texel t = sandstoneSide(x, y, red);
+    if (y >= 5 && y <= 10 && (x + y) % 4 == 0) t.color *= 0.7f, t.height = 0.5f;
+    return t;
+  }));
+  out.push_back(still("chiseled_sandstone", [sandstone](int x, int y) {
+    Texel t = sandstoneSide(x, y, sandstone);
+    if (y >= 5 && y <= 10 && (x + y) % 4 == 0) t.color *= 0.7f, t.height = 0.5f;
+    return t;
+  }));
+  // Quartz: smooth white faces; the block's side and top framed, its bottom plain (smooth quartz).
+  const glm::vec3 quartz = rgb(236, 230, 223);
+  out.push_back(still("quartz_block_side", [quartz](int x, int y) {
+    return polished(smooth(x, y, 707, quartz, 0.03f, 150), x, y);
+  }));
+  out.push_back(still("quartz_block_top", [quartz](int x, int y) {
+    return polished(smooth(x, y, 708, quartz, 0.03f, 150), x, y);
+  }));
+  out.push_back(
+      still("quartz_block_bottom", [quartz](int x, int y) { return smooth(x, y, 709, quartz, 0.03f, 150); }));
+  out.push_back(still("chiseled_quartz_block", [quartz](int x, int y) {
+    Texel t = polished(smooth(x, y, 710, quartz, 0.03f, 150), x, y);
+    if ((x == 4 || x == 11) && y > 2 && y < 13) t.color *= 0.8f, t.height = 0.6f;
+    return t;
+  }));
+  out.push_back(still("chiseled_quartz_block_top", [quartz](int x, int y) {
+    Texel t = polished(smooth(x, y, 711, quartz, 0.03f, 150), x, y);
+    const int r = std::max(std::abs(x - 7), std::abs(y - 7));
+    if (r == 3) t.color *= 0.8f, t.height = 0.6f;
+    return t;
+  }));
   out.push_back(still("clay", [](int x, int y) { return smooth(x, y, 711, rgb(160, 166, 179), 0.05f, 70); }));
   out.push_back(still("packed_ice", [](int x, int y) {
     Texel t = smooth(x, y, 721, rgb(141, 180, 250), 0.1f, 230);
