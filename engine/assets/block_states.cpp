@@ -1,5 +1,6 @@
 #include "assets/block_states.h"
 
+#include <set>
 #include <string_view>
 
 #include "assets/block_model.h"
@@ -205,6 +206,21 @@ const BlockStates::Variant* BlockStates::variantOf(const StateValues& state) con
 std::vector<ModelPlacement> BlockStates::choices(const StateValues& state) const {
   const Variant* v = variantOf(state);
   return v && v->choices.size() > 1 ? v->choices : std::vector<ModelPlacement>{};
+}
+
+namespace {
+void namedBy(const StateCondition& c, std::set<std::string>& out) {
+  for (const auto& [name, allowed] : c.values) out.insert(name);
+  for (const StateCondition& child : c.children) namedBy(child, out);
+}
+}  // namespace
+
+std::set<std::string> BlockStates::properties() const {
+  std::set<std::string> out;
+  for (const Variant& v : variants_)
+    for (const auto& [name, value] : v.when) out.insert(name);
+  for (const Part& p : parts_) namedBy(p.when, out);
+  return out;
 }
 
 std::vector<std::string> BlockStates::models() const {

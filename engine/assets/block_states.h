@@ -9,6 +9,7 @@
 #include <glm/vec3.hpp>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -57,6 +58,9 @@ class BlockStates {
 
   // Every model any state may use.
   std::vector<std::string> models() const;
+  // Every property a variant or a part's condition names: states that differ only in others (a
+  // waterlogged twin) are drawn alike.
+  std::set<std::string> properties() const;
 
  private:
   struct Variant {

@@ -63,8 +63,18 @@ void forEachModelOfEachState(const BlockRegistry& blocks, const PackStack& packs
     }
     try {
       const BlockStates states = BlockStates::load(packs, type.name);
+      // States alike in every property the blockstates name pick the same models: picked once.
+      const std::set<std::string> named = states.properties();
+      std::map<StateValues, std::uint16_t> picked;
       for (std::uint16_t i = 0; i < type.stateCount; ++i) {
-        const StateValues values = blocks.stateValues(static_cast<BlockId>(type.firstState + i));
+        StateValues values = blocks.stateValues(static_cast<BlockId>(type.firstState + i));
+        std::erase_if(values, [&](const auto& v) { return !named.contains(v.first); });
+        const auto [first, added] = picked.try_emplace(values, i);
+        if (!added) {
+          models[i] = models[first->second];
+          choices[i] = choices[first->second];
+          continue;
+        }
         for (const ModelPlacement& p : states.select(values, {}))
           models[i].emplace_back(&library.model(p.model), p);
         for (const ModelPlacement& p : states.choices(values))

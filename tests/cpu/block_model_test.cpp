@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <glm/geometric.hpp>
+#include <set>
 
 #include "assets/block_states.h"
 #include "assets/model_bake.h"
@@ -209,6 +210,22 @@ TEST(BlockStates, VariantsPickTheStateThatMatches) {
   EXPECT_EQ(plain.select({}, {})[0].model, "block/stone");
   EXPECT_EQ(plain.select({{"anything", "1"}}, {})[0].model, "block/stone");
   EXPECT_EQ(plain.models(), std::vector<std::string>{"block/stone"});
+}
+
+// The properties a blockstates file names, in variant keys and in multipart conditions at any depth:
+// states alike in these pick the same models (the atlas picks once for them).
+TEST(BlockStates, NameTheirPropertiesSoTwinsPickOnce) {
+  EXPECT_EQ(statesOf(R"({"variants": {"facing=east,half=bottom": {"model": "block/a"},
+                                      "facing=north,half=top": {"model": "block/a"}}})")
+                .properties(),
+            (std::set<std::string>{"facing", "half"}));
+  EXPECT_EQ(statesOf(R"({"multipart": [{"apply": {"model": "block/post"}},
+                                       {"when": {"north": "true"}, "apply": {"model": "block/side"}},
+                                       {"when": {"OR": [{"up": "true"}, {"AND": [{"east": "low"}]}]},
+                                        "apply": {"model": "block/side"}}]})")
+                .properties(),
+            (std::set<std::string>{"north", "up", "east"}));
+  EXPECT_TRUE(statesOf(R"({"variants": {"": {"model": "block/a"}}})").properties().empty());
 }
 
 TEST(BlockStates, WeightedPicksAreStableByPositionAndFollowTheWeights) {
