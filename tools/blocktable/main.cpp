@@ -1,7 +1,8 @@
 // terrasol-blocktable: converts Minecraft's block facts (PrismarineJS minecraft-data, MIT) into
 // Terrasol's own block table, data/minecraft_blocks.json (format: docs/world.md, "Blocks").
 //   terrasol-blocktable MINECRAFT_DATA_VERSION_DIR [OUT]
-// e.g. terrasol-blocktable ../shared/minecraft-data/1.21.11 data/minecraft_blocks.json
+// e.g. terrasol-blocktable minecraft-data/data/pc/1.21.11 data/minecraft_blocks.json
+// (MINECRAFT_DATA_VERSION_DIR holds minecraft-data's blocks.json and blockCollisionShapes.json)
 //
 // The upstream files give each block's light as its default state's; the rules below give it per
 // state as Minecraft computes it, and are checked against the upstream value at the default state.

@@ -140,28 +140,30 @@ void addBricksAndTiles(std::vector<GeneratedTexture>& out) {
   tile("dark_prismarine", rgb(52, 92, 76), rgb(30, 60, 50), 921, 8, false);
 }
 
+// A rock of one colour, as porous as `porosity` says.
+void addRock(std::vector<GeneratedTexture>& out, const char* name, std::uint64_t seed, glm::vec3 colour,
+             float contrast, int porosity) {
+  out.push_back(still(name, [=](int x, int y) {
+    Texel t = rock(seed, x, y, colour, contrast);
+    t.porosity = porosity;
+    return t;
+  }));
+}
+
 void addStonesAndSoils(std::vector<GeneratedTexture>& out) {
-  const auto rockOf = [&](const char* name, std::uint64_t seed, glm::vec3 colour, float contrast,
-                          int porosity) {
-    out.push_back(still(name, [=](int x, int y) {
-      Texel t = rock(seed, x, y, colour, contrast);
-      t.porosity = porosity;
-      return t;
-    }));
-  };
   out.push_back(still("netherrack", netherrack));
-  rockOf("end_stone", 942, rgb(219, 222, 158), 0.12f, 40);
-  rockOf("soul_soil", 943, rgb(75, 57, 46), 0.22f, 120);
-  rockOf("packed_mud", 944, rgb(142, 106, 79), 0.1f, 60);
-  rockOf("dripstone_block", 945, rgb(134, 107, 92), 0.16f, 30);
-  rockOf("moss_block", 946, rgb(89, 109, 45), 0.2f, 160);
-  rockOf("sponge", 947, rgb(195, 192, 74), 0.26f, 200);
-  rockOf("wet_sponge", 948, rgb(171, 181, 70), 0.26f, 255);
-  rockOf("raw_iron_block", 949, rgb(166, 135, 107), 0.2f, 30);
-  rockOf("raw_copper_block", 950, rgb(154, 105, 79), 0.2f, 30);
-  rockOf("raw_gold_block", 951, rgb(221, 169, 46), 0.2f, 30);
-  rockOf("resin_block", 952, rgb(217, 99, 25), 0.12f, 20);
-  rockOf("honeycomb_block", 953, rgb(229, 148, 29), 0.18f, 60);
+  addRock(out, "end_stone", 942, rgb(219, 222, 158), 0.12f, 40);
+  addRock(out, "soul_soil", 943, rgb(75, 57, 46), 0.22f, 120);
+  addRock(out, "packed_mud", 944, rgb(142, 106, 79), 0.1f, 60);
+  addRock(out, "dripstone_block", 945, rgb(134, 107, 92), 0.16f, 30);
+  addRock(out, "moss_block", 946, rgb(89, 109, 45), 0.2f, 160);
+  addRock(out, "sponge", 947, rgb(195, 192, 74), 0.26f, 200);
+  addRock(out, "wet_sponge", 948, rgb(171, 181, 70), 0.26f, 255);
+  addRock(out, "raw_iron_block", 949, rgb(166, 135, 107), 0.2f, 30);
+  addRock(out, "raw_copper_block", 950, rgb(154, 105, 79), 0.2f, 30);
+  addRock(out, "raw_gold_block", 951, rgb(221, 169, 46), 0.2f, 30);
+  addRock(out, "resin_block", 952, rgb(217, 99, 25), 0.12f, 20);
+  addRock(out, "honeycomb_block", 953, rgb(229, 148, 29), 0.18f, 60);
   out.push_back(still("coarse_dirt", [](int x, int y) {
     return speckled(x, y, 961, rgb(119, 85, 59), rgb(96, 92, 88), 0.28f);
   }));
@@ -244,16 +246,8 @@ void addGlowingAndLiving(std::vector<GeneratedTexture>& out) {
   out.push_back(still("sea_lantern", [](int x, int y) {
     return glowing(x, y, 1003, rgb(170, 200, 190), rgb(235, 250, 245), 0.6f, 220);
   }));
-  out.push_back(still("nether_wart_block", [](int x, int y) {
-    Texel t = rock(1004, x, y, rgb(115, 3, 3), 0.25f);
-    t.porosity = 160;
-    return t;
-  }));
-  out.push_back(still("warped_wart_block", [](int x, int y) {
-    Texel t = rock(1005, x, y, rgb(22, 119, 121), 0.25f);
-    t.porosity = 160;
-    return t;
-  }));
+  addRock(out, "nether_wart_block", 1004, rgb(115, 3, 3), 0.25f, 160);
+  addRock(out, "warped_wart_block", 1005, rgb(22, 119, 121), 0.25f, 160);
   out.push_back(still("mud", [](int x, int y) { return smooth(x, y, 1006, rgb(60, 57, 60), 0.12f, 150); }));
   out.push_back(still("soul_sand", [](int x, int y) {
     Texel t = rock(1007, x, y, rgb(81, 62, 50), 0.25f);
@@ -269,16 +263,8 @@ void addGlowingAndLiving(std::vector<GeneratedTexture>& out) {
     if (hash01(1011, x / 4, y / 4) < 0.3f && x % 4 == 2 && y % 4 == 2) t.color = rgb(220, 190, 250);
     return t;
   }));
-  out.push_back(still("pale_moss_block", [](int x, int y) {
-    Texel t = rock(1012, x, y, rgb(106, 112, 104), 0.2f);
-    t.porosity = 160;
-    return t;
-  }));
-  out.push_back(still("powder_snow", [](int x, int y) {
-    Texel t = rock(1013, x, y, rgb(248, 253, 253), 0.05f);
-    t.porosity = 200;
-    return t;
-  }));
+  addRock(out, "pale_moss_block", 1012, rgb(106, 112, 104), 0.2f, 160);
+  addRock(out, "powder_snow", 1013, rgb(248, 253, 253), 0.05f, 200);
   out.push_back(still("tinted_glass", [](int x, int y) {
     Texel t = glass(x, y);
     t.color *= rgb(60, 50, 70) / glm::vec3(0.6f);

@@ -31,8 +31,9 @@ struct GeneratedFile {
   std::string path;  // "assets/minecraft/blockstates/granite_slab.json"
   std::string text;
 };
-// The blockstates and models of the slabs, stairs and walls of the pack's stones, bricks and
-// sandstones, and of its woods' bark blocks (shaped_blocks.cpp), and the names of those blocks.
+// The blockstates and models of the slabs, stairs and walls of the pack's materials
+// (shaped_blocks.cpp) and of its other block families (block_family_files.cpp: bark, carpets, panes,
+// the newer woods, pressure plates, columns), and the names of those blocks.
 std::vector<GeneratedFile> generateShapedBlockFiles();
 std::vector<std::string> shapedBlockNames();
 

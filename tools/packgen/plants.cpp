@@ -58,6 +58,18 @@ Texel blades(int x, int y, std::uint64_t seed, glm::vec3 colour, int tallest) {
   return t;
 }
 
+// Each named plant painted by `recipe` in its colour, with seeds counting up from `seed`.
+template <std::size_t N>
+void addEach(std::vector<GeneratedTexture>& out,
+             const std::array<std::pair<const char*, glm::vec3>, N>& plants, std::uint64_t& seed,
+             Texel (*recipe)(int, int, std::uint64_t, glm::vec3)) {
+  for (const auto& [name, colour] : plants) {
+    const glm::vec3 c = colour;
+    const std::uint64_t s = seed++;
+    out.push_back(still(name, [c, s, recipe](int x, int y) { return recipe(x, y, s, c); }));
+  }
+}
+
 }  // namespace
 
 void addPlantTextures(std::vector<GeneratedTexture>& out) {
@@ -72,11 +84,7 @@ void addPlantTextures(std::vector<GeneratedTexture>& out) {
        {"open_eyeblossom", rgb(245, 150, 60)},
        {"closed_eyeblossom", rgb(120, 120, 135)}}};
   std::uint64_t seed = 1101;
-  for (const auto& [name, colour] : flowers) {
-    const glm::vec3 c = colour;
-    const std::uint64_t s = seed++;
-    out.push_back(still(name, [c, s](int x, int y) { return plant(x, y, s, c); }));
-  }
+  addEach(out, flowers, seed, plant);
   const std::array<std::pair<const char*, glm::vec3>, 8> saplings = {
       {{"oak_sapling", rgb(60, 120, 30)},
        {"spruce_sapling", rgb(40, 80, 45)},
@@ -86,11 +94,7 @@ void addPlantTextures(std::vector<GeneratedTexture>& out) {
        {"dark_oak_sapling", rgb(40, 90, 20)},
        {"cherry_sapling", rgb(235, 170, 200)},
        {"pale_oak_sapling", rgb(160, 170, 160)}}};
-  for (const auto& [name, colour] : saplings) {
-    const glm::vec3 c = colour;
-    const std::uint64_t s = seed++;
-    out.push_back(still(name, [c, s](int x, int y) { return sapling(x, y, s, c); }));
-  }
+  addEach(out, saplings, seed, sapling);
   const glm::vec3 none(-1.0f);
   out.push_back(still("brown_mushroom", [none](int x, int y) {
     return mushroom(x, y, 1201, rgb(150, 110, 80), rgb(215, 205, 190), none);
