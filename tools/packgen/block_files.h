@@ -13,11 +13,14 @@ namespace terrasol::packgen {
 using Json = nlohmann::ordered_json;
 
 // "block/<name>": a model's or texture's resource name.
-inline std::string block(const std::string& name) { return "block/" + name; }
+inline std::string block(const std::string& name) {
+  return "block/" + name;
+}
 
 // A blockstates file (kind "blockstates") or a block model (any other kind) named `name`.
 inline GeneratedFile file(const std::string& kind, const std::string& name, const Json& json) {
-  const std::string dir = kind == "blockstates" ? "assets/minecraft/blockstates/" : "assets/minecraft/models/block/";
+  const std::string dir =
+      kind == "blockstates" ? "assets/minecraft/blockstates/" : "assets/minecraft/models/block/";
   return {dir + name + ".json", json.dump(2) + "\n"};
 }
 
