@@ -44,6 +44,18 @@ std::vector<BlockId> iconStates(const BlockRegistry& blocks, std::span<const std
         state = blocks.with(state, side, "true").value_or(blocks.with(state, side, "low").value_or(state));
       }
     }
+    // Out of water (corals, pickles and conduits default to waterlogged), growing plants grown.
+    state = blocks.with(state, "waterlogged", "false").value_or(state);
+    for (const BlockProperty& p : type.properties)
+      if (p.name == "age") state = blocks.with(state, "age", p.values.back()).value_or(state);
+    // Growths that hold to faces (vines, lichen) and tripwire hold none by default: show two held.
+    const auto holds = [&](const char* side) {
+      return blocks.with(state, side, "true") == std::optional(state);
+    };
+    if (type.connects == Connects::None && !holds("north") && !holds("east") && !holds("south") &&
+        !holds("west")) {
+      for (const char* side : {"north", "south"}) state = blocks.with(state, side, "true").value_or(state);
+    }
     states.push_back(state);
   }
   return states;

@@ -1,5 +1,6 @@
 #include "scene/block_atlas.h"
 
+#include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <map>
@@ -10,6 +11,7 @@
 #include "assets/block_states.h"
 #include "assets/model_bake.h"
 #include "core/error.h"
+#include "core/json_check.h"
 #include "core/model_units.h"
 #include "core/paths.h"
 
@@ -65,6 +67,15 @@ void forEachModelOfEachState(const BlockRegistry& blocks, const PackStack& packs
       const BlockStates states = BlockStates::load(packs, type.name);
       // States alike in every property the blockstates name pick the same models: picked once.
       const std::set<std::string> named = states.properties();
+      // A property the block lacks matches no state: say so, or those states draw nothing unseen.
+      for (const std::string& property : named) {
+        if (std::none_of(type.properties.begin(), type.properties.end(),
+                         [&](const BlockProperty& p) { return p.name == property; })) {
+          problems.push_back({PackProblem::Severity::Warning,
+                              json_check::join({BlockStates::pathOf(type.name), ": names the property \"",
+                                                property, "\", which ", type.name, " does not have"})});
+        }
+      }
       std::map<StateValues, std::uint16_t> picked;
       for (std::uint16_t i = 0; i < type.stateCount; ++i) {
         StateValues values = blocks.stateValues(static_cast<BlockId>(type.firstState + i));
@@ -168,9 +179,14 @@ ModelQuad meshQuad(const BakedQuad& q, std::uint16_t texture) {
   ModelQuad m;
   for (std::size_t c = 0; c < 4; ++c) {
     for (int a = 0; a < 3; ++a) {
-      // 1/32 block; a corner outside the cell (a torch leaning from a wall) is pulled back into it.
-      m.corners32[c][static_cast<std::size_t>(a)] =
-          std::clamp(static_cast<int>(std::lround(q.corners[c][a] * 32.0f)), 0, 32);
+      // 1/32 block; a corner outside the cell (a torch leaning from a wall) is pulled back into it, and
+      // one just inside (Minecraft's redstone dust, a quarter texel up) stays a step inside rather than
+      // rounding into its neighbour's face.
+      const float v = q.corners[c][a] * 32.0f;
+      int rounded = std::clamp(static_cast<int>(std::lround(v)), 0, 32);
+      if (rounded == 0 && v > 0.0f) rounded = 1;
+      if (rounded == 32 && v < 32.0f) rounded = 31;
+      m.corners32[c][static_cast<std::size_t>(a)] = rounded;
     }
     m.uvs16[c] = {static_cast<int>(std::lround(q.uvs[c].x * kModelUnits)),
                   static_cast<int>(std::lround(q.uvs[c].y * kModelUnits))};

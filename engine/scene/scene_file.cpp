@@ -22,7 +22,7 @@ using nlohmann::json;
 using std::filesystem::path;
 using namespace json_check;
 
-constexpr std::array<std::string_view, 3> kGenerators = {"void", "flat", "terrain"};
+constexpr std::array<std::string_view, 5> kGenerators = {"void", "flat", "terrain", "blocks", "lights"};
 constexpr std::int64_t kMaxInt64 = std::numeric_limits<std::int64_t>::max();
 constexpr std::int64_t kMinInt32 = std::numeric_limits<std::int32_t>::min();
 constexpr std::int64_t kMaxInt32 = std::numeric_limits<std::int32_t>::max();

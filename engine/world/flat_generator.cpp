@@ -1,6 +1,7 @@
 #include <charconv>
 
 #include "core/error.h"
+#include "world/block_grid_generator.h"
 #include "world/generator.h"
 #include "world/terrain_generator.h"
 
@@ -83,7 +84,9 @@ std::unique_ptr<ChunkGenerator> makeGenerator(const GeneratorSettings& settings,
                                                                        : settings.flatLayers);
   }
   if (settings.type == "terrain") return std::make_unique<TerrainGenerator>(settings.seed, blocks);
-  throw Error("unknown generator '" + settings.type + "', expected void, flat or terrain");
+  if (settings.type == "blocks" || settings.type == "lights")
+    return makeBlockGridGenerator(blocks, settings.type == "lights");
+  throw Error("unknown generator '" + settings.type + "', expected void, flat, terrain, blocks or lights");
 }
 
 }  // namespace terrasol

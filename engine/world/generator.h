@@ -32,7 +32,7 @@ struct FlatLayer {
 };
 
 struct GeneratorSettings {
-  std::string type = "terrain";  // "void" | "flat" | "terrain"
+  std::string type = "terrain";  // "void" | "flat" | "terrain" | "blocks" | "lights" (block_grid_generator.h)
   std::uint64_t seed = 0;
   std::vector<FlatLayer> flatLayers;  // for "flat", bottom first from y = 0; empty means the default
 };

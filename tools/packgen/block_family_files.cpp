@@ -101,12 +101,14 @@ std::vector<std::string> panes() {
   return names;
 }
 
-void addPane(const std::string& name, std::vector<GeneratedFile>& out) {
-  const std::string glass = name.substr(0, name.size() - std::string("_pane").size());
+}  // namespace
+
+void addPane(const std::string& name, const std::string& pane, const std::string& edge,
+             std::vector<GeneratedFile>& out) {
   for (const char* part : {"post", "side", "side_alt", "noside", "noside_alt"}) {
     out.push_back(file("model", name + "_" + part,
                        Json{{"parent", block(std::string("template_glass_pane_") + part)},
-                            {"textures", {{"pane", block(glass)}, {"edge", block(name + "_top")}}}}));
+                            {"textures", {{"pane", block(pane)}, {"edge", block(edge)}}}}));
   }
   const auto part = [&](const char* side, const char* value, const std::string& model, int y) {
     Json apply{{"model", block(name + "_" + model)}};
@@ -126,12 +128,10 @@ void addPane(const std::string& name, std::vector<GeneratedFile>& out) {
   out.push_back(file("blockstates", name, Json{{"multipart", parts}}));
 }
 
+namespace {
+
 // Minecraft's pressure-plate templates: a plate a sixteenth high (half that pressed) inset by one on
 // each side, its rim showing the texture's bottom row.
-Json number(double v) {
-  return v == static_cast<int>(v) ? Json(static_cast<int>(v)) : Json(v);
-}
-
 Json plateTemplate(double height) {
   const auto face = [](std::array<double, 4> uv, const char* cullface) {
     Json f{{"uv", {number(uv[0]), number(uv[1]), number(uv[2]), number(uv[3])}}, {"texture", "#texture"}};
@@ -231,28 +231,12 @@ void addColumn(const Column& c, std::vector<GeneratedFile>& out) {
 void addFamilyFiles(std::vector<GeneratedFile>& out) {
   for (const std::string& wood : woodBlocks()) addWood(wood, out);
   for (const std::string& carpet : carpets()) addCarpet(carpet, out);
-  for (const std::string& pane : panes()) addPane(pane, out);
+  for (const std::string& pane : panes())
+    addPane(pane, pane.substr(0, pane.size() - std::string("_pane").size()), pane + "_top", out);
   for (const char* wood : kOakLikeWoods) addOakLike(wood, true, out);
   for (const char* wood : kOakLikeCrafts) addOakLike(wood, false, out);
   addPlates(out);
   for (const Column& c : kColumns) addColumn(c, out);
-}
-
-void addFamilyBlockNames(std::vector<std::string>& names) {
-  for (const std::string& wood : woodBlocks()) names.push_back(wood);
-  for (const std::string& carpet : carpets()) names.push_back(carpet);
-  for (const std::string& pane : panes()) names.push_back(pane);
-  for (const char* wood : kOakLikeWoods) {
-    for (const char* block : {"_log", "_fence", "_fence_gate", "_door", "_trapdoor"})
-      names.push_back(wood + std::string(block));
-    names.push_back("stripped_" + std::string(wood) + "_log");
-  }
-  for (const char* wood : kOakLikeCrafts) {
-    for (const char* block : {"_fence", "_fence_gate", "_door", "_trapdoor"})
-      names.push_back(wood + std::string(block));
-  }
-  for (const auto& [material, texture] : kPlates) names.push_back(std::string(material) + "_pressure_plate");
-  for (const Column& c : kColumns) names.push_back(c.name);
 }
 
 }  // namespace terrasol::packgen

@@ -112,6 +112,8 @@ Texel cactusSide(int x, int y) {
   return t;
 }
 
+}  // namespace
+
 // Laid out as Minecraft's lantern.png, where its model's faces read: the cage's sides (x 0..5,
 // y 2..8: a metal frame round the glow), the cage's top and bottom (y 9..14) and the cap's sides
 // (x 1..4, y 0..1) in metal; the rest is empty.
@@ -131,8 +133,6 @@ Texel lantern(int x, int y) {
   }
   return t;
 }
-
-}  // namespace
 
 void addFamilyTextures(std::vector<GeneratedTexture>& out) {
   // Stones.

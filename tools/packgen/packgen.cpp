@@ -137,6 +137,8 @@ std::vector<GeneratedTexture> generateDefaultTextures() {
   addFamilyTextures(out);
   addBuildingBlockTextures(out);
   addPlantTextures(out);
+  addDeviceTextures(out);
+  addGrowthTextures(out);
   return out;
 }
 

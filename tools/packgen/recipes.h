@@ -53,6 +53,8 @@ Texel glowstone(int x, int y);
 Texel netherrack(int x, int y);
 // Minecraft's torch layout: the model shows columns 7..8, the flame in rows 6..8 and the stick below.
 Texel torch(int x, int y);
+// Minecraft's lantern layout: a metal cage round a glow, and its cap (families.cpp).
+Texel lantern(int x, int y);
 // Specks of an ore in stone.
 Texel ore(int x, int y, std::uint64_t seed, glm::vec3 speck, int specular);
 // Water or lava, still or flowing, frame `frame` of its animation.
@@ -118,6 +120,12 @@ void addFamilyTextures(std::vector<GeneratedTexture>& out);
 // Terracotta and concrete powder in sixteen colours, the newer woods' planks, more bricks and tiles,
 // stones, soils, corals and weathered coppers (building_blocks.cpp).
 void addBuildingBlockTextures(std::vector<GeneratedTexture>& out);
+// The made things: redstone, rails, torches, work stations, copper's ages, candles, shulker boxes,
+// glazed terracotta, heads (device_textures.cpp).
+void addDeviceTextures(std::vector<GeneratedTexture>& out);
+// Crops, double plants, corals, vines and cave growths, and the natural blocks with their own faces
+// (growth_textures.cpp).
+void addGrowthTextures(std::vector<GeneratedTexture>& out);
 // Tulips and the other flowers, saplings, mushrooms, the Nether's fungi and roots, seagrass (plants.cpp).
 void addPlantTextures(std::vector<GeneratedTexture>& out);
 

@@ -4,8 +4,10 @@
 // families come from block_family_files.cpp.
 
 #include <array>
+#include <map>
 
 #include "block_files.h"
+#include "core/error.h"
 
 namespace terrasol::packgen {
 namespace {
@@ -20,6 +22,10 @@ struct Material {
 };
 
 constexpr Material kMaterials[] = {
+    {"prismarine", "prismarine", "prismarine", "prismarine", "prismarine", true, true, true},
+    {"blackstone", "blackstone", "blackstone", "blackstone_top", "blackstone_top", true, true, true},
+    {"bamboo_mosaic", "bamboo_mosaic", "bamboo_mosaic", "bamboo_mosaic", "bamboo_mosaic", true, true, false},
+    {"petrified_oak", "oak_planks", "oak_planks", "oak_planks", "oak_planks", true, false, false},
     {"cobblestone", "cobblestone", "cobblestone", "cobblestone", "cobblestone", true, true, true},
     {"granite", "granite", "granite", "granite", "granite", true, true, true},
     {"polished_granite", "polished_granite", "polished_granite", "polished_granite", "polished_granite", true,
@@ -191,17 +197,27 @@ std::vector<GeneratedFile> generateShapedBlockFiles() {
     if (m.wall) addWall(m, out);
   }
   addFamilyFiles(out);
+  addFurnitureFiles(out);
+  addWorkshopFiles(out);
+  addRedstoneFiles(out);
+  addPlantFiles(out);
+  addCubeFiles(out);
+  // Two families writing one file must agree on it.
+  std::map<std::string, const std::string*> written;
+  for (const GeneratedFile& f : out) {
+    const auto [at, added] = written.emplace(f.path, &f.text);
+    if (!added && *at->second != f.text) throw Error(f.path + ": written twice, differently");
+  }
   return out;
 }
 
 std::vector<std::string> shapedBlockNames() {
+  // Every blockstates file written is a block's.
+  const std::string dir = "assets/minecraft/blockstates/";
   std::vector<std::string> names;
-  for (const Material& m : kMaterials) {
-    if (m.slab) names.push_back(std::string(m.prefix) + "_slab");
-    if (m.stairs) names.push_back(std::string(m.prefix) + "_stairs");
-    if (m.wall) names.push_back(std::string(m.prefix) + "_wall");
+  for (const GeneratedFile& f : generateShapedBlockFiles()) {
+    if (f.path.starts_with(dir)) names.push_back(f.path.substr(dir.size(), f.path.size() - dir.size() - 5));
   }
-  addFamilyBlockNames(names);
   return names;
 }
 

@@ -1,0 +1,261 @@
+// Full blocks beyond the plain cubes blocks.json derives: soils with their own tops, chiseled and
+// decorated stones, columns, blocks with a front (pumpkins, smokers, looms, nests), barrels, tables,
+// glazed terracotta in sixteen colours, chiseled copper and grates, iron and copper doors and
+// trapdoors, the nether-brick fence, portals and the cube-like blocks of trials and spawners.
+
+#include <algorithm>
+#include <array>
+#include <filesystem>
+#include <string>
+
+#include "block_files.h"
+#include "core/error.h"
+#include "core/paths.h"
+#include "recipes.h"
+
+namespace terrasol::packgen {
+namespace {
+
+Json variant(const std::string& model, int x = 0, int y = 0) {
+  Json v{{"model", block(model)}};
+  if (x != 0) v["x"] = x;
+  if (y != 0) v["y"] = y;
+  return v;
+}
+
+void addSingle(const std::string& name, const Json& model, std::vector<GeneratedFile>& out) {
+  out.push_back(file("model", name, model));
+  out.push_back(file("blockstates", name, single(name)));
+}
+
+Json cubeAll(const std::string& texture) {
+  return child("block/cube_all", Json{{"all", block(texture)}});
+}
+Json column(const std::string& side, const std::string& end) {
+  return child("block/cube_column", Json{{"end", block(end)}, {"side", block(side)}});
+}
+Json bottomTop(const std::string& side, const std::string& top, const std::string& bottom) {
+  return child("block/cube_bottom_top",
+               Json{{"top", block(top)}, {"bottom", block(bottom)}, {"side", block(side)}});
+}
+// A cube with a front on the north side.
+Json fronted(const std::string& front, const std::string& side, const std::string& top,
+             const std::string& bottom) {
+  return child("block/cube", Json{{"particle", block(side)},
+                                  {"north", block(front)},
+                                  {"south", block(side)},
+                                  {"east", block(side)},
+                                  {"west", block(side)},
+                                  {"up", block(top)},
+                                  {"down", block(bottom)}});
+}
+
+void addCubes(std::vector<GeneratedFile>& out) {
+  addSingle("podzol", bottomTop("podzol_side", "podzol_top", "dirt"), out);
+  addSingle("mycelium", bottomTop("mycelium_side", "mycelium_top", "dirt"), out);
+  addSingle("crimson_nylium", bottomTop("crimson_nylium_side", "crimson_nylium", "netherrack"), out);
+  addSingle("warped_nylium", bottomTop("warped_nylium_side", "warped_nylium", "netherrack"), out);
+  // Their models come with their slabs (shaped_blocks.cpp).
+  for (const char* name : {"bamboo_mosaic", "blackstone"})
+    out.push_back(file("blockstates", name, single(name)));
+  for (const char* name : {"chiseled_stone_bricks", "chiseled_resin_bricks", "chiseled_polished_blackstone",
+                           "gilded_blackstone", "chiseled_nether_bricks", "azalea_leaves",
+                           "flowering_azalea_leaves", "slime_block", "spawner", "end_gateway"})
+    addSingle(name, cubeAll(name), out);
+  out.push_back(file("blockstates", "infested_chiseled_stone_bricks", single("chiseled_stone_bricks")));
+  addSingle("honey_block", bottomTop("honey_block_side", "honey_block_top", "honey_block_bottom"), out);
+  addSingle("mangrove_roots", column("mangrove_roots_side", "mangrove_roots_top"), out);
+  addSingle("ancient_debris", column("ancient_debris_side", "ancient_debris_top"), out);
+  addSingle("lodestone", column("lodestone_side", "lodestone_top"), out);
+  addSingle("chiseled_tuff", column("chiseled_tuff", "chiseled_tuff_top"), out);
+  addSingle("chiseled_tuff_bricks", column("chiseled_tuff_bricks", "chiseled_tuff_bricks_top"), out);
+  addSingle("chiseled_deepslate", cubeAll("chiseled_deepslate"), out);
+  addSingle("reinforced_deepslate",
+            bottomTop("reinforced_deepslate_side", "reinforced_deepslate_top", "reinforced_deepslate_bottom"),
+            out);
+  addSingle("dried_kelp_block", bottomTop("dried_kelp_side", "dried_kelp_top", "dried_kelp_bottom"), out);
+  addSingle("sculk_catalyst", bottomTop("sculk_catalyst_side", "sculk_catalyst_top", "sculk_catalyst_bottom"),
+            out);
+  addSingle("trial_spawner",
+            bottomTop("trial_spawner_side_inactive", "trial_spawner_top_inactive", "trial_spawner_bottom"),
+            out);
+  addSingle("cartography_table",
+            bottomTop("cartography_table_side1", "cartography_table_top", "dark_oak_planks"), out);
+  addSingle("fletching_table", bottomTop("fletching_table_side", "fletching_table_top", "birch_planks"), out);
+  addSingle("smithing_table", bottomTop("smithing_table_side", "smithing_table_top", "smithing_table_bottom"),
+            out);
+  for (const char* columnBlock : {"muddy_mangrove_roots", "ochre_froglight", "verdant_froglight",
+                                  "pearlescent_froglight", "creaking_heart"}) {
+    const std::string n = columnBlock;
+    out.push_back(file("model", n, column(n + "_side", n + "_top")));
+    out.push_back(file("blockstates", n, Json{{"variants", axisVariants(n)}}));
+  }
+  // Sand and gravel with something buried: brushed away in four steps.
+  for (const std::string name : {"suspicious_sand", "suspicious_gravel"}) {
+    Json variants;
+    for (int d = 0; d <= 3; ++d) {
+      const std::string model = name + "_" + std::to_string(d);
+      out.push_back(file("model", model, cubeAll(model)));
+      variants["dusted=" + std::to_string(d)] = variant(model);
+    }
+    out.push_back(file("blockstates", name, Json{{"variants", variants}}));
+  }
+  // Frosted ice melts through four ages; the respawn anchor shows its charge on top.
+  Json ice;
+  for (int age = 0; age <= 3; ++age) {
+    const std::string model = "frosted_ice_" + std::to_string(age);
+    out.push_back(file("model", model, cubeAll(model)));
+    ice["age=" + std::to_string(age)] = variant(model);
+  }
+  out.push_back(file("blockstates", "frosted_ice", Json{{"variants", ice}}));
+  Json anchor;
+  out.push_back(file("model", "respawn_anchor_0",
+                     bottomTop("respawn_anchor_side0", "respawn_anchor_top_off", "respawn_anchor_bottom")));
+  out.push_back(file("model", "respawn_anchor_charged",
+                     bottomTop("respawn_anchor_side4", "respawn_anchor_top", "respawn_anchor_bottom")));
+  for (int charges = 0; charges <= 4; ++charges)
+    anchor["charges=" + std::to_string(charges)] =
+        variant(charges == 0 ? "respawn_anchor_0" : "respawn_anchor_charged");
+  out.push_back(file("blockstates", "respawn_anchor", Json{{"variants", anchor}}));
+}
+
+void addFrontedBlocks(std::vector<GeneratedFile>& out) {
+  const auto facing = [&](const std::string& name, const Json& model) {
+    out.push_back(file("model", name, model));
+    out.push_back(file("blockstates", name,
+                       Json{{"variants", facingVariants([&](const std::string&) { return name; })}}));
+  };
+  facing("carved_pumpkin", fronted("carved_pumpkin", "pumpkin_side", "pumpkin_top", "pumpkin_top"));
+  facing("jack_o_lantern", fronted("jack_o_lantern", "pumpkin_side", "pumpkin_top", "pumpkin_top"));
+  facing("smoker", fronted("smoker_front", "smoker_side", "smoker_top", "smoker_bottom"));
+  facing("blast_furnace",
+         fronted("blast_furnace_front", "blast_furnace_side", "blast_furnace_top", "blast_furnace_top"));
+  facing("loom", fronted("loom_front", "loom_side", "loom_top", "loom_bottom"));
+  facing("chiseled_bookshelf", fronted("chiseled_bookshelf_empty", "chiseled_bookshelf_side",
+                                       "chiseled_bookshelf_top", "chiseled_bookshelf_top"));
+  facing("vault", fronted("vault_front_off", "vault_side_off", "vault_top", "vault_bottom"));
+  // Nests and hives show honey at the front when full (level 5).
+  for (const std::string name : {"bee_nest", "beehive"}) {
+    const std::string top = name == "bee_nest" ? "bee_nest_top" : "beehive_end";
+    const std::string bottom = name == "bee_nest" ? "bee_nest_bottom" : "beehive_end";
+    out.push_back(file("model", name, fronted(name + "_front", name + "_side", top, bottom)));
+    out.push_back(
+        file("model", name + "_honey", fronted(name + "_front_honey", name + "_side", top, bottom)));
+    Json variants;
+    for (int level = 0; level <= 5; ++level)
+      variants.update(facingVariants([&](const std::string&) { return level == 5 ? name + "_honey" : name; },
+                                     "honey_level=" + std::to_string(level) + ","));
+    out.push_back(file("blockstates", name, Json{{"variants", variants}}));
+  }
+  // Barrels point their lid along facing.
+  out.push_back(file("model", "barrel", bottomTop("barrel_side", "barrel_top", "barrel_bottom")));
+  out.push_back(file("model", "barrel_open", bottomTop("barrel_side", "barrel_top_open", "barrel_bottom")));
+  Json barrel = pointingVariants("barrel", "open=false,");
+  barrel.update(pointingVariants("barrel_open", "open=true,"));
+  out.push_back(file("blockstates", "barrel", Json{{"variants", barrel}}));
+}
+
+// Glazed terracotta: Minecraft's template turns the pattern on each face so that four blocks laid
+// in a ring make a larger figure.
+void addGlazedTerracotta(std::vector<GeneratedFile>& out) {
+  Json faces;
+  constexpr std::array<std::pair<const char*, int>, 6> kTurns = {
+      {{"down", 0}, {"up", 90}, {"north", 0}, {"south", 180}, {"west", 90}, {"east", 270}}};
+  for (const auto& [face, rotation] : kTurns) {
+    Json f{{"uv", {0, 0, 16, 16}}, {"texture", "#pattern"}, {"cullface", face}};
+    if (rotation != 0) f["rotation"] = rotation;
+    faces[face] = f;
+  }
+  out.push_back(
+      file("model", "template_glazed_terracotta",
+           Json{{"parent", "block/block"},
+                {"textures", {{"particle", "#pattern"}}},
+                {"elements", {Json{{"from", {0, 0, 0}}, {"to", {16, 16, 16}}, {"faces", faces}}}}}));
+  for (const auto& [colour, rgb] : kDyes) {
+    const std::string name = std::string(colour) + "_glazed_terracotta";
+    out.push_back(
+        file("model", name, child("block/template_glazed_terracotta", Json{{"pattern", block(name)}})));
+    out.push_back(file("blockstates", name,
+                       Json{{"variants", facingVariants([&](const std::string&) { return name; })}}));
+  }
+}
+
+// Renamed copies of oak's door, trapdoor or fence files for another material; `retexture` then
+// names that material's texture where oak's planks were.
+void addRenamedOak(const std::vector<std::string>& files, const std::string& prefix,
+                   const std::string& planks, std::vector<GeneratedFile>& out) {
+  const std::filesystem::path pack = resourcePackDir() / "default" / "assets" / "minecraft";
+  const auto rename = [&](std::string text) {
+    for (std::size_t at = text.find("oak_"); at != std::string::npos;
+         at = text.find("oak_", at + prefix.size()))
+      text.replace(at, 4, prefix);
+    if (!planks.empty()) {
+      const std::string from = "block/" + prefix + "planks";
+      for (std::size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + 1))
+        text.replace(at, from.size(), block(planks));
+    }
+    return text;
+  };
+  for (const std::string& f : files)
+    out.push_back({"assets/minecraft/" + rename(f) + ".json", rename(readTextFile(pack / (f + ".json")))});
+}
+
+void addDoors(std::vector<GeneratedFile>& out) {
+  const std::vector<std::string> door = {"blockstates/oak_door", "models/block/oak_door_bottom_left",
+                                         "models/block/oak_door_bottom_right",
+                                         "models/block/oak_door_top_left", "models/block/oak_door_top_right"};
+  const std::vector<std::string> trapdoor = {"blockstates/oak_trapdoor", "models/block/oak_trapdoor_bottom",
+                                             "models/block/oak_trapdoor_open",
+                                             "models/block/oak_trapdoor_top"};
+  addRenamedOak(door, "iron_", "", out);
+  addRenamedOak(trapdoor, "iron_", "", out);
+  for (const std::string age : {"", "exposed_", "weathered_", "oxidized_"}) {
+    addRenamedOak(door, age + "copper_", "", out);
+    addRenamedOak(trapdoor, age + "copper_", "", out);
+    // Waxed copper looks as the copper it keeps.
+    for (const std::string kind : {"door", "trapdoor"}) {
+      const std::string name = age + "copper_" + kind;
+      const auto states = std::find_if(out.begin(), out.end(), [&](const GeneratedFile& f) {
+        return f.path == "assets/minecraft/blockstates/" + name + ".json";
+      });
+      out.push_back({"assets/minecraft/blockstates/waxed_" + name + ".json", states->text});
+    }
+    addSingle(age + "chiseled_copper", cubeAll(age + "chiseled_copper"), out);
+    out.push_back(file("blockstates", "waxed_" + age + "chiseled_copper", single(age + "chiseled_copper")));
+    addSingle(age + "copper_grate", cubeAll(age + "copper_grate"), out);
+    out.push_back(file("blockstates", "waxed_" + age + "copper_grate", single(age + "copper_grate")));
+  }
+  addRenamedOak({"blockstates/oak_fence", "models/block/oak_fence_post", "models/block/oak_fence_side"},
+                "nether_brick_", "nether_bricks", out);
+}
+
+void addPortals(std::vector<GeneratedFile>& out) {
+  const Json portal{{"portal", block("nether_portal")}};
+  out.push_back(file("model", "nether_portal",
+                     elementModel(portal, Json::array({box({0, 0, 6}, {16, 16, 10}, "#portal", "ns")}))));
+  out.push_back(
+      file("blockstates", "nether_portal",
+           Json{{"variants",
+                 {{"axis=x", variant("nether_portal")}, {"axis=z", variant("nether_portal", 0, 90)}}}}));
+  addSingle("end_portal",
+            elementModel(Json{{"portal", block("end_portal")}},
+                         Json::array({box({0, 12, 0}, {16, 12, 16}, "#portal", "u")})),
+            out);
+  out.push_back(file("model", "end_rod",
+                     elementModel(Json{{"rod", block("end_rod")}},
+                                  Json::array({box({6, 0, 6}, {10, 1, 10}, "#rod"),
+                                               box({7, 1, 7}, {9, 16, 9}, "#rod", "unswe")}))));
+  out.push_back(file("blockstates", "end_rod", Json{{"variants", pointingVariants("end_rod")}}));
+}
+
+}  // namespace
+
+void addCubeFiles(std::vector<GeneratedFile>& out) {
+  addCubes(out);
+  addFrontedBlocks(out);
+  addGlazedTerracotta(out);
+  addDoors(out);
+  addPortals(out);
+}
+
+}  // namespace terrasol::packgen

@@ -1,0 +1,439 @@
+// The workshop's and the home's small blocks in Minecraft's layout: work stations drawn from boxes
+// (lecterns, anvils, grindstones, stonecutters, enchanting tables, brewing stands, cauldrons, composters,
+// hoppers, bells, campfires, beacons, conduits, end portal frames, the dragon egg), cakes and candles,
+// lanterns, chains, bars and lightning rods in every copper age, and flower pots with every plant.
+
+#include <array>
+#include <filesystem>
+#include <string>
+
+#include "block_files.h"
+#include "core/error.h"
+#include "core/paths.h"
+#include "recipes.h"
+
+namespace terrasol::packgen {
+namespace {
+
+// Copper's ages: the prefix of its blocks and the texture prefix of its block ("" is fresh copper).
+constexpr const char* kAges[] = {"", "exposed_", "weathered_", "oxidized_"};
+
+void addModelBlock(const std::string& name, const Json& model, std::vector<GeneratedFile>& out) {
+  out.push_back(file("model", name, model));
+  out.push_back(file("blockstates", name, single(name)));
+}
+
+void addFacingBlock(const std::string& name, const Json& model, std::vector<GeneratedFile>& out) {
+  out.push_back(file("model", name, model));
+  out.push_back(file("blockstates", name,
+                     Json{{"variants", facingVariants([&](const std::string&) { return name; })}}));
+}
+
+// Four walls and a floor on feet: a cauldron of metal, a composter of planks.
+Json vessel(const std::string& wall, double floor) {
+  return Json::array({box({0, floor, 0}, {2, 16, 16}, wall), box({14, floor, 0}, {16, 16, 16}, wall),
+                      box({2, floor, 0}, {14, 16, 2}, wall), box({2, floor, 14}, {14, 16, 16}, wall),
+                      box({2, floor, 2}, {14, floor + 1, 14}, wall, "du")});
+}
+
+void addCauldrons(std::vector<GeneratedFile>& out) {
+  const Json textures{{"side", block("cauldron_side")}, {"content", block("water_still")}};
+  Json shell = vessel("#side", 3);
+  for (const std::array<double, 2> foot : {std::array<double, 2>{0, 0}, {12, 0}, {0, 12}, {12, 12}})
+    shell.push_back(box({foot[0], 0, foot[1]}, {foot[0] + 4, 3, foot[1] + 4}, "#side", "dnswe"));
+  addModelBlock("cauldron", elementModel(textures, shell), out);
+  const auto filled = [&](const std::string& content, double height, bool tinted) {
+    Json elements = shell;
+    Json surface = box({2, height, 2}, {14, height, 14}, "#content", "u");
+    if (tinted) surface["faces"]["up"]["tintindex"] = 0;
+    elements.push_back(surface);
+    return elementModel(Json{{"side", block("cauldron_side")}, {"content", block(content)}}, elements);
+  };
+  Json water;
+  for (int level = 1; level <= 3; ++level) {
+    const std::string model = "water_cauldron_level" + std::to_string(level);
+    out.push_back(file("model", model, filled("water_still", 6 + 3 * level, true)));
+    water["level=" + std::to_string(level)] = Json{{"model", block(model)}};
+  }
+  out.push_back(file("blockstates", "water_cauldron", Json{{"variants", water}}));
+  addModelBlock("lava_cauldron", filled("lava_still", 15, false), out);
+  Json snow;
+  for (int level = 1; level <= 3; ++level) {
+    const std::string model = "powder_snow_cauldron_level" + std::to_string(level);
+    out.push_back(file("model", model, filled("powder_snow", 6 + 3 * level, false)));
+    snow["level=" + std::to_string(level)] = Json{{"model", block(model)}};
+  }
+  out.push_back(file("blockstates", "powder_snow_cauldron", Json{{"variants", snow}}));
+}
+
+void addComposter(std::vector<GeneratedFile>& out) {
+  Json variants;
+  for (int level = 0; level <= 8; ++level) {
+    const std::string model = "composter_level" + std::to_string(level);
+    Json elements = vessel("#wood", 0);
+    if (level > 0)
+      elements.push_back(box({2, 1 + 2.0 * std::min(level, 7), 2}, {14, 1 + 2.0 * std::min(level, 7), 14},
+                             level == 8 ? "#ready" : "#compost", "u"));
+    out.push_back(file("model", model,
+                       elementModel(Json{{"wood", block("oak_planks")},
+                                         {"compost", block("composter_compost")},
+                                         {"ready", block("composter_ready")}},
+                                    elements)));
+    variants["level=" + std::to_string(level)] = Json{{"model", block(model)}};
+  }
+  out.push_back(file("blockstates", "composter", Json{{"variants", variants}}));
+}
+
+void addHopper(std::vector<GeneratedFile>& out) {
+  const Json textures{{"metal", block("hopper_outside")}};
+  const Json bowl =
+      Json::array({box({0, 10, 0}, {16, 16, 16}, "#metal"), box({4, 4, 4}, {12, 10, 12}, "#metal", "nswe")});
+  Json down = bowl, side = bowl;
+  down.push_back(box({6, 0, 6}, {10, 4, 10}, "#metal", "dnswe"));
+  side.push_back(box({6, 4, 0}, {10, 8, 4}, "#metal", "dunwe"));
+  out.push_back(file("model", "hopper", elementModel(textures, down)));
+  out.push_back(file("model", "hopper_side", elementModel(textures, side)));
+  Json variants = facingVariants([](const std::string&) { return "hopper_side"; });
+  variants["facing=down"] = Json{{"model", block("hopper")}};
+  out.push_back(file("blockstates", "hopper", Json{{"variants", variants}}));
+}
+
+void addWorkStations(std::vector<GeneratedFile>& out) {
+  addFacingBlock("lectern",
+                 elementModel(Json{{"wood", block("oak_planks")}},
+                              Json::array({box({0, 0, 0}, {16, 2, 16}, "#wood"),
+                                           box({4, 2, 4}, {12, 13, 12}, "#wood", "nswe"),
+                                           box({0, 13, 1}, {16, 16, 15}, "#wood")})),
+                 out);
+  for (const char* anvil : {"anvil", "chipped_anvil", "damaged_anvil"}) {
+    addFacingBlock(anvil,
+                   elementModel(Json{{"body", block("anvil")}, {"top", block(std::string(anvil) + "_top")}},
+                                Json::array({box({2, 0, 2}, {14, 4, 14}, "#body"),
+                                             box({4, 4, 3}, {12, 5, 13}, "#body", "nswe"),
+                                             box({6, 5, 4}, {10, 10, 12}, "#body", "nswe"),
+                                             box({3, 10, 0}, {13, 16, 16}, "#body", "dnswe"),
+                                             box({3, 10, 0}, {13, 16, 16}, "#top", "u")})),
+                   out);
+  }
+  const Json grindstone = elementModel(
+      Json{{"wheel", block("smooth_stone")}, {"leg", block("dark_oak_log")}},
+      Json::array({box({4, 4, 2}, {12, 16, 14}, "#wheel"), box({2, 0, 6}, {4, 13, 10}, "#leg", "unswe"),
+                   box({12, 0, 6}, {14, 13, 10}, "#leg", "unswe")}));
+  out.push_back(file("model", "grindstone", grindstone));
+  Json grind;
+  for (const char* face : {"floor", "wall", "ceiling"})
+    grind.update(
+        facingVariants([](const std::string&) { return "grindstone"; }, std::string("face=") + face + ","));
+  out.push_back(file("blockstates", "grindstone", Json{{"variants", grind}}));
+  addFacingBlock("stonecutter",
+                 elementModel(Json{{"body", block("smooth_stone")}, {"saw", block("iron_block")}},
+                              Json::array({box({0, 0, 0}, {16, 9, 16}, "#body"),
+                                           box({1, 9, 8}, {15, 16, 8}, "#saw", "ns")})),
+                 out);
+  addModelBlock("enchanting_table",
+                elementModel(Json{{"side", block("obsidian")}, {"top", block("enchanting_table_top")}},
+                             Json::array({box({0, 0, 0}, {16, 12, 16}, "#side", "dnswe"),
+                                          box({0, 0, 0}, {16, 12, 16}, "#top", "u")})),
+                out);
+  addModelBlock(
+      "brewing_stand",
+      elementModel(
+          Json{{"base", block("cobblestone")}, {"rod", block("gold_block")}},
+          Json::array({box({9, 0, 5}, {15, 2, 11}, "#base"), box({2, 0, 1}, {8, 2, 7}, "#base"),
+                       box({2, 0, 9}, {8, 2, 15}, "#base"), box({7, 2, 7}, {9, 14, 9}, "#rod", "unswe")})),
+      out);
+  addCauldrons(out);
+  addComposter(out);
+  addHopper(out);
+  const Json bell = Json::array({box({5, 5, 5}, {11, 12, 11}, "#bell"), box({4, 4, 4}, {12, 5, 12}, "#bell"),
+                                 box({2, 13, 7}, {14, 15, 9}, "#bar", "dunswe")});
+  Json floorBell = bell;
+  floorBell.push_back(box({0, 0, 6}, {2, 16, 10}, "#post"));
+  floorBell.push_back(box({14, 0, 6}, {16, 16, 10}, "#post"));
+  Json hangingBell = bell;
+  hangingBell.push_back(box({7, 15, 7}, {9, 16, 9}, "#bar", "unswe"));
+  const Json bellTextures{
+      {"bell", block("gold_block")}, {"bar", block("iron_block")}, {"post", block("stone")}};
+  out.push_back(file("model", "bell_floor", elementModel(bellTextures, floorBell)));
+  out.push_back(file("model", "bell_ceiling", elementModel(bellTextures, hangingBell)));
+  Json bells = facingVariants([](const std::string&) { return "bell_floor"; }, "attachment=floor,");
+  for (const char* hung : {"ceiling", "single_wall", "double_wall"})
+    bells.update(facingVariants([](const std::string&) { return "bell_ceiling"; },
+                                std::string("attachment=") + hung + ","));
+  out.push_back(file("blockstates", "bell", Json{{"variants", bells}}));
+}
+
+// Campfires: four logs and, lit, two crossed sheets of flame.
+void addCampfire(const std::string& name, const std::string& fire, std::vector<GeneratedFile>& out) {
+  const Json logs = Json::array({box({1, 0, 0}, {5, 4, 16}, "#log"), box({11, 0, 0}, {15, 4, 16}, "#log"),
+                                 box({0, 3, 11}, {16, 7, 15}, "#log"), box({0, 3, 1}, {16, 7, 5}, "#log")});
+  Json lit = logs;
+  lit.push_back(turnedBox({0.8, 0, 8}, {15.2, 16, 8}, "#fire", "ns", 45));
+  lit.push_back(turnedBox({8, 0, 0.8}, {8, 16, 15.2}, "#fire", "we", 45));
+  const Json textures{{"log", block("oak_log")}, {"fire", block(fire)}};
+  out.push_back(file("model", name, elementModel(textures, lit)));
+  out.push_back(file("model", name + "_off", elementModel(textures, logs)));
+  Json variants = facingVariants([&](const std::string&) { return name; }, "lit=true,");
+  variants.update(facingVariants([&](const std::string&) { return name + "_off"; }, "lit=false,"));
+  out.push_back(file("blockstates", name, Json{{"variants", variants}}));
+}
+
+// Scaffolding: a plank top on four posts with braces; unstable (not held from below) it has a bottom
+// frame too.
+void addScaffolding(std::vector<GeneratedFile>& out) {
+  const Json textures{{"top", block("scaffolding_top")},
+                      {"side", block("scaffolding_side")},
+                      {"bottom", block("scaffolding_bottom")}};
+  Json stable = Json::array(
+      {box({0, 14, 0}, {16, 16, 16}, "#top", "u"), box({0, 14, 0}, {16, 16, 16}, "#side", "dnswe")});
+  for (const std::array<double, 2> post : {std::array<double, 2>{0, 0}, {14, 0}, {0, 14}, {14, 14}})
+    stable.push_back(box({post[0], 0, post[1]}, {post[0] + 2, 14, post[1] + 2}, "#side", "dnswe"));
+  Json unstable = stable;
+  unstable.push_back(box({0, 0, 0}, {16, 2, 16}, "#bottom", "du"));
+  out.push_back(file("model", "scaffolding_stable", elementModel(textures, stable)));
+  out.push_back(file("model", "scaffolding_unstable", elementModel(textures, unstable)));
+  out.push_back(file("blockstates", "scaffolding",
+                     Json{{"variants",
+                           {{"bottom=false", {{"model", block("scaffolding_stable")}}},
+                            {"bottom=true", {{"model", block("scaffolding_unstable")}}}}}}));
+}
+
+void addEndBlocks(std::vector<GeneratedFile>& out) {
+  const Json frame{{"top", block("end_portal_frame_top")},
+                   {"side", block("end_portal_frame_side")},
+                   {"bottom", block("end_stone")},
+                   {"eye", block("end_portal_frame_eye")}};
+  const Json base =
+      Json::array({box({0, 0, 0}, {16, 13, 16}, "#side", "nswe"), box({0, 0, 0}, {16, 13, 16}, "#top", "u"),
+                   box({0, 0, 0}, {16, 13, 16}, "#bottom", "d")});
+  Json withEye = base;
+  withEye.push_back(box({4, 13, 4}, {12, 16, 12}, "#eye", "unswe"));
+  out.push_back(file("model", "end_portal_frame", elementModel(frame, base)));
+  out.push_back(file("model", "end_portal_frame_filled", elementModel(frame, withEye)));
+  Json variants = facingVariants([](const std::string&) { return "end_portal_frame"; }, "eye=false,");
+  variants.update(facingVariants([](const std::string&) { return "end_portal_frame_filled"; }, "eye=true,"));
+  out.push_back(file("blockstates", "end_portal_frame", Json{{"variants", variants}}));
+  Json egg = Json::array();
+  constexpr std::array<std::array<double, 3>, 8> kTiers = {
+      {{3, 0, 1}, {2, 1, 3}, {1, 3, 8}, {2, 8, 11}, {3, 11, 13}, {4, 13, 14}, {5, 14, 15}, {6, 15, 16}}};
+  for (const auto& [inset, y0, y1] : kTiers)
+    egg.push_back(box({inset, y0, inset}, {16 - inset, y1, 16 - inset}, "#egg"));
+  addModelBlock("dragon_egg", elementModel(Json{{"egg", block("dragon_egg")}}, egg), out);
+  addModelBlock(
+      "beacon",
+      elementModel(
+          Json{{"glass", block("glass")}, {"base", block("obsidian")}, {"core", block("beacon")}},
+          Json::array({box({0, 0, 0}, {16, 16, 16}, "#glass"), box({2, 0.1, 2}, {14, 3, 14}, "#base"),
+                       box({3, 3, 3}, {13, 14, 13}, "#core")})),
+      out);
+  addModelBlock(
+      "conduit",
+      elementModel(Json{{"shell", block("conduit")}}, Json::array({box({5, 5, 5}, {11, 11, 11}, "#shell")})),
+      out);
+  addModelBlock(
+      "heavy_core",
+      elementModel(Json{{"core", block("heavy_core")}}, Json::array({box({4, 0, 4}, {12, 8, 12}, "#core")})),
+      out);
+}
+
+// Cake with `bites` eaten from the west, and a candle on top where there is one.
+Json cake(int bites, const std::string& candle) {
+  const double x0 = 1 + 2 * bites;
+  Json textures{{"top", block("cake_top")},
+                {"side", block("cake_side")},
+                {"bottom", block("cake_bottom")},
+                {"inside", block("cake_inner")}};
+  Json elements =
+      Json::array({box({x0, 0, 1}, {15, 8, 15}, "#side", "nse"), box({x0, 0, 1}, {15, 8, 15}, "#top", "u"),
+                   box({x0, 0, 1}, {15, 8, 15}, "#bottom", "d"),
+                   box({x0, 0, 1}, {15, 8, 15}, bites > 0 ? "#inside" : "#side", "w")});
+  if (!candle.empty()) {
+    textures["candle"] = block(candle);
+    elements.push_back(box({7, 8, 7}, {9, 14, 9}, "#candle", "unswe"));
+  }
+  return elementModel(textures, elements);
+}
+
+// Candles: one to four of a colour, lit or not, as Minecraft stands them.
+void addCandles(const std::string& name, std::vector<GeneratedFile>& out) {
+  using Boxes = std::vector<std::array<double, 6>>;
+  const std::array<Boxes, 4> kStands = {
+      {{{7, 0, 7, 9, 6, 9}},
+       {{5, 0, 7, 7, 6, 9}, {9, 0, 6, 11, 5, 8}},
+       {{7, 0, 9, 9, 6, 11}, {5, 0, 7, 7, 5, 9}, {8, 0, 6, 10, 4, 8}},
+       {{6, 0, 8, 8, 6, 10}, {9, 0, 8, 11, 5, 10}, {6, 0, 5, 8, 5, 7}, {9, 0, 5, 11, 4, 7}}}};
+  Json variants;
+  for (int count = 1; count <= 4; ++count) {
+    for (const bool lit : {false, true}) {
+      const std::string model = name + "_" + std::to_string(count) + (lit ? "_lit" : "");
+      Json elements = Json::array();
+      for (const auto& b : kStands[static_cast<std::size_t>(count - 1)])
+        elements.push_back(box({b[0], b[1], b[2]}, {b[3], b[4], b[5]}, "#candle"));
+      out.push_back(
+          file("model", model, elementModel(Json{{"candle", block(name + (lit ? "_lit" : ""))}}, elements)));
+      variants["candles=" + std::to_string(count) + ",lit=" + (lit ? "true" : "false")] =
+          Json{{"model", block(model)}};
+    }
+  }
+  out.push_back(file("blockstates", name, Json{{"variants", variants}}));
+  const std::string cakeName = name + "_cake";
+  out.push_back(file("model", cakeName, cake(0, name)));
+  out.push_back(file("model", cakeName + "_lit", cake(0, name + "_lit")));
+  out.push_back(file("blockstates", cakeName,
+                     Json{{"variants",
+                           {{"lit=false", {{"model", block(cakeName)}}},
+                            {"lit=true", {{"model", block(cakeName + "_lit")}}}}}}));
+}
+
+void addCakes(std::vector<GeneratedFile>& out) {
+  Json variants;
+  for (int bites = 0; bites <= 6; ++bites) {
+    const std::string model = bites == 0 ? "cake" : "cake_slice" + std::to_string(bites);
+    out.push_back(file("model", model, cake(bites, "")));
+    variants["bites=" + std::to_string(bites)] = Json{{"model", block(model)}};
+  }
+  out.push_back(file("blockstates", "cake", Json{{"variants", variants}}));
+  addCandles("candle", out);
+  for (const auto& [colour, rgb] : kDyes) addCandles(std::string(colour) + "_candle", out);
+}
+
+// Lanterns of soul fire and copper: the lantern's model on their own textures.
+void addLanterns(std::vector<GeneratedFile>& out) {
+  const auto pack = resourcePackDir() / "default" / "assets" / "minecraft";
+  const std::string lantern = readTextFile(pack / "models" / "block" / "lantern.json");
+  const auto retextured = [&](const std::string& texture) {
+    std::string text = lantern;
+    for (std::size_t at = text.find("block/lantern"); at != std::string::npos;
+         at = text.find("block/lantern", at + 1))
+      text.replace(at, std::string("block/lantern").size(), block(texture));
+    return text;
+  };
+  std::vector<std::pair<std::string, std::string>> lanterns{{"soul_lantern", "soul_lantern"}};
+  for (const char* age : kAges) {
+    const std::string texture = std::string(age) + "copper_lantern";
+    lanterns.emplace_back(texture, texture);
+    lanterns.emplace_back("waxed_" + texture, texture);
+  }
+  for (const auto& [name, texture] : lanterns) {
+    if (name == texture)
+      out.push_back({"assets/minecraft/models/block/" + name + ".json", retextured(texture)});
+    out.push_back(file("blockstates", name, single(texture)));
+  }
+}
+
+// Chains, bars and lightning rods of iron and of copper in every age, waxed or not.
+void addMetalWork(std::vector<GeneratedFile>& out) {
+  const auto chain = [&](const std::string& name, const std::string& texture) {
+    out.push_back(
+        file("model", name,
+             elementModel(Json{{"chain", block(texture)}},
+                          Json::array({turnedBox({6.5, 0, 8}, {9.5, 16, 8}, "#chain", "ns", 45),
+                                       turnedBox({8, 0, 6.5}, {8, 16, 9.5}, "#chain", "we", 45)}))));
+  };
+  const auto rod = [&](const std::string& name, const std::string& texture) {
+    out.push_back(file(
+        "model", name,
+        elementModel(Json{{"rod", block(texture)}}, Json::array({box({7, 0, 7}, {9, 12, 9}, "#rod", "dnswe"),
+                                                                 box({6, 12, 6}, {10, 16, 10}, "#rod")}))));
+  };
+  chain("iron_chain", "iron_chain");
+  out.push_back(file("blockstates", "iron_chain", Json{{"variants", axisVariants("iron_chain")}}));
+  addPane("iron_bars", "iron_bars", "iron_bars", out);
+  for (const char* age : kAges) {
+    const std::string a = age, metal = a.empty() ? "copper_block" : a + "copper";
+    chain(a + "copper_chain", a + "copper_chain");
+    rod(a + "lightning_rod", metal);
+    for (const std::string& wax : {std::string(), std::string("waxed_")}) {
+      out.push_back(file("blockstates", wax + a + "copper_chain",
+                         Json{{"variants", axisVariants(a + "copper_chain")}}));
+      out.push_back(file("blockstates", wax + a + "lightning_rod",
+                         Json{{"variants", pointingVariants(a + "lightning_rod")}}));
+      addPane(wax + a + "copper_bars", a + "copper_bars", a + "copper_bars", out);
+    }
+  }
+}
+
+// Flower pots: a pot of clay with soil, and each plant Minecraft pots on two crossed sheets.
+constexpr std::array<std::pair<const char*, const char*>, 36> kPotted = {
+    {{"potted_torchflower", "torchflower"},
+     {"potted_oak_sapling", "oak_sapling"},
+     {"potted_spruce_sapling", "spruce_sapling"},
+     {"potted_birch_sapling", "birch_sapling"},
+     {"potted_jungle_sapling", "jungle_sapling"},
+     {"potted_acacia_sapling", "acacia_sapling"},
+     {"potted_cherry_sapling", "cherry_sapling"},
+     {"potted_dark_oak_sapling", "dark_oak_sapling"},
+     {"potted_pale_oak_sapling", "pale_oak_sapling"},
+     {"potted_mangrove_propagule", "mangrove_propagule"},
+     {"potted_fern", "fern"},
+     {"potted_dandelion", "dandelion"},
+     {"potted_poppy", "poppy"},
+     {"potted_blue_orchid", "blue_orchid"},
+     {"potted_allium", "allium"},
+     {"potted_azure_bluet", "azure_bluet"},
+     {"potted_red_tulip", "red_tulip"},
+     {"potted_orange_tulip", "orange_tulip"},
+     {"potted_white_tulip", "white_tulip"},
+     {"potted_pink_tulip", "pink_tulip"},
+     {"potted_oxeye_daisy", "oxeye_daisy"},
+     {"potted_cornflower", "cornflower"},
+     {"potted_lily_of_the_valley", "lily_of_the_valley"},
+     {"potted_wither_rose", "wither_rose"},
+     {"potted_red_mushroom", "red_mushroom"},
+     {"potted_brown_mushroom", "brown_mushroom"},
+     {"potted_dead_bush", "dead_bush"},
+     {"potted_crimson_fungus", "crimson_fungus"},
+     {"potted_warped_fungus", "warped_fungus"},
+     {"potted_crimson_roots", "crimson_roots"},
+     {"potted_warped_roots", "warped_roots"},
+     {"potted_azalea_bush", "azalea_plant"},
+     {"potted_flowering_azalea_bush", "flowering_azalea_plant"},
+     {"potted_open_eyeblossom", "open_eyeblossom"},
+     {"potted_closed_eyeblossom", "closed_eyeblossom"},
+     {"potted_bamboo", "bamboo_stalk"}}};
+
+Json pot() {
+  return Json::array({box({5, 0, 5}, {6, 6, 11}, "#pot"), box({10, 0, 5}, {11, 6, 11}, "#pot"),
+                      box({6, 0, 5}, {10, 6, 6}, "#pot"), box({6, 0, 10}, {10, 6, 11}, "#pot"),
+                      box({6, 0, 6}, {10, 4, 10}, "#dirt", "du")});
+}
+
+void addFlowerPots(std::vector<GeneratedFile>& out) {
+  const Json potTextures{{"pot", block("flower_pot")}, {"dirt", block("dirt")}};
+  addModelBlock("flower_pot", elementModel(potTextures, pot()), out);
+  for (const auto& [name, plant] : kPotted) {
+    Json textures = potTextures;
+    textures["plant"] = block(plant);
+    Json elements = pot();
+    elements.push_back(turnedBox({2.6, 4, 8}, {13.4, 16, 8}, "#plant", "ns", 45));
+    elements.push_back(turnedBox({8, 4, 2.6}, {8, 16, 13.4}, "#plant", "we", 45));
+    addModelBlock(name, elementModel(textures, elements), out);
+  }
+  Json cactus = pot();
+  cactus.push_back(box({6, 4, 6}, {10, 15, 10}, "#cactus", "unswe"));
+  addModelBlock(
+      "potted_cactus",
+      elementModel(
+          Json{{"pot", block("flower_pot")}, {"dirt", block("dirt")}, {"cactus", block("cactus_side")}},
+          cactus),
+      out);
+}
+
+}  // namespace
+
+void addWorkshopFiles(std::vector<GeneratedFile>& out) {
+  addWorkStations(out);
+  addCampfire("campfire", "campfire_fire", out);
+  addCampfire("soul_campfire", "soul_campfire_fire", out);
+  addEndBlocks(out);
+  addScaffolding(out);
+  // A bubble column is water with bubbles rising: no model of its own, its water drawn as water.
+  out.push_back(file("model", "bubble_column", Json{{"textures", {{"particle", block("water_still")}}}}));
+  out.push_back(file("blockstates", "bubble_column", single("bubble_column")));
+  addCakes(out);
+  addLanterns(out);
+  addMetalWork(out);
+  addFlowerPots(out);
+}
+
+}  // namespace terrasol::packgen
