@@ -43,13 +43,14 @@ Game::Game(GlfwWindow& window, const GameOptions& options)
       options_(options),
       settings_(settingsFor(options)),
       content_(BlockRegistry::load(resourcePackDir() / "default" / "blocks.json")),
-      renderer_(content_.blocks, settings_.values),
+      renderer_(content_.blocks, settings_.values, content_.defaultBake ? &*content_.defaultBake : nullptr),
       world_(options.benchmark ? benchmarkWorldDir() : options.world, options.benchmark.has_value(),
              seedOf(options), options.seed, content_, renderer_, settings_.values.viewDistance),
       interaction_(content_),
       input_(window, settings_.values.keys),
       ui_(window.handle(), settings_, firstOf(world_.propFiles())),
       overlay_(reinterpret_cast<const char*>(glGetString(GL_RENDERER))) {
+  content_.defaultBake.reset();  // the shapes and the first atlas are made
   if (!options.inputScript.empty()) script_.emplace(loadInputScript(options.inputScript));
   input_.setScreenKeys(&ui_);
   if (!std::filesystem::exists(settings_.path)) probeMachine();

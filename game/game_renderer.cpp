@@ -36,21 +36,25 @@ std::unique_ptr<DeferredRenderer> makeRenderer(const BlockAssets& assets, const 
 }  // namespace
 
 std::unique_ptr<BlockAssets> BlockAssets::load(const BlockRegistry& blocks,
-                                               const std::vector<PackChoice>& packs) {
+                                               const std::vector<PackChoice>& packs,
+                                               const BlockModelBake* defaultBake) {
   std::vector<std::string> names;
   const PackStack stack = openPacks(packs, names);
-  return std::make_unique<BlockAssets>(blocks, stack, std::move(names));
+  return std::make_unique<BlockAssets>(blocks, stack, std::move(names), defaultBake);
 }
 
-BlockAssets::BlockAssets(const BlockRegistry& blocks, const PackStack& stack, std::vector<std::string> names)
-    : atlas(buildBlockAtlas(blocks, stack)),
+BlockAssets::BlockAssets(const BlockRegistry& blocks, const PackStack& stack, std::vector<std::string> names,
+                         const BlockModelBake* defaultBake)
+    : atlas(defaultBake && isDefaultPackAlone(stack) ? buildBlockAtlas(blocks, stack, *defaultBake)
+                                                     : buildBlockAtlas(blocks, stack)),
       colormaps(loadColormaps(stack, atlas.problems)),
       table(meshTableOf(blocks, atlas)),
       packNames(std::move(names)) {}
 
-GameRenderer::GameRenderer(const BlockRegistry& blocks, const GameSettings& settings)
+GameRenderer::GameRenderer(const BlockRegistry& blocks, const GameSettings& settings,
+                           const BlockModelBake* defaultBake)
     : blocks_(blocks),
-      assets_(BlockAssets::load(blocks, settings.packs)),
+      assets_(BlockAssets::load(blocks, settings.packs, defaultBake)),
       renderer_(makeRenderer(*assets_, settings.shadow, settings.reflections, {})),
       shadow_(settings.shadow),
       reflections_(settings.reflections),

@@ -18,8 +18,11 @@ namespace terrasol {
 // CPU side of the packs: immutable once built, so mesher threads may read the table.
 struct BlockAssets {
   // The default pack with the enabled `packs` over it. Throws Error naming a pack that cannot be read.
-  static std::unique_ptr<BlockAssets> load(const BlockRegistry& blocks, const std::vector<PackChoice>& packs);
-  BlockAssets(const BlockRegistry& blocks, const PackStack& stack, std::vector<std::string> names);
+  // `defaultBake`, the default pack's models baked already, is used where no pack is enabled.
+  static std::unique_ptr<BlockAssets> load(const BlockRegistry& blocks, const std::vector<PackChoice>& packs,
+                                           const BlockModelBake* defaultBake = nullptr);
+  BlockAssets(const BlockRegistry& blocks, const PackStack& stack, std::vector<std::string> names,
+              const BlockModelBake* defaultBake = nullptr);
   BlockAtlas atlas;
   BiomeColormaps colormaps;
   BlockMeshTable table;
@@ -28,7 +31,9 @@ struct BlockAssets {
 
 class GameRenderer {
  public:
-  GameRenderer(const BlockRegistry& blocks, const GameSettings& settings);
+  // `defaultBake`: as BlockAssets::load's, for the first assets.
+  GameRenderer(const BlockRegistry& blocks, const GameSettings& settings,
+               const BlockModelBake* defaultBake = nullptr);
 
   const BlockRegistry& blocks() const { return blocks_; }
   const BlockAssets& assets() const { return *assets_; }

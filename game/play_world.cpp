@@ -7,6 +7,7 @@
 
 #include "core/error.h"
 #include "core/log.h"
+#include "core/paths.h"
 #include "game_renderer.h"
 #include "scene/block_atlas.h"
 #include "world/connected_states.h"
@@ -22,8 +23,18 @@ int workerThreads() {
 
 }  // namespace
 
+namespace {
+PackStack defaultPack() {
+  PackStack packs;
+  packs.push(ResourcePack::open(resourcePackDir() / "default"));
+  return packs;
+}
+}  // namespace
+
 BlockContent::BlockContent(BlockRegistry registry)
-    : blocks(std::move(registry)), shapes(defaultPackShapes(blocks)) {}
+    : blocks(std::move(registry)),
+      defaultBake(bakeBlockModels(blocks, defaultPack())),
+      shapes(blockShapesOf(blocks, *defaultBake)) {}
 
 PlayWorld::Scratch::~Scratch() {
   std::error_code ec;

@@ -14,6 +14,7 @@
 #include "game_props.h"
 #include "pipeline/streamed_world.h"
 #include "player.h"
+#include "scene/block_atlas.h"
 #include "time_controls.h"
 #include "world/block_shapes.h"
 
@@ -26,6 +27,8 @@ class GameRenderer;
 struct BlockContent {
   explicit BlockContent(BlockRegistry registry);
   BlockRegistry blocks;
+  // The default pack's models baked, for the shapes and the first atlas; released once that is made.
+  std::optional<BlockModelBake> defaultBake;
   BlockShapes shapes;
 };
 

@@ -42,14 +42,15 @@ BlockModel missingModel() {
 
 // Calls use(state, model, placement) for every model each state of a model block is drawn with, as
 // its blockstates file picks them at the origin, and alternative(state, k, model, placement) for each
-// of the weighted models k a state picks among by position (the mesher's per-cell pick). A block
-// whose blockstates or models cannot be read gets the missing cube instead, and the reason goes to
+// of the weighted models k a state picks among by position (the mesher's per-cell pick); a state that
+// picks just as an earlier state of its block did gets same(state, earlier) instead. A block whose
+// blockstates or models cannot be read gets the missing cube instead, and the reason goes to
 // `problems`; one of Minecraft's blocks that blocks.json leaves out and no pack describes gets it too,
 // as a placeholder named in `placeholders`.
-template <class Use, class Alternative>
+template <class Use, class Alternative, class Same>
 void forEachModelOfEachState(const BlockRegistry& blocks, const PackStack& packs,
                              std::vector<PackProblem>& problems, std::vector<std::string>* placeholders,
-                             Use&& use, Alternative&& alternative) {
+                             Use&& use, Alternative&& alternative, Same&& same) {
   ModelLibrary library(packs);
   static const BlockModel kMissing = missingModel();
   for (std::size_t b = 0; b < blocks.blockCount(); ++b) {
@@ -57,10 +58,13 @@ void forEachModelOfEachState(const BlockRegistry& blocks, const PackStack& packs
     if (type.shape != BlockShape::Model) continue;
     using Models = std::vector<std::pair<const BlockModel*, ModelPlacement>>;
     std::vector<Models> models(type.stateCount), choices(type.stateCount);
+    std::vector<std::uint16_t> sameAs(type.stateCount);  // the first state picking alike, or itself
+    for (std::uint16_t i = 0; i < type.stateCount; ++i) sameAs[i] = i;
     if (!type.inBlocksJson && !packs.find(BlockStates::pathOf(type.name))) {
       if (placeholders) placeholders->push_back(type.name);
-      for (std::uint16_t i = 0; i < type.stateCount; ++i)
-        use(static_cast<BlockId>(type.firstState + i), kMissing, ModelPlacement{});
+      use(type.firstState, kMissing, ModelPlacement{});
+      for (std::uint16_t i = 1; i < type.stateCount; ++i)
+        same(static_cast<BlockId>(type.firstState + i), type.firstState);
       continue;
     }
     try {
@@ -76,16 +80,24 @@ void forEachModelOfEachState(const BlockRegistry& blocks, const PackStack& packs
                                                 property, "\", which ", type.name, " does not have"})});
         }
       }
-      std::map<StateValues, std::uint16_t> picked;
+      // A state's offset counts its properties' values in mixed radix; with the unnamed ones zeroed it
+      // is the first state alike in every named one.
+      const std::size_t n = type.properties.size();
+      std::vector<std::size_t> stride(n, 1);
+      for (std::size_t k = n; k-- > 1;) stride[k - 1] = stride[k] * type.properties[k].values.size();
+      std::vector<std::size_t> namedAt;
+      for (std::size_t k = 0; k < n; ++k)
+        if (named.contains(type.properties[k].name)) namedAt.push_back(k);
       for (std::uint16_t i = 0; i < type.stateCount; ++i) {
-        StateValues values = blocks.stateValues(static_cast<BlockId>(type.firstState + i));
-        std::erase_if(values, [&](const auto& v) { return !named.contains(v.first); });
-        const auto [first, added] = picked.try_emplace(values, i);
-        if (!added) {
-          models[i] = models[first->second];
-          choices[i] = choices[first->second];
+        std::size_t key = 0;
+        for (const std::size_t k : namedAt)
+          key += i / stride[k] % type.properties[k].values.size() * stride[k];
+        if (key != i) {
+          sameAs[i] = static_cast<std::uint16_t>(key);
           continue;
         }
+        StateValues values = blocks.stateValues(static_cast<BlockId>(type.firstState + i));
+        std::erase_if(values, [&](const auto& v) { return !named.contains(v.first); });
         for (const ModelPlacement& p : states.select(values, {}))
           models[i].emplace_back(&library.model(p.model), p);
         for (const ModelPlacement& p : states.choices(values))
@@ -93,11 +105,16 @@ void forEachModelOfEachState(const BlockRegistry& blocks, const PackStack& packs
       }
     } catch (const Error& e) {
       problems.push_back({PackProblem::Severity::Error, e.what()});
-      for (auto& m : models) m = {{&kMissing, ModelPlacement{}}};
-      for (auto& c : choices) c.clear();
+      for (std::uint16_t i = 0; i < type.stateCount; ++i) sameAs[i] = 0;
+      models[0] = {{&kMissing, ModelPlacement{}}};
+      choices[0].clear();
     }
     for (std::uint16_t i = 0; i < type.stateCount; ++i) {
       const auto state = static_cast<BlockId>(type.firstState + i);
+      if (sameAs[i] != i) {
+        same(state, static_cast<BlockId>(type.firstState + sameAs[i]));
+        continue;
+      }
       for (const auto& [model, placement] : models[i]) use(state, *model, placement);
       for (std::size_t k = 0; k < choices[i].size(); ++k)
         alternative(state, k, *choices[i][k].first, choices[i][k].second);
@@ -115,24 +132,16 @@ std::vector<ShapeBox> boxesOf(const BlockModel& model, const ModelPlacement& pla
   return boxes;
 }
 
-// Model blocks: each state's models baked, and their boxes; per state picking among weighted models
-// by position, each choice's weight, quads and boxes.
-struct BakedChoice {
-  int weight = 1;
-  std::vector<BakedQuad> quads;
-  std::vector<ShapeBox> boxes;
-};
-struct BakedStates {
-  std::vector<std::vector<BakedQuad>> quads;
-  std::vector<std::vector<ShapeBox>> boxes;
-  std::vector<std::vector<BakedChoice>> choices;
-};
-BakedStates bakeModelStates(const BlockRegistry& blocks, const PackStack& packs,
-                            std::vector<PackProblem>& problems,
-                            std::vector<std::string>* placeholders = nullptr) {
-  BakedStates baked{std::vector<std::vector<BakedQuad>>(blocks.size()),
-                    std::vector<std::vector<ShapeBox>>(blocks.size()),
-                    std::vector<std::vector<BakedChoice>>(blocks.size())};
+}  // namespace
+
+BlockModelBake bakeBlockModels(const BlockRegistry& blocks, const PackStack& packs) {
+  BlockModelBake baked{std::vector<std::vector<BakedQuad>>(blocks.size()),
+                       std::vector<std::vector<ShapeBox>>(blocks.size()),
+                       std::vector<std::vector<BakedChoice>>(blocks.size()),
+                       std::vector<BlockId>(blocks.size()),
+                       {},
+                       {}};
+  for (BlockId s = 0; s < blocks.size(); ++s) baked.sameAs[s] = s;
   // Most states share their models with others (every waterlogged twin, every placeholder): each
   // model and placement is baked once.
   struct Baked {
@@ -141,7 +150,7 @@ BakedStates bakeModelStates(const BlockRegistry& blocks, const PackStack& packs,
   };
   std::map<std::tuple<const BlockModel*, int, int, bool>, Baked> bakedOnce;
   forEachModelOfEachState(
-      blocks, packs, problems, placeholders,
+      blocks, packs, baked.problems, &baked.placeholders,
       [&](BlockId s, const BlockModel& m, const ModelPlacement& p) {
         auto [it, added] = bakedOnce.try_emplace({&m, p.x, p.y, p.uvlock});
         if (added) it->second = {bakeModel(m, p), boxesOf(m, p)};
@@ -150,9 +159,12 @@ BakedStates bakeModelStates(const BlockRegistry& blocks, const PackStack& packs,
       },
       [&](BlockId s, std::size_t, const BlockModel& m, const ModelPlacement& p) {
         baked.choices[s].push_back({p.weight, bakeModel(m, p), boxesOf(m, p)});
-      });
+      },
+      [&](BlockId s, BlockId earlier) { baked.sameAs[s] = earlier; });
   return baked;
 }
+
+namespace {
 
 int directionOf(ModelFace face) {
   static constexpr Direction kDirections[] = {Direction::Down,  Direction::Up,   Direction::North,
@@ -201,31 +213,35 @@ ModelQuad meshQuad(const BakedQuad& q, std::uint16_t texture) {
 
 }  // namespace
 
-BlockAtlas buildBlockAtlas(const BlockRegistry& blocks, const PackStack& packs) {
-  BlockAtlas result;
-  const BakedStates baked = bakeModelStates(blocks, packs, result.problems, &result.placeholders);
-  // A state drawn as the one before it (its waterlogged twin, a placeholder's every state) takes its
-  // textures and quads.
-  std::vector<bool> asBefore(blocks.size());
-  for (BlockId id = 1; id < blocks.size(); ++id) {
-    asBefore[id] = baked.choices[id].empty() && baked.choices[id - 1].empty() &&
-                   baked.quads[id] == baked.quads[id - 1] && baked.boxes[id] == baked.boxes[id - 1] &&
-                   blocks[id].textures == blocks[id - 1].textures;
-  }
-  // Each distinct candidate list is loaded once, in a stable order.
-  std::map<std::vector<std::string>, std::uint16_t> index;
+std::vector<std::vector<std::string>> atlasTextureNames(const BlockRegistry& blocks,
+                                                        const BlockModelBake& baked) {
+  std::set<std::vector<std::string>> names;
   for (BlockId id = 0; id < blocks.size(); ++id) {
-    if (asBefore[id]) continue;
+    if (baked.sameAs[id] != id) continue;  // an earlier state's quads, its block's faces
     for (const auto& face : blocks[id].textures) {
-      if (!face.empty()) index.emplace(face, 0);
+      if (!face.empty()) names.insert(face);
     }
-    for (const BakedQuad& q : baked.quads[id]) index.emplace(candidatesOf(q.texture), 0);
+    for (const BakedQuad& q : baked.quads[id]) names.insert(candidatesOf(q.texture));
     for (const BakedChoice& c : baked.choices[id])
-      for (const BakedQuad& q : c.quads) index.emplace(candidatesOf(q.texture), 0);
+      for (const BakedQuad& q : c.quads) names.insert(candidatesOf(q.texture));
   }
+  return {names.begin(), names.end()};
+}
+
+BlockAtlas buildBlockAtlas(const BlockRegistry& blocks, const PackStack& packs) {
+  return buildBlockAtlas(blocks, packs, bakeBlockModels(blocks, packs));
+}
+
+BlockAtlas buildBlockAtlas(const BlockRegistry& blocks, const PackStack& packs, const BlockModelBake& baked) {
+  BlockAtlas result;
+  result.problems = baked.problems;
+  result.placeholders = baked.placeholders;
+  // A state drawn as an earlier one takes its quads (its face textures are its block's).
+  const auto asEarlier = [&](BlockId id) { return baked.sameAs[id] != id; };
+  std::map<std::vector<std::string>, std::uint16_t> index;
   std::vector<LoadedTexture> textures;
-  for (auto& [candidates, texture] : index) {
-    texture = static_cast<std::uint16_t>(textures.size());
+  for (std::vector<std::string>& candidates : atlasTextureNames(blocks, baked)) {
+    index.emplace(candidates, static_cast<std::uint16_t>(textures.size()));
     textures.push_back(loadBlockTexture(packs, candidates, result.problems));
   }
   if (textures.empty()) textures.push_back(loadBlockTexture(packs, {"missing"}, result.problems));
@@ -238,8 +254,9 @@ BlockAtlas buildBlockAtlas(const BlockRegistry& blocks, const PackStack& packs) 
       const auto& face = blocks[id].textures[static_cast<std::size_t>(f)];
       result.faceTextures[id][static_cast<std::size_t>(f)] = face.empty() ? 0 : index.at(face);
     }
-    if (asBefore[id]) {
-      result.modelQuads[id] = result.modelQuads[id - 1];
+    if (asEarlier(id)) {
+      result.modelQuads[id] = result.modelQuads[baked.sameAs[id]];
+      result.modelChoices[id] = result.modelChoices[baked.sameAs[id]];
       continue;
     }
     for (const BakedQuad& q : baked.quads[id])
@@ -267,10 +284,11 @@ TextureCoverage textureCoverage(const BlockRegistry& blocks, const PackStack& pa
       }
     }
   };
-  std::vector<PackProblem> problems;  // inspect and the atlas report them
-  const BakedStates baked = bakeModelStates(blocks, packs, problems);
+  const BlockModelBake baked =
+      bakeBlockModels(blocks, packs);  // its problems: inspect and the atlas report them
   for (BlockId id = 0; id < blocks.size(); ++id) {
     for (const auto& face : blocks[id].textures) use(face);
+    // A state drawn as an earlier one has empty lists.
     for (const BakedQuad& q : baked.quads[id]) use(candidatesOf(q.texture));
     for (const BakedChoice& c : baked.choices[id])
       for (const BakedQuad& q : c.quads) use(candidatesOf(q.texture));
@@ -288,22 +306,22 @@ TextureCoverage textureCoverage(const BlockRegistry& blocks, const PackStack& pa
 }
 
 BlockShapes blockShapesOf(const BlockRegistry& blocks, const PackStack& packs) {
+  return blockShapesOf(blocks, bakeBlockModels(blocks, packs));
+}
+
+BlockShapes blockShapesOf(const BlockRegistry& blocks, const BlockModelBake& baked) {
   BlockShapes shapes(blocks);
-  std::vector<std::vector<ShapeBox>> boxes(blocks.size());
-  std::vector<PackProblem> problems;  // the atlas reports them
-  std::map<std::tuple<const BlockModel*, int, int>, std::vector<ShapeBox>> placedOnce;
-  forEachModelOfEachState(
-      blocks, packs, problems, nullptr,
-      [&](BlockId s, const BlockModel& m, const ModelPlacement& p) {
-        auto [it, added] = placedOnce.try_emplace({&m, p.x, p.y});
-        if (added) it->second = boxesOf(m, p);
-        boxes[s].insert(boxes[s].end(), it->second.begin(), it->second.end());
-      },
-      [](BlockId, std::size_t, const BlockModel&, const ModelPlacement&) {});  // collision: the origin's pick
   for (BlockId s = 0; s < blocks.size(); ++s) {
-    if (blocks[s].shape == BlockShape::Model) shapes.setBoxes(s, std::move(boxes[s]));
+    if (blocks[s].shape == BlockShape::Model) shapes.setBoxes(s, baked.boxes[baked.sameAs[s]]);
   }
   return shapes;
+}
+
+bool isDefaultPackAlone(const PackStack& packs) {
+  if (packs.packs().size() != 1) return false;
+  std::error_code ec;
+  return std::filesystem::equivalent(packs.packs().front()->files().location(), resourcePackDir() / "default",
+                                     ec);
 }
 
 BlockShapes defaultPackShapes(const BlockRegistry& blocks) {

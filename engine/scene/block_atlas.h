@@ -5,9 +5,11 @@
 
 #include <array>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "assets/atlas.h"
+#include "assets/model_bake.h"
 #include "assets/resource_pack.h"
 #include "core/enum_names.h"
 #include "mesh/mesher.h"
@@ -29,13 +31,42 @@ struct BlockAtlas {
   }
 };
 
+// Every model block's states baked from a pack stack: what the atlas and the shapes are both made
+// from, so a caller wanting both from one stack bakes once. Per state: its models' quads and boxes as
+// picked at the origin, and the weighted models it picks among by position; a state drawn just as an
+// earlier one of its block (a waterlogged twin, a sign's other rotation on the same model, a
+// placeholder's every state) is that state's (`sameAs`), its own lists empty.
+struct BakedChoice {
+  int weight = 1;
+  std::vector<BakedQuad> quads;
+  std::vector<ShapeBox> boxes;
+};
+struct BlockModelBake {
+  std::vector<std::vector<BakedQuad>> quads;
+  std::vector<std::vector<ShapeBox>> boxes;
+  std::vector<std::vector<BakedChoice>> choices;
+  std::vector<BlockId> sameAs;
+  std::vector<PackProblem> problems;
+  std::vector<std::string> placeholders;  // as BlockAtlas::placeholders
+};
+BlockModelBake bakeBlockModels(const BlockRegistry& blocks, const PackStack& packs);
+
+// The textures the atlas loads, each as its list of candidate names, sorted: every face texture the
+// blocks name and every texture their baked models use.
+std::vector<std::vector<std::string>> atlasTextureNames(const BlockRegistry& blocks,
+                                                        const BlockModelBake& baked);
+
 // A model block whose blockstates or models are missing or malformed is drawn as a cube of the
 // missing texture, with the reason among the problems (as Minecraft does).
 BlockAtlas buildBlockAtlas(const BlockRegistry& blocks, const PackStack& packs);
+BlockAtlas buildBlockAtlas(const BlockRegistry& blocks, const PackStack& packs, const BlockModelBake& baked);
 
 // The states' collision and targeting boxes: cubes whole, model blocks their models' elements (read
 // from `packs`: give it the default pack alone, as a resource pack does not change how blocks collide).
 BlockShapes blockShapesOf(const BlockRegistry& blocks, const PackStack& packs);
+BlockShapes blockShapesOf(const BlockRegistry& blocks, const BlockModelBake& baked);
+// Whether `packs` is the default pack alone: its bake then gives the shapes too.
+bool isDefaultPackAlone(const PackStack& packs);
 // The same from resourcepacks/default alone: what the game collides with.
 BlockShapes defaultPackShapes(const BlockRegistry& blocks);
 

@@ -44,7 +44,10 @@ std::vector<ChunkPos> chunksAround(const std::vector<ChunkPos>& centres, int rad
 }  // namespace
 
 SceneWorld::SceneWorld(const SceneFile& scene, const BlockRegistry& blocks)
-    : shapes_(defaultPackShapes(blocks)),
+    : SceneWorld(scene, blocks, defaultPackShapes(blocks)) {}
+
+SceneWorld::SceneWorld(const SceneFile& scene, const BlockRegistry& blocks, BlockShapes shapes)
+    : shapes_(std::move(shapes)),
       world_(blocks, &shapes_),
       light_(world_),
       centres_(cameraChunks(scene)),

@@ -19,6 +19,8 @@ class SceneWorld {
   // visible ones their light and mesh halo), applies the edits, then lights everything. Throws Error
   // naming the scene key for an unknown block or generator.
   SceneWorld(const SceneFile& scene, const BlockRegistry& blocks);
+  // With the blocks' shapes made already (from the default pack: blockShapesOf).
+  SceneWorld(const SceneFile& scene, const BlockRegistry& blocks, BlockShapes shapes);
 
   // Meshes of every section that has faces, within the view distance of a frame's camera, and the empty
   // meshes of closed sections (their face links hide what is behind them).

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <iterator>
+#include <optional>
 
 #include "core/error.h"
 #include "core/paths.h"
@@ -38,10 +39,16 @@ double msSince(std::chrono::steady_clock::time_point start) {
 struct SceneRenderer::World {
   World(const SceneFile& scene, const PackStack& packs)
       : blocks(BlockRegistry::load(resourcePackDir() / "default" / "blocks.json")),
-        atlas(buildBlockAtlas(blocks, packs)),
+        bake(bakeBlockModels(blocks, packs)),
+        atlas(buildBlockAtlas(blocks, packs, *bake)),
         table(meshTableOf(blocks, atlas)),
-        world(scene, blocks) {}
+        // Shapes are the default pack's: from this bake where that is all there is.
+        world(scene, blocks,
+              isDefaultPackAlone(packs) ? blockShapesOf(blocks, *bake) : defaultPackShapes(blocks)) {
+    bake.reset();
+  }
   BlockRegistry blocks;
+  std::optional<BlockModelBake> bake;  // only while the rest is made
   BlockAtlas atlas;
   BlockMeshTable table;
   SceneWorld world;

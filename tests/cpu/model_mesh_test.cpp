@@ -4,9 +4,12 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <set>
 
+#include "assets/block_model.h"
 #include "assets/block_states.h"
+#include "assets/model_bake.h"
 #include "core/paths.h"
 #include "scene/block_atlas.h"
 #include "support/mesh_world.h"
@@ -246,6 +249,42 @@ TEST(ModelShapes, LightSidesFollowTheModelsAndTheTestsHandShapes) {
       EXPECT_EQ(testing::handShapes().lightSides()[s], shapes.lightSides()[s]) << blocks.stateName(s);
     }
   }
+}
+
+// States that pick alike share one bake (BlockModelBake::sameAs): every state's boxes, read back
+// through its earliest twin, are the boxes its own blockstates pick for it, state by state; and one
+// bake of the default pack alone gives the shapes too.
+TEST(ModelShapes, EveryStateHasTheBoxesItsBlockstatesPick) {
+  const BlockRegistry& blocks = defaultBlocks();
+  const PackStack packs = defaultPack();
+  EXPECT_TRUE(isDefaultPackAlone(packs));
+  const BlockModelBake bake = bakeBlockModels(blocks, packs);
+  const BlockShapes shapes = blockShapesOf(blocks, bake);
+  ModelLibrary library(packs);
+  std::size_t shared = 0, checked = 0;
+  for (std::size_t b = 0; b < blocks.blockCount(); ++b) {
+    const BlockType& type = blocks.block(b);
+    if (type.shape != BlockShape::Model) continue;
+    const BlockStates states = BlockStates::load(packs, type.name);
+    for (std::uint16_t i = 0; i < type.stateCount; ++i) {
+      const auto s = static_cast<BlockId>(type.firstState + i);
+      shared += bake.sameAs[s] != s;
+      // Every 7th state: the whole table would take a minute.
+      if (i % 7 != 0 && i + 1 != type.stateCount) continue;
+      std::vector<ShapeBox> expected;
+      for (const ModelPlacement& p : states.select(blocks.stateValues(s), {}))
+        for (const std::array<float, 6>& box : placedBoxes(library.model(p.model), p)) {
+          const auto at = [&](int k) {
+            return static_cast<int>(std::lround(box[static_cast<std::size_t>(k)]));
+          };
+          expected.push_back({{at(0), at(1), at(2)}, {at(3), at(4), at(5)}});
+        }
+      ASSERT_EQ(shapes.boxes(s), expected) << blocks.stateName(s);
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 4000u);
+  EXPECT_GT(shared, 15000u) << "most states pick as an earlier one";
 }
 
 // A resource pack overriding one vanilla model: a pane's post 1/16 thick instead of 2/16. The atlas,
