@@ -42,7 +42,7 @@ Game::Game(GlfwWindow& window, const GameOptions& options)
     : window_(window),
       options_(options),
       settings_(settingsFor(options)),
-      content_(BlockRegistry::load(resourcePackDir() / "default" / "blocks.json")),
+      content_(BlockAssets::registry(settings_.values.packs)),
       renderer_(content_.blocks, settings_.values, content_.defaultBake ? &*content_.defaultBake : nullptr),
       world_(options.benchmark ? benchmarkWorldDir() : options.world, options.benchmark.has_value(),
              seedOf(options), options.seed, content_, renderer_, settings_.values.viewDistance),

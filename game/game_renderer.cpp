@@ -1,8 +1,10 @@
 #include "game_renderer.h"
 
 #include "core/error.h"
+#include "core/log.h"
 #include "core/paths.h"
 #include "mesh/block_icon_mesh.h"
+#include "scene/pack_blocks.h"
 
 namespace terrasol {
 namespace {
@@ -41,6 +43,19 @@ std::unique_ptr<BlockAssets> BlockAssets::load(const BlockRegistry& blocks,
   std::vector<std::string> names;
   const PackStack stack = openPacks(packs, names);
   return std::make_unique<BlockAssets>(blocks, stack, std::move(names), defaultBake);
+}
+
+BlockRegistry BlockAssets::registry(const std::vector<PackChoice>& packs) {
+  BlockRegistry blocks = BlockRegistry::load(resourcePackDir() / "default" / "blocks.json");
+  std::vector<std::string> names;
+  std::vector<PackProblem> problems;
+  try {
+    blocks = withPackBlocks(std::move(blocks), openPacks(packs, names), problems);
+  } catch (const Error&) {
+    // A pack that cannot be read: the renderer reports it, and its blocks stay unknown.
+  }
+  for (const PackProblem& p : problems) logWarning(p.message);
+  return blocks;
 }
 
 BlockAssets::BlockAssets(const BlockRegistry& blocks, const PackStack& stack, std::vector<std::string> names,

@@ -23,6 +23,9 @@ struct BlockAssets {
                                            const BlockModelBake* defaultBake = nullptr);
   BlockAssets(const BlockRegistry& blocks, const PackStack& stack, std::vector<std::string> names,
               const BlockModelBake* defaultBake = nullptr);
+  // Minecraft's table and the default blocks.json, with the blocks the enabled `packs` add: fixed for
+  // the game's run, so a pack enabled later draws its own blocks from the next start.
+  static BlockRegistry registry(const std::vector<PackChoice>& packs);
   BlockAtlas atlas;
   BiomeColormaps colormaps;
   BlockMeshTable table;

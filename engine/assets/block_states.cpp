@@ -213,7 +213,31 @@ void namedBy(const StateCondition& c, std::set<std::string>& out) {
   for (const auto& [name, allowed] : c.values) out.insert(name);
   for (const StateCondition& child : c.children) namedBy(child, out);
 }
+
+void addValue(std::map<std::string, std::vector<std::string>>& out, const std::string& name,
+              const std::string& value) {
+  std::vector<std::string>& values = out[name];
+  if (std::find(values.begin(), values.end(), value) == values.end()) values.push_back(value);
+}
+
+void valuesIn(const StateCondition& c, std::map<std::string, std::vector<std::string>>& out) {
+  for (const auto& [name, allowed] : c.values)
+    for (const std::string& value : allowed) addValue(out, name, value);
+  for (const StateCondition& child : c.children) valuesIn(child, out);
+}
 }  // namespace
+
+std::map<std::string, std::vector<std::string>> BlockStates::propertyValues() const {
+  std::map<std::string, std::vector<std::string>> out;
+  for (const Variant& v : variants_)
+    for (const auto& [name, value] : v.when) addValue(out, name, value);
+  for (const Part& p : parts_) valuesIn(p.when, out);
+  return out;
+}
+
+StateValues BlockStates::firstVariant() const {
+  return variants_.empty() ? StateValues{} : variants_.front().when;
+}
 
 std::set<std::string> BlockStates::properties() const {
   std::set<std::string> out;

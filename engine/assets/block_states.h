@@ -61,6 +61,11 @@ class BlockStates {
   // Every property a variant or a part's condition names: states that differ only in others (a
   // waterlogged twin) are drawn alike.
   std::set<std::string> properties() const;
+  // Each property named, with every value the variants and conditions give it, in the order they first
+  // appear: the states of a block only a pack knows (scene/pack_blocks.h).
+  std::map<std::string, std::vector<std::string>> propertyValues() const;
+  // The first variant's property values; none for a multipart blockstates.
+  StateValues firstVariant() const;
 
  private:
   struct Variant {

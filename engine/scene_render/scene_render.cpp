@@ -10,6 +10,7 @@
 #include "render/gl/render_target.h"
 #include "scene/block_atlas.h"
 #include "scene/camera_path.h"
+#include "scene/pack_blocks.h"
 #include "scene/scene_world.h"
 #include "scene_render/placed_props.h"
 #include "scene_render/under_water.h"
@@ -38,7 +39,8 @@ double msSince(std::chrono::steady_clock::time_point start) {
 // The CPU side: blocks, atlas, the mesher's table and the world, kept for edits keyed to frames.
 struct SceneRenderer::World {
   World(const SceneFile& scene, const PackStack& packs)
-      : blocks(BlockRegistry::load(resourcePackDir() / "default" / "blocks.json")),
+      : blocks(withPackBlocks(BlockRegistry::load(resourcePackDir() / "default" / "blocks.json"), packs,
+                              packBlockProblems)),
         bake(bakeBlockModels(blocks, packs)),
         atlas(buildBlockAtlas(blocks, packs, *bake)),
         table(meshTableOf(blocks, atlas)),
@@ -46,7 +48,9 @@ struct SceneRenderer::World {
         world(scene, blocks,
               isDefaultPackAlone(packs) ? blockShapesOf(blocks, *bake) : defaultPackShapes(blocks)) {
     bake.reset();
+    atlas.problems.insert(atlas.problems.end(), packBlockProblems.begin(), packBlockProblems.end());
   }
+  std::vector<PackProblem> packBlockProblems;  // blocks.json's blocks' own come with the atlas
   BlockRegistry blocks;
   std::optional<BlockModelBake> bake;  // only while the rest is made
   BlockAtlas atlas;

@@ -24,7 +24,16 @@ BlockRegistry BlockRegistry::load(const BlockTable& table, std::string_view bloc
     throw Error(withFile(fileName, e.what()));
   }
   registry.finish();
+  registry.blocksBeforePacks_ = registry.types_.size();
   return registry;
+}
+
+void BlockRegistry::addPackBlocks(std::vector<BlockType> types) {
+  for (BlockType& type : types) {
+    if (byName_.contains(type.name)) throw Error(join({"block \"", type.name, "\" is known already"}));
+    add(std::move(type));
+  }
+  finish();
 }
 
 BlockRegistry BlockRegistry::load(const std::filesystem::path& blocksJson) {

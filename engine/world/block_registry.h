@@ -27,6 +27,12 @@ class BlockRegistry {
   // A pack's blocks.json alone, air first: small registries for tests.
   static BlockRegistry fromJson(std::string_view json, const std::string& fileName);
 
+  // Appends blocks a resource pack adds (scene/pack_blocks.h), while loading, before the registry is
+  // shared. Each type's defaultState is relative to its first state. Throws Error for a known name.
+  void addPackBlocks(std::vector<BlockType> types);
+  // How many blocks came from Minecraft's table and blocks.json; those after them a pack added.
+  std::size_t blocksBeforePacks() const { return blocksBeforePacks_; }
+
   // The block type of a state.
   const BlockType& operator[](BlockId state) const { return types_[blockOf_[state]]; }
   // How many states there are: tables indexed by BlockId are this long.
@@ -89,6 +95,7 @@ class BlockRegistry {
   std::vector<std::vector<ShapeBox>> shapes_;
   std::size_t minecraftBlocks_ = 0;
   BlockId waterState_ = kAir;
+  std::size_t blocksBeforePacks_ = 0;
 };
 
 }  // namespace terrasol

@@ -20,6 +20,7 @@
 #include "core/paths.h"
 #include "core/tool_main.h"
 #include "scene/block_atlas.h"
+#include "scene/pack_blocks.h"
 #include "world/block_registry.h"
 
 namespace terrasol {
@@ -80,8 +81,17 @@ int inspect(const PackStack& packs) {
   return errors > 0 ? 1 : 0;
 }
 
+// The registry the game builds with `packs`: Minecraft's table, blocks.json, and the blocks the packs add.
+BlockRegistry registryFor(const PackStack& packs) {
+  std::vector<PackProblem> problems;
+  BlockRegistry blocks =
+      withPackBlocks(BlockRegistry::load(resourcePackDir() / "default" / "blocks.json"), packs, problems);
+  for (const PackProblem& p : problems) std::printf("warning: %s\n", p.message.c_str());
+  return blocks;
+}
+
 int atlas(const PackStack& packs, const std::filesystem::path& out) {
-  const BlockRegistry blocks = BlockRegistry::load(resourcePackDir() / "default" / "blocks.json");
+  const BlockRegistry blocks = registryFor(packs);
   const auto start = std::chrono::steady_clock::now();
   const BlockAtlas blockAtlas = buildBlockAtlas(blocks, packs);  // exactly what the renderer gets
   const Atlas& built = blockAtlas.atlas;
@@ -106,7 +116,7 @@ int atlas(const PackStack& packs, const std::filesystem::path& out) {
 }
 
 int coverage(const PackStack& packs) {
-  const BlockRegistry blocks = BlockRegistry::load(resourcePackDir() / "default" / "blocks.json");
+  const BlockRegistry blocks = registryFor(packs);
   const TextureCoverage c = textureCoverage(blocks, packs);
   for (const std::string& name : c.unused) std::printf("unused: %s\n", name.c_str());
   std::printf("used %zu of %zu block textures\n", c.used.size(), c.used.size() + c.unused.size());
@@ -114,7 +124,7 @@ int coverage(const PackStack& packs) {
 }
 
 int listBlocks(const PackStack& packs) {
-  const BlockRegistry blocks = BlockRegistry::load(resourcePackDir() / "default" / "blocks.json");
+  const BlockRegistry blocks = registryFor(packs);
   const BlockAtlas atlas = buildBlockAtlas(blocks, packs);
   for (const auto& p : atlas.problems) {
     if (p.severity == PackProblem::Severity::Error) std::printf("error: %s\n", p.message.c_str());
@@ -123,8 +133,9 @@ int listBlocks(const PackStack& packs) {
   std::size_t drawn = 0, placeholders = 0;
   for (std::size_t i = 0; i < blocks.blockCount(); ++i) {
     const BlockType& type = blocks.block(i);
-    std::printf("%s %u %s\n", type.name.c_str(), static_cast<unsigned>(type.stateCount),
-                std::string(kBlockDrawings.nameOf(drawings[i])).c_str());
+    std::printf("%s %u %s%s\n", type.name.c_str(), static_cast<unsigned>(type.stateCount),
+                std::string(kBlockDrawings.nameOf(drawings[i])).c_str(),
+                i >= blocks.blocksBeforePacks() ? " (a pack's own block)" : "");
     drawn += drawings[i] == BlockDrawing::Model || drawings[i] == BlockDrawing::Derived;
     placeholders += drawings[i] == BlockDrawing::Placeholder;
   }
