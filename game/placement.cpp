@@ -1,6 +1,7 @@
 #include "placement.h"
 
 #include <cmath>
+#include <optional>
 #include <string>
 
 namespace terrasol {
@@ -49,6 +50,13 @@ std::string valueOf(const BlockRegistry& blocks, BlockId state, const char* prop
   const StateValues v = blocks.stateValues(state);
   const auto it = v.find(property);
   return it == v.end() ? "" : it->second;
+}
+
+// Minecraft's rotation toward the player: sixteenths of a turn from south, clockwise seen from above,
+// of the way back along the look.
+int rotationToward(glm::dvec3 look) {
+  const double yaw = std::atan2(-look.x, look.z) * 180.0 / 3.14159265358979323846;  // 0 = looking south
+  return static_cast<int>(std::floor((yaw + 180.0) * 16.0 / 360.0 + 0.5)) & 15;
 }
 
 // Whether the block at `pos` fills its cell (a cube, a double slab): what walls and door hinges lean on.
@@ -146,6 +154,39 @@ std::vector<Placement> placedStates(const World& world, BlockId held, const Targ
                                   {"open", "false"}});
       return {{at, lower}, {at.offset(0, 1, 0), with(blocks, lower, {{"half", "upper"}})}};
     }
+    case PlacementRule::Pointing: {
+      // Out of the clicked face; a hopper (no "up") points into the block it was put against.
+      if (!blocks.with(held, "facing", "up"))
+        return {{at, with(blocks, held, {{"facing", side.empty() ? "down" : opposite(side)}})}};
+      return {{at, with(blocks, held,
+                        {{"facing", side.empty() ? (target.normal.y > 0 ? "up" : "down") : side}})}};
+    }
+    case PlacementRule::Attached:
+      // On a wall facing out of it; on a floor or ceiling facing the way the player looks.
+      if (!side.empty()) return {{at, with(blocks, held, {{"face", "wall"}, {"facing", side}})}};
+      return {{at, with(blocks, held,
+                        {{"face", target.normal.y > 0 ? "floor" : "ceiling"}, {"facing", facingOf(look)}})}};
+    case PlacementRule::Rotation:
+      // On a side, the wall form facing out of it; else turned to face the player in sixteenths.
+      if (!side.empty() && type.wallVariant != kAir)
+        return {{at, with(blocks, type.wallVariant, {{"facing", side}})}};
+      return {{at, with(blocks, held, {{"rotation", std::to_string(rotationToward(look))}})}};
+    case PlacementRule::TwoTall: {
+      const BlockId lower = with(blocks, held, {{"half", "lower"}, {"facing", opposite(facingOf(look))}});
+      return {{at, lower}, {at.offset(0, 1, 0), with(blocks, lower, {{"half", "upper"}})}};
+    }
+    case PlacementRule::Bed: {
+      // The foot where it is put, the head a cell further along the player's look.
+      const std::string facing = facingOf(look);
+      const BlockId foot = with(blocks, held, {{"facing", facing}, {"part", "foot"}});
+      return {{at, foot}, {step(at, facing), with(blocks, foot, {{"part", "head"}})}};
+    }
+    case PlacementRule::Rail: {
+      if (!wholeBlock(world, at.offset(0, -1, 0))) return {};
+      const std::string f = facingOf(look);
+      return {
+          {at, with(blocks, held, {{"shape", f == "north" || f == "south" ? "north_south" : "east_west"}})}};
+    }
     case PlacementRule::None:
       break;
   }
@@ -205,10 +246,16 @@ std::vector<Placement> brokenBy(const World& world, const BlockPos& pos) {
     return Placement{p, blocks.holdsWater()[world.getBlock(p)] != 0 ? blocks.waterState() : kAir};
   };
   std::vector<Placement> cells = {left(pos)};
-  if (blocks[state].placement == PlacementRule::Door) {
-    const BlockPos other = pos.offset(0, valueOf(blocks, state, "half") == "lower" ? 1 : -1, 0);
-    if (&blocks[world.getBlock(other)] == &blocks[state]) cells.push_back(left(other));
+  // A block of two cells goes whole: a door's or tall plant's other half, a bed's other part.
+  const PlacementRule rule = blocks[state].placement;
+  std::optional<BlockPos> other;
+  if (rule == PlacementRule::Door || rule == PlacementRule::TwoTall)
+    other = pos.offset(0, valueOf(blocks, state, "half") == "lower" ? 1 : -1, 0);
+  if (rule == PlacementRule::Bed) {
+    const std::string facing = valueOf(blocks, state, "facing");
+    other = step(pos, valueOf(blocks, state, "part") == "foot" ? facing : opposite(facing));
   }
+  if (other && &blocks[world.getBlock(*other)] == &blocks[state]) cells.push_back(left(*other));
   return cells;
 }
 

@@ -6,8 +6,13 @@
 // face's axis; gates face the way the player looks and furnaces face the player; doors take two
 // cells, their hinge on the side their neighbours or the click decide; trapdoors hang from the
 // clicked side's upper or lower half; ladders and wall torches go on a wall's side, a torch on a side
-// becomes a wall torch. A block that can stand in water placed in water keeps it (waterlogged), and
-// leaves it when broken. Using a block that opens toggles it (a door's two halves together).
+// becomes a wall torch. Minecraft's blocks that blocks.json gives no rule follow the one their
+// properties imply (world/block_registry.h): six facings point out of the clicked face, buttons and
+// levers go on a floor, wall or ceiling, signs, banners and heads turn to face the player or hang on a
+// wall as their wall form, tall plants take two cells up and beds two along the look, rails lie on a
+// whole block's top. A block that can stand in water placed in water keeps it (waterlogged), and
+// leaves it when broken, a two-cell block whole. Using a block that opens toggles it (a door's two
+// halves together).
 
 #include <glm/vec3.hpp>
 #include <vector>

@@ -36,10 +36,17 @@ enum class PlacementRule : std::uint8_t {
   Trapdoor,
   Wall,
   Torch,
-  Layers
+  Layers,
+  Pointing,  // six facings: out of the clicked face (end rods, pistons, amethyst); a hopper into it
+  Attached,  // "face": on the floor, a wall or the ceiling (buttons, levers, grindstones)
+  Rotation,  // sixteen "rotation"s toward the player on a floor, its wall variant on a side (signs)
+  TwoTall,   // "half" lower and upper: two cells high (tall flowers, dripleaves)
+  Bed,       // "part" foot and head: two cells along the player's look
+  Rail       // on a whole block's top, along the player's look
 };
-inline constexpr EnumNames<PlacementRule, 11> kPlacementRules{
-    {"", "stairs", "slab", "axis", "facing", "facing_back", "door", "trapdoor", "wall", "torch", "layers"}};
+inline constexpr EnumNames<PlacementRule, 17> kPlacementRules{
+    {"", "stairs", "slab", "axis", "facing", "facing_back", "door", "trapdoor", "wall", "torch", "layers",
+     "pointing", "attached", "rotation", "two_tall", "bed", "rail"}};
 
 // blocks.json's "connects" (world/connected_states.h): fences, panes and walls join their neighbours;
 // a gate is what fences and walls join across its bars.

@@ -23,9 +23,71 @@ BlockRegistry BlockRegistry::load(const BlockTable& table, std::string_view bloc
   } catch (const Error& e) {
     throw Error(withFile(fileName, e.what()));
   }
+  registry.implyPlacements();
   registry.finish();
   registry.blocksBeforePacks_ = registry.types_.size();
   return registry;
+}
+
+namespace {
+
+const BlockProperty* propertyOf(const BlockType& type, std::string_view name) {
+  for (const BlockProperty& p : type.properties)
+    if (p.name == name) return &p;
+  return nullptr;
+}
+
+bool hasValue(const BlockType& type, std::string_view name, std::string_view value) {
+  const BlockProperty* p = propertyOf(type, name);
+  return p && p->indexOf(value) < p->values.size();
+}
+
+// The rule a Minecraft block's properties imply, as Minecraft places blocks with them.
+PlacementRule impliedPlacement(const BlockType& type) {
+  if (propertyOf(type, "hinge")) return PlacementRule::Door;
+  if (hasValue(type, "part", "foot")) return PlacementRule::Bed;
+  if (hasValue(type, "half", "upper")) return PlacementRule::TwoTall;
+  if (hasValue(type, "face", "wall")) return PlacementRule::Attached;
+  if (propertyOf(type, "rotation")) return PlacementRule::Rotation;
+  if (hasValue(type, "shape", "ascending_north")) return PlacementRule::Rail;
+  if (hasValue(type, "type", "double")) return PlacementRule::Slab;
+  if (hasValue(type, "half", "top") && propertyOf(type, "shape")) return PlacementRule::Stairs;
+  if (hasValue(type, "half", "top") && propertyOf(type, "open")) return PlacementRule::Trapdoor;
+  if (hasValue(type, "axis", "y") && hasValue(type, "axis", "x")) return PlacementRule::Axis;
+  if (hasValue(type, "facing", "down")) return PlacementRule::Pointing;
+  if (propertyOf(type, "facing")) return PlacementRule::FacingBack;
+  if (propertyOf(type, "layers")) return PlacementRule::Layers;
+  return PlacementRule::None;
+}
+
+// Minecraft names a block's wall form by putting "wall_" before its kind: oak_sign, oak_wall_sign;
+// skeleton_skull, skeleton_wall_skull; oak_hanging_sign, oak_wall_hanging_sign; tube_coral_fan,
+// tube_coral_wall_fan; soul_torch, soul_wall_torch.
+std::string wallFormOf(const std::string& name) {
+  for (const char* kind : {"hanging_sign", "sign", "banner", "skull", "head", "fan", "torch"}) {
+    const std::string k = kind;
+    if (name.size() > k.size() && name.ends_with("_" + k))
+      return name.substr(0, name.size() - k.size()) + "wall_" + k;
+  }
+  return "";
+}
+
+}  // namespace
+
+void BlockRegistry::implyPlacements() {
+  for (std::size_t i = 0; i < minecraftBlocks_; ++i) {
+    BlockType& type = types_[i];
+    if (type.placement != PlacementRule::None || type.shape == BlockShape::None) continue;
+    type.placement = impliedPlacement(type);
+    // A standing block with a wall form stands on floors and hangs on walls.
+    const std::string wall = wallFormOf(type.name);
+    const auto it = wall.empty() ? byName_.end() : byName_.find(wall);
+    if (it == byName_.end() || type.wallVariant != kAir) continue;
+    type.wallVariant = types_[it->second].defaultState;
+    if (type.placement == PlacementRule::None) type.placement = PlacementRule::Torch;
+    if (types_[it->second].placement == PlacementRule::None)
+      types_[it->second].placement = PlacementRule::Wall;
+  }
 }
 
 void BlockRegistry::addPackBlocks(std::vector<BlockType> types) {

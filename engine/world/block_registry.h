@@ -81,6 +81,9 @@ class BlockRegistry {
            const std::vector<std::uint16_t>& collision = {});
   // blocks.json over the blocks added so far: looks and rules for known ones, the rest added.
   void overlay(const nlohmann::json& blocksJson);
+  // Minecraft's blocks blocks.json gives no rule: the rule their properties imply, and the wall forms
+  // of standing blocks (signs, banners, heads, coral fans, torches).
+  void implyPlacements();
   // The per-state tables, once every block is known.
   void finish();
 

@@ -108,7 +108,8 @@ TEST(BlockRegistry, UnknownKeysAndRulesAreNamedWithTheirKeyPath) {
   EXPECT_EQ(errorOf(with(R"({"name":"x","textures":{"all":"x"},"placement":"stair"})")),
             "test/blocks.json: blocks[1] (x).placement: expected one of \"stairs\", \"slab\", \"axis\", "
             "\"facing\", "
-            "\"facing_back\", \"door\", \"trapdoor\", \"wall\", \"torch\", \"layers\", got \"stair\"");
+            "\"facing_back\", \"door\", \"trapdoor\", \"wall\", \"torch\", \"layers\", \"pointing\", "
+            "\"attached\", \"rotation\", \"two_tall\", \"bed\", \"rail\", got \"stair\"");
   EXPECT_EQ(errorOf(with(R"({"name":"x","textures":{"all":"x"},"connects":"fences"})")),
             "test/blocks.json: blocks[1] (x).connects: expected one of \"fence\", \"pane\", \"wall\", "
             "\"gate\", got "

@@ -136,6 +136,62 @@ TEST(PlacementTest, EveryRuleOfThePack) {
   EXPECT_EQ(hinge(), "left") << "alone, clicked on the cell's west half (x 0.5 counts as the left)";
 }
 
+// Minecraft's blocks blocks.json gives no rule follow the rule their properties imply: pointing out
+// of the clicked face, on a floor, wall or ceiling, turned toward the player or on a wall as their wall
+// form, two cells high or long (and broken whole), rails on a whole block only.
+TEST(PlacementTest, MinecraftsFamiliesByTheirProperties) {
+  World world = flatWorld();
+  world.setShapes(&defaultShapes());
+  const BlockRegistry& b = defaultBlocks();
+  const glm::dvec3 east(1.0, -0.5, 0.0);
+  const auto names = [&](const std::vector<Placement>& cells) {
+    std::string out;
+    for (const Placement& p : cells) {
+      if (!out.empty()) out += ' ';
+      out += b.stateName(p.state);
+    }
+    return out;
+  };
+  const Target floor{{0, 63, 0}, {0, 1, 0}, {0, 64, 0}, 1.0};
+  const Target ceiling{{0, 66, 0}, {0, -1, 0}, {0, 65, 0}, 1.0};
+  const Target wallSide{{0, 64, 3}, {0, 0, -1}, {0, 64, 2}, 2.0};  // the north side of stone at z 3
+  world.setBlock({0, 64, 3}, b.id("stone"));
+  const auto place = [&](const char* block, const Target& t, glm::dvec3 look = {0.0, -0.5, 1.0}) {
+    return names(placementOf(world, b.id(block), t, t.place,
+                             {t.place.x + 0.5, t.place.y + 0.5, t.place.z + 0.5}, look));
+  };
+  EXPECT_EQ(place("end_rod", wallSide), "end_rod[facing=north]");
+  EXPECT_EQ(place("piston", floor), "piston[extended=false,facing=up]");
+  EXPECT_EQ(place("hopper", wallSide), "hopper[enabled=true,facing=south]") << "into the block it is put on";
+  EXPECT_EQ(place("stone_button", wallSide), "stone_button[face=wall,facing=north,powered=false]");
+  EXPECT_EQ(place("lever", ceiling, east), "lever[face=ceiling,facing=east,powered=false]");
+  EXPECT_EQ(place("oak_sign", floor), "oak_sign[rotation=8,waterlogged=false]") << "facing the player";
+  EXPECT_EQ(place("oak_sign", floor, east), "oak_sign[rotation=4,waterlogged=false]");
+  EXPECT_EQ(place("oak_sign", wallSide), "oak_wall_sign[facing=north,waterlogged=false]");
+  EXPECT_EQ(place("creeper_head", wallSide), "creeper_wall_head[facing=north,powered=false]");
+  EXPECT_EQ(place("tube_coral_fan", wallSide), "tube_coral_wall_fan[facing=north,waterlogged=false]");
+  EXPECT_EQ(place("tube_coral_fan", floor), "tube_coral_fan[waterlogged=false]");
+  EXPECT_EQ(place("sunflower", floor), "sunflower[half=lower] sunflower[half=upper]");
+  EXPECT_EQ(place("red_bed", floor, east),
+            "red_bed[facing=east,occupied=false,part=foot] red_bed[facing=east,occupied=false,part=head]");
+  EXPECT_EQ(place("rail", floor, east), "rail[shape=east_west,waterlogged=false]");
+  world.setBlock({0, 70, 3}, b.id("stone"));
+  const Target highSide{{0, 70, 3}, {0, 0, -1}, {0, 70, 2}, 2.0};
+  EXPECT_EQ(place("rail", highSide), "") << "nothing below it";
+  EXPECT_EQ(place("ochre_froglight", wallSide), "ochre_froglight[axis=z]");
+  // Broken whole: a bed's head takes its foot, a tall flower's top its bottom.
+  world.setBlock({2, 64, 0}, b.id("red_bed[facing=east,occupied=false,part=foot]"));
+  world.setBlock({3, 64, 0}, b.id("red_bed[facing=east,occupied=false,part=head]"));
+  EXPECT_EQ(brokenBy(world, {3, 64, 0}).size(), 2u);
+  world.setBlock({5, 64, 0}, b.id("sunflower[half=lower]"));
+  world.setBlock({5, 65, 0}, b.id("sunflower[half=upper]"));
+  EXPECT_EQ(brokenBy(world, {5, 65, 0}).size(), 2u);
+  // Wall forms are placed through their standing block, not offered on their own.
+  EXPECT_EQ(pickedBy(world, {0, 64, 3}), b.id("stone"));
+  world.setBlock({0, 64, 2}, b.id("oak_wall_sign[facing=north,waterlogged=false]"));
+  EXPECT_EQ(pickedBy(world, {0, 64, 2}), b.id("oak_sign"));
+}
+
 // Right-clicking a door opens both its halves, a gate opened from its far side turns to swing away,
 // breaking either half of a door takes both, and other blocks are not used.
 TEST(PlacementTest, DoorsGatesAndTrapdoorsOpenAndClose) {
