@@ -1,6 +1,7 @@
 #include "game_ui.h"
 
 #include "game_renderer.h"
+#include "inventory.h"
 
 namespace terrasol {
 namespace {
@@ -50,8 +51,10 @@ MenuResult GameUi::menu(const std::vector<std::string>& loadedPacks,
 
 void GameUi::inventory(GameRenderer& renderer, Hotbar& hotbar) {
   std::vector<ItemIcon> items;
-  for (const BlockId state : renderer.iconStates())
+  for (const BlockId state : renderer.iconStates()) {
     items.push_back(iconOf(renderer, state, renderer.blocks()[state].name));
+    items.back().group = static_cast<int>(groupOf(renderer.blocks()[state]));
+  }
   const InventoryScreen::Result r = inventory_.draw(items, hotbarIcons(renderer, hotbar), hotbar.selected());
   if (r.select) hotbar.select(*r.select);
   if (r.place) hotbar.put(r.place->first, renderer.iconStates()[r.place->second]);

@@ -44,6 +44,21 @@ InventoryScreen::Result InventoryScreen::draw(const std::vector<ItemIcon>& items
     char buffer[128] = {};
     search_.copy(buffer, sizeof buffer - 1);
     if (ImGui::InputTextWithHint("##search", "Search blocks", buffer, sizeof buffer)) search_ = buffer;
+    // Minecraft's tabs; a search looks through every tab, as Minecraft's search tab does.
+    if (ImGui::BeginTabBar("##groups")) {
+      if (ImGui::BeginTabItem("All")) {
+        group_ = -1;
+        ImGui::EndTabItem();
+      }
+      for (int g = 0; g < static_cast<int>(kInventoryGroups.names.size()); ++g) {
+        const std::string label(kInventoryGroups.names[static_cast<std::size_t>(g)]);
+        if (ImGui::BeginTabItem(label.c_str())) {
+          group_ = g;
+          ImGui::EndTabItem();
+        }
+      }
+      ImGui::EndTabBar();
+    }
 
     const ImGuiStyle& style = ImGui::GetStyle();
     const float button = cell + 2.0f * 2.0f + style.ItemSpacing.x;  // icon, frame padding, spacing
@@ -54,6 +69,7 @@ InventoryScreen::Result InventoryScreen::draw(const std::vector<ItemIcon>& items
     int shown = 0;
     for (std::size_t i = 0; i < items.size(); ++i) {
       if (!matchesSearch(items[i].name, search_)) continue;
+      if (search_.empty() && group_ >= 0 && items[i].group != group_) continue;
       if (shown++ % columns != 0) ImGui::SameLine();
       ImGui::PushID(static_cast<int>(i));
       if (iconButton(items[i], cell)) out.place = {{selected, i}};

@@ -1,5 +1,6 @@
 #pragma once
-// The creative inventory (E): every item as an icon, found by a search field; clicking one puts it
+// The creative inventory (E): every item as an icon in Minecraft's tabs (inventory.h), found by a
+// search field across them all; clicking one puts it
 // into the selected hotbar slot, dragging one onto a hotbar slot (shown below them) puts it there.
 // Draws with ImGui inside the HUD's frame.
 
@@ -26,6 +27,7 @@ class InventoryScreen {
 
  private:
   std::string search_;  // kept while the inventory is closed
+  int group_ = -1;      // the tab shown: an InventoryGroup, -1 for all
 };
 
 }  // namespace terrasol
