@@ -237,7 +237,7 @@ Texel glowing(int x, int y, std::uint64_t seed, glm::vec3 base, glm::vec3 glow, 
 }
 
 void addGlowingAndLiving(std::vector<GeneratedTexture>& out) {
-  out.push_back(still("magma_block", [](int x, int y) {
+  out.push_back(still("magma", [](int x, int y) {
     return glowing(x, y, 1001, rgb(90, 35, 20), rgb(250, 120, 30), 0.35f, 90);
   }));
   out.push_back(still("shroomlight", [](int x, int y) {

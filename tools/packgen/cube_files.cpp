@@ -79,11 +79,25 @@ void addCubes(std::vector<GeneratedFile>& out) {
   addSingle("trial_spawner",
             bottomTop("trial_spawner_side_inactive", "trial_spawner_top_inactive", "trial_spawner_bottom"),
             out);
-  addSingle("cartography_table",
-            bottomTop("cartography_table_side1", "cartography_table_top", "dark_oak_planks"), out);
-  addSingle("fletching_table", bottomTop("fletching_table_side", "fletching_table_top", "birch_planks"), out);
-  addSingle("smithing_table", bottomTop("smithing_table_side", "smithing_table_top", "smithing_table_bottom"),
-            out);
+  // Tables as Minecraft faces them: a front to the north and south, their sides east and west.
+  const auto table = [&](const std::string& name, const std::string& front, const std::string& side,
+                         const std::string& west, const std::string& top, const std::string& bottom) {
+    addSingle(name,
+              child("block/cube", Json{{"particle", block(front)},
+                                       {"north", block(front)},
+                                       {"south", block(front)},
+                                       {"east", block(side)},
+                                       {"west", block(west)},
+                                       {"up", block(top)},
+                                       {"down", block(bottom)}}),
+              out);
+  };
+  table("cartography_table", "cartography_table_side3", "cartography_table_side1", "cartography_table_side2",
+        "cartography_table_top", "dark_oak_planks");
+  table("fletching_table", "fletching_table_front", "fletching_table_side", "fletching_table_side",
+        "fletching_table_top", "birch_planks");
+  table("smithing_table", "smithing_table_front", "smithing_table_side", "smithing_table_side",
+        "smithing_table_top", "smithing_table_bottom");
   for (const char* columnBlock : {"muddy_mangrove_roots", "ochre_froglight", "verdant_froglight",
                                   "pearlescent_froglight", "creaking_heart"}) {
     const std::string n = columnBlock;
@@ -109,13 +123,14 @@ void addCubes(std::vector<GeneratedFile>& out) {
   }
   out.push_back(file("blockstates", "frosted_ice", Json{{"variants", ice}}));
   Json anchor;
-  out.push_back(file("model", "respawn_anchor_0",
-                     bottomTop("respawn_anchor_side0", "respawn_anchor_top_off", "respawn_anchor_bottom")));
-  out.push_back(file("model", "respawn_anchor_charged",
-                     bottomTop("respawn_anchor_side4", "respawn_anchor_top", "respawn_anchor_bottom")));
-  for (int charges = 0; charges <= 4; ++charges)
-    anchor["charges=" + std::to_string(charges)] =
-        variant(charges == 0 ? "respawn_anchor_0" : "respawn_anchor_charged");
+  for (int charges = 0; charges <= 4; ++charges) {
+    const std::string model = "respawn_anchor_" + std::to_string(charges);
+    out.push_back(file(
+        "model", model,
+        bottomTop("respawn_anchor_side" + std::to_string(charges),
+                  charges == 0 ? "respawn_anchor_top_off" : "respawn_anchor_top", "respawn_anchor_bottom")));
+    anchor["charges=" + std::to_string(charges)] = variant(model);
+  }
   out.push_back(file("blockstates", "respawn_anchor", Json{{"variants", anchor}}));
 }
 
@@ -127,9 +142,18 @@ void addFrontedBlocks(std::vector<GeneratedFile>& out) {
   };
   facing("carved_pumpkin", fronted("carved_pumpkin", "pumpkin_side", "pumpkin_top", "pumpkin_top"));
   facing("jack_o_lantern", fronted("jack_o_lantern", "pumpkin_side", "pumpkin_top", "pumpkin_top"));
-  facing("smoker", fronted("smoker_front", "smoker_side", "smoker_top", "smoker_bottom"));
-  facing("blast_furnace",
-         fronted("blast_furnace_front", "blast_furnace_side", "blast_furnace_top", "blast_furnace_top"));
+  // Furnaces show their fire while lit.
+  const auto furnace = [&](const std::string& name, const std::string& side, const std::string& top,
+                           const std::string& bottom) {
+    out.push_back(file("model", name, fronted(name + "_front", side, top, bottom)));
+    out.push_back(file("model", name + "_on", fronted(name + "_front_on", side, top, bottom)));
+    Json variants = facingVariants([&](const std::string&) { return name; }, "lit=false,");
+    variants.update(facingVariants([&](const std::string&) { return name + "_on"; }, "lit=true,"));
+    out.push_back(file("blockstates", name, Json{{"variants", variants}}));
+  };
+  furnace("furnace", "furnace_side", "furnace_top", "furnace_top");
+  furnace("smoker", "smoker_side", "smoker_top", "smoker_bottom");
+  furnace("blast_furnace", "blast_furnace_side", "blast_furnace_top", "blast_furnace_top");
   facing("loom", fronted("loom_front", "loom_side", "loom_top", "loom_bottom"));
   facing("chiseled_bookshelf", fronted("chiseled_bookshelf_empty", "chiseled_bookshelf_side",
                                        "chiseled_bookshelf_top", "chiseled_bookshelf_top"));

@@ -129,6 +129,27 @@ void addDoublePlant(const std::string& name, const std::string& texture, bool ti
       [&](const std::string& half) { return name + (half == "lower" ? "_bottom" : "_top"); }, out);
 }
 
+// The sunflower: a double plant whose top holds its flower head, leaning east, its face on that side.
+void addSunflower(std::vector<GeneratedFile>& out) {
+  addCross("sunflower_bottom", "sunflower_bottom", out);
+  Json head = box({9.6, 0, 1}, {9.6, 16, 15}, "#back", "w");
+  head["faces"]["east"] = Json{{"texture", "#front"}};
+  head["rotation"] = Json{{"origin", {8, 8, 8}}, {"axis", "z"}, {"angle", 22.5}, {"rescale", true}};
+  Json elements = Json::array({turnedBox({0.8, 0, 8}, {15.2, 8, 8}, "#cross", "ns", 45),
+                               turnedBox({8, 0, 0.8}, {8, 8, 15.2}, "#cross", "we", 45), head});
+  out.push_back(file("model", "sunflower_top",
+                     Json{{"ambientocclusion", false},
+                          {"textures",
+                           {{"particle", block("sunflower_front")},
+                            {"cross", block("sunflower_top")},
+                            {"front", block("sunflower_front")},
+                            {"back", block("sunflower_back")}}},
+                          {"elements", elements}}));
+  addByValue(
+      "sunflower", "half", {"lower", "upper"},
+      [](const std::string& half) { return half == "lower" ? "sunflower_bottom" : "sunflower_top"; }, out);
+}
+
 // Growths on a block's faces (vines, lichen, sculk veins, resin): a sheet against each face they hold.
 void addMultiface(const std::string& name, bool withDown, bool tinted, std::vector<GeneratedFile>& out) {
   const auto sheet = [&](const std::string& model, std::array<double, 3> from, std::array<double, 3> to,
@@ -208,20 +229,30 @@ void addCorals(std::vector<GeneratedFile>& out) {
   }
 }
 
-// Small things in counts: one to four boxes of a texture.
+// Small things in counts: one to four boxes of a texture; where `looks` names textures, a second
+// property `lookProperty` (0, 1, 2...) picks among them (a turtle egg's cracks).
 void addCounted(const std::string& name, const std::string& property,
-                const std::vector<std::array<double, 6>>& boxes, std::vector<GeneratedFile>& out) {
-  for (std::size_t n = 1; n <= boxes.size(); ++n) {
-    Json elements = Json::array();
-    for (std::size_t i = 0; i < n; ++i)
-      elements.push_back(
-          box({boxes[i][0], boxes[i][1], boxes[i][2]}, {boxes[i][3], boxes[i][4], boxes[i][5]}, "#all"));
-    out.push_back(
-        file("model", name + "_" + std::to_string(n), elementModel(Json{{"all", block(name)}}, elements)));
+                const std::vector<std::array<double, 6>>& boxes, std::vector<GeneratedFile>& out,
+                const std::string& lookProperty = "", const std::vector<std::string>& looks = {}) {
+  const std::vector<std::string> textures = looks.empty() ? std::vector<std::string>{name} : looks;
+  Json variants;
+  for (std::size_t k = 0; k < textures.size(); ++k) {
+    for (std::size_t n = 1; n <= boxes.size(); ++n) {
+      Json elements = Json::array();
+      for (std::size_t i = 0; i < n; ++i)
+        elements.push_back(
+            box({boxes[i][0], boxes[i][1], boxes[i][2]}, {boxes[i][3], boxes[i][4], boxes[i][5]}, "#all"));
+      std::string model = name;
+      model.append("_").append(std::to_string(n));
+      if (k > 0) model.append("_").append(std::to_string(k));
+      out.push_back(file("model", model, elementModel(Json{{"all", block(textures[k])}}, elements)));
+      std::string key = property;
+      key.append("=").append(std::to_string(n));
+      if (!looks.empty()) key.append(",").append(lookProperty).append("=").append(std::to_string(k));
+      variants[key] = variant(model);
+    }
   }
-  addByValue(
-      name, property, numbers(1, static_cast<int>(boxes.size())),
-      [&](const std::string& n) { return name + "_" + n; }, out);
+  out.push_back(file("blockstates", name, Json{{"variants", variants}}));
 }
 
 // Petals, wildflowers and leaf litter: one to four quarters of a sheet on the ground.
@@ -306,7 +337,8 @@ void addWaterAndEndPlants(std::vector<GeneratedFile>& out) {
   addCounted("sea_pickle", "pickles",
              {{6, 0, 6, 10, 6, 10}, {3, 0, 3, 7, 6, 7}, {9, 0, 4, 13, 4, 8}, {4, 0, 9, 8, 5, 13}}, out);
   addCounted("turtle_egg", "eggs",
-             {{5, 0, 4, 9, 7, 8}, {1, 0, 7, 5, 5, 11}, {10, 0, 9, 14, 4, 13}, {6, 0, 10, 10, 5, 14}}, out);
+             {{5, 0, 4, 9, 7, 8}, {1, 0, 7, 5, 5, 11}, {10, 0, 9, 14, 4, 13}, {6, 0, 10, 10, 5, 14}}, out,
+             "hatch", {"turtle_egg", "turtle_egg_slightly_cracked", "turtle_egg_very_cracked"});
   out.push_back(file("model", "sniffer_egg",
                      elementModel(Json{{"all", block("sniffer_egg")}},
                                   Json::array({box({1, 0, 2}, {15, 16, 14}, "#all")}))));
@@ -402,8 +434,9 @@ void addPlantFiles(std::vector<GeneratedFile>& out) {
       "pale_hanging_moss", "tip", {"false", "true"},
       [](const std::string& t) { return t == "true" ? "pale_hanging_moss_tip" : "pale_hanging_moss"; }, out);
   addCrops(out);
-  for (const char* plant : {"sunflower", "lilac", "rose_bush", "peony", "pitcher_plant"})
+  for (const char* plant : {"lilac", "rose_bush", "peony", "pitcher_plant"})
     addDoublePlant(plant, plant, false, out);
+  addSunflower(out);
   addDoublePlant("tall_grass", "tall_grass", true, out);
   addDoublePlant("large_fern", "large_fern", true, out);
   addCross("pitcher_crop", "pitcher_crop", out);

@@ -117,11 +117,17 @@ void addDust(std::vector<GeneratedFile>& out) {
                      elementModel(textures, Json::array({box({4, 0.5, 4}, {12, 0.5, 12}, "#dot", "u")}))));
   out.push_back(file("model", "redstone_dust_side",
                      elementModel(textures, Json::array({box({7, 0.5, 0}, {9, 0.5, 8}, "#line", "u")}))));
+  out.push_back(file("model", "redstone_dust_side_alt",
+                     elementModel(Json{{"line", block("redstone_dust_line1")}},
+                                  Json::array({box({7, 0.5, 0}, {9, 0.5, 8}, "#line", "u")}))));
   out.push_back(file("model", "redstone_dust_up",
                      elementModel(textures, Json::array({box({7, 0, 0.5}, {9, 16, 0.5}, "#line", "s")}))));
   Json parts = Json::array({Json{{"apply", {{"model", block("redstone_dust_dot")}}}}});
   for (const auto& [side, y] : kFacings) {
-    parts.push_back(Json{{"when", {{side, "side|up"}}}, {"apply", variant("redstone_dust_side", 0, y)}});
+    // Minecraft's second line texture runs east and west.
+    const bool alongX = std::string(side) == "east" || std::string(side) == "west";
+    parts.push_back(Json{{"when", {{side, "side|up"}}},
+                         {"apply", variant(alongX ? "redstone_dust_side_alt" : "redstone_dust_side", 0, y)}});
     parts.push_back(Json{{"when", {{side, "up"}}}, {"apply", variant("redstone_dust_up", 0, y)}});
   }
   out.push_back(file("blockstates", "redstone_wire", Json{{"multipart", parts}}));
@@ -172,17 +178,20 @@ void addDiode(const std::string& name, const std::string& stateKey, std::vector<
   out.push_back(file("blockstates", name, Json{{"variants", variants}}));
 }
 
-// A block with a front on the north side, standing in any of six directions: front and others.
+// A block with a front on the north side, standing in any of six directions: front, back, sides and
+// ends (the sides' texture unless `ends` names another).
 void addFronted(const std::string& name, const std::string& front, const std::string& side,
-                const std::string& back, std::vector<GeneratedFile>& out, const std::string& prefix = "") {
+                const std::string& back, std::vector<GeneratedFile>& out, const std::string& prefix = "",
+                const std::string& ends = "") {
+  const std::string end = ends.empty() ? side : ends;
   out.push_back(file("model", name + prefix,
                      child("block/cube", Json{{"particle", block(side)},
                                               {"north", block(front)},
                                               {"south", block(back)},
                                               {"east", block(side)},
                                               {"west", block(side)},
-                                              {"up", block(side)},
-                                              {"down", block(side)}})));
+                                              {"up", block(end)},
+                                              {"down", block(end)}})));
 }
 
 void addPistons(std::vector<GeneratedFile>& out) {
@@ -212,19 +221,29 @@ void addPistons(std::vector<GeneratedFile>& out) {
 }
 
 void addFrontedBlocks(std::vector<GeneratedFile>& out) {
-  for (const char* name : {"dispenser", "dropper"}) {
-    addFronted(name, std::string(name) + "_front", "furnace_side", "furnace_side", out);
-    out.push_back(file("blockstates", name, Json{{"variants", frontVariants(name)}}));
+  // Dispensers and droppers facing up or down show their vertical front, furnace tops round it.
+  for (const std::string name : {"dispenser", "dropper"}) {
+    addFronted(name, name + "_front", "furnace_side", "furnace_side", out, "", "furnace_top");
+    out.push_back(file("model", name + "_vertical",
+                       child("block/cube_bottom_top", Json{{"top", block(name + "_front_vertical")},
+                                                           {"bottom", block("furnace_top")},
+                                                           {"side", block("furnace_top")}})));
+    Json variants = frontVariants(name);
+    variants["facing=up"] = variant(name + "_vertical");
+    variants["facing=down"] = variant(name + "_vertical", 180);
+    out.push_back(file("blockstates", name, Json{{"variants", variants}}));
   }
-  addFronted("observer", "observer_front", "observer_side", "observer_back", out);
-  addFronted("observer", "observer_front", "observer_side", "observer_back_on", out, "_on");
+  addFronted("observer", "observer_front", "observer_side", "observer_back", out, "", "observer_top");
+  addFronted("observer", "observer_front", "observer_side", "observer_back_on", out, "_on", "observer_top");
   Json observer = frontVariants("observer", "powered=false,");
   observer.update(frontVariants("observer_on", "powered=true,"));
   out.push_back(file("blockstates", "observer", Json{{"variants", observer}}));
-  for (const char* name : {"command_block", "repeating_command_block", "chain_command_block"}) {
-    const std::string n = name;
+  for (const std::string n : {"command_block", "repeating_command_block", "chain_command_block"}) {
     addFronted(n, n + "_front", n + "_side", n + "_back", out);
-    out.push_back(file("blockstates", n, Json{{"variants", frontVariants(n)}}));
+    addFronted(n, n + "_front", n + "_conditional", n + "_back", out, "_conditional");
+    Json variants = frontVariants(n, "conditional=false,");
+    variants.update(frontVariants(n + "_conditional", "conditional=true,"));
+    out.push_back(file("blockstates", n, Json{{"variants", variants}}));
   }
 }
 
@@ -269,10 +288,23 @@ void addSwitchedBlocks(std::vector<GeneratedFile>& out) {
           Json{{"top", block("tnt_top")}, {"bottom", block("tnt_bottom")}, {"side", block("tnt_side")}}, out,
           "block/cube_bottom_top");
   out.push_back(file("blockstates", "tnt", single("tnt")));
-  for (const char* name : {"structure_block", "jigsaw", "test_block", "test_instance_block", "crafter"}) {
+  for (const char* name : {"test_block", "test_instance_block", "crafter"}) {
     addCube(name, Json{{"all", block(name)}}, out);
     out.push_back(file("blockstates", name, single(name)));
   }
+  // The structure block shows its mode; the jigsaw its joint on top.
+  Json modes;
+  for (const char* mode : {"save", "load", "corner", "data"}) {
+    const std::string model = std::string("structure_block_") + mode;
+    addCube(model, Json{{"all", block(model)}}, out);
+    modes[std::string("mode=") + mode] = variant(model);
+  }
+  out.push_back(file("blockstates", "structure_block", Json{{"variants", modes}}));
+  addCube(
+      "jigsaw",
+      Json{{"top", block("jigsaw_top")}, {"bottom", block("jigsaw_bottom")}, {"side", block("jigsaw_side")}},
+      out, "block/cube_bottom_top");
+  out.push_back(file("blockstates", "jigsaw", single("jigsaw")));
 }
 
 void addSensors(std::vector<GeneratedFile>& out) {
