@@ -360,10 +360,10 @@ void addRedstoneTextures(std::vector<GeneratedTexture>& out) {
                  {kind + "_back", [=](int x, int y) { return sign(x, y, base, rgb(30, 30, 30), kPlain); }},
                  {kind + "_side", [=](int x, int y) { return sign(x, y, base, rgb(30, 30, 30), kArrow); }}});
   }
-  addAll(out,
-         {{"test_block", [](int x, int y) { return sign(x, y, rgb(60, 90, 120), rgb(230, 230, 230), kRing); }},
-          {"test_instance_block",
-           [](int x, int y) { return sign(x, y, rgb(60, 120, 90), rgb(230, 230, 230), kArrow); }}});
+  addAll(out, {{"test_block",
+                [](int x, int y) { return sign(x, y, rgb(60, 90, 120), rgb(230, 230, 230), kRing); }},
+               {"test_instance_block",
+                [](int x, int y) { return sign(x, y, rgb(60, 120, 90), rgb(230, 230, 230), kArrow); }}});
 }
 
 void addWorkshopTextures(std::vector<GeneratedTexture>& out) {
