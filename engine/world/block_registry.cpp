@@ -31,6 +31,13 @@ BlockRegistry BlockRegistry::load(const BlockTable& table, std::string_view bloc
 
 namespace {
 
+// Blocks Minecraft renamed, by their old names (its data fixers): a world saved before keeps them.
+constexpr std::pair<std::string_view, std::string_view> kRenamedBlocks[] = {
+    {"grass", "short_grass"},    // 1.20.3
+    {"chain", "iron_chain"},     // 1.21.9
+    {"grass_path", "dirt_path"}  // 1.17
+};
+
 const BlockProperty* propertyOf(const BlockType& type, std::string_view name) {
   for (const BlockProperty& p : type.properties)
     if (p.name == name) return &p;
@@ -40,6 +47,13 @@ const BlockProperty* propertyOf(const BlockType& type, std::string_view name) {
 bool hasValue(const BlockType& type, std::string_view name, std::string_view value) {
   const BlockProperty* p = propertyOf(type, name);
   return p && p->indexOf(value) < p->values.size();
+}
+
+// The name Minecraft gives now to a block it renamed; `name` itself otherwise.
+std::string_view renamedBlock(std::string_view name) {
+  for (const auto& [old, now] : kRenamedBlocks)
+    if (old == name) return now;
+  return name;
 }
 
 // The rule a Minecraft block's properties imply, as Minecraft places blocks with them.
@@ -196,7 +210,8 @@ BlockId BlockRegistry::find(std::string_view name, bool* found, std::string* pro
   };
   const std::size_t open = name.find('[');
   const std::string blockName(name.substr(0, open));
-  const auto it = byName_.find(blockName);
+  auto it = byName_.find(blockName);
+  if (it == byName_.end()) it = byName_.find(std::string(renamedBlock(blockName)));
   if (it == byName_.end()) return report(kAir, join({"unknown block '", blockName, "'"}));
   const BlockType& type = types_[it->second];
   if (found) *found = true;

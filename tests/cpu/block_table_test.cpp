@@ -39,6 +39,18 @@ TEST(BlockTable, EveryMinecraftBlockWithMinecraftsStateIds) {
 
 // Light by state as Minecraft gives it: lit furnaces and lamps, candles by count, sea pickles in
 // water only, the light block by level, respawn anchors by charge.
+// A world from before Minecraft renamed a block still names it the old way: grass (short_grass since
+// 1.20.3), chain (iron_chain since 1.21.9), grass_path (dirt_path since 1.17).
+TEST(BlockTable, RenamedBlocksAreFoundByTheirOldNames) {
+  const BlockRegistry& blocks = defaultBlocks();
+  EXPECT_EQ(blocks.id("grass"), blocks.id("short_grass"));
+  EXPECT_EQ(blocks.id("chain[axis=x,waterlogged=false]"), blocks.id("iron_chain[axis=x,waterlogged=false]"));
+  EXPECT_EQ(blocks.id("grass_path"), blocks.id("dirt_path"));
+  bool found = true;
+  blocks.find("grassy", &found);
+  EXPECT_FALSE(found);
+}
+
 TEST(BlockTable, LightFollowsTheState) {
   EXPECT_EQ(emission("furnace[lit=true]"), 13);
   EXPECT_EQ(emission("furnace[lit=false]"), 0);
