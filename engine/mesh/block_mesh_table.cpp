@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <optional>
 #include <string>
 
 #include "core/assert.h"
@@ -116,13 +117,14 @@ void occludeByOwnShape(std::vector<ModelQuad>& quads, std::span<const ShapeBox> 
 BlockMeshTable::BlockMeshTable(const BlockRegistry& blocks,
                                const std::function<std::uint16_t(BlockId, int)>& textureOf,
                                const std::function<std::vector<ModelQuad>(BlockId)>& modelQuadsOf,
-                               const std::function<std::vector<ModelChoice>(BlockId)>& modelChoicesOf) {
+                               const std::function<std::vector<ModelChoice>(BlockId)>& modelChoicesOf,
+                               const std::function<BlockId(BlockId)>& sameAsOf) {
   entries_.resize(blocks.size());
   waterState_ = blocks.waterState();
   const auto liquidOf = [&](BlockId state) {
     return static_cast<std::uint16_t>(1 + blocks.blockIndex(state));
   };
-  std::vector<ModelQuad> input;  // the previous model state's quads, as given
+  std::optional<std::vector<ModelQuad>> input;  // the previous model state's quads, as given
   for (BlockId id = 0; id < blocks.size(); ++id) {
     const BlockType& type = blocks[id];
     Entry& e = entries_[id];
@@ -137,11 +139,21 @@ BlockMeshTable::BlockMeshTable(const BlockRegistry& blocks,
     e.foliage = type.shape == BlockShape::Cube && type.layer == RenderLayer::Cutout && !e.cullSame;
     e.tint = type.tint;
     if (type.shape == BlockShape::Model) {
+      if (const BlockId earlier = sameAsOf ? sameAsOf(id) : id; earlier != id) {
+        const bool water = e.water;
+        const std::uint16_t liquid = e.liquid;
+        e = entries_[earlier];
+        e.water = water;
+        e.liquid = liquid;
+        input.reset();  // not fetched: the next state compares with nothing
+        continue;
+      }
       if (modelQuadsOf) e.quads = modelQuadsOf(id);
       if (modelChoicesOf) e.choices = modelChoicesOf(id);
       // A state drawn as the one before it (its waterlogged twin) takes its entry, all but its water.
       const bool asBefore = id > 0 && blocks.blockIndex(id) == blocks.blockIndex(id - 1) &&
-                            e.choices.empty() && entries_[id - 1].choices.empty() && e.quads == input;
+                            e.choices.empty() && entries_[id - 1].choices.empty() && input &&
+                            e.quads == *input;
       input = e.quads;
       if (asBefore) {
         const bool water = e.water;

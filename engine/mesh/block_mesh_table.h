@@ -51,9 +51,12 @@ class BlockMeshTable {
   // quads.
   // `modelChoicesOf(state)`: the weighted models a state picks among per cell, when it does (its quads
   // are then the origin's pick, for coverage).
+  // `sameAsOf(state)`: an earlier state of its block drawn just as it (its entry is copied, all but its
+  // water), or the state itself.
   BlockMeshTable(const BlockRegistry& blocks, const std::function<std::uint16_t(BlockId, int)>& textureOf,
                  const std::function<std::vector<ModelQuad>(BlockId)>& modelQuadsOf = {},
-                 const std::function<std::vector<ModelChoice>(BlockId)>& modelChoicesOf = {});
+                 const std::function<std::vector<ModelChoice>(BlockId)>& modelChoicesOf = {},
+                 const std::function<BlockId(BlockId)>& sameAsOf = {});
 
   struct Entry {
     BlockShape shape;

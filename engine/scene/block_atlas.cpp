@@ -236,6 +236,7 @@ BlockAtlas buildBlockAtlas(const BlockRegistry& blocks, const PackStack& packs, 
   BlockAtlas result;
   result.problems = baked.problems;
   result.placeholders = baked.placeholders;
+  result.sameAs = baked.sameAs;
   // A state drawn as an earlier one takes its quads (its face textures are its block's).
   const auto asEarlier = [&](BlockId id) { return baked.sameAs[id] != id; };
   std::map<std::vector<std::string>, std::uint16_t> index;
@@ -346,7 +347,8 @@ std::vector<BlockDrawing> blockDrawings(const BlockRegistry& blocks, const Block
 BlockMeshTable meshTableOf(const BlockRegistry& blocks, const BlockAtlas& atlas) {
   return BlockMeshTable(
       blocks, [&](BlockId id, int face) { return atlas.textureOf(id, face); },
-      [&](BlockId id) { return atlas.modelQuads[id]; }, [&](BlockId id) { return atlas.modelChoices[id]; });
+      [&](BlockId id) { return atlas.modelQuads[id]; }, [&](BlockId id) { return atlas.modelChoices[id]; },
+      [&](BlockId id) { return atlas.sameAs.empty() ? id : atlas.sameAs[id]; });
 }
 
 }  // namespace terrasol

@@ -26,6 +26,8 @@ struct BlockAtlas {
   std::vector<PackProblem> problems;                       // never fatal: missing textures show as such
   // Minecraft's blocks drawn as the missing cube because no pack describes them (sorted by id).
   std::vector<std::string> placeholders;
+  // Per state: the earlier state of its block drawn just as it (BlockModelBake::sameAs), or itself.
+  std::vector<BlockId> sameAs;
   std::uint16_t textureOf(BlockId id, int face) const {
     return faceTextures[id][static_cast<std::size_t>(face)];
   }
