@@ -73,30 +73,24 @@ Json facingVariants(const std::function<std::string(const std::string& facing)>&
   return variants;
 }
 
-namespace {
-Json turn(const std::string& model, int x, int y) {
-  Json v{{"model", block(model)}};
-  if (x != 0) v["x"] = x;
-  if (y != 0) v["y"] = y;
-  return v;
-}
-}  // namespace
-
 Json pointingVariants(const std::string& model, const std::string& prefix) {
   return Json{
-      {prefix + "facing=up", turn(model, 0, 0)},       {prefix + "facing=down", turn(model, 180, 0)},
-      {prefix + "facing=north", turn(model, 90, 0)},   {prefix + "facing=east", turn(model, 90, 90)},
-      {prefix + "facing=south", turn(model, 90, 180)}, {prefix + "facing=west", turn(model, 90, 270)}};
+      {prefix + "facing=up", variant(model, 0, 0)},       {prefix + "facing=down", variant(model, 180, 0)},
+      {prefix + "facing=north", variant(model, 90, 0)},   {prefix + "facing=east", variant(model, 90, 90)},
+      {prefix + "facing=south", variant(model, 90, 180)}, {prefix + "facing=west", variant(model, 90, 270)}};
 }
 
 Json frontVariants(const std::string& model, const std::string& prefix) {
-  return Json{{prefix + "facing=north", turn(model, 0, 0)},   {prefix + "facing=east", turn(model, 0, 90)},
-              {prefix + "facing=south", turn(model, 0, 180)}, {prefix + "facing=west", turn(model, 0, 270)},
-              {prefix + "facing=up", turn(model, 270, 0)},    {prefix + "facing=down", turn(model, 90, 0)}};
+  return Json{
+      {prefix + "facing=north", variant(model, 0, 0)},   {prefix + "facing=east", variant(model, 0, 90)},
+      {prefix + "facing=south", variant(model, 0, 180)}, {prefix + "facing=west", variant(model, 0, 270)},
+      {prefix + "facing=up", variant(model, 270, 0)},    {prefix + "facing=down", variant(model, 90, 0)}};
 }
 
 Json axisVariants(const std::string& model) {
-  return Json{{"axis=x", turn(model, 90, 90)}, {"axis=y", turn(model, 0, 0)}, {"axis=z", turn(model, 90, 0)}};
+  return Json{{"axis=x", variant(model, 90, 90)},
+              {"axis=y", variant(model, 0, 0)},
+              {"axis=z", variant(model, 90, 0)}};
 }
 
 }  // namespace terrasol::packgen

@@ -27,6 +27,14 @@ inline GeneratedFile file(const std::string& kind, const std::string& name, cons
   return {dir + name + ".json", json.dump(2) + "\n"};
 }
 
+// A variant's model turned by x and y degrees.
+inline Json variant(const std::string& model, int x = 0, int y = 0) {
+  Json v{{"model", block(model)}};
+  if (x != 0) v["x"] = x;
+  if (y != 0) v["y"] = y;
+  return v;
+}
+
 // A variant's model turned by x and y degrees; uvlock keeps its textures on the world's grid.
 inline Json turned(const std::string& model, int x, int y) {
   Json v{{"model", block(model)}};

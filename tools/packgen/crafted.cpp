@@ -6,12 +6,6 @@
 namespace terrasol::packgen {
 namespace {
 
-Texel clear() {
-  Texel t;
-  t.alpha = 0.0f;
-  return t;
-}
-
 // Boards running up the texture, for doors and trapdoors.
 Texel verticalBoards(int x, int y, glm::vec3 wood) {
   Texel t = planksOf(y, x, wood);

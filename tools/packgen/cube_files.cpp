@@ -16,13 +16,6 @@
 namespace terrasol::packgen {
 namespace {
 
-Json variant(const std::string& model, int x = 0, int y = 0) {
-  Json v{{"model", block(model)}};
-  if (x != 0) v["x"] = x;
-  if (y != 0) v["y"] = y;
-  return v;
-}
-
 void addSingle(const std::string& name, const Json& model, std::vector<GeneratedFile>& out) {
   out.push_back(file("model", name, model));
   out.push_back(file("blockstates", name, single(name)));

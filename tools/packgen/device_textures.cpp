@@ -15,12 +15,6 @@ namespace {
 
 using Recipe = std::function<Texel(int, int)>;
 
-Texel clear() {
-  Texel t;
-  t.alpha = 0.0f;
-  return t;
-}
-
 Texel tinted(Texel t, glm::vec3 colour) {
   t.color = colour;
   return t;

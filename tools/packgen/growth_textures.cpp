@@ -14,12 +14,6 @@ namespace {
 
 using Recipe = std::function<Texel(int, int)>;
 
-Texel clear() {
-  Texel t;
-  t.alpha = 0.0f;
-  return t;
-}
-
 Texel leafy(glm::vec3 colour, std::uint64_t seed, int x, int y) {
   Texel t;
   t.color = colour * (0.75f + 0.45f * hash01(seed, x, y));

@@ -11,13 +11,6 @@
 namespace terrasol::packgen {
 namespace {
 
-Json variant(const std::string& model, int x = 0, int y = 0) {
-  Json v{{"model", block(model)}};
-  if (x != 0) v["x"] = x;
-  if (y != 0) v["y"] = y;
-  return v;
-}
-
 // A cross of `texture` named `model` (tinted by the biome where `tinted`).
 void addCross(const std::string& model, const std::string& texture, std::vector<GeneratedFile>& out,
               bool tinted = false) {

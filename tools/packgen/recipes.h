@@ -40,6 +40,12 @@ Cells voronoi(std::uint64_t seed, int x, int y, int count);
 glm::vec3 rgb(int r, int g, int b);
 Canvas paint(int frames, const std::function<Texel(int x, int y, int frame)>& f);
 
+// Nothing: a texel a cutout model shows through.
+inline Texel clear() {
+  Texel t;
+  t.alpha = 0.0f;
+  return t;
+}
 Texel rock(std::uint64_t seed, int x, int y, glm::vec3 base, float contrast);
 Texel stone(int x, int y);
 Texel cobblestone(int x, int y);

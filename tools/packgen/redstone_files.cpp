@@ -11,13 +11,6 @@
 namespace terrasol::packgen {
 namespace {
 
-Json variant(const std::string& model, int x = 0, int y = 0) {
-  Json v{{"model", block(model)}};
-  if (x != 0) v["x"] = x;
-  if (y != 0) v["y"] = y;
-  return v;
-}
-
 // Minecraft's attachment of buttons and levers: on the floor, a wall (the model turned onto it) or
 // the ceiling, facing one of four ways.
 Json attachedVariants(const std::string& model, const std::string& pressed, const char* property) {
