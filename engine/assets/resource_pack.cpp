@@ -102,6 +102,16 @@ std::optional<PackStack::Found> PackStack::findBlockTexture(const std::string& f
   return std::nullopt;
 }
 
+std::optional<PackStack::FoundName> PackStack::findBlockTextureNamed(
+    const std::vector<std::string>& names) const {
+  for (auto it = packs_.rbegin(); it != packs_.rend(); ++it) {
+    for (const std::string& name : names) {
+      if (auto path = (*it)->blockTexture(name + ".png")) return FoundName{{it->get(), *path}, name};
+    }
+  }
+  return std::nullopt;
+}
+
 std::optional<PackStack::Found> PackStack::find(const std::string& path) const {
   for (auto it = packs_.rbegin(); it != packs_.rend(); ++it) {
     if ((*it)->files().read(path)) return Found{it->get(), path};

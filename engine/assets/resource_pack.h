@@ -57,6 +57,13 @@ class PackStack {
   };
   // The topmost pack that has block texture `file`.
   std::optional<Found> findBlockTexture(const std::string& file) const;
+  // The topmost pack that has any of the block textures `names` (without ".png"), its first of them:
+  // a pack made for an older Minecraft, naming a texture the old way, still covers the packs below.
+  struct FoundName {
+    Found found;
+    std::string name;
+  };
+  std::optional<FoundName> findBlockTextureNamed(const std::vector<std::string>& names) const;
   // The topmost pack that has `path` (e.g. the grass colormap).
   std::optional<Found> find(const std::string& path) const;
 

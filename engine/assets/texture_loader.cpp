@@ -103,11 +103,9 @@ LoadedTexture loadBlockTexture(const PackStack& packs, const std::vector<std::st
   t.name = candidates.empty() ? "" : candidates[0];
   std::optional<PackStack::Found> found;
   std::string used;
-  for (const auto& name : candidates) {
-    if ((found = packs.findBlockTexture(name + ".png"))) {
-      used = name;
-      break;
-    }
+  if (const auto named = packs.findBlockTextureNamed(candidates)) {
+    found = named->found;
+    used = named->name;
   }
   if (found) {
     const ResourcePack& pack = *found->pack;

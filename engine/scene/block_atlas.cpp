@@ -19,9 +19,33 @@ namespace terrasol {
 namespace {
 
 // A model's texture name ("block/oak_planks") as the block texture loader looks it up ("oak_planks").
+// Textures Minecraft renamed, by today's name: a pack made before still names them the old way.
+constexpr std::pair<std::string_view, std::string_view> kRenamedTextures[] = {
+    {"dirt_path_top", "grass_path_top"},  // 1.17
+    {"dirt_path_side", "grass_path_side"},
+    {"short_grass", "grass"},  // 1.20.3
+    {"sugar_cane", "reeds"},   // 1.13
+    {"nether_portal", "portal"},
+    {"tripwire", "trip_wire"},
+    {"lily_pad", "waterlily"},
+    {"iron_chain", "chain"}};  // 1.21.9
+
+// Texture names with the older names a pack may give them after each.
+std::vector<std::string> withOlderNames(const std::vector<std::string>& names) {
+  std::vector<std::string> out;
+  for (const std::string& name : names) {
+    out.push_back(name);
+    for (const auto& [now, old] : kRenamedTextures)
+      if (name == now && std::find(names.begin(), names.end(), old) == names.end()) out.emplace_back(old);
+  }
+  return out;
+}
+
+// A model's texture reference as the names a pack may give it: today's, then older ones.
 std::vector<std::string> candidatesOf(const std::string& texture) {
   const std::string prefix = "block/";
-  return {texture.compare(0, prefix.size(), prefix) == 0 ? texture.substr(prefix.size()) : texture};
+  return withOlderNames(
+      {texture.compare(0, prefix.size(), prefix) == 0 ? texture.substr(prefix.size()) : texture});
 }
 
 // What Minecraft draws for a block whose blockstates or models cannot be read: a cube of the
@@ -219,7 +243,7 @@ std::vector<std::vector<std::string>> atlasTextureNames(const BlockRegistry& blo
   for (BlockId id = 0; id < blocks.size(); ++id) {
     if (baked.sameAs[id] != id) continue;  // an earlier state's quads, its block's faces
     for (const auto& face : blocks[id].textures) {
-      if (!face.empty()) names.insert(face);
+      if (!face.empty()) names.insert(withOlderNames(face));
     }
     for (const BakedQuad& q : baked.quads[id]) names.insert(candidatesOf(q.texture));
     for (const BakedChoice& c : baked.choices[id])
@@ -253,7 +277,8 @@ BlockAtlas buildBlockAtlas(const BlockRegistry& blocks, const PackStack& packs, 
   for (BlockId id = 0; id < blocks.size(); ++id) {
     for (int f = 0; f < 6; ++f) {
       const auto& face = blocks[id].textures[static_cast<std::size_t>(f)];
-      result.faceTextures[id][static_cast<std::size_t>(f)] = face.empty() ? 0 : index.at(face);
+      result.faceTextures[id][static_cast<std::size_t>(f)] =
+          face.empty() ? 0 : index.at(withOlderNames(face));
     }
     if (asEarlier(id)) {
       result.modelQuads[id] = result.modelQuads[baked.sameAs[id]];
@@ -278,17 +303,12 @@ TextureCoverage textureCoverage(const BlockRegistry& blocks, const PackStack& pa
   // What the game loads for a list of candidates: the first the stack has.
   std::set<std::string> drawn;
   const auto use = [&](const std::vector<std::string>& candidates) {
-    for (const std::string& name : candidates) {
-      if (packs.findBlockTexture(name + ".png")) {
-        drawn.insert(name);
-        return;
-      }
-    }
+    if (const auto named = packs.findBlockTextureNamed(candidates)) drawn.insert(named->name);
   };
   const BlockModelBake baked =
       bakeBlockModels(blocks, packs);  // its problems: inspect and the atlas report them
   for (BlockId id = 0; id < blocks.size(); ++id) {
-    for (const auto& face : blocks[id].textures) use(face);
+    for (const auto& face : blocks[id].textures) use(withOlderNames(face));
     // A state drawn as an earlier one has empty lists.
     for (const BakedQuad& q : baked.quads[id]) use(candidatesOf(q.texture));
     for (const BakedChoice& c : baked.choices[id])

@@ -405,6 +405,26 @@ TEST(ResourcePack, PixelPerfectionLoadsWithoutErrorsOverTheDefaultPack) {
 
 // How much of a pack the blocks draw: the top pack's textures (maps and animation files aside), used
 // where a block's face or model names them through the stack.
+// A pack made for an older Minecraft names some textures the old way (grass_path_top before 1.17,
+// reeds before 1.13): they still cover the default pack's, in a block's faces and in a model's; a pack
+// with today's name too uses today's.
+TEST(TextureCoverage, OlderTextureNamesStillCoverTheDefaultPack) {
+  const Image red = testing::solidImage(16, 16, 200, 20, 20);
+  PackBuilder old("old_names");
+  old.image("grass_path_top.png", red).image("reeds.png", red).image("chain.png", red);
+  const PackStack stack = stackOf({resourcePackDir() / "default", old.dir()});
+  const TextureCoverage c = textureCoverage(testing::defaultBlocks(), stack);
+  EXPECT_EQ(c.used, (std::vector<std::string>{"chain", "grass_path_top", "reeds"}));
+  std::vector<PackProblem> problems;
+  EXPECT_NE(loadBlockTexture(stack, {"sugar_cane", "reeds"}, problems).source.find("old_names"),
+            std::string::npos);
+  PackBuilder both("both_names");
+  both.image("reeds.png", red).image("sugar_cane.png", red);
+  const TextureCoverage b =
+      textureCoverage(testing::defaultBlocks(), stackOf({resourcePackDir() / "default", both.dir()}));
+  EXPECT_EQ(b.used, (std::vector<std::string>{"sugar_cane"}));
+}
+
 TEST(TextureCoverage, CountsTheTopPacksTexturesTheBlocksDraw) {
   const Image red = testing::solidImage(16, 16, 200, 20, 20);
   PackBuilder pack("coverage");
