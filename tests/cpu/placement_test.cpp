@@ -15,6 +15,16 @@ using testing::defaultBlocks;
 using testing::defaultShapes;
 using testing::flatWorld;
 
+// The placed cells' states, as Minecraft names them, space-separated.
+std::string stateNames(const BlockRegistry& blocks, const std::vector<Placement>& cells) {
+  std::string out;
+  for (const Placement& p : cells) {
+    if (!out.empty()) out += ' ';
+    out += blocks.stateName(p.state);
+  }
+  return out;
+}
+
 TEST(TargetingTest, PicksTheFirstBlockAndTheFaceWithinReach) {
   World world = flatWorld();
   const auto hit = targetBlock(world, {0.5, 65.62, 0.5}, {0.0, -1.0, 0.0});
@@ -84,14 +94,7 @@ TEST(PlacementTest, EveryRuleOfThePack) {
   world.setShapes(&defaultShapes());
   const BlockRegistry& b = defaultBlocks();
   const glm::dvec3 south(0.0, -0.5, 1.0);
-  const auto names = [&](const std::vector<Placement>& cells) {
-    std::string out;
-    for (const Placement& p : cells) {
-      if (!out.empty()) out += ' ';
-      out += b.stateName(p.state);
-    }
-    return out;
-  };
+  const auto names = [&](const std::vector<Placement>& cells) { return stateNames(b, cells); };
   const Target floor{{0, 63, 0}, {0, 1, 0}, {0, 64, 0}, 1.0};
   const Target wallSide{{0, 64, 3}, {0, 0, -1}, {0, 64, 2}, 2.0};  // the north side of stone at z 3
   world.setBlock({0, 64, 3}, b.id("stone"));
@@ -144,14 +147,7 @@ TEST(PlacementTest, MinecraftsFamiliesByTheirProperties) {
   world.setShapes(&defaultShapes());
   const BlockRegistry& b = defaultBlocks();
   const glm::dvec3 east(1.0, -0.5, 0.0);
-  const auto names = [&](const std::vector<Placement>& cells) {
-    std::string out;
-    for (const Placement& p : cells) {
-      if (!out.empty()) out += ' ';
-      out += b.stateName(p.state);
-    }
-    return out;
-  };
+  const auto names = [&](const std::vector<Placement>& cells) { return stateNames(b, cells); };
   const Target floor{{0, 63, 0}, {0, 1, 0}, {0, 64, 0}, 1.0};
   const Target ceiling{{0, 66, 0}, {0, -1, 0}, {0, 65, 0}, 1.0};
   const Target wallSide{{0, 64, 3}, {0, 0, -1}, {0, 64, 2}, 2.0};  // the north side of stone at z 3

@@ -139,6 +139,7 @@ std::vector<GeneratedTexture> generateDefaultTextures() {
   addPlantTextures(out);
   addDeviceTextures(out);
   addGrowthTextures(out);
+  addNaturalTextures(out);
   return out;
 }
 

@@ -129,9 +129,10 @@ void addBuildingBlockTextures(std::vector<GeneratedTexture>& out);
 // The made things: redstone, rails, torches, work stations, copper's ages, candles, shulker boxes,
 // glazed terracotta, heads (device_textures.cpp).
 void addDeviceTextures(std::vector<GeneratedTexture>& out);
-// Crops, double plants, corals, vines and cave growths, and the natural blocks with their own faces
-// (growth_textures.cpp).
+// Crops, double plants, corals, vines and cave growths (growth_textures.cpp), and the natural blocks
+// with faces of their own (natural_textures.cpp).
 void addGrowthTextures(std::vector<GeneratedTexture>& out);
+void addNaturalTextures(std::vector<GeneratedTexture>& out);
 // Tulips and the other flowers, saplings, mushrooms, the Nether's fungi and roots, seagrass (plants.cpp).
 void addPlantTextures(std::vector<GeneratedTexture>& out);
 
