@@ -1,6 +1,7 @@
 #include "scene/block_atlas.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <map>
@@ -299,6 +300,30 @@ BlockAtlas buildBlockAtlas(const BlockRegistry& blocks, const PackStack& packs, 
   return result;
 }
 
+namespace {
+
+// Sorts the unused of `top` (the top pack's base names) into TextureCoverage's three kinds.
+void classifyUnused(TextureCoverage& coverage, const std::set<std::string>& top) {
+  for (const std::string& name : coverage.unused) {
+    // "stone7", "wheat_stage7-1": digits (and a dash) after a name the pack has.
+    std::size_t end = name.size();
+    while (end > 0 && std::isdigit(static_cast<unsigned char>(name[end - 1]))) --end;
+    if (end < name.size() && end > 0 && name[end - 1] == '-') --end;
+    const bool variant = end < name.size() && top.contains(name.substr(0, end));
+    const bool layer = name.ends_with("_e") && top.contains(name.substr(0, name.size() - 2));
+    bool older = false;
+    for (const auto& [now, old] : kRenamedTextures) older |= name == old && top.contains(std::string(now));
+    if (variant)
+      coverage.variants.push_back(name);
+    else if (layer)
+      coverage.emissiveLayers.push_back(name);
+    else if (older)
+      coverage.superseded.push_back(name);
+  }
+}
+
+}  // namespace
+
 TextureCoverage textureCoverage(const BlockRegistry& blocks, const PackStack& packs) {
   // What the game loads for a list of candidates: the first the stack has.
   std::set<std::string> drawn;
@@ -323,6 +348,7 @@ TextureCoverage textureCoverage(const BlockRegistry& blocks, const PackStack& pa
   }
   for (const std::string& name : top)
     (drawn.contains(name) ? coverage.used : coverage.unused).push_back(name);
+  classifyUnused(coverage, top);
   return coverage;
 }
 

@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 #include <zip.h>
 
+#include <algorithm>
 #include <array>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -437,6 +438,7 @@ TEST(TextureCoverage, CountsTheTopPacksTexturesTheBlocksDraw) {
   const TextureCoverage c = textureCoverage(testing::defaultBlocks(), stack);
   EXPECT_EQ(c.used, (std::vector<std::string>{"birch_door_top", "oak_planks", "stone"}));
   EXPECT_EQ(c.unused, (std::vector<std::string>{"not_a_block"}));
+  EXPECT_EQ(c.otherUnused(), 1u);
   // The default pack is all used.
   const TextureCoverage own =
       textureCoverage(testing::defaultBlocks(), stackOf({resourcePackDir() / "default"}));
@@ -444,12 +446,32 @@ TEST(TextureCoverage, CountsTheTopPacksTexturesTheBlocksDraw) {
   EXPECT_GT(own.used.size(), 180u);
 }
 
+// What no model could name is told apart: numbered variants of a texture the pack has, OptiFine's
+// emissive layers beside their base, and older names beside the current one; look-alikes are not.
+TEST(TextureCoverage, SortsTheUnusedByWhyNoModelNamesThem) {
+  const Image red = testing::solidImage(16, 16, 200, 20, 20);
+  PackBuilder pack("unused_kinds");
+  for (const char* name : {"stone", "stone7", "wheat_stage7", "wheat_stage7-1", "torch", "torch_e",
+                           "sugar_cane", "reeds", "fire_1", "vine_e", "stone_e"})
+    pack.image(std::string(name) + ".png", red);
+  const TextureCoverage c =
+      textureCoverage(testing::defaultBlocks(), stackOf({resourcePackDir() / "default", pack.dir()}));
+  EXPECT_EQ(c.variants, (std::vector<std::string>{"stone7", "wheat_stage7-1"}));
+  EXPECT_EQ(c.emissiveLayers, (std::vector<std::string>{"stone_e", "torch_e"}));
+  EXPECT_EQ(c.superseded, (std::vector<std::string>{"reeds"}));
+  // fire_1 is a texture of its own (Minecraft's second fire), vine_e a layer with no vine beside it.
+  EXPECT_EQ(c.otherUnused(), 1u);
+  EXPECT_NE(std::find(c.used.begin(), c.used.end(), "fire_1"), c.used.end());
+}
+
 TEST(TextureCoverage, PixelPerfectionIsPartlyDrawn) {
   TERRASOL_SKIP_WITHOUT_TEST_DATA();
   const TextureCoverage c =
       textureCoverage(testing::defaultBlocks(), stackOf({resourcePackDir() / "default", pixelPerfection()}));
-  std::printf("pixel_perfection_ce: used %zu of %zu block textures\n", c.used.size(),
-              c.used.size() + c.unused.size());
+  std::printf(
+      "pixel_perfection_ce: used %zu of %zu block textures (%zu variants, %zu emissive layers, %zu older)\n",
+      c.used.size(), c.used.size() + c.unused.size(), c.variants.size(), c.emissiveLayers.size(),
+      c.superseded.size());
   EXPECT_GT(c.used.size(), 150u);
 }
 

@@ -118,8 +118,22 @@ int atlas(const PackStack& packs, const std::filesystem::path& out) {
 int coverage(const PackStack& packs) {
   const BlockRegistry blocks = registryFor(packs);
   const TextureCoverage c = textureCoverage(blocks, packs);
-  for (const std::string& name : c.unused) std::printf("unused: %s\n", name.c_str());
-  std::printf("used %zu of %zu block textures\n", c.used.size(), c.used.size() + c.unused.size());
+  const std::set<std::string> variants(c.variants.begin(), c.variants.end()),
+      layers(c.emissiveLayers.begin(), c.emissiveLayers.end()),
+      older(c.superseded.begin(), c.superseded.end());
+  for (const std::string& name : c.unused) {
+    const char* why = variants.contains(name) ? " (a numbered variant)"
+                      : layers.contains(name) ? " (an emissive layer)"
+                      : older.contains(name)  ? " (an older name; the pack has the current one)"
+                                              : "";
+    std::printf("unused: %s%s\n", name.c_str(), why);
+  }
+  const std::size_t total = c.used.size() + c.unused.size();
+  const std::size_t nameable = total - c.variants.size() - c.emissiveLayers.size() - c.superseded.size();
+  std::printf("unused: %zu numbered variants, %zu emissive layers, %zu older names, %zu other\n",
+              c.variants.size(), c.emissiveLayers.size(), c.superseded.size(), c.otherUnused());
+  std::printf("used %zu of %zu block textures; %zu of %zu a model could name\n", c.used.size(), total,
+              c.used.size(), nameable);
   return 0;
 }
 

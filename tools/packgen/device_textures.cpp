@@ -150,6 +150,8 @@ void addRedstoneTextures(std::vector<GeneratedTexture>& out) {
           return x == 7 || x == 8 ? tinted(smooth(x, y, 1381, rgb(0, 0, 0), 0.0f, 40), rgb(220, 220, 220))
                                   : clear();
         }},
+       // The hook's iron: a worn grey metal.
+       {"tripwire_hook", [](int x, int y) { return metalBlock(x, y, rgb(160, 160, 165), 230, 150); }},
        {"piston_top", [](int x, int y) { return planksOf(x, y, rgb(162, 130, 78)); }},
        {"piston_top_sticky",
         [](int x, int y) {

@@ -138,6 +138,9 @@ void addFamilyTextures(std::vector<GeneratedTexture>& out) {
   // Stones.
   out.push_back(still("mossy_cobblestone", [](int x, int y) { return moss(cobblestone(x, y), x, y, 601); }));
   out.push_back(still("smooth_stone", [](int x, int y) { return polished(stone(x, y), x, y); }));
+  // A slab's side: two polished halves with the seam between them.
+  out.push_back(still("smooth_stone_slab_side",
+                      [](int x, int y) { return polished(stone(x, y), x, y % 8 == 7 ? kSize - 1 : y % 8); }));
   out.push_back(still("stone_bricks", [](int x, int y) {
     return bricks(x, y, 611, rgb(122, 122, 122), rgb(90, 90, 90), 4, 8);
   }));

@@ -224,7 +224,9 @@ void addPlantTexturesMore(std::vector<GeneratedTexture>& out) {
           return leafy(rgb(40, 110, 40), 1560, x, y);
         }},
        {"fire_0", [](int x, int y) { return flame(x, y, 1561, rgb(255, 230, 120), rgb(250, 130, 30)); }},
+       {"fire_1", [](int x, int y) { return flame(x, y, 1565, rgb(255, 230, 120), rgb(250, 130, 30)); }},
        {"soul_fire_0", [](int x, int y) { return flame(x, y, 1562, rgb(200, 250, 255), rgb(60, 200, 230)); }},
+       {"soul_fire_1", [](int x, int y) { return flame(x, y, 1566, rgb(200, 250, 255), rgb(60, 200, 230)); }},
        {"campfire_fire",
         [](int x, int y) { return flame(x, y, 1563, rgb(255, 230, 120), rgb(250, 130, 30)); }},
        {"soul_campfire_fire",

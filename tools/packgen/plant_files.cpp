@@ -417,10 +417,13 @@ void addPlantFiles(std::vector<GeneratedFile>& out) {
                            "weeping_vines", "weeping_vines_plant", "twisting_vines", "twisting_vines_plant"})
     addCrossBlock(name, out);
   addCrossBlock("sugar_cane", out, true);
-  addCross("fire", "fire_0", out);
-  out.push_back(file("blockstates", "fire", single("fire")));
-  addCross("soul_fire", "soul_fire_0", out);
-  out.push_back(file("blockstates", "soul_fire", single("soul_fire")));
+  // Fire in two looks, picked per cell, as Minecraft's fire_0 and fire_1.
+  for (const std::string fire : {"fire", "soul_fire"}) {
+    addCross(fire, fire + "_0", out);
+    addCross(fire + "_1", fire + "_1", out);
+    out.push_back(file("blockstates", fire,
+                       Json{{"variants", {{"", Json::array({variant(fire), variant(fire + "_1")})}}}}));
+  }
   addCross("pale_hanging_moss", "pale_hanging_moss", out);
   addCross("pale_hanging_moss_tip", "pale_hanging_moss_tip", out);
   addByValue(

@@ -112,6 +112,11 @@ void addPlantTextures(std::vector<GeneratedTexture>& out) {
       still("crimson_roots", [](int x, int y) { return blades(x, y, 1205, rgb(150, 20, 40), 11); }));
   out.push_back(
       still("warped_roots", [](int x, int y) { return blades(x, y, 1206, rgb(20, 150, 135), 11); }));
+  // Shorter, for flower pots (Minecraft's *_roots_pot).
+  out.push_back(
+      still("crimson_roots_pot", [](int x, int y) { return blades(x, y, 1209, rgb(150, 20, 40), 8); }));
+  out.push_back(
+      still("warped_roots_pot", [](int x, int y) { return blades(x, y, 1210, rgb(20, 150, 135), 8); }));
   out.push_back(
       still("nether_sprouts", [](int x, int y) { return blades(x, y, 1207, rgb(20, 160, 140), 6); }));
   out.push_back(still("seagrass", [](int x, int y) { return blades(x, y, 1208, rgb(50, 130, 45), 13); }));

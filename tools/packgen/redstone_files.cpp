@@ -355,7 +355,7 @@ void addSensors(std::vector<GeneratedFile>& out) {
   parts.push_back(Json{{"apply", variant("tripwire_knot")}});
   out.push_back(file("blockstates", "tripwire", Json{{"multipart", parts}}));
   out.push_back(file("model", "tripwire_hook",
-                     elementModel(Json{{"wood", block("oak_planks")}, {"hook", block("iron_block")}},
+                     elementModel(Json{{"wood", block("oak_planks")}, {"hook", block("tripwire_hook")}},
                                   Json::array({box({6, 1, 14}, {10, 9, 16}, "#wood"),
                                                box({7.5, 5, 8}, {8.5, 6, 14}, "#hook"),
                                                box({6.5, 4, 7}, {9.5, 7, 8}, "#hook")}))));

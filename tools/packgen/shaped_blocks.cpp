@@ -19,6 +19,9 @@ struct Material {
   const char* block;
   const char *side, *top, *bottom;
   bool slab, stairs, wall;
+  // A slab side of its own (smooth stone's shows the seam), on its slabs and on a double slab's model
+  // (PREFIX_slab_double), as Minecraft draws them; null: the block's side.
+  const char* slabSide = nullptr;
 };
 
 constexpr Material kMaterials[] = {
@@ -44,7 +47,8 @@ constexpr Material kMaterials[] = {
      true, true, true},
     {"sandstone", "sandstone", "sandstone", "sandstone_top", "sandstone_bottom", true, true, true},
     {"cut_sandstone", "cut_sandstone", "cut_sandstone", "sandstone_top", "sandstone_top", true, false, false},
-    {"smooth_stone", "smooth_stone", "smooth_stone", "smooth_stone", "smooth_stone", true, false, false},
+    {"smooth_stone", "smooth_stone", "smooth_stone", "smooth_stone", "smooth_stone", true, false, false,
+     "smooth_stone_slab_side"},
     {"tuff", "tuff", "tuff", "tuff", "tuff", true, true, true},
     {"cobbled_deepslate", "cobbled_deepslate", "cobbled_deepslate", "cobbled_deepslate", "cobbled_deepslate",
      true, true, true},
@@ -126,14 +130,20 @@ void addFullBlock(const Material& m, std::vector<GeneratedFile>& out) {
   out.push_back(file("model", m.block, model));
 }
 
-void addSlab(const Material& m, std::vector<GeneratedFile>& out) {
+void addSlab(Material m, std::vector<GeneratedFile>& out) {
   const std::string name = std::string(m.prefix) + "_slab";
+  std::string doubleModel = m.block;
+  if (m.slabSide) {
+    m.side = m.slabSide;
+    doubleModel = name + "_double";
+    out.push_back(file("model", doubleModel, texturedModel("cube_bottom_top", m)));
+  }
   out.push_back(file("model", name, texturedModel("slab", m)));
   out.push_back(file("model", name + "_top", texturedModel("slab_top", m)));
   Json variants;
   variants["type=bottom"] = Json{{"model", block(name)}};
   variants["type=top"] = Json{{"model", block(name + "_top")}};
-  variants["type=double"] = Json{{"model", block(m.block)}};
+  variants["type=double"] = Json{{"model", block(doubleModel)}};
   out.push_back(file("blockstates", name, Json{{"variants", variants}}));
 }
 
