@@ -14,6 +14,8 @@ packages=(
   libglm-dev libopenimageio-dev libtinygltf-dev nlohmann-json3-dev libstb-dev
   # saves: chunk compression and checksums
   libzstd-dev libxxhash-dev
+  # Minecraft saves: region chunks in gzip/zlib and LZ4
+  zlib1g-dev liblz4-dev
   # resource packs shipped as .zip
   libzip-dev
   # the HUD, debug overlay and menus (Dear ImGui with its GLFW and OpenGL 3 backends)

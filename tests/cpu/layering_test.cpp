@@ -20,6 +20,7 @@ namespace {
 const std::map<std::string, std::set<std::string>> kAllowed = {
     {"core", {"core"}},
     {"world", {"core", "world"}},
+    {"minecraft", {"core", "world", "minecraft"}},
     {"light", {"core", "world", "light"}},
     {"mesh", {"core", "world", "mesh"}},
     {"assets", {"core", "assets"}},

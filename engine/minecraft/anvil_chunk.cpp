@@ -1,0 +1,184 @@
+#include "minecraft/anvil_chunk.h"
+
+#include <algorithm>
+#include <bit>
+#include <set>
+
+#include "core/error.h"
+#include "minecraft/data_versions.h"
+
+namespace terrasol {
+namespace {
+
+using nbt::Tag;
+using nbt::TagType;
+
+// What one section's palette maps to, and how many of its cells each entry covers.
+struct SectionStates {
+  std::vector<MappedState> states;
+  std::vector<std::string> names;
+};
+
+class ChunkDecoder {
+ public:
+  ChunkDecoder(BlockStateMapper& mapper, std::string_view what) : mapper_(mapper), what_(what) {}
+
+  AnvilChunk decode(const Tag& root, ChunkPos expected) {
+    AnvilChunk out;
+    const Tag* version = root.find("DataVersion");
+    out.dataVersion = version && version->isInteger() ? static_cast<int>(version->integer()) : 0;
+    if (out.dataVersion < kDataVersion1_13)
+      fail("DataVersion " + std::to_string(out.dataVersion) +
+           " is from before Minecraft 1.13, whose numeric block ids Terrasol does not read");
+    const bool modern = out.dataVersion >= kDataVersion1_18;
+    // 1.13 to 1.17 keep everything under "Level".
+    const Tag* level = modern ? &root : root.find("Level", TagType::Compound);
+    if (!level) fail("no Level compound");
+    checkPosition(*level, expected);
+    const Tag* status = level->find("Status", TagType::String);
+    out.status = status ? status->string() : "";
+    out.full = isFullStatus(out.status);
+    if (!out.full) return out;
+
+    out.chunk = std::make_unique<Chunk>(expected);
+    const Tag* sections = level->find(modern ? "sections" : "Sections", TagType::List);
+    if (sections) {
+      for (const Tag& section : sections->items()) decodeSection(section, out, modern);
+    }
+    out.unknownNames.assign(unknown_.begin(), unknown_.end());
+    out.chunk->compact();
+    return out;
+  }
+
+ private:
+  [[noreturn]] void fail(const std::string& message) const {
+    throw Error(std::string(what_) + ": " + message);
+  }
+
+  void checkPosition(const Tag& level, ChunkPos expected) const {
+    const Tag* x = level.find("xPos");
+    const Tag* z = level.find("zPos");
+    if (!x || !z || !x->isInteger() || !z->isInteger()) fail("no xPos/zPos");
+    if (x->integer() != expected.x || z->integer() != expected.z)
+      fail("says it is chunk (" + std::to_string(x->integer()) + ", " + std::to_string(z->integer()) +
+           ") but sits in the slot of (" + std::to_string(expected.x) + ", " + std::to_string(expected.z) +
+           ")");
+  }
+
+  void decodeSection(const Tag& section, AnvilChunk& out, bool modern) {
+    const Tag* y = section.find("Y");
+    if (!y || !y->isInteger()) fail("a section without Y");
+    const int sectionY = static_cast<int>(static_cast<std::int8_t>(y->integer()));
+    const Tag* palette = nullptr;
+    const Tag* data = nullptr;
+    if (modern) {
+      const Tag* states = section.find("block_states", TagType::Compound);
+      if (!states) return;  // a light-only section
+      palette = states->find("palette", TagType::List);
+      data = states->find("data", TagType::LongArray);
+    } else {
+      palette = section.find("Palette", TagType::List);
+      data = section.find("BlockStates", TagType::LongArray);
+    }
+    if (!palette || palette->items().empty()) return;  // light only (1.13's Y = -1)
+    const int index = sectionY - (kMinY >> kChunkShift);
+    if (index < 0 || index >= kSectionCount) return;  // beyond Terrasol's height
+    const std::string where = "section Y=" + std::to_string(sectionY);
+
+    std::vector<MappedState> states;
+    states.reserve(palette->items().size());
+    for (const Tag& entry : palette->items()) states.push_back(mapEntry(entry, out.dataVersion, where));
+
+    Section& target = out.chunk->section(index);
+    const std::size_t n = states.size();
+    if (n == 1 && !data) {
+      target.fill(states[0].id);
+      count(states[0], Section::kVolume, out);
+      return;
+    }
+    if (!data) fail(where + ": a palette of " + std::to_string(n) + " with no block data");
+    const int bits = std::max(4, static_cast<int>(std::bit_width(n - 1)));
+    std::vector<std::uint16_t> indices(Section::kVolume);
+    unpack(data->longs(), bits, out.dataVersion >= kDataVersionUnspannedLongs, indices, where);
+    std::vector<std::size_t> uses(n, 0);
+    Section::Blocks& blocks = target.mutableBlocks();
+    for (int i = 0; i < Section::kVolume; ++i) {
+      const std::uint16_t p = indices[static_cast<std::size_t>(i)];
+      if (p >= n)
+        fail(where + ": palette index " + std::to_string(p) + " past its " + std::to_string(n) + " entries");
+      blocks[static_cast<std::size_t>(i)] = states[p].id;
+      ++uses[p];
+    }
+    for (std::size_t p = 0; p < n; ++p) count(states[p], uses[p], out);
+  }
+
+  static void count(const MappedState& s, std::size_t cells, AnvilChunk& out) {
+    if (!s.known) out.unknownCells += cells;
+    if (s.droppedProperties) out.droppedPropertyCells += cells;
+  }
+
+  // Unpacks 4096 indices of `bits` each. Spanning: a bit stream over the longs, low bits first.
+  // Unspanned: floor(64 / bits) indices a long, the top bits unused.
+  void unpack(std::span<const std::int64_t> longs, int bits, bool unspanned, std::vector<std::uint16_t>& out,
+              const std::string& where) const {
+    const std::uint64_t mask = (std::uint64_t{1} << bits) - 1;
+    const int perLong = 64 / bits;
+    const std::size_t expected =
+        unspanned ? (Section::kVolume + perLong - 1) / perLong : Section::kVolume * bits / 64;
+    if (longs.size() != expected)
+      fail(where + ": " + std::to_string(longs.size()) + " longs of block data, " + std::to_string(expected) +
+           " expected for " + std::to_string(bits) + " bits " + (unspanned ? "(1.16 on)" : "(before 1.16)"));
+    if (unspanned) {
+      for (int i = 0; i < Section::kVolume; ++i) {
+        const auto word = static_cast<std::uint64_t>(longs[static_cast<std::size_t>(i / perLong)]);
+        out[static_cast<std::size_t>(i)] =
+            static_cast<std::uint16_t>((word >> ((i % perLong) * bits)) & mask);
+      }
+      return;
+    }
+    for (int i = 0; i < Section::kVolume; ++i) {
+      const std::size_t bit = static_cast<std::size_t>(i) * static_cast<std::size_t>(bits);
+      const std::size_t word = bit / 64, shift = bit % 64;
+      std::uint64_t v = static_cast<std::uint64_t>(longs[word]) >> shift;
+      if (shift + static_cast<std::size_t>(bits) > 64)
+        v |= static_cast<std::uint64_t>(longs[word + 1]) << (64 - shift);
+      out[static_cast<std::size_t>(i)] = static_cast<std::uint16_t>(v & mask);
+    }
+  }
+
+  MappedState mapEntry(const Tag& entry, int dataVersion, const std::string& where) {
+    const Tag* name = entry.find("Name", TagType::String);
+    if (!name) fail(where + ": a palette entry without a Name");
+    properties_.clear();
+    if (const Tag* props = entry.find("Properties", TagType::Compound)) {
+      for (std::size_t i = 0; i < props->items().size(); ++i) {
+        const Tag& v = props->items()[i];
+        if (v.type() == TagType::String) properties_.emplace_back(props->memberNames()[i], v.string());
+      }
+    }
+    const MappedState s = mapper_.map(name->string(), properties_, dataVersion);
+    if (!s.known) unknown_.insert(name->string());
+    return s;
+  }
+
+  BlockStateMapper& mapper_;
+  std::string_view what_;
+  StateProperties properties_;
+  std::set<std::string> unknown_;
+};
+
+}  // namespace
+
+bool isFullStatus(std::string_view status) {
+  constexpr std::string_view kMinecraft = "minecraft:";
+  if (status.starts_with(kMinecraft)) status.remove_prefix(kMinecraft.size());
+  // "fullchunk" and "postprocessed" are 1.13's finished chunks; "full" since 1.14.
+  return status == "full" || status == "fullchunk" || status == "postprocessed";
+}
+
+AnvilChunk decodeAnvilChunk(const nbt::Tag& root, ChunkPos expected, BlockStateMapper& mapper,
+                            std::string_view what) {
+  return ChunkDecoder(mapper, what).decode(root, expected);
+}
+
+}  // namespace terrasol

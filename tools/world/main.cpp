@@ -1,0 +1,132 @@
+// terrasol-world: what Terrasol reads of a Minecraft Java save (read-only; nothing is written to it).
+//   terrasol-world info PATH [--json FILE]   the version, regions and chunks read, chunks by status,
+//                                            block states, and cells whose block nothing knows
+// PATH is a save folder (level.dat and region/), a folder holding region/, or a bare region folder.
+
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <string>
+
+#include "core/error.h"
+#include "core/paths.h"
+#include "core/tool_main.h"
+#include "minecraft/minecraft_save.h"
+
+namespace terrasol {
+namespace {
+
+int usage() {
+  std::fputs("usage: terrasol-world info PATH [--json FILE]\n", stderr);
+  return 2;
+}
+
+struct Survey {
+  std::size_t chunks = 0, full = 0, damaged = 0, unknownCells = 0, droppedPropertyCells = 0, blockCells = 0;
+  std::map<std::string, std::size_t> byStatus;
+  std::set<BlockId> states;
+  std::set<std::string> unknownNames;
+  std::vector<std::string> problems;
+};
+
+Survey survey(const MinecraftSave& save, const BlockRegistry& blocks) {
+  Survey s;
+  s.problems = save.problems();
+  BlockStateMapper mapper(blocks, kAir);
+  for (const ChunkPos pos : save.chunks()) {
+    ++s.chunks;
+    try {
+      const std::optional<AnvilChunk> chunk = save.load(pos, mapper);
+      if (!chunk) continue;
+      ++s.byStatus[chunk->status.empty() ? "(none)" : chunk->status];
+      if (!chunk->full) continue;
+      ++s.full;
+      s.unknownCells += chunk->unknownCells;
+      s.droppedPropertyCells += chunk->droppedPropertyCells;
+      s.unknownNames.insert(chunk->unknownNames.begin(), chunk->unknownNames.end());
+      for (int i = 0; i < kSectionCount; ++i) {
+        const Section& section = chunk->chunk->section(i);
+        if (section.isUniform()) {
+          s.states.insert(section.uniformBlock());
+          if (section.uniformBlock() != kAir) s.blockCells += Section::kVolume;
+          continue;
+        }
+        for (const BlockId id : *section.blocks()) {
+          s.states.insert(id);
+          s.blockCells += id != kAir;
+        }
+      }
+    } catch (const Error& e) {
+      ++s.damaged;
+      s.problems.push_back(std::string(e.what()) + "; chunk left out");
+    }
+  }
+  return s;
+}
+
+int info(const std::filesystem::path& path, const std::filesystem::path& jsonFile) {
+  const BlockRegistry blocks = BlockRegistry::load(resourcePackDir() / "default" / "blocks.json");
+  const auto start = std::chrono::steady_clock::now();
+  const MinecraftSave save(path);
+  const Survey s = survey(save, blocks);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  int dataVersion = save.level().dataVersion;
+  for (const std::string& p : s.problems) std::printf("problem: %s\n", p.c_str());
+  for (const std::string& name : s.unknownNames) std::printf("unknown block: %s\n", name.c_str());
+  std::printf(
+      "save %s: %s\n", path.string().c_str(),
+      save.level().versionName.empty() ? "no level.dat" : ("Minecraft " + save.level().versionName).c_str());
+  if (dataVersion) std::printf("data version %d\n", dataVersion);
+  std::printf("regions in %s\n", save.regionDir().string().c_str());
+  for (const auto& [status, n] : s.byStatus) std::printf("status %s: %zu chunks\n", status.c_str(), n);
+  std::printf(
+      "chunks %zu, full %zu, damaged %zu, block states %zu, block cells %zu, unknown cells %zu, "
+      "cells with dropped properties %zu (%.2f s)\n",
+      s.chunks, s.full, s.damaged, s.states.size(), s.blockCells, s.unknownCells, s.droppedPropertyCells,
+      seconds);
+  if (!jsonFile.empty()) {
+    nlohmann::json j;
+    j["data_version"] = dataVersion;
+    j["version"] = save.level().versionName;
+    j["chunks"] = s.chunks;
+    j["full_chunks"] = s.full;
+    j["damaged_chunks"] = s.damaged;
+    j["unknown_cells"] = s.unknownCells;
+    j["dropped_property_cells"] = s.droppedPropertyCells;
+    j["block_cells"] = s.blockCells;
+    j["block_states"] = s.states.size();
+    j["status"] = s.byStatus;
+    j["unknown_blocks"] = s.unknownNames;
+    j["problems"] = s.problems;
+    writeFileAtomically(jsonFile, j.dump(2) + "\n");
+  }
+  return 0;
+}
+
+int run(int argc, char** argv) {
+  if (argc < 3) return usage();
+  const std::string command = argv[1];
+  std::filesystem::path path, json;
+  for (int i = 2; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg == "--json" && i + 1 < argc) {
+      json = argv[++i];
+    } else if (path.empty()) {
+      path = arg;
+    } else {
+      return usage();
+    }
+  }
+  if (command == "info" && !path.empty()) return info(path, json);
+  return usage();
+}
+
+}  // namespace
+}  // namespace terrasol
+
+int main(int argc, char** argv) {
+  return terrasol::guardedMain("terrasol-world", [&] { return terrasol::run(argc, argv); });
+}
