@@ -10,6 +10,7 @@
 #include "core/paths.h"
 #include "first_run.h"
 #include "platform/glfw/glfw_window.h"
+#include "world_choice.h"
 
 // The game's parts made and wired together, and what the menu and the script ask of them.
 
@@ -32,6 +33,15 @@ std::uint64_t seedOf(const GameOptions& options) {
   return options.seed ? *options.seed : std::random_device{}();
 }
 
+// The folder played, and the Minecraft save under it: an overlay among the game's worlds when --world
+// names a Minecraft save.
+WorldChoice worldOf(const GameOptions& options) {
+  if (options.benchmark) return {benchmarkWorldDir(), {}};
+  return chooseWorld(options.world, kWorldsDir);
+}
+
+constexpr double kNoticeSeconds = 10.0;
+
 std::string firstOf(const std::vector<std::string>& names) {
   return names.empty() ? std::string() : names.front();
 }
@@ -44,8 +54,8 @@ Game::Game(GlfwWindow& window, const GameOptions& options)
       settings_(settingsFor(options)),
       content_(BlockAssets::registry(settings_.values.packs)),
       renderer_(content_.blocks, settings_.values, content_.defaultBake ? &*content_.defaultBake : nullptr),
-      world_(options.benchmark ? benchmarkWorldDir() : options.world, options.benchmark.has_value(),
-             seedOf(options), options.seed, content_, renderer_, settings_.values.viewDistance),
+      world_(worldOf(options).dir, options.benchmark.has_value(), seedOf(options), options.seed, content_,
+             renderer_, settings_.values.viewDistance, worldOf(options).minecraft),
       interaction_(content_),
       input_(window, settings_.values.keys),
       ui_(window.handle(), settings_, firstOf(world_.propFiles())),
@@ -53,6 +63,7 @@ Game::Game(GlfwWindow& window, const GameOptions& options)
   content_.defaultBake.reset();  // the shapes and the first atlas are made
   if (!options.inputScript.empty()) script_.emplace(loadInputScript(options.inputScript));
   input_.setScreenKeys(&ui_);
+  if (!world_.notice().empty()) ui_.showNotice(world_.notice(), frames_.clock, kNoticeSeconds);
   if (!std::filesystem::exists(settings_.path)) probeMachine();
   window_.setVsync(settings_.values.vsync && !options.benchmark);
   input_.show(Screen::None);

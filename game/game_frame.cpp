@@ -147,6 +147,7 @@ void Game::draw(bool timed) {
 void Game::drawHud() {
   ui_.begin();
   if (ui_.hudShown() && !input_.screenOpen()) ui_.crosshairAndHotbar(renderer_, interaction_.hotbar());
+  if (ui_.hudShown()) ui_.notice(frames_.clock);
   if (overlay_.shown()) {
     const std::deque<float>& graph = overlay_.graph();
     ui_.overlay(

@@ -40,6 +40,14 @@ class GameUi final : public ScreenKeys {
                const std::vector<float>& frameMs) {
     hud_.overlay(left, right, frameMs);
   }
+  // Shows `text` at the top of the screen for the next `seconds` (`now`: glfwGetTime's clock).
+  void showNotice(std::string text, double now, double seconds) {
+    notice_ = std::move(text);
+    noticeUntil_ = now + seconds;
+  }
+  void notice(double now) {
+    if (!notice_.empty() && now < noticeUntil_) hud_.notice(notice_);
+  }
   MenuResult menu(const std::vector<std::string>& loadedPacks, const std::vector<std::string>& propFiles);
   void inventory(GameRenderer& renderer, Hotbar& hotbar);
 
@@ -49,6 +57,8 @@ class GameUi final : public ScreenKeys {
   Menu menu_;
   InventoryScreen inventory_;
   bool hudShown_ = true;
+  std::string notice_;
+  double noticeUntil_ = 0.0;
   std::string selectedProp_;
 };
 

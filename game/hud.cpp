@@ -40,6 +40,16 @@ void Hud::beginFrame() {
   ImGui::NewFrame();
 }
 
+void Hud::notice(const std::string& text) {
+  ImDrawList* draw = ImGui::GetForegroundDrawList();
+  const ImVec2 size = ImGui::CalcTextSize(text.c_str());
+  const float pad = 6.0f;
+  const ImVec2 at((ImGui::GetIO().DisplaySize.x - size.x) * 0.5f, 12.0f);
+  draw->AddRectFilled({at.x - pad, at.y - pad}, {at.x + size.x + pad, at.y + size.y + pad},
+                      IM_COL32(0, 0, 0, 150), 4.0f);
+  draw->AddText(at, IM_COL32(255, 255, 255, 240), text.c_str());
+}
+
 void Hud::endFrame() {
   ImGui::Render();
   ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());

@@ -26,6 +26,8 @@ class Hud {
   // The F3 panels; under the left one, the last frames' times as a graph (ms, oldest first).
   void overlay(const std::vector<std::string>& left, const std::vector<std::string>& right,
                const std::vector<float>& frameMs = {});
+  // One line at the top of the screen (what the world is, once when it opens).
+  void notice(const std::string& text);
   void endFrame();  // draws into the bound framebuffer
 };
 

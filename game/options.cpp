@@ -61,7 +61,8 @@ double parseSeconds(const std::string& option, const std::string& text) {
 
 std::string gameUsage() {
   return "usage: terrasol [options]\n"
-         "  --world DIR       the world to open, created when missing (default: worlds/world)\n"
+         "  --world DIR       the world to open, created when missing (default: worlds/world); a\n"
+         "                    Minecraft Java save opens read-only, its edits kept in worlds/minecraft-*\n"
          "  --seed N          a new world's seed (default: from the clock)\n"
          "  --pack PATH       a resource pack (folder, .zip or Minecraft's .jar) over the default one;\n"
          "                    repeat to stack, last on top (this run; the menu's list is saved in the\n"
@@ -89,7 +90,7 @@ std::string gameUsage() {
 GameOptions parseGameOptions(const std::vector<std::string>& args) {
   GameOptions options;
   options.demoDir = executableDir() / "demo";
-  options.world = "worlds/world";
+  options.world = std::filesystem::path(kWorldsDir) / kDefaultWorldName;
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& arg = args[i];
     auto value = [&]() -> const std::string& {

@@ -12,6 +12,10 @@
 
 namespace terrasol {
 
+// Where the game keeps its worlds (relative to the current directory), and the one it opens by default.
+inline constexpr const char* kWorldsDir = "worlds";
+inline constexpr const char* kDefaultWorldName = "world";
+
 struct GameOptions {
   std::filesystem::path world;               // the save directory (created when missing)
   std::optional<std::uint64_t> seed;         // a new world's seed (default: from the clock)

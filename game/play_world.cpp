@@ -43,15 +43,23 @@ PlayWorld::Scratch::~Scratch() {
 
 PlayWorld::PlayWorld(const std::filesystem::path& dir, bool scratch, std::uint64_t seed,
                      std::optional<std::uint64_t> requestedSeed, const BlockContent& content,
-                     GameRenderer& renderer, int viewDistance)
+                     GameRenderer& renderer, int viewDistance, const std::filesystem::path& minecraft)
     : scratch_{scratch ? dir : std::filesystem::path()},
       content_(content),
       renderer_(renderer),
       world_(dir, seed, content.blocks, renderer.assets().table, viewDistance, workerThreads(),
-             &content.shapes),
+             &content.shapes, minecraft),
       props_(world_.dir()) {
   const Level& level = world_.level();
-  if (world_.isNew()) {
+  if (const MinecraftChunkSource* save = world_.minecraft()) {
+    notice_ = "Minecraft save " + level.minecraft.string() + " (read-only); edits are kept in " +
+              world_.dir().string();
+    logInfo(notice_);
+    for (const std::string& problem : save->problems()) logWarning(problem);
+  }
+  if (world_.isNew() && world_.minecraft()) {
+    player_.teleport(world_.minecraft()->startPosition());
+  } else if (world_.isNew()) {
     spawnPending_ = true;
     player_.teleport({0.5, 200.0, 0.5});
     logInfo("new world at " + world_.dir().string() + " (seed " + std::to_string(level.seed) + ")");

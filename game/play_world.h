@@ -42,9 +42,14 @@ class PlayWorld {
   // Opens `dir`, or creates it with `seed`; a saved player stands where they were, a new world's
   // drops onto its surface once the ground there is loaded. A `scratch` world's folder is deleted
   // with it. `content` must outlive this.
+  // `minecraft`: the Minecraft save a new `dir` overlays (world_choice.h); a new overlay's player starts
+  // where the save's player stands (else at its spawn, else over the middle of its chunks).
   PlayWorld(const std::filesystem::path& dir, bool scratch, std::uint64_t seed,
             std::optional<std::uint64_t> requestedSeed, const BlockContent& content, GameRenderer& renderer,
-            int viewDistance);
+            int viewDistance, const std::filesystem::path& minecraft = {});
+
+  // Said once when the world opens, for the HUD (empty for Terrasol's own worlds).
+  const std::string& notice() const { return notice_; }
 
   StreamedWorld& streamed() { return world_; }
   const StreamedWorld& streamed() const { return world_; }
@@ -95,6 +100,7 @@ class PlayWorld {
   TimeControls time_;
   DoubleTap flightTap_;
   bool spawnPending_ = false;  // the player waits for the ground to drop onto
+  std::string notice_;
   std::vector<Edit> edits_;
 };
 

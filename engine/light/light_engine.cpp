@@ -31,13 +31,19 @@ BlockPos faceCell(ChunkPos pos, int d, int a, int y, int beyond) {
   return {pos.minBlockX() + x, y, pos.minBlockZ() + z};
 }
 
-// 1 where a block ends the open sky column: it has opacity, or light does not cross its top or bottom.
+// Where a block ends the open sky column (light::kStopsAt, kStopsBelow): it has opacity or light does
+// not cross its top, so it stays out of the sky's reach; or, clear with only its bottom closed (a snow
+// layer, a carpet), the sky's full light enters it from above and goes no lower, as in Minecraft.
 std::vector<std::uint8_t> columnStops(const std::vector<std::uint8_t>& opacity,
                                       const std::vector<std::uint8_t>& sides) {
-  constexpr unsigned kUpDown =
-      1u << static_cast<int>(Direction::Down) | 1u << static_cast<int>(Direction::Up);
+  constexpr unsigned kDown = 1u << static_cast<int>(Direction::Down),
+                     kUp = 1u << static_cast<int>(Direction::Up);
   std::vector<std::uint8_t> stops(opacity.size());
-  for (std::size_t b = 0; b < stops.size(); ++b) stops[b] = opacity[b] > 0 || (sides[b] & kUpDown) ? 1 : 0;
+  for (std::size_t b = 0; b < stops.size(); ++b) {
+    stops[b] = opacity[b] > 0 || (sides[b] & kUp) ? light::kStopsAt
+               : (sides[b] & kDown)               ? light::kStopsBelow
+                                                  : 0;
+  }
   return stops;
 }
 
@@ -250,7 +256,7 @@ void LightEngine::blockChanged(const BlockChange& change) {
   for (const LightChannel channel : {LightChannel::Block, LightChannel::Sky}) {
     if (channel == LightChannel::Sky && !skyToo) continue;
     Propagator p = propagator(window, channel);
-    seedChangedCell(p, at);
+    seedChangedCell(p, at, !sameFaces(faces_, change.before, change.after));
     if (channel == LightChannel::Sky) seedSkyColumn(p, at, oldTop, newTop);
     p.run();
   }
@@ -262,12 +268,15 @@ int LightEngine::updateSkyTop(Chunk& chunk, const BlockChange& change) {
   const BlockPos& at = change.pos;
   auto& top = chunk.light().skyTop[static_cast<std::size_t>(columnIndex(localOf(at.x), localOf(at.z)))];
   int newTop = top;
-  if (columnStop_[change.after] && at.y > top) newTop = at.y;
-  if (!columnStop_[change.after] && at.y == top) {
+  const std::uint8_t stop = columnStop_[change.after];
+  if (stop && light::skyTopUnder(stop, at.y) > top) {
+    newTop = light::skyTopUnder(stop, at.y);
+  } else if (at.y == top || at.y == top + 1) {
+    // The block that ended the column may have gone: look down from it for the next.
     newTop = kMinY - 1;
-    for (int y = at.y - 1; y >= kMinY; --y) {
-      if (columnStop_[chunk.get(localOf(at.x), y, localOf(at.z))]) {
-        newTop = y;
+    for (int y = top + 1; y >= kMinY; --y) {
+      if (const std::uint8_t s = columnStop_[chunk.get(localOf(at.x), y, localOf(at.z))]) {
+        newTop = light::skyTopUnder(s, y);
         break;
       }
     }
@@ -277,13 +286,15 @@ int LightEngine::updateSkyTop(Chunk& chunk, const BlockChange& change) {
 }
 
 // The changed cell takes its own new level (removing light it can no longer hold), and its neighbours
-// offer theirs, since it may now let more light in.
-void LightEngine::seedChangedCell(light::Propagator& p, const BlockPos& at) {
+// offer theirs, since it may now let more light in. A cell whose light sides changed takes back what
+// it gave even where its own level stays (the sky's full light in a snow layer becoming stairs): the
+// light may no longer leave it on every side.
+void LightEngine::seedChangedCell(light::Propagator& p, const BlockPos& at, bool reshaped) {
   Cell cell;
   p.locate(at.x, at.y, at.z, cell);
   const std::uint8_t before = p.light(cell), own = p.source(cell);
   if (own != before) p.setLight(cell, own);
-  if (before > own) p.decrease(at.x, at.y, at.z, before, kAllDirections);
+  if (before > own || (reshaped && before > 0)) p.decrease(at.x, at.y, at.z, before, kAllDirections);
   if (own > 0) p.increase(at.x, at.y, at.z, own, kAllDirections);
   for (int d = 0; d < 6; ++d) {
     const BlockPos n = at.offset(kDirectionOffsets[d].x, kDirectionOffsets[d].y, kDirectionOffsets[d].z);

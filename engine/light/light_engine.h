@@ -4,9 +4,9 @@
 // Rules (Minecraft Java 1.20+): an emitter has its emission at its own cell; a neighbour receives
 // `level - max(1, opacity(neighbour))`, unless the side between them is a light side of either
 // block (World::shapes: a slab's bottom, a stair's back). Sky light is 15 in the open sky column:
-// every cell above the highest block of opacity >= 1 or with a light side up or down in its column
-// (ChunkLight::skyTop); from there it spreads in all six directions like block light. A chunk that
-// is not loaded acts as opaque.
+// down to the highest block of opacity >= 1 or with a light side up, and into a clear block with only
+// its bottom closed (a snow layer) but not under it (ChunkLight::skyTop); from there it spreads in all
+// six directions like block light. A chunk that is not loaded acts as opaque.
 //
 // Updates run breadth first over explicit queues, decreases before increases; every queue entry
 // carries its level and the directions still to visit (Starlight's method). Main thread only, like
@@ -84,7 +84,7 @@ class LightEngine {
   void seedOpenSky(light::Propagator& p, const Chunk& chunk);
   void seedFromNeighbours(light::Propagator& p, ChunkPos pos, LightChannel channel);
   int updateSkyTop(Chunk& chunk, const BlockChange& change);
-  void seedChangedCell(light::Propagator& p, const BlockPos& at);
+  void seedChangedCell(light::Propagator& p, const BlockPos& at, bool reshaped);
   void seedSkyColumn(light::Propagator& p, const BlockPos& at, int oldTop, int newTop);
   void ownLevels(const Chunk& chunk, int section, LightChannel channel, std::uint8_t* levels) const;
   void relightGeneral(light::Propagator& p, const Chunk& chunk, const SectionPos& s,
@@ -93,7 +93,7 @@ class LightEngine {
 
   World& world_;
   light::LightFaces faces_;                // light through shaped blocks (none without shapes)
-  std::vector<std::uint8_t> columnStop_;   // 1 where the open sky column ends (ChunkLight::skyTop)
+  std::vector<std::uint8_t> columnStop_;   // how a block ends the open sky column (light::kStopsAt...)
   std::vector<std::uint8_t> attenuation_;  // max(1, opacity)
   std::vector<std::uint8_t> flood_;        // the flood fill's (light::floodAttenuations)
   const std::uint8_t* emission_;

@@ -11,17 +11,20 @@ void computeSkyTops(const Chunk& chunk, const std::uint8_t* stops, ChunkLight& l
   for (int s = kSectionCount - 1; s >= 0 && remaining > 0; --s) {
     const Section& section = chunk.section(s);
     if (section.isUniform()) {
-      if (stops[section.uniformBlock()] == 0) continue;
+      const std::uint8_t stop = stops[section.uniformBlock()];
+      if (stop == 0) continue;
       for (std::size_t i = 0; i < kChunkArea; ++i) {
-        if (!done[i]) light.skyTop[i] = static_cast<std::int16_t>(sectionMinY(s) + kLastCell);
+        if (!done[i])
+          light.skyTop[i] = static_cast<std::int16_t>(skyTopUnder(stop, sectionMinY(s) + kLastCell));
       }
       break;
     }
     for (int ly = kLastCell; ly >= 0; --ly)
       for (std::size_t i = 0; i < kChunkArea; ++i) {
-        if (done[i] || stops[section.at(ly * kChunkArea + static_cast<int>(i))] == 0) continue;
+        const std::uint8_t stop = stops[section.at(ly * kChunkArea + static_cast<int>(i))];
+        if (done[i] || stop == 0) continue;
         done[i] = true;
-        light.skyTop[i] = static_cast<std::int16_t>(sectionMinY(s) + ly);
+        light.skyTop[i] = static_cast<std::int16_t>(skyTopUnder(stop, sectionMinY(s) + ly));
         --remaining;
       }
   }

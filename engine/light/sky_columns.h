@@ -13,7 +13,15 @@ namespace terrasol::light {
 
 inline constexpr int kHorizontal[4] = {0, 1, 4, 5};  // West, East, North, South
 
-// Highest block in each column where `stops` (by block id) is not 0: where the open sky column ends.
+// How a block ends the open sky column, by block id: not at all (0), at itself, or below itself (only
+// its bottom is closed to light: the sky's light fills it and goes no lower).
+inline constexpr std::uint8_t kStopsAt = 1, kStopsBelow = 2;
+// The highest cell out of the sky's reach when a block that `stop`s is at `y`.
+constexpr int skyTopUnder(std::uint8_t stop, int y) {
+  return stop == kStopsBelow ? y - 1 : y;
+}
+
+// Each column's highest cell out of the sky's reach, from the highest block where `stops` is not 0.
 // Uniform sections are skipped whole.
 void computeSkyTops(const Chunk& chunk, const std::uint8_t* stops, ChunkLight& light);
 // Sky light kMaxLight above each column's top, 0 elsewhere; whole sections stay uniform where they can.

@@ -35,7 +35,7 @@ std::vector<BlockId> iconStates(const BlockRegistry& blocks, std::span<const std
   std::vector<BlockId> states;
   for (std::size_t i = 0; i < blocks.blockCount(); ++i) {
     const BlockType& type = blocks.block(i);
-    if (type.defaultState == kAir || type.shape == BlockShape::None) continue;
+    if (type.defaultState == kAir || type.shape == BlockShape::None || !type.placeable) continue;
     if (wallVariants.contains(i) || leftOut.contains(type.name)) continue;
     // Fences, panes and walls show a piece running across, not their lone post.
     BlockId state = type.defaultState;

@@ -5,6 +5,7 @@
 #include <set>
 
 #include "core/error.h"
+#include "minecraft/biome_table.h"
 #include "minecraft/data_versions.h"
 
 namespace terrasol {
@@ -21,7 +22,8 @@ struct SectionStates {
 
 class ChunkDecoder {
  public:
-  ChunkDecoder(BlockStateMapper& mapper, std::string_view what) : mapper_(mapper), what_(what) {}
+  ChunkDecoder(BlockStateMapper& mapper, std::string_view what, bool withLight)
+      : mapper_(mapper), what_(what), withLight_(withLight) {}
 
   AnvilChunk decode(const Tag& root, ChunkPos expected) {
     AnvilChunk out;
@@ -43,8 +45,14 @@ class ChunkDecoder {
     out.chunk = std::make_unique<Chunk>(expected);
     const Tag* sections = level->find(modern ? "sections" : "Sections", TagType::List);
     if (sections) {
-      for (const Tag& section : sections->items()) decodeSection(section, out, modern);
+      for (const Tag& section : sections->items()) {
+        decodeSection(section, out, modern);
+        if (modern) decodeBiomes(section);
+      }
+      if (withLight_) out.light = storedLight(*sections);
     }
+    if (!modern) decodeOldBiomes(*level);
+    applyTints(*out.chunk);
     out.unknownNames.assign(unknown_.begin(), unknown_.end());
     out.chunk->compact();
     return out;
@@ -112,6 +120,105 @@ class ChunkDecoder {
     for (std::size_t p = 0; p < n; ++p) count(states[p], uses[p], out);
   }
 
+  // 1.18 on: a section's 4 x 4 x 4 biome cells, (y << 4 | z << 2 | x), ceil(log2(palette)) bits
+  // each (none for one entry), unspanned.
+  void decodeBiomes(const Tag& section) {
+    const Tag* y = section.find("Y");
+    const Tag* biomes = section.find("biomes", TagType::Compound);
+    if (!y || !biomes) return;
+    const int index = static_cast<int>(static_cast<std::int8_t>(y->integer())) - (kMinY >> kChunkShift);
+    const Tag* palette = biomes->find("palette", TagType::List);
+    if (index < 0 || index >= kSectionCount || !palette || palette->items().empty()) return;
+    std::vector<TintClimate> tints;
+    for (const Tag& name : palette->items())
+      tints.push_back(minecraftBiomeTint(name.string()).value_or(kPlainsTint));
+    std::array<TintClimate, kBiomeCells>& cells = sectionBiomes_[static_cast<std::size_t>(index)].emplace();
+    const Tag* data = biomes->find("data", TagType::LongArray);
+    const int bits = static_cast<int>(std::bit_width(tints.size() - 1));
+    if (!data || bits == 0) {
+      cells.fill(tints[0]);
+      return;
+    }
+    const int perLong = 64 / bits;
+    const auto longs = data->longs();
+    if (longs.size() < static_cast<std::size_t>((kBiomeCells + perLong - 1) / perLong))
+      fail("section Y=" + std::to_string(y->integer()) + ": too few longs of biome data");
+    for (int i = 0; i < kBiomeCells; ++i) {
+      const auto word = static_cast<std::uint64_t>(longs[static_cast<std::size_t>(i / perLong)]);
+      const std::size_t p = (word >> ((i % perLong) * bits)) & ((std::uint64_t{1} << bits) - 1);
+      if (p >= tints.size())
+        fail("section Y=" + std::to_string(y->integer()) + ": biome index past its palette");
+      cells[static_cast<std::size_t>(i)] = tints[p];
+    }
+  }
+
+  // 1.13 to 1.17: numeric ids, per column (256, before 1.15) or per 4 x 4 x 4 cell from y = 0 (1024).
+  void decodeOldBiomes(const Tag& level) {
+    const Tag* biomes = level.find("Biomes", TagType::IntArray);
+    if (!biomes) return;
+    const auto ids = biomes->ints();
+    const auto tint = [](int id) { return minecraftBiomeTint(id).value_or(kPlainsTint); };
+    if (ids.size() == kChunkArea) {
+      oldColumns_.emplace();
+      for (std::size_t i = 0; i < kChunkArea; ++i) (*oldColumns_)[i] = tint(ids[i]);
+    } else if (ids.size() == 1024) {
+      for (int cell = 0; cell < 1024; ++cell) {
+        const int section = (cell >> 6) - (kMinY >> kChunkShift);  // 16 cell layers of 4: 4 sections
+        auto& cells = sectionBiomes_[static_cast<std::size_t>(section)];
+        if (!cells) cells.emplace().fill(kPlainsTint);
+        (*cells)[static_cast<std::size_t>(cell & 63)] = tint(ids[static_cast<std::size_t>(cell)]);
+      }
+    }
+  }
+
+  // Each column takes the biome where its highest block stands.
+  void applyTints(Chunk& chunk) const {
+    for (int z = 0; z < kChunkSize; ++z)
+      for (int x = 0; x < kChunkSize; ++x) {
+        if (oldColumns_) {
+          chunk.setTint(x, z, (*oldColumns_)[static_cast<std::size_t>(columnIndex(x, z))]);
+          continue;
+        }
+        int top = kMinY;
+        for (int s = kSectionCount - 1; s >= 0 && top == kMinY; --s) {
+          if (chunk.section(s).isAllAir()) continue;
+          for (int y = sectionMinY(s) + kLastCell; y >= sectionMinY(s); --y)
+            if (chunk.get(x, y, z) != kAir) {
+              top = y;
+              break;
+            }
+        }
+        const auto& cells = sectionBiomes_[static_cast<std::size_t>(sectionOf(top))];
+        if (!cells) continue;
+        const int cell = ((top & kLastCell) >> 2) << 4 | (z >> 2) << 2 | (x >> 2);
+        chunk.setTint(x, z, (*cells)[static_cast<std::size_t>(cell)]);
+      }
+  }
+
+  // The sections' SkyLight and BlockLight arrays, or nothing when the chunk keeps none.
+  std::optional<StoredLight> storedLight(const Tag& sections) const {
+    StoredLight light;
+    bool any = false;
+    for (const Tag& section : sections.items()) {
+      const Tag* y = section.find("Y");
+      if (!y || !y->isInteger()) continue;
+      const int index = static_cast<int>(static_cast<std::int8_t>(y->integer())) - (kMinY >> kChunkShift);
+      if (index < 0 || index >= kSectionCount) continue;
+      for (const auto& [name, target] :
+           {std::pair{"SkyLight", &light.sky}, std::pair{"BlockLight", &light.block}}) {
+        const Tag* array = section.find(name, TagType::ByteArray);
+        if (!array) continue;
+        if (array->bytes().size() != 2048)
+          fail(std::string(name) + " of section Y=" + std::to_string(y->integer()) + " holds " +
+               std::to_string(array->bytes().size()) + " bytes, not 2048");
+        (*target)[static_cast<std::size_t>(index)].assign(array->bytes().begin(), array->bytes().end());
+        any = true;
+      }
+    }
+    if (!any) return std::nullopt;
+    return light;
+  }
+
   static void count(const MappedState& s, std::size_t cells, AnvilChunk& out) {
     if (!s.known) out.unknownCells += cells;
     if (s.droppedProperties) out.droppedPropertyCells += cells;
@@ -163,6 +270,10 @@ class ChunkDecoder {
 
   BlockStateMapper& mapper_;
   std::string_view what_;
+  bool withLight_;
+  static constexpr int kBiomeCells = 64;  // 4 x 4 x 4 a section
+  std::array<std::optional<std::array<TintClimate, kBiomeCells>>, kSectionCount> sectionBiomes_;
+  std::optional<std::array<TintClimate, kChunkArea>> oldColumns_;  // before 1.15: one biome a column
   StateProperties properties_;
   std::set<std::string> unknown_;
 };
@@ -177,8 +288,34 @@ bool isFullStatus(std::string_view status) {
 }
 
 AnvilChunk decodeAnvilChunk(const nbt::Tag& root, ChunkPos expected, BlockStateMapper& mapper,
-                            std::string_view what) {
-  return ChunkDecoder(mapper, what).decode(root, expected);
+                            std::string_view what, bool withLight) {
+  return ChunkDecoder(mapper, what, withLight).decode(root, expected);
+}
+
+namespace {
+
+std::uint8_t nibble(const std::vector<std::uint8_t>& data, int x, int localY, int z) {
+  const int i = localY << 8 | z << 4 | x;
+  const std::uint8_t byte = data[static_cast<std::size_t>(i >> 1)];
+  return static_cast<std::uint8_t>(i & 1 ? byte >> 4 : byte & 0x0F);
+}
+
+}  // namespace
+
+std::uint8_t StoredLight::skyAt(int x, int y, int z) const {
+  const int own = sectionOf(y);
+  const std::vector<std::uint8_t>& data = sky[static_cast<std::size_t>(own)];
+  if (!data.empty()) return nibble(data, x, y - sectionMinY(own), z);
+  // Minecraft writes no array for a section whose light is all 0 (an empty DataLayer): below the
+  // highest array, a missing one is dark; above them all is open sky.
+  for (int s = own + 1; s < kSectionCount; ++s)
+    if (!sky[static_cast<std::size_t>(s)].empty()) return 0;
+  return kMaxLight;
+}
+
+std::uint8_t StoredLight::blockAt(int x, int y, int z) const {
+  const std::vector<std::uint8_t>& data = block[static_cast<std::size_t>(sectionOf(y))];
+  return data.empty() ? 0 : nibble(data, x, y - sectionMinY(sectionOf(y)), z);
 }
 
 }  // namespace terrasol

@@ -5,7 +5,9 @@
 // two longs before 20w17a and not since; a one-entry palette may have no data. Only full chunks are
 // worlds' ground: the rest (proto-chunks) are counted, not decoded.
 
+#include <array>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -15,6 +17,17 @@
 
 namespace terrasol {
 
+// The light a save keeps per section (2 048 bytes each, two cells a byte, the even index in the low
+// nibble; index y << 8 | z << 4 | x), by Terrasol's section index; an empty vector where the section
+// keeps none.
+struct StoredLight {
+  std::array<std::vector<std::uint8_t>, kSectionCount> sky, block;
+  // The value the save holds: a section without an array is all 0 (Minecraft leaves empty layers out),
+  // except sky light above the highest array, which is open sky (15).
+  std::uint8_t skyAt(int x, int y, int z) const;
+  std::uint8_t blockAt(int x, int y, int z) const;
+};
+
 struct AnvilChunk {
   int dataVersion = 0;
   std::string status;  // "minecraft:full", "full", "fullchunk", "structure_starts"...
@@ -23,6 +36,8 @@ struct AnvilChunk {
   std::size_t unknownCells = 0;           // cells drawn as the placeholder
   std::size_t droppedPropertyCells = 0;   // cells whose state lost an unknown property or value
   std::vector<std::string> unknownNames;  // sorted, once each
+  // With `withLight`: the stored light of a full chunk Minecraft lit (isLightOn; any light array).
+  std::optional<StoredLight> light;
 };
 
 // Whether Minecraft counts a chunk of `status` (any DataVersion) as finished.
@@ -32,6 +47,6 @@ bool isFullStatus(std::string_view status);
 // `what` when the chunk is malformed: its position disagrees with its slot, a palette index is past
 // the palette, an array has the wrong length, a required tag is missing.
 AnvilChunk decodeAnvilChunk(const nbt::Tag& root, ChunkPos expected, BlockStateMapper& mapper,
-                            std::string_view what);
+                            std::string_view what, bool withLight = false);
 
 }  // namespace terrasol

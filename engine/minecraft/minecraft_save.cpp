@@ -104,7 +104,8 @@ bool MinecraftSave::contains(ChunkPos chunk) const {
   return it != regions_.end() && it->second->contains(chunk);
 }
 
-std::optional<AnvilChunk> MinecraftSave::load(ChunkPos chunk, BlockStateMapper& mapper) const {
+std::optional<AnvilChunk> MinecraftSave::load(ChunkPos chunk, BlockStateMapper& mapper,
+                                              bool withLight) const {
   const auto it = regions_.find({chunk.x >> 5, chunk.z >> 5});
   if (it == regions_.end()) return std::nullopt;
   const AnvilRegion& region = *it->second;
@@ -112,7 +113,7 @@ std::optional<AnvilChunk> MinecraftSave::load(ChunkPos chunk, BlockStateMapper& 
   if (!raw) return std::nullopt;
   const std::string what = region.describe(chunk);
   const nbt::Document doc = nbt::parse(*raw, what);
-  return decodeAnvilChunk(doc.root, chunk, mapper, what);
+  return decodeAnvilChunk(doc.root, chunk, mapper, what, withLight);
 }
 
 }  // namespace terrasol

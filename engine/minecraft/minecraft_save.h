@@ -41,7 +41,8 @@ class MinecraftSave {
   bool contains(ChunkPos chunk) const;
   // The chunk decoded, or nothing when no region holds it. Throws Error naming the region file, the
   // chunk and what is wrong with it. Thread-safe with one mapper per thread.
-  std::optional<AnvilChunk> load(ChunkPos chunk, BlockStateMapper& mapper) const;
+  // `withLight`: with the light the save keeps (AnvilChunk::light).
+  std::optional<AnvilChunk> load(ChunkPos chunk, BlockStateMapper& mapper, bool withLight = false) const;
 
   // Regions that could not be opened, and their headers' bad slots.
   const std::vector<std::string>& problems() const { return problems_; }

@@ -20,6 +20,13 @@ const Tag* Tag::find(std::string_view name, TagType type) const {
   return tag && tag->type_ == type ? tag : nullptr;
 }
 
+template <typename T>
+T swapBytes(T v) {
+  if constexpr (sizeof(T) == 4) return static_cast<T>(__builtin_bswap32(static_cast<std::uint32_t>(v)));
+  if constexpr (sizeof(T) == 8) return static_cast<T>(__builtin_bswap64(static_cast<std::uint64_t>(v)));
+  return v;
+}
+
 class Reader {
  public:
   Reader(std::span<const std::uint8_t> data, std::string_view what) : data_(data), what_(what) {}
@@ -72,10 +79,16 @@ class Reader {
     return static_cast<std::size_t>(n);
   }
 
+  // Checked once for its whole length, then swapped in bulk: chunks hold ~100 KiB of light arrays.
   template <typename T>
   void array(std::vector<T>& out) {
     out.resize(count(sizeof(T)));
-    for (T& v : out) v = big<T>();
+    const std::size_t bytes = out.size() * sizeof(T);
+    std::memcpy(out.data(), data_.data() + pos_, bytes);
+    pos_ += bytes;
+    if constexpr (sizeof(T) > 1) {
+      for (T& v : out) v = swapBytes(v);
+    }
   }
 
   void value(Tag& tag, TagType type, int depth) {

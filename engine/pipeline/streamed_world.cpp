@@ -9,25 +9,37 @@ namespace {
 
 constexpr std::size_t kSnapshotsPerFrame = 96;
 
-Level openLevel(const std::filesystem::path& dir, std::uint64_t seed, bool& isNew) {
+Level openLevel(const std::filesystem::path& dir, std::uint64_t seed, const std::filesystem::path& minecraft,
+                bool& isNew) {
   const std::filesystem::path file = dir / "level.json";
   isNew = !std::filesystem::exists(file);
   if (!isNew) return loadLevel(file);
   Level level;
   level.seed = seed;
   level.time = 1000;  // morning, as Minecraft starts
+  if (!minecraft.empty()) {
+    level.generator = "minecraft";
+    level.minecraft = std::filesystem::absolute(minecraft).lexically_normal();
+  }
   return level;
+}
+
+std::unique_ptr<ChunkGenerator> sourceOf(const Level& level, const BlockRegistry& blocks) {
+  if (!level.minecraft.empty()) return std::make_unique<MinecraftChunkSource>(level.minecraft, blocks);
+  return makeGenerator({level.generator, level.seed, {}}, blocks);
 }
 
 }  // namespace
 
 StreamedWorld::StreamedWorld(const std::filesystem::path& dir, std::uint64_t seed,
                              const BlockRegistry& blocks, const BlockMeshTable& table, int viewDistance,
-                             int threads, const BlockShapes* shapes)
-    : level_(openLevel(dir, seed, isNew_)),
+                             int threads, const BlockShapes* shapes,
+                             const std::filesystem::path& minecraftSave)
+    : level_(openLevel(dir, seed, minecraftSave, isNew_)),
       world_(blocks, shapes),
       storage_(dir, blocks),
-      generator_(makeGenerator({level_.generator, level_.seed, {}}, blocks)),
+      generator_(sourceOf(level_, blocks)),
+      minecraft_(dynamic_cast<const MinecraftChunkSource*>(generator_.get())),
       light_(world_),
       threads_(threads),
       mesher_(std::make_unique<MeshScheduler>(table, threads)),

@@ -13,6 +13,7 @@
 
 #include "light/light_engine.h"
 #include "mesh/mesh_scheduler.h"
+#include "minecraft/minecraft_source.h"
 #include "world/chunk_streamer.h"
 #include "world/level.h"
 #include "world/world_storage.h"
@@ -28,12 +29,16 @@ class StreamedWorld {
   // Opens DIR (level.json and the saved chunks) or creates it with `seed` (a new world's seed; an
   // existing world keeps its own). Throws Error naming the file when level.json is malformed.
   // `shapes` (World's): collision, targeting and light through shaped blocks; it must outlive this.
+  // `minecraftSave`: a new world overlays that Minecraft save (Level::minecraft); an existing world
+  // keeps what its level.json says. Throws Error as MinecraftSave does for a save it cannot read.
   StreamedWorld(const std::filesystem::path& dir, std::uint64_t seed, const BlockRegistry& blocks,
                 const BlockMeshTable& table, int viewDistance, int threads,
-                const BlockShapes* shapes = nullptr);
+                const BlockShapes* shapes = nullptr, const std::filesystem::path& minecraftSave = {});
   ~StreamedWorld();
 
   bool isNew() const { return isNew_; }
+  // The Minecraft save under this world, or null for Terrasol's own worlds.
+  const MinecraftChunkSource* minecraft() const { return minecraft_; }
   Level& level() { return level_; }
   const Level& level() const { return level_; }
   World& world() { return world_; }
@@ -73,6 +78,7 @@ class StreamedWorld {
   World world_;
   WorldStorage storage_;
   std::unique_ptr<ChunkGenerator> generator_;
+  const MinecraftChunkSource* minecraft_ = nullptr;  // generator_, when it is a save
   LightEngine light_;
   int threads_;
   std::unique_ptr<MeshScheduler> mesher_;

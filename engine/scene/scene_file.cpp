@@ -73,11 +73,18 @@ std::vector<SceneEdit> parseEdits(const json& value, const std::string& key) {
   return edits;
 }
 
-void parseWorld(const json& world, SceneFile& scene) {
-  checkObject(world, "world", {"generator", "seed", "edits"});
+path resolvePath(const std::string& name, const path& sceneDir, const std::string& key);
+
+void parseWorld(const json& world, SceneFile& scene, const path& sceneDir) {
+  checkObject(world, "world", {"generator", "seed", "edits", "minecraft"});
   if (const json* v = field(world, "generator")) scene.generator = oneOf(*v, "world.generator", kGenerators);
   if (const json* v = field(world, "seed")) scene.seed = seedNumber(*v, "world.seed");
   if (const json* v = field(world, "edits")) scene.edits = parseEdits(*v, "world.edits");
+  if (const json* v = field(world, "minecraft")) {
+    if (field(world, "generator") || field(world, "seed"))
+      fail("world.minecraft", "a Minecraft save is the world: leave out generator and seed");
+    scene.minecraftWorld = resolvePath(nonEmptyString(*v, "world.minecraft"), sceneDir, "world.minecraft");
+  }
 }
 
 // A file a scene names: absolute, relative to the scene file, or under the third-party test data
@@ -340,7 +347,7 @@ SceneFile parseRoot(const json& root, const path& file) {
       {"world", "packs", "props", "time", "sun_path_rotation", "render", "camera", "camera_path", "compare"});
   SceneFile scene;
   scene.file = file;
-  if (const json* v = field(root, "world")) parseWorld(*v, scene);
+  if (const json* v = field(root, "world")) parseWorld(*v, scene, file.parent_path());
   const json* packs = field(root, "packs");
   scene.packs =
       packs ? parsePacks(*packs, file.parent_path()) : std::vector<path>{resourcePackDir() / "default"};

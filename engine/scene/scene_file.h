@@ -58,6 +58,8 @@ struct SceneFile {
   std::filesystem::path file;         // the scene file itself ("" when parsed from memory with no name)
   std::string generator = "terrain";  // "void" | "flat" | "terrain"
   std::uint64_t seed = 1;
+  // "world.minecraft": a Minecraft Java save in the generator's place (read-only; resolved as packs are).
+  std::filesystem::path minecraftWorld;
   std::vector<SceneEdit> edits;  // in file order: later edits overwrite earlier ones
   // Bottom to top. "default" becomes resourcePackDir()/"default"; relative paths are resolved against
   // the scene file's directory. When the key is absent: just the default pack.

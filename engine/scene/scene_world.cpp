@@ -7,6 +7,7 @@
 #include "core/error.h"
 #include "mesh/mesh_scheduler.h"
 #include "mesh/section_mesh.h"
+#include "minecraft/minecraft_source.h"
 #include "scene/block_atlas.h"
 #include "scene/camera_path.h"
 #include "world/connected_states.h"
@@ -53,10 +54,12 @@ SceneWorld::SceneWorld(const SceneFile& scene, const BlockRegistry& blocks, Bloc
       centres_(cameraChunks(scene)),
       viewDistance_(scene.viewDistance),
       loaded_(chunksAround(centres_, viewDistance_ + 1)) {
+  const bool minecraft = !scene.minecraftWorld.empty();
   try {
-    generator_ = makeGenerator({scene.generator, scene.seed, {}}, blocks);
+    generator_ = minecraft ? std::make_unique<MinecraftChunkSource>(scene.minecraftWorld, blocks)
+                           : makeGenerator({scene.generator, scene.seed, {}}, blocks);
   } catch (const Error& e) {
-    throw Error(sceneError(scene, "world.generator", e.what()));
+    throw Error(sceneError(scene, minecraft ? "world.minecraft" : "world.generator", e.what()));
   }
   for (const ChunkPos& pos : loaded_) {
     auto chunk = std::make_unique<Chunk>(pos);

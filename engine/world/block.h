@@ -101,6 +101,9 @@ struct BlockType {
   BlockId wallVariant = kAir;
   Connects connects = Connects::None;
   bool opens = false;
+  // In the inventory and the hotbar; false for the stand-in of a block nothing knows (a mod's, in a
+  // Minecraft save), which worlds hold but players do not place.
+  bool placeable = true;
   // Collision (world/block_shapes.h): boxes reach up to `collisionHeight` (1/16, 0 keeps the shape's;
   // fences and walls 24), and none in states with `passableWhen` ("open=true": an open gate).
   std::uint8_t collisionHeight = 0;

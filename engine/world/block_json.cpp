@@ -175,9 +175,10 @@ BlockType parsePackBlock(const json& block, const std::string& where) {
   BlockType type;
   type.name = nonEmptyString(required(block, where, "name"), member(where, "name"));
   const std::string at = join({where, " (", type.name, ")"});
-  checkObject(block, at,
-              {"name", "shape", "layer", "textures", "tint", "opacity", "emission", "shape_occludes_light",
-               "properties", "default", "placement", "wall_variant", "connects", "opens", "collision"});
+  checkObject(
+      block, at,
+      {"name", "shape", "layer", "textures", "tint", "opacity", "emission", "shape_occludes_light",
+       "properties", "default", "placement", "wall_variant", "connects", "opens", "collision", "placeable"});
   type.shape = BlockShape::Cube;
   type.inBlocksJson = true;
   parseLooks(block, type, at);
@@ -189,6 +190,7 @@ BlockType parsePackBlock(const json& block, const std::string& where) {
   }
   parseStates(block, type, at);
   parseGameplay(block, type, at);
+  if (const json* v = field(block, "placeable")) type.placeable = boolean(*v, member(at, "placeable"));
   return type;
 }
 

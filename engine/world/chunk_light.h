@@ -13,8 +13,9 @@ namespace terrasol {
 struct ChunkLight {
   std::array<NibbleArray, kSectionCount> block;
   std::array<NibbleArray, kSectionCount> sky;
-  // Per column (columnIndex): y of the highest block with light opacity >= 1 or a light side
-  // up or down, or kMinY - 1. Every cell above it is in the open sky column and has sky light 15.
+  // Per column (columnIndex): y of the highest cell the sky's light does not reach straight down: a
+  // block with light opacity >= 1 or a light side up, or the cell under one with only a light side
+  // down (light/sky_columns.h), or kMinY - 1. Every cell above it has sky light 15.
   std::array<std::int16_t, kChunkArea> skyTop{};
   // Light-emitting blocks per section, so sections without any skip the search for sources.
   std::array<std::uint16_t, kSectionCount> emitters{};

@@ -41,12 +41,13 @@ void parsePlayer(const json& player, Level& level) {
 
 Level parseLevel(const json& root) {
   // "version" is written for readers to come; this one reads version 1 and files from before it.
-  checkObject(root, "", {"version", "generator", "seed", "time", "player", "props"});
+  checkObject(root, "", {"version", "generator", "seed", "time", "player", "props", "minecraft"});
   Level level;
   level.generator = nonEmptyString(required(root, "", "generator"), "generator");
   level.seed = seedNumber(required(root, "", "seed"), "seed");
   level.time = wholeNumber(required(root, "", "time"), "time", kMinInt64, kMaxInt64);
   parsePlayer(required(root, "", "player"), level);
+  if (const json* v = field(root, "minecraft")) level.minecraft = nonEmptyString(*v, "minecraft");
   if (const json* props = field(root, "props")) {
     if (!props->is_array()) expected("props", "an array", *props);
     for (std::size_t i = 0; i < props->size(); ++i) {
@@ -75,7 +76,7 @@ void saveLevel(const std::filesystem::path& file, const Level& level) {
                      {"rotation", {p.rotation.x, p.rotation.y, p.rotation.z}},
                      {"scale", p.scale}});
   }
-  const json root = {
+  json root = {
       {"version", 1},
       {"generator", level.generator},
       {"seed", level.seed},
@@ -87,6 +88,7 @@ void saveLevel(const std::filesystem::path& file, const Level& level) {
         {"flying", level.playerFlying}}},
       {"props", props},
   };
+  if (!level.minecraft.empty()) root["minecraft"] = level.minecraft.string();
   writeFileAtomically(file, root.dump(2) + "\n");
 }
 

@@ -27,6 +27,9 @@ struct Level {
   float playerYaw = 0.0f, playerPitch = 0.0f;  // degrees
   bool playerFlying = false;                   // "flying" (absent in older files: false)
   std::vector<LevelProp> props;                // "props" (absent in older files: none)
+  // "minecraft": the Minecraft save this world overlays (its chunks in the generator's place, read-only;
+  // this folder keeps the edits). Empty for Terrasol's own worlds.
+  std::filesystem::path minecraft;
 };
 
 // Throws Error naming the file and the key that is missing or wrong.

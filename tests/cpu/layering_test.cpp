@@ -26,9 +26,10 @@ const std::map<std::string, std::set<std::string>> kAllowed = {
     {"assets", {"core", "assets"}},
     {"render", {"core", "assets", "mesh", "render"}},
     {"platform", {"core", "platform"}},
-    {"scene", {"core", "world", "light", "mesh", "assets", "scene"}},
-    {"pipeline", {"core", "world", "light", "mesh", "pipeline"}},
-    {"scene_render", {"core", "world", "light", "mesh", "assets", "render", "scene", "scene_render"}},
+    {"scene", {"core", "world", "minecraft", "light", "mesh", "assets", "scene"}},
+    {"pipeline", {"core", "world", "minecraft", "light", "mesh", "pipeline"}},
+    {"scene_render",
+     {"core", "world", "minecraft", "light", "mesh", "assets", "render", "scene", "scene_render"}},
 };
 
 const std::set<std::string> kEngine = [] {

@@ -36,7 +36,7 @@ TEST(Light, ShapedBlocksStopLightAtTheSidesTheyCoverWhole) {
   }
   {
     const Room roofSlab("stone_slab", "stone");
-    EXPECT_EQ(roofSlab.sky(roof), 14) << "a bottom slab lets sky light in through its open top";
+    EXPECT_EQ(roofSlab.sky(roof), 15) << "a bottom slab takes the sky's full light through its open top";
     EXPECT_EQ(roofSlab.sky(belowRoof), 0) << "but not out through its bottom";
     const Room windowSlab("stone", "stone_slab");
     EXPECT_EQ(windowSlab.block(window), 14 - 2) << "its sides are half open: torch light passes";

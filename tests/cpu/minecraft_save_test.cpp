@@ -197,6 +197,48 @@ TEST(MinecraftSave, NamesAreReadByTheChunksVersion) {
   EXPECT_EQ(later.droppedPropertyCells, 4096u);
 }
 
+NbtValue& memberOf(NbtCompound& compound, const std::string& name) {
+  for (auto& [key, value] : compound)
+    if (key == name) return value;
+  throw std::runtime_error("no " + name);
+}
+
+// Each column takes the tint of the biome its highest block stands in: 1.18's biome cells by name,
+// 1.15-1.17's numeric cells, 1.13-1.14's numeric columns; the west half desert, the east half swamp.
+TEST(MinecraftSave, ColumnsTakeTheirBiomesTint) {
+  const TestSection ground{.y = 3, .palette = {"stone"}, .indices = {}};  // y 48..63
+  const TintClimate desert = tintClimate(2.0f, 0.0f), swamp = tintClimate(0.8f, 0.9f);
+  const auto expectHalves = [&](const std::filesystem::path& dir) {
+    const AnvilChunk c = loadOne(dir, {0, 0});
+    for (int z = 0; z < 16; ++z)
+      for (int x = 0; x < 16; ++x) ASSERT_EQ(c.chunk->tint(x, z), x < 8 ? desert : swamp) << x << "," << z;
+  };
+  {
+    NbtCompound nbt = chunkNbt(kV1_18_1, {0, 0}, {ground});
+    std::int64_t bits = 0;
+    for (int i = 0; i < 64; ++i) bits |= std::int64_t{(i & 3) >= 2} << i;
+    memberOf(nbt, "sections")
+        .list[0]
+        .compound.emplace_back(
+            "biomes", nbtCompound({{"palette", nbtList(nbt::TagType::String, {nbtString("minecraft:desert"),
+                                                                              nbtString("minecraft:swamp")})},
+                                   {"data", nbtLongs({bits})}}));
+    const auto dir = scratch("biomes118");
+    writeRegion(dir / "region", {{{0, 0}, encodeNbt(nbt)}});
+    expectHalves(dir);
+  }
+  for (const int cells : {1024, 256}) {
+    NbtCompound nbt = chunkNbt(kV1_16, {0, 0}, {ground});
+    std::vector<std::int64_t> ids(static_cast<std::size_t>(cells));
+    for (int i = 0; i < cells; ++i)
+      ids[static_cast<std::size_t>(i)] = ((cells == 256 ? i & 15 : (i & 3) << 2) >= 8) ? 6 : 2;
+    memberOf(nbt, "Level").compound.emplace_back("Biomes", nbtInts(ids));
+    const auto dir = scratch("biomes" + std::to_string(cells));
+    writeRegion(dir / "region", {{{0, 0}, encodeNbt(nbt)}});
+    expectHalves(dir);
+  }
+}
+
 // Proto-chunks are counted, not decoded; level.dat gives the version and the player.
 TEST(MinecraftSave, ProtoChunksAreLeftOutAndLevelDatRead) {
   const auto dir = scratch("proto");

@@ -210,10 +210,10 @@ TEST_F(ModelMesh, ModelFacesGetSmoothLightAndAmbientOcclusion) {
       verticesOf(mesh, Direction::West, [&](const PackedVertex& v) { return v.x32() == 3 * 32 + 16; });
   ASSERT_EQ(riser.size(), 4u);
   for (const PackedVertex& v : riser) EXPECT_EQ(v.ao(), v.y32() == 16 ? 2 : 3) << v.y32();
-  // The step, inside the stairs' cell, is lit from there: the stairs end the open sky column, so
-  // their cell has sky light 14 (from above, through their open top), the three others around each
-  // corner 15. Their average x4 is 59.
-  for (const PackedVertex& v : step) EXPECT_EQ(v.skyLight4(), 59);
+  // The step, inside the stairs' cell, is lit from there: the sky's full light comes down through the
+  // stairs' open top half and stops at their closed bottom, so their cell has sky light 15, as the
+  // three others around each corner. Their average x4 is 60.
+  for (const PackedVertex& v : step) EXPECT_EQ(v.skyLight4(), 60);
 
   // A bottom slab's west side, under a wall of stone one block up and to the west: the full face's
   // top corners there see two open cells of four (ao 1), its bottom corners all four (ao 3), so the

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "assets/block_model.h"
 #include "assets/texture_loader.h"
 #include "core/error.h"
 #include "core/paths.h"
@@ -519,6 +520,8 @@ TEST(DefaultPack, CoversEveryBlockWithNormalAndSpecularMaps) {
     for (const auto& face : blocks[id].textures) {
       // Textured by their models (model_mesh_test), or nothing to draw (cave_air).
       if (blocks[id].shape == BlockShape::Model || blocks[id].shape == BlockShape::None) continue;
+      // The stand-in for blocks nothing knows shows the missing texture on purpose.
+      if (face == std::vector<std::string>{kMissingTexture}) continue;
       const auto t = load(stack, face, problems);
       EXPECT_FALSE(t.missing) << blocks[id].name;
       EXPECT_TRUE(t.hasNormalMap && t.hasSpecularMap) << blocks[id].name;

@@ -277,8 +277,7 @@ TEST(Level, RoundTripsAndBadFilesNameTheKey) {
   EXPECT_EQ(error("{" + player + R"(,"weather":"rain"})"),
             (dir / "bad.json").string() +
                 ": weather: unknown key; expected one of \"version\", \"generator\", \"seed\", \"time\", "
-                "\"player\", "
-                "\"props\"");
+                "\"player\", \"props\", \"minecraft\"");
   EXPECT_NE(error("{" + player +
                   R"(,"props":[{"model":"a","position":[0,0,0],"rotation":[0,0,0],"scale":1,"tint":2}]})")
                 .find("bad.json: props[0].tint: unknown key"),

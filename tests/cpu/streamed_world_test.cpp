@@ -9,6 +9,7 @@
 #include <thread>
 
 #include "core/error.h"
+#include "support/streamed_world_support.h"
 #include "support/world_support.h"
 
 namespace terrasol {
@@ -16,17 +17,7 @@ namespace {
 
 using testing::defaultBlocks;
 using testing::scratchDir;
-
-// Streams until the chunks around the origin are in and meshed.
-void settle(StreamedWorld& w) {
-  for (int i = 0; i < 20000; ++i) {
-    w.update({0, 0}, std::chrono::steady_clock::now() + std::chrono::milliseconds(50));
-    const WorldCounts c = w.counts();
-    if (c.pending == 0 && c.meshDirty == 0 && c.meshInFlight == 0 && c.loaded > 0) return;
-    std::this_thread::sleep_for(std::chrono::milliseconds(1));
-  }
-  FAIL() << "the world never settled";
-}
+using testing::settle;
 
 TEST(StreamedWorldTest, EditsTheirLightTimeAndPlayerSurviveSavingAndReopening) {
   const auto dir = scratchDir("streamed_world");

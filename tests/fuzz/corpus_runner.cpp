@@ -1,11 +1,15 @@
 // Runs a fuzz target over seeds and deterministic mutations of them (truncations, byte flips, header
 // fields set to extremes), without libFuzzer, so every CI run exercises it. Texture seeds: the default
 // pack's PNGs and animations, and the palette PNGs of the third-party test data when present; model
-// seeds: the glTF samples there.
-//   terrasol-fuzz-corpus [--ext=.gltf,.glb] SEED_DIR...   (default --ext=.png)
+// seeds: the glTF samples there; chunk seeds (--ext=.mca): the first chunks of Minecraft region files,
+// each as its region holds it (the compression type byte, then the data).
+//   terrasol-fuzz-corpus [--ext=.gltf,.glb | --ext=.mca] SEED_DIR...   (default --ext=.png)
 
 #include <cstdint>
 #include <cstdio>
+#ifdef TERRASOL_INFLATE_CHUNK_SEEDS
+#include <zlib.h>
+#endif
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -18,6 +22,38 @@ namespace {
 std::string readFile(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
   return {std::istreambuf_iterator<char>(in), {}};
+}
+
+// A region file's first few chunks: each its type byte and data, as the sectors hold them.
+void addChunkSeeds(const std::string& region, std::vector<std::string>& seeds) {
+  const auto byte = [&](std::size_t i) {
+    return static_cast<std::uint32_t>(static_cast<unsigned char>(region[i]));
+  };
+  int taken = 0;
+  for (std::size_t slot = 0; slot < 1024 && taken < 4 && region.size() >= 8192; ++slot) {
+    const std::uint32_t location = byte(slot * 4) << 24 | byte(slot * 4 + 1) << 16 | byte(slot * 4 + 2) << 8;
+    const std::size_t offset = static_cast<std::size_t>(location >> 8) * 4096;
+    if (offset < 8192 || offset + 5 > region.size()) continue;
+    const std::uint32_t length =
+        byte(offset) << 24 | byte(offset + 1) << 16 | byte(offset + 2) << 8 | byte(offset + 3);
+    if (length == 0 || offset + 4 + length > region.size()) continue;
+    seeds.push_back(region.substr(offset + 4, length));
+    ++taken;
+#ifdef TERRASOL_INFLATE_CHUNK_SEEDS
+    // The same chunk uncompressed (type 3), so mutations reach the NBT parser and the decoder.
+    if (seeds.back()[0] == 2) {
+      std::string raw(1u << 20, '\0');
+      uLongf rawSize = raw.size();
+      const std::string& packed = seeds.back();
+      if (uncompress(reinterpret_cast<Bytef*>(raw.data()), &rawSize,
+                     reinterpret_cast<const Bytef*>(packed.data() + 1), packed.size() - 1) == Z_OK) {
+        std::string plain(1, '\x03');
+        plain.append(raw, 0, rawSize);
+        seeds.push_back(std::move(plain));
+      }
+    }
+#endif
+  }
 }
 
 void run(const std::string& input, long& count) {
@@ -45,6 +81,10 @@ int main(int argc, char** argv) {
           seeds.size() > 60)
         continue;
       std::string seed = readFile(path);
+      if (ext == ".mca") {
+        addChunkSeeds(seed, seeds);
+        continue;
+      }
       const auto meta = path.string() + ".mcmeta";
       if (std::filesystem::exists(meta)) seed += "\n--mcmeta--\n" + readFile(meta);
       seeds.push_back(std::move(seed));

@@ -35,17 +35,22 @@ ReferenceLight::ReferenceLight(const World& world) {
           state_[index(p)] = c.get(x, y, z);
           block_[index(p)] = blocks.emissions()[state];
         }
-    // Sky: 15 straight down until the first block with opacity or a light side up or down; that one
-    // is lit from above.
+    // Sky: 15 straight down into every cell light enters from above (no opacity, top open); a cell
+    // whose bottom is closed (a snow layer) is lit so and stops it. The top layer, when light cannot
+    // enter it so, is lit through its own opacity.
+    constexpr std::uint8_t kDownSide = 0b0100, kUpSide = 0b1000;
     for (int z = 0; z < 16; ++z)
       for (int x = 0; x < 16; ++x) {
         const int wx = c.pos().minBlockX() + x, wz = c.pos().minBlockZ() + z;
-        int y = kMaxY - 1;
-        const auto open = [&](std::size_t i) { return opacity_[i] == 0 && (sides_[i] & 0b1100) == 0; };
-        for (; y >= kMinY && open(index({wx, y, wz})); --y) sky_[index({wx, y, wz})] = 15;
-        if (y == kMaxY - 1)
-          sky_[index({wx, y, wz})] =
-              static_cast<std::uint8_t>(15 - std::max<int>(1, opacity_[index({wx, y, wz})]));
+        for (int y = kMaxY - 1; y >= kMinY; --y) {
+          const std::size_t i = index({wx, y, wz});
+          if (opacity_[i] != 0 || (sides_[i] & kUpSide)) {
+            if (y == kMaxY - 1) sky_[i] = static_cast<std::uint8_t>(15 - std::max<int>(1, opacity_[i]));
+            break;
+          }
+          sky_[i] = 15;
+          if (sides_[i] & kDownSide) break;
+        }
       }
   });
   spread(block_);

@@ -1,12 +1,18 @@
-// terrasol-map: renders a generator's output to PNG, to look at terrain while tuning it.
+// terrasol-map: renders a generator's output, or a Minecraft save, to PNG from above.
 //   terrasol-map [--seed N] [--generator terrain|flat|void] [--center X,Z] [--size BLOCKS] --out FILE
+//   --minecraft PATH  a Minecraft Java save instead of a generator (read-only); without --center, the
+//                     middle of where its player starts
 //   --slice   draw a vertical cut along x at the centre's z (y from -64 at the bottom to 320 at the top)
 //   --biomes  draw the terrain generator's biomes (one colour each, printed with their share)
-// Chunks are generated on all cores; the top view shades the highest block by its height.
+// Chunks are made on all cores. The top view colours each column by its highest block seen from
+// above (its top texture's mean colour in the default pack, tinted), brighter where it stands higher
+// than its northern neighbour and darker where lower, as Minecraft's maps shade.
 
 #include <charconv>
+#include <cmath>
 #include <cstdio>
 #include <future>
+#include <glm/common.hpp>
 #include <map>
 #include <string>
 #include <thread>
@@ -15,6 +21,8 @@
 #include "core/error.h"
 #include "core/paths.h"
 #include "core/tool_main.h"
+#include "minecraft/minecraft_source.h"
+#include "scene/block_colours.h"
 #include "world/generator.h"
 #include "world/terrain_generator.h"
 
@@ -23,6 +31,8 @@ namespace {
 
 struct MapOptions {
   GeneratorSettings generator;
+  std::filesystem::path minecraft;
+  bool centred = false;
   int centerX = 0, centerZ = 0, size = 512;
   bool slice = false, biomes = false;
   std::string out;
@@ -56,33 +66,25 @@ MapOptions parse(int argc, char** argv) {
       o.biomes = true;
     else if (arg == "--out")
       o.out = value();
+    else if (arg == "--minecraft")
+      o.minecraft = value();
     else if (arg == "--center") {
       const std::string v = value();
       const auto comma = v.find(',');
       if (comma == std::string::npos) throw Error(arg + ": expected X,Z");
       o.centerX = static_cast<int>(parseNumber(arg, v.substr(0, comma)));
       o.centerZ = static_cast<int>(parseNumber(arg, v.substr(comma + 1)));
+      o.centred = true;
     } else
       throw Error("unknown option '" + arg + "'");
   }
   if (o.out.empty() || o.size < 16 || o.size > 8192) {
-    throw Error("usage: terrasol-map [--seed N] [--size 16..8192] [--slice | --biomes] --out FILE");
+    throw Error(
+        "usage: terrasol-map [--seed N | --minecraft PATH] [--size 16..8192] [--slice | --biomes] --out "
+        "FILE");
   }
   return o;
 }
-
-const std::map<std::string, std::array<int, 3>> kColours = {
-    {"stone", {125, 125, 125}},      {"dirt", {134, 96, 67}},         {"grass_block", {95, 159, 53}},
-    {"sand", {219, 207, 163}},       {"gravel", {136, 126, 126}},     {"bedrock", {60, 60, 60}},
-    {"water", {52, 95, 218}},        {"lava", {230, 100, 20}},        {"snow_block", {245, 250, 250}},
-    {"oak_log", {110, 85, 50}},      {"oak_leaves", {50, 120, 30}},   {"short_grass", {110, 170, 60}},
-    {"dandelion", {240, 220, 40}},   {"poppy", {220, 30, 30}},        {"coal_ore", {50, 50, 50}},
-    {"iron_ore", {200, 160, 130}},   {"gold_ore", {250, 220, 80}},    {"glowstone", {255, 230, 140}},
-    {"sandstone", {216, 203, 155}},  {"ice", {160, 190, 240}},        {"snow", {245, 250, 250}},
-    {"birch_log", {216, 215, 210}},  {"birch_leaves", {90, 140, 60}}, {"spruce_log", {58, 37, 16}},
-    {"spruce_leaves", {40, 90, 50}}, {"acacia_log", {103, 96, 86}},   {"acacia_leaves", {90, 130, 40}},
-    {"cactus", {80, 130, 40}},       {"dead_bush", {148, 100, 40}},   {"fern", {80, 140, 50}},
-};
 
 // A colour per biome (world/biomes.h order).
 constexpr std::array<std::array<std::uint8_t, 3>, kBiomeCount> kBiomeColours = {{
@@ -120,19 +122,44 @@ int biomeMap(const MapOptions& o, const BlockRegistry& blocks) {
   return 0;
 }
 
+// Each state's colour from above (scene/block_colours.h, the default pack) as bytes; alpha 0 for what
+// the view looks through (air, plants that cover little of their cell).
+std::vector<std::array<std::uint8_t, 4>> paletteOf(const BlockRegistry& blocks) {
+  PackStack packs;
+  packs.push(ResourcePack::open(resourcePackDir() / "default"));
+  std::vector<PackProblem> problems;
+  const std::vector<glm::vec4> colours =
+      blockTopColours(blocks, buildBlockAtlas(blocks, packs), loadColormaps(packs, problems));
+  std::vector<std::array<std::uint8_t, 4>> palette(blocks.size());
+  for (std::size_t i = 0; i < colours.size(); ++i) {
+    const glm::vec4 c = glm::clamp(colours[i], 0.0f, 1.0f) * 255.0f + 0.5f;
+    const bool seen = colours[i].a >= 0.3f && blocks[static_cast<BlockId>(i)].shape != BlockShape::Cross;
+    palette[i] = {static_cast<std::uint8_t>(c.r), static_cast<std::uint8_t>(c.g),
+                  static_cast<std::uint8_t>(c.b), static_cast<std::uint8_t>(seen ? 255 : 0)};
+  }
+  return palette;
+}
+
 int run(int argc, char** argv) {
   const MapOptions o = parse(argc, argv);
   const BlockRegistry blocks = BlockRegistry::load(resourcePackDir() / "default" / "blocks.json");
   if (o.biomes) return biomeMap(o, blocks);
-  const auto generator = makeGenerator(o.generator, blocks);
-  std::vector<std::array<std::uint8_t, 3>> palette(blocks.size(), {255, 0, 255});
-  for (BlockId id = 0; id < blocks.size(); ++id) {
-    if (const auto it = kColours.find(blocks[id].name); it != kColours.end()) {
-      palette[id] = {static_cast<std::uint8_t>(it->second[0]), static_cast<std::uint8_t>(it->second[1]),
-                     static_cast<std::uint8_t>(it->second[2])};
+  std::unique_ptr<ChunkGenerator> generator;
+  MapOptions at = o;
+  if (!o.minecraft.empty()) {
+    auto save = std::make_unique<MinecraftChunkSource>(o.minecraft, blocks);
+    for (const std::string& p : save->problems()) std::printf("problem: %s\n", p.c_str());
+    if (!o.centred) {
+      const glm::dvec3 start = save->startPosition();
+      at.centerX = static_cast<int>(std::floor(start.x));
+      at.centerZ = static_cast<int>(std::floor(start.z));
     }
+    generator = std::move(save);
+  } else {
+    generator = makeGenerator(o.generator, blocks);
   }
-  const int x0 = o.centerX - o.size / 2, z0 = o.slice ? o.centerZ : o.centerZ - o.size / 2;
+  const std::vector<std::array<std::uint8_t, 4>> palette = paletteOf(blocks);
+  const int x0 = at.centerX - o.size / 2, z0 = o.slice ? at.centerZ : at.centerZ - o.size / 2;
   const int chunksX = (o.size + 15) / 16 + 1, chunksZ = o.slice ? 1 : chunksX;
   // Generate chunk rows in parallel; each task returns its finished chunks.
   std::vector<std::future<std::vector<std::unique_ptr<Chunk>>>> rows;
@@ -154,22 +181,29 @@ int run(int argc, char** argv) {
     return c->get(localOf(x), y, localOf(z));
   };
 
+  // The highest block seen from above in a column, and its y (kMinY - 1 for none).
+  const auto topAt = [&](int x, int z) {
+    for (int y = kMaxY - 1; y >= kMinY; --y) {
+      const BlockId id = blockAt(x, y, z);
+      if (palette[id][3]) return std::pair{id, y};
+    }
+    return std::pair{kAir, kMinY - 1};
+  };
   Image image(o.size, o.slice ? kMaxY - kMinY : o.size);
   for (int py = 0; py < image.height; ++py)
     for (int px = 0; px < image.width; ++px) {
-      std::array<std::uint8_t, 3> c{0, 0, 0};
+      std::array<std::uint8_t, 4> c{0, 0, 0, 255};
       if (o.slice) {
         const BlockId id = blockAt(x0 + px, kMaxY - 1 - py, z0);
-        c = id == kAir ? std::array<std::uint8_t, 3>{170, 200, 255} : palette[id];
+        c = palette[id][3] ? palette[id] : std::array<std::uint8_t, 4>{170, 200, 255, 255};
       } else {
-        for (int y = kMaxY - 1; y >= kMinY; --y) {
-          const BlockId id = blockAt(x0 + px, y, z0 + py);
-          if (id == kAir) continue;
-          const double shade = 0.55 + 0.45 * (y - kMinY) / 200.0;
-          for (int k = 0; k < 3; ++k)
-            c[k] = static_cast<std::uint8_t>(std::min(255.0, palette[id][k] * shade));
-          break;
-        }
+        const auto [id, y] = topAt(x0 + px, z0 + py);
+        // The northern neighbour (the row above), inside the drawn area.
+        const int north = py > 0 ? topAt(x0 + px, z0 + py - 1).second : y;
+        const double shade = y < north ? 0.8 : y > north ? 1.1 : 0.95;
+        for (int k = 0; k < 3; ++k)
+          c[static_cast<std::size_t>(k)] =
+              static_cast<std::uint8_t>(std::min(255.0, palette[id][static_cast<std::size_t>(k)] * shade));
       }
       std::uint8_t* p = image.pixel(px, py);
       p[0] = c[0], p[1] = c[1], p[2] = c[2], p[3] = 255;

@@ -1,6 +1,11 @@
 // terrasol-world: what Terrasol reads of a Minecraft Java save (read-only; nothing is written to it).
 //   terrasol-world info PATH [--json FILE]   the version, regions and chunks read, chunks by status,
 //                                            block states, and cells whose block nothing knows
+//   terrasol-world light PATH [--json FILE] [--differences FILE]
+//                                            Terrasol's sky and block light against the save's own,
+//                                            over full chunks whose eight neighbours are full: cells
+//                                            compared, the share equal per channel, a histogram of
+//                                            differences; --differences lists the first differing cells
 // PATH is a save folder (level.dat and region/), a folder holding region/, or a bare region folder.
 
 #include <chrono>
@@ -14,13 +19,17 @@
 #include "core/error.h"
 #include "core/paths.h"
 #include "core/tool_main.h"
+#include "light_compare.h"
 #include "minecraft/minecraft_save.h"
 
 namespace terrasol {
 namespace {
 
 int usage() {
-  std::fputs("usage: terrasol-world info PATH [--json FILE]\n", stderr);
+  std::fputs(
+      "usage: terrasol-world info PATH [--json FILE]\n"
+      "       terrasol-world light PATH [--json FILE] [--differences FILE]\n",
+      stderr);
   return 2;
 }
 
@@ -80,6 +89,8 @@ int info(const std::filesystem::path& path, const std::filesystem::path& jsonFil
       "save %s: %s\n", path.string().c_str(),
       save.level().versionName.empty() ? "no level.dat" : ("Minecraft " + save.level().versionName).c_str());
   if (dataVersion) std::printf("data version %d\n", dataVersion);
+  if (const auto& p = save.level().player) std::printf("player at %.1f %.1f %.1f\n", p->x, p->y, p->z);
+  if (const auto& s = save.level().spawn) std::printf("spawn at %d %d %d\n", s->x, s->y, s->z);
   std::printf("regions in %s\n", save.regionDir().string().c_str());
   for (const auto& [status, n] : s.byStatus) std::printf("status %s: %zu chunks\n", status.c_str(), n);
   std::printf(
@@ -106,14 +117,60 @@ int info(const std::filesystem::path& path, const std::filesystem::path& jsonFil
   return 0;
 }
 
+nlohmann::json channelJson(const ChannelComparison& c, std::uint64_t cells) {
+  nlohmann::json histogram = nlohmann::json::object();
+  for (int d = -kMaxLight; d <= kMaxLight; ++d)
+    if (const auto n = c.differences[static_cast<std::size_t>(d + kMaxLight)])
+      histogram[std::to_string(d)] = n;
+  return {{"equal_pct", c.equalPercent(cells)}, {"equal", c.equal}, {"differences", histogram}};
+}
+
+void printChannel(const char* name, const ChannelComparison& c, std::uint64_t cells) {
+  std::printf("%s light: %.4f %% equal", name, c.equalPercent(cells));
+  for (int d = -kMaxLight; d <= kMaxLight; ++d)
+    if (const auto n = c.differences[static_cast<std::size_t>(d + kMaxLight)]; n && d != 0)
+      std::printf(", %+d: %llu", d, static_cast<unsigned long long>(n));
+  std::printf("\n");
+}
+
+int light(const std::filesystem::path& path, const std::filesystem::path& jsonFile,
+          const std::filesystem::path& differencesFile) {
+  const BlockRegistry blocks = BlockRegistry::load(resourcePackDir() / "default" / "blocks.json");
+  const auto start = std::chrono::steady_clock::now();
+  const LightComparison c = compareLight(path, blocks);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::printf("compared %llu cells in %llu chunks (%.1f s)\n", static_cast<unsigned long long>(c.cells),
+              static_cast<unsigned long long>(c.chunks), seconds);
+  printChannel("sky", c.sky, c.cells);
+  printChannel("block", c.block, c.cells);
+  if (!differencesFile.empty()) {
+    std::string text;
+    for (const LightDifference& d : c.samples)
+      text += std::string(d.sky ? "sky" : "block") + " " + std::to_string(d.pos.x) + " " +
+              std::to_string(d.pos.y) + " " + std::to_string(d.pos.z) + ": terrasol " +
+              std::to_string(d.ours) + ", minecraft " + std::to_string(d.theirs) + "\n";
+    writeFileAtomically(differencesFile, text);
+  }
+  if (!jsonFile.empty()) {
+    const nlohmann::json j = {{"compared_cells", c.cells},
+                              {"compared_chunks", c.chunks},
+                              {"sky", channelJson(c.sky, c.cells)},
+                              {"block", channelJson(c.block, c.cells)}};
+    writeFileAtomically(jsonFile, j.dump(2) + "\n");
+  }
+  return 0;
+}
+
 int run(int argc, char** argv) {
   if (argc < 3) return usage();
   const std::string command = argv[1];
-  std::filesystem::path path, json;
+  std::filesystem::path path, json, differences;
   for (int i = 2; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg == "--json" && i + 1 < argc) {
       json = argv[++i];
+    } else if (arg == "--differences" && i + 1 < argc) {
+      differences = argv[++i];
     } else if (path.empty()) {
       path = arg;
     } else {
@@ -121,6 +178,7 @@ int run(int argc, char** argv) {
     }
   }
   if (command == "info" && !path.empty()) return info(path, json);
+  if (command == "light" && !path.empty()) return light(path, json, differences);
   return usage();
 }
 

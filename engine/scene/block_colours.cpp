@@ -1,0 +1,73 @@
+#include "scene/block_colours.h"
+
+#include "assets/tints.h"
+
+namespace terrasol {
+namespace {
+
+constexpr int kUp = static_cast<int>(Direction::Up);
+
+// A texture's mean colour over its opaque texels, and how many of them are opaque.
+glm::vec4 meanOf(const Atlas& atlas, int texture) {
+  const AtlasTexture& t = atlas.textures[static_cast<std::size_t>(texture)];
+  const Image& image = atlas.albedo[0];
+  const int pad = atlas.tileSize / 2;
+  const int x0 = (t.firstTile % atlas.columns) * atlas.slotSize + pad;
+  const int y0 = (t.firstTile / atlas.columns) * atlas.slotSize + pad;
+  glm::vec3 sum(0.0f);
+  int opaque = 0;
+  for (int y = 0; y < atlas.tileSize; ++y)
+    for (int x = 0; x < atlas.tileSize; ++x) {
+      const std::uint8_t* p = image.pixel(x0 + x, y0 + y);
+      if (p[3] < 128) continue;
+      sum += glm::vec3(p[0], p[1], p[2]) / 255.0f;
+      ++opaque;
+    }
+  const float texels = static_cast<float>(atlas.tileSize * atlas.tileSize);
+  return opaque ? glm::vec4(sum / static_cast<float>(opaque), static_cast<float>(opaque) / texels)
+                : glm::vec4(0.0f);
+}
+
+// The quad a model block shows from above: its highest up-facing one, else its first.
+const ModelQuad* topQuad(const std::vector<ModelQuad>& quads) {
+  const ModelQuad* best = nullptr;
+  int bestY = -1;
+  for (const ModelQuad& q : quads) {
+    if (q.face != kUp) continue;
+    if (q.corners32[0][1] > bestY) best = &q, bestY = q.corners32[0][1];
+  }
+  return best ? best : quads.empty() ? nullptr : &quads.front();
+}
+
+}  // namespace
+
+std::vector<glm::vec4> blockTopColours(const BlockRegistry& blocks, const BlockAtlas& atlas,
+                                       const BiomeColormaps& colormaps) {
+  std::vector<glm::vec4> colours(blocks.size(), glm::vec4(0.0f));
+  std::vector<glm::vec4> means(atlas.atlas.textures.size(), glm::vec4(-1.0f));
+  const auto mean = [&](int texture) {
+    glm::vec4& m = means[static_cast<std::size_t>(texture)];
+    if (m.a < 0.0f) m = meanOf(atlas.atlas, texture);
+    return m;
+  };
+  for (BlockId id = 1; id < blocks.size(); ++id) {
+    const BlockType& type = blocks[id];
+    if (type.shape == BlockShape::None) continue;
+    glm::vec4 c(0.0f);
+    bool tinted = type.tint != Tint::None;
+    if (type.shape == BlockShape::Model) {
+      const std::vector<ModelQuad>& quads = atlas.modelQuads[atlas.sameAs[id]];
+      const ModelQuad* q = topQuad(quads);
+      if (!q) continue;
+      c = mean(q->texture);
+      tinted = tinted && q->tinted;
+    } else {
+      c = mean(atlas.textureOf(id, kUp));
+    }
+    if (tinted) c = glm::vec4(glm::vec3(c) * tintColour(colormaps, type.tint), c.a);
+    colours[id] = c;
+  }
+  return colours;
+}
+
+}  // namespace terrasol
