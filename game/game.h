@@ -52,6 +52,7 @@ struct FrameState {
   bool hidden = false;                    // the last frame had no pixels to draw
   bool quit = false, screenshot = false;  // asked for by the menu, a key or the script
   DynamicResolution resolution;           // the render scale while the settings hold a target fps
+  bool readySaid = false;                 // the log said the world round the player was ready
 };
 
 class Game {
@@ -86,6 +87,7 @@ class Game {
   // The pixels there are to draw: none while minimised (GlfwWindow::minimised), whatever X11 says.
   glm::ivec2 drawableSize() const;
 
+  Clock::time_point started_ = Clock::now();  // before the blocks, the renderer and the world
   GlfwWindow& window_;
   GameOptions options_;
   SettingsFile settings_;

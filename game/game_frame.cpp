@@ -53,6 +53,12 @@ FrameTimes Game::frameStep(double dt, const FrameStep& step) {
   window_.pollEvents();
   if (step.play) playInput(dt);
   t.uploads = world_.stream(t.start + kWorldBudget);
+  if (!frames_.readySaid && world_.ready()) {
+    frames_.readySaid = true;
+    logInfo("the world round the player is loaded, lit and meshed, " +
+            std::to_string(std::chrono::duration<double>(Clock::now() - started_).count()).substr(0, 4) +
+            " s after the game began loading its blocks");
+  }
   t.streamed = Clock::now();
   const glm::ivec2 size = drawableSize();
   if (const bool hidden = size.x <= 0 || size.y <= 0; hidden != frames_.hidden) {
