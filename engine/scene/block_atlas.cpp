@@ -243,7 +243,7 @@ std::vector<std::vector<std::string>> atlasTextureNames(const BlockRegistry& blo
   std::set<std::vector<std::string>> names;
   for (BlockId id = 0; id < blocks.size(); ++id) {
     if (baked.sameAs[id] != id) continue;  // an earlier state's quads, its block's faces
-    for (const auto& face : blocks[id].textures) {
+    for (const auto& face : blocks.faceTextures(id)) {
       if (!face.empty()) names.insert(withOlderNames(face));
     }
     for (const BakedQuad& q : baked.quads[id]) names.insert(candidatesOf(q.texture));
@@ -276,8 +276,9 @@ BlockAtlas buildBlockAtlas(const BlockRegistry& blocks, const PackStack& packs, 
   result.modelQuads.resize(blocks.size());
   result.modelChoices.resize(blocks.size());
   for (BlockId id = 0; id < blocks.size(); ++id) {
+    const FaceTextures faces = blocks.faceTextures(id);
     for (int f = 0; f < 6; ++f) {
-      const auto& face = blocks[id].textures[static_cast<std::size_t>(f)];
+      const auto& face = faces[static_cast<std::size_t>(f)];
       result.faceTextures[id][static_cast<std::size_t>(f)] =
           face.empty() ? 0 : index.at(withOlderNames(face));
     }
@@ -333,7 +334,7 @@ TextureCoverage textureCoverage(const BlockRegistry& blocks, const PackStack& pa
   const BlockModelBake baked =
       bakeBlockModels(blocks, packs);  // its problems: inspect and the atlas report them
   for (BlockId id = 0; id < blocks.size(); ++id) {
-    for (const auto& face : blocks[id].textures) use(withOlderNames(face));
+    for (const auto& face : blocks.faceTextures(id)) use(withOlderNames(face));
     // A state drawn as an earlier one has empty lists.
     for (const BakedQuad& q : baked.quads[id]) use(candidatesOf(q.texture));
     for (const BakedChoice& c : baked.choices[id])

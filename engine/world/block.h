@@ -110,6 +110,13 @@ struct BlockType {
   std::optional<PropertyValue> passableWhen;
   Tint tint = Tint::None;
   FaceTextures textures;
+  // Faces some states draw otherwise ("textures_when": a snowy grass block's sides); a face left
+  // empty keeps `textures`' (BlockRegistry::faceTextures).
+  struct TexturesWhen {
+    PropertyValue when;
+    FaceTextures textures;
+  };
+  std::vector<TexturesWhen> texturesWhen;
 
   // A full opaque cube: hides neighbouring faces and is solid to walk on.
   bool isOpaqueCube() const { return shape == BlockShape::Cube && layer == RenderLayer::Opaque; }

@@ -25,7 +25,7 @@ std::vector<std::string> textureCandidates(const json& value, const std::string&
 }
 
 // "all", then "side"/"end", then "top"/"bottom", then single faces: later keys refine earlier ones.
-FaceTextures parseTextures(const json& textures, const std::string& key) {
+FaceTextures parseTextures(const json& textures, const std::string& key, bool partial = false) {
   checkObject(textures, key,
               {"all", "side", "end", "top", "bottom", "west", "east", "down", "up", "north", "south"});
   static const std::vector<std::pair<const char*, std::vector<int>>> kKeys = {
@@ -48,7 +48,7 @@ FaceTextures parseTextures(const json& textures, const std::string& key) {
     const auto names = textureCandidates(*value, member(key, name));
     for (int i : indices) faces[static_cast<std::size_t>(i)] = names;
   }
-  for (std::size_t i = 0; i < faces.size(); ++i) {
+  for (std::size_t i = 0; i < faces.size() && !partial; ++i) {
     if (faces[i].empty()) fail(key, "leaves a face without a texture (give \"all\" or every face)");
   }
   return faces;
@@ -161,6 +161,20 @@ void parseLooks(const json& block, BlockType& type, const std::string& at) {
   } else if (field(block, "textures")) {
     fail(member(at, "textures"), "a model block takes its textures from its models");
   }
+  if (const json* list = field(block, "textures_when")) {
+    const std::string key = member(at, "textures_when");
+    if (type.shape == BlockShape::Model) fail(key, "a model block takes its textures from its models");
+    if (!list->is_array()) expected(key, "an array of {\"when\", \"textures\"}", *list);
+    for (std::size_t i = 0; i < list->size(); ++i) {
+      const json& item = (*list)[i];
+      const std::string k = element(key, i);
+      if (!item.is_object()) expected(k, "an object", item);
+      checkObject(item, k, {"when", "textures"});
+      type.texturesWhen.push_back(
+          {parseCondition(required(item, k, "when"), member(k, "when"), type),
+           parseTextures(required(item, k, "textures"), member(k, "textures"), true)});
+    }
+  }
 }
 
 }  // namespace
@@ -175,10 +189,10 @@ BlockType parsePackBlock(const json& block, const std::string& where) {
   BlockType type;
   type.name = nonEmptyString(required(block, where, "name"), member(where, "name"));
   const std::string at = join({where, " (", type.name, ")"});
-  checkObject(
-      block, at,
-      {"name", "shape", "layer", "textures", "tint", "opacity", "emission", "shape_occludes_light",
-       "properties", "default", "placement", "wall_variant", "connects", "opens", "collision", "placeable"});
+  checkObject(block, at,
+              {"name", "shape", "layer", "textures", "tint", "opacity", "emission", "shape_occludes_light",
+               "properties", "default", "placement", "wall_variant", "connects", "opens", "collision",
+               "placeable", "textures_when"});
   type.shape = BlockShape::Cube;
   type.inBlocksJson = true;
   parseLooks(block, type, at);
@@ -201,9 +215,9 @@ void parseLooksAndRules(const json& block, BlockType& type, const std::string& w
        {"properties", "default", "opacity", "emission", "shape_occludes_light", "collision"}) {
     if (field(block, fact)) fail(member(at, fact), "is Minecraft's, given by its block table: leave it out");
   }
-  checkObject(
-      block, at,
-      {"name", "shape", "layer", "textures", "tint", "placement", "wall_variant", "connects", "opens"});
+  checkObject(block, at,
+              {"name", "shape", "layer", "textures", "textures_when", "tint", "placement", "wall_variant",
+               "connects", "opens"});
   type.shape = BlockShape::Cube;
   type.inBlocksJson = true;
   parseLooks(block, type, at);

@@ -259,6 +259,20 @@ std::string BlockRegistry::stateName(BlockId state) const {
   return name + "]";
 }
 
+FaceTextures BlockRegistry::faceTextures(BlockId state) const {
+  const BlockType& type = (*this)[state];
+  FaceTextures faces = type.textures;
+  if (type.texturesWhen.empty()) return faces;
+  const StateValues values = stateValues(state);
+  for (const BlockType::TexturesWhen& w : type.texturesWhen) {
+    const auto v = values.find(w.when.property);
+    if (v == values.end() || v->second != w.when.value) continue;
+    for (std::size_t f = 0; f < faces.size(); ++f)
+      if (!w.textures[f].empty()) faces[f] = w.textures[f];
+  }
+  return faces;
+}
+
 StateValues BlockRegistry::stateValues(BlockId state) const {
   const BlockType& type = (*this)[state];
   StateValues values;

@@ -51,6 +51,8 @@ class BlockRegistry {
   // "oak_log[axis=x]" (every property, by name); a block without properties is just its name.
   std::string stateName(BlockId state) const;
   StateValues stateValues(BlockId state) const;
+  // The textures of a state's faces: its block's, with the "textures_when" that hold for it over them.
+  FaceTextures faceTextures(BlockId state) const;
   // The state with `property` set to `value`; nothing when its block has no such property or value.
   std::optional<BlockId> with(BlockId state, std::string_view property, std::string_view value) const;
 

@@ -267,3 +267,29 @@ TEST(BlockRegistry, SavesKeepStatesByNameAcrossRenumbering) {
 
 }  // namespace
 }  // namespace terrasol
+
+namespace terrasol {
+namespace {
+
+// Some states draw other faces: a snowy grass block's sides are snow over dirt; the other faces and
+// the other states keep the block's. A bad condition is named with its key path.
+TEST(BlockRegistry, StatesMayDrawOtherFaces) {
+  const BlockRegistry& blocks = testing::defaultBlocks();
+  const auto side = static_cast<std::size_t>(Direction::North), top = static_cast<std::size_t>(Direction::Up);
+  EXPECT_EQ(blocks.faceTextures(blocks.id("grass_block[snowy=true]"))[side],
+            std::vector<std::string>{"grass_block_snow"});
+  EXPECT_EQ(blocks.faceTextures(blocks.id("grass_block[snowy=true]"))[top],
+            std::vector<std::string>{"grass_block_top"});
+  EXPECT_EQ(blocks.faceTextures(blocks.id("grass_block[snowy=false]"))[side],
+            std::vector<std::string>{"grass_block_side"});
+  const std::string bad = testing::errorOf([] {
+    BlockRegistry::fromJson(R"({"blocks": [{"name": "air", "shape": "none"},
+      {"name": "lamp", "properties": {"lit": ["false", "true"]}, "textures": {"all": "lamp"},
+       "textures_when": [{"when": "lit=maybe", "textures": {"all": "lamp_on"}}]}]})",
+                            "test/blocks.json");
+  });
+  EXPECT_NE(bad.find("textures_when[0].when"), std::string::npos) << bad;
+}
+
+}  // namespace
+}  // namespace terrasol

@@ -517,7 +517,7 @@ TEST(DefaultPack, CoversEveryBlockWithNormalAndSpecularMaps) {
   const BlockRegistry& blocks = testing::defaultBlocks();
   std::vector<PackProblem> problems;
   for (BlockId id = 1; id < blocks.size(); ++id)
-    for (const auto& face : blocks[id].textures) {
+    for (const auto& face : blocks.faceTextures(id)) {
       // Textured by their models (model_mesh_test), or nothing to draw (cave_air).
       if (blocks[id].shape == BlockShape::Model || blocks[id].shape == BlockShape::None) continue;
       // The stand-in for blocks nothing knows shows the missing texture on purpose.

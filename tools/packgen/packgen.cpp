@@ -92,6 +92,17 @@ std::vector<GeneratedTexture> generateDefaultTextures() {
     }
     return dirt(x, y);
   }));
+  // Under snow (snowy=true): dirt with a deeper fringe of snow hanging over its top.
+  out.push_back(still("grass_block_snow", [](int x, int y) {
+    const int fringe = 4 + static_cast<int>(hash01(143, x, 0) * 3);
+    if (y < fringe) {
+      Texel t = rock(144, x, y, rgb(245, 250, 250), 0.03f);
+      t.smoothness = 70;
+      t.porosity = 160;
+      return t;
+    }
+    return dirt(x, y);
+  }));
   out.push_back(still("ice", [](int x, int y) {
     Texel t = rock(151, x, y, rgb(160, 190, 240), 0.08f);
     t.alpha = 0.78f;
