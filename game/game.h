@@ -78,6 +78,8 @@ class Game {
   void runCommand(const ScriptEvent& command);
   void handleInput(const FrameInput& in, double dt);
   void draw(bool timed);
+  // The loading screen, until the world round the player is first ready.
+  void drawLoading(glm::ivec2 size);
   void drawHud();
   void applyMenu(const MenuResult& r);
   void reloadPacks();

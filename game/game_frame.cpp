@@ -17,7 +17,8 @@
 namespace terrasol {
 namespace {
 
-constexpr auto kWorldBudget = std::chrono::milliseconds(4);  // main-thread light work per frame
+constexpr auto kWorldBudget = std::chrono::milliseconds(4);     // main-thread light work per frame
+constexpr auto kLoadingBudget = std::chrono::milliseconds(30);  // and while the loading screen shows
 constexpr double kAutosaveSeconds = 300.0;
 
 }  // namespace
@@ -52,7 +53,11 @@ FrameTimes Game::frameStep(double dt, const FrameStep& step) {
   t.start = Clock::now();
   window_.pollEvents();
   if (step.play) playInput(dt);
-  t.uploads = world_.stream(t.start + kWorldBudget);
+  // Until the world round the player is first ready the game shows a loading screen: no world is
+  // drawn (on a software renderer the half-built world's frames took most of the load time), and
+  // the main thread gives light the time a frame would have taken.
+  const bool loading = !frames_.readySaid;
+  t.uploads = world_.stream(t.start + (loading ? kLoadingBudget : kWorldBudget));
   if (!frames_.readySaid && world_.ready()) {
     frames_.readySaid = true;
     logInfo("the world round the player is loaded, lit and meshed, " +
@@ -67,7 +72,10 @@ FrameTimes Game::frameStep(double dt, const FrameStep& step) {
                    : "window restored: drawing again");
   }
   ++(frames_.hidden ? frames_.counts.minimised : frames_.counts.drawn);
-  if (!frames_.hidden) {
+  if (!frames_.hidden && loading) {
+    drawLoading(size);
+    t.drawn = Clock::now();
+  } else if (!frames_.hidden) {
     draw(step.passTimes || overlay_.shown());
     t.drawn = Clock::now();
     if (step.hud) drawHud();
@@ -128,6 +136,19 @@ void Game::handleInput(const FrameInput& in, double dt) {
   if (in.wasPressed(Action::TimeSet)) world_.level().time = TimeControls::nextPreset(world_.level().time);
   if (in.wasPressed(Action::Jump)) world_.jumpPressed(frames_.clock);
   interaction_.update(in, dt, world_);
+}
+
+void Game::drawLoading(glm::ivec2 size) {
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glViewport(0, 0, size.x, size.y);
+  glClearColor(0.08f, 0.09f, 0.11f, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  const WorldCounts c = world_.streamed().counts();
+  ui_.begin();
+  ui_.loading("Loading the world: " + std::to_string(c.loaded) + " chunks, " + std::to_string(c.pending) +
+              " to come");
+  ui_.notice(frames_.clock);
+  ui_.end();
 }
 
 void Game::draw(bool timed) {

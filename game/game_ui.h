@@ -45,6 +45,7 @@ class GameUi final : public ScreenKeys {
     notice_ = std::move(text);
     noticeUntil_ = now + seconds;
   }
+  void loading(const std::string& text) { hud_.centred(text); }
   void notice(double now) {
     if (!notice_.empty() && now < noticeUntil_) hud_.notice(notice_);
   }

@@ -40,14 +40,28 @@ void Hud::beginFrame() {
   ImGui::NewFrame();
 }
 
-void Hud::notice(const std::string& text) {
+namespace {
+
+// A line of text on a dark band, its top left at `at`.
+void bannerAt(const std::string& text, ImVec2 at) {
   ImDrawList* draw = ImGui::GetForegroundDrawList();
   const ImVec2 size = ImGui::CalcTextSize(text.c_str());
   const float pad = 6.0f;
-  const ImVec2 at((ImGui::GetIO().DisplaySize.x - size.x) * 0.5f, 12.0f);
   draw->AddRectFilled({at.x - pad, at.y - pad}, {at.x + size.x + pad, at.y + size.y + pad},
                       IM_COL32(0, 0, 0, 150), 4.0f);
   draw->AddText(at, IM_COL32(255, 255, 255, 240), text.c_str());
+}
+
+}  // namespace
+
+void Hud::notice(const std::string& text) {
+  bannerAt(text, {(ImGui::GetIO().DisplaySize.x - ImGui::CalcTextSize(text.c_str()).x) * 0.5f, 12.0f});
+}
+
+void Hud::centred(const std::string& text) {
+  const ImVec2 size = ImGui::CalcTextSize(text.c_str());
+  bannerAt(text,
+           {(ImGui::GetIO().DisplaySize.x - size.x) * 0.5f, (ImGui::GetIO().DisplaySize.y - size.y) * 0.5f});
 }
 
 void Hud::endFrame() {

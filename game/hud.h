@@ -28,6 +28,8 @@ class Hud {
                const std::vector<float>& frameMs = {});
   // One line at the top of the screen (what the world is, once when it opens).
   void notice(const std::string& text);
+  // One line in the middle of the screen (the loading screen's).
+  void centred(const std::string& text);
   void endFrame();  // draws into the bound framebuffer
 };
 
