@@ -1,6 +1,7 @@
 // terrasol-export: a world region's meshed blocks as a glTF 2.0 binary (.glb) with the atlas textures.
 //   terrasol-export WORLD_DIR|SCENE.json --region x0,y0,z0,x1,y1,z1 --out region.glb [--pack PATH]...
-// A world directory is read as saved (edited chunks) and generated (the rest), never written; a scene
+// A world directory is read as saved (edited chunks) and generated (the rest), never written; a
+// Minecraft save directory (no level.json) is read as a scene's world, never written either; a scene
 // is built with its edits. Bad arguments or input: the reason on stderr and exit status 1.
 
 #include <charconv>
@@ -11,6 +12,7 @@
 #include "core/error.h"
 #include "core/paths.h"
 #include "core/tool_main.h"
+#include "minecraft/minecraft_save.h"
 #include "pipeline/streamed_world.h"
 #include "region_export.h"
 #include "scene/scene_world.h"
@@ -72,6 +74,16 @@ int run(int argc, char** argv) {
   if (!std::filesystem::is_directory(input)) {
     scene = loadScene(input);
     packPaths = scene->packs;
+  } else if (!std::filesystem::exists(input / "level.json")) {
+    // A Minecraft save (read-only, as a scene's world); anything else is named as no world.
+    try {
+      MinecraftSave check(input);
+    } catch (const Error& e) {
+      throw Error(input.string() + ": not a world (no level.json) nor a Minecraft save (" + e.what() + ")");
+    }
+    scene.emplace();
+    scene->minecraftWorld = input;
+    packPaths.push_back(resourcePackDir() / "default");
   } else {
     packPaths.push_back(resourcePackDir() / "default");
   }
@@ -88,8 +100,6 @@ int run(int argc, char** argv) {
     const SceneWorld world(*scene, blocks);
     meshes = meshRegion(world.world(), *region, table);
   } else {
-    if (!std::filesystem::exists(input / "level.json"))
-      throw Error(input.string() + ": not a world (no level.json)");
     const BlockShapes shapes = defaultPackShapes(blocks);
     StreamedWorld world(input, 0, blocks, table, radius, 2, &shapes);
     const ChunkPos chunk = ChunkPos::of({centre.x, 0, centre.z});
