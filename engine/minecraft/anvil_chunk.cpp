@@ -179,15 +179,7 @@ class ChunkDecoder {
           chunk.setTint(x, z, (*oldColumns_)[static_cast<std::size_t>(columnIndex(x, z))]);
           continue;
         }
-        int top = kMinY;
-        for (int s = kSectionCount - 1; s >= 0 && top == kMinY; --s) {
-          if (chunk.section(s).isAllAir()) continue;
-          for (int y = sectionMinY(s) + kLastCell; y >= sectionMinY(s); --y)
-            if (chunk.get(x, y, z) != kAir) {
-              top = y;
-              break;
-            }
-        }
+        const int top = std::max(chunk.highestBlock(x, z), kMinY);
         const auto& cells = sectionBiomes_[static_cast<std::size_t>(sectionOf(top))];
         if (!cells) continue;
         const int cell = ((top & kLastCell) >> 2) << 4 | (z >> 2) << 2 | (x >> 2);

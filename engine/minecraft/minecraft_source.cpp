@@ -21,16 +21,6 @@ void copyTints(const Chunk& from, Chunk& to) {
     for (int x = 0; x < kChunkSize; ++x) to.setTint(x, z, from.tint(x, z));
 }
 
-// The highest non-air block of a column, or kMinY - 1.
-int topOf(const Chunk& chunk, int x, int z) {
-  for (int s = kSectionCount - 1; s >= 0; --s) {
-    if (chunk.section(s).isAllAir()) continue;
-    for (int y = sectionMinY(s) + kChunkSize - 1; y >= sectionMinY(s); --y)
-      if (chunk.get(x, y, z) != kAir) return y;
-  }
-  return kMinY - 1;
-}
-
 }  // namespace
 
 MinecraftChunkSource::MinecraftChunkSource(const std::filesystem::path& dir, const BlockRegistry& blocks)
@@ -81,7 +71,7 @@ void MinecraftChunkSource::fillTints(Chunk& chunk) const {
 int MinecraftChunkSource::surfaceHeight(int x, int z) const {
   Chunk chunk(ChunkPos::of({x, 0, z}));
   generate(chunk);
-  return topOf(chunk, x & kLastCell, z & kLastCell);
+  return chunk.highestBlock(x & kLastCell, z & kLastCell);
 }
 
 glm::dvec3 MinecraftChunkSource::startPosition() const {

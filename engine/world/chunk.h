@@ -30,6 +30,9 @@ class Chunk {
   Section& section(int index) { return sections_[static_cast<std::size_t>(index)]; }
   const Section& section(int index) const { return sections_[static_cast<std::size_t>(index)]; }
 
+  // The y of the highest block in a column that is not air, or kMinY - 1; all-air sections are skipped.
+  int highestBlock(int x, int z) const;
+
   // Frees the arrays of sections that have become uniform; returns the bytes still used.
   std::size_t compact();
   std::size_t memoryBytes() const;
