@@ -8,6 +8,7 @@
 //                                            differences; --differences lists the first differing cells
 // PATH is a save folder (level.dat and region/), a folder holding region/, or a bare region folder.
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <fstream>
@@ -35,6 +36,7 @@ int usage() {
 
 struct Survey {
   std::size_t chunks = 0, full = 0, damaged = 0, unknownCells = 0, droppedPropertyCells = 0, blockCells = 0;
+  int newestDataVersion = 0;  // of the chunks read: the version of a save without level.dat
   std::map<std::string, std::size_t> byStatus;
   std::set<BlockId> states;
   std::set<std::string> unknownNames;
@@ -51,6 +53,7 @@ Survey survey(const MinecraftSave& save, const BlockRegistry& blocks) {
       const std::optional<AnvilChunk> chunk = save.load(pos, mapper);
       if (!chunk) continue;
       ++s.byStatus[chunk->status.empty() ? "(none)" : chunk->status];
+      s.newestDataVersion = std::max(s.newestDataVersion, chunk->dataVersion);
       if (!chunk->full) continue;
       ++s.full;
       s.unknownCells += chunk->unknownCells;
@@ -82,13 +85,15 @@ int info(const std::filesystem::path& path, const std::filesystem::path& jsonFil
   const MinecraftSave save(path);
   const Survey s = survey(save, blocks);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  int dataVersion = save.level().dataVersion;
+  // level.dat's, else the newest chunk's (a bare region folder).
+  const int dataVersion = save.level().dataVersion ? save.level().dataVersion : s.newestDataVersion;
   for (const std::string& p : s.problems) std::printf("problem: %s\n", p.c_str());
   for (const std::string& name : s.unknownNames) std::printf("unknown block: %s\n", name.c_str());
   std::printf(
       "save %s: %s\n", path.string().c_str(),
       save.level().versionName.empty() ? "no level.dat" : ("Minecraft " + save.level().versionName).c_str());
-  if (dataVersion) std::printf("data version %d\n", dataVersion);
+  if (dataVersion)
+    std::printf("data version %d%s\n", dataVersion, save.level().dataVersion ? "" : " (the newest chunk's)");
   if (const auto& p = save.level().player) std::printf("player at %.1f %.1f %.1f\n", p->x, p->y, p->z);
   if (const auto& s = save.level().spawn) std::printf("spawn at %d %d %d\n", s->x, s->y, s->z);
   std::printf("regions in %s\n", save.regionDir().string().c_str());
