@@ -3,6 +3,8 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#include <cerrno>
+#include <cstring>
 #include <fstream>
 #include <sstream>
 
@@ -39,6 +41,17 @@ void writeFileAtomically(const std::filesystem::path& file, std::string_view tex
   std::error_code ec;
   std::filesystem::rename(tmp, file, ec);
   if (ec) throw Error(locate(file, 0, "cannot replace: " + ec.message()));
+}
+
+void readAt(int fd, std::uint8_t* data, std::size_t size, std::uint64_t offset) {
+  while (size > 0) {
+    const ssize_t n = ::pread(fd, data, size, static_cast<off_t>(offset));
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) throw Error(n == 0 ? "unexpected end of file" : std::strerror(errno));
+    data += n;
+    size -= static_cast<std::size_t>(n);
+    offset += static_cast<std::uint64_t>(n);
+  }
 }
 
 }  // namespace terrasol

@@ -67,13 +67,11 @@ std::string AnvilRegion::describe(ChunkPos c) const {
 std::vector<std::uint8_t> AnvilRegion::readBytes(std::uint64_t offset, std::size_t size,
                                                  const std::string& what) const {
   std::vector<std::uint8_t> bytes(size);
-  std::size_t done = 0;
-  while (done < size) {
-    const ssize_t n = ::pread(fd_, bytes.data() + done, size - done, static_cast<off_t>(offset + done));
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0)
-      throw Error(what + ": cannot read " + std::to_string(size) + " bytes at " + std::to_string(offset));
-    done += static_cast<std::size_t>(n);
+  try {
+    readAt(fd_, bytes.data(), size, offset);
+  } catch (const Error& e) {
+    throw Error(what + ": cannot read " + std::to_string(size) + " bytes at " + std::to_string(offset) +
+                " (" + e.what() + ")");
   }
   return bytes;
 }

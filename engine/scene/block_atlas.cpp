@@ -15,39 +15,10 @@
 #include "core/json_check.h"
 #include "core/model_units.h"
 #include "core/paths.h"
+#include "scene/texture_names.h"
 
 namespace terrasol {
 namespace {
-
-// A model's texture name ("block/oak_planks") as the block texture loader looks it up ("oak_planks").
-// Textures Minecraft renamed, by today's name: a pack made before still names them the old way.
-constexpr std::pair<std::string_view, std::string_view> kRenamedTextures[] = {
-    {"dirt_path_top", "grass_path_top"},  // 1.17
-    {"dirt_path_side", "grass_path_side"},
-    {"short_grass", "grass"},  // 1.20.3
-    {"sugar_cane", "reeds"},   // 1.13
-    {"nether_portal", "portal"},
-    {"tripwire", "trip_wire"},
-    {"lily_pad", "waterlily"},
-    {"iron_chain", "chain"}};  // 1.21.9
-
-// Texture names with the older names a pack may give them after each.
-std::vector<std::string> withOlderNames(const std::vector<std::string>& names) {
-  std::vector<std::string> out;
-  for (const std::string& name : names) {
-    out.push_back(name);
-    for (const auto& [now, old] : kRenamedTextures)
-      if (name == now && std::find(names.begin(), names.end(), old) == names.end()) out.emplace_back(old);
-  }
-  return out;
-}
-
-// A model's texture reference as the names a pack may give it: today's, then older ones.
-std::vector<std::string> candidatesOf(const std::string& texture) {
-  const std::string prefix = "block/";
-  return withOlderNames(
-      {texture.compare(0, prefix.size(), prefix) == 0 ? texture.substr(prefix.size()) : texture});
-}
 
 // What Minecraft draws for a block whose blockstates or models cannot be read: a cube of the
 // missing texture.
@@ -299,58 +270,6 @@ BlockAtlas buildBlockAtlas(const BlockRegistry& blocks, const PackStack& packs, 
     }
   }
   return result;
-}
-
-namespace {
-
-// Sorts the unused of `top` (the top pack's base names) into TextureCoverage's three kinds.
-void classifyUnused(TextureCoverage& coverage, const std::set<std::string>& top) {
-  for (const std::string& name : coverage.unused) {
-    // "stone7", "wheat_stage7-1": digits (and a dash) after a name the pack has.
-    std::size_t end = name.size();
-    while (end > 0 && std::isdigit(static_cast<unsigned char>(name[end - 1]))) --end;
-    if (end < name.size() && end > 0 && name[end - 1] == '-') --end;
-    const bool variant = end < name.size() && top.contains(name.substr(0, end));
-    const bool layer = name.ends_with("_e") && top.contains(name.substr(0, name.size() - 2));
-    bool older = false;
-    for (const auto& [now, old] : kRenamedTextures) older |= name == old && top.contains(std::string(now));
-    if (variant)
-      coverage.variants.push_back(name);
-    else if (layer)
-      coverage.emissiveLayers.push_back(name);
-    else if (older)
-      coverage.superseded.push_back(name);
-  }
-}
-
-}  // namespace
-
-TextureCoverage textureCoverage(const BlockRegistry& blocks, const PackStack& packs) {
-  // What the game loads for a list of candidates: the first the stack has.
-  std::set<std::string> drawn;
-  const auto use = [&](const std::vector<std::string>& candidates) {
-    if (const auto named = packs.findBlockTextureNamed(candidates)) drawn.insert(named->name);
-  };
-  const BlockModelBake baked =
-      bakeBlockModels(blocks, packs);  // its problems: inspect and the atlas report them
-  for (BlockId id = 0; id < blocks.size(); ++id) {
-    for (const auto& face : blocks.faceTextures(id)) use(withOlderNames(face));
-    // A state drawn as an earlier one has empty lists.
-    for (const BakedQuad& q : baked.quads[id]) use(candidatesOf(q.texture));
-    for (const BakedChoice& c : baked.choices[id])
-      for (const BakedQuad& q : c.quads) use(candidatesOf(q.texture));
-  }
-  TextureCoverage coverage;
-  if (packs.packs().empty()) return coverage;
-  std::set<std::string> top;
-  for (const std::string& file : packs.packs().back()->blockTextureFiles()) {
-    if (!file.ends_with(".png") || file.ends_with("_n.png") || file.ends_with("_s.png")) continue;
-    top.insert(file.substr(0, file.size() - 4));
-  }
-  for (const std::string& name : top)
-    (drawn.contains(name) ? coverage.used : coverage.unused).push_back(name);
-  classifyUnused(coverage, top);
-  return coverage;
 }
 
 BlockShapes blockShapesOf(const BlockRegistry& blocks, const PackStack& packs) {

@@ -72,22 +72,6 @@ bool isDefaultPackAlone(const PackStack& packs);
 // The same from resourcepacks/default alone: what the game collides with.
 BlockShapes defaultPackShapes(const BlockRegistry& blocks);
 
-// Of the top pack's block textures (base names: no _n, _s or .mcmeta), those the blocks draw with (their
-// faces' textures and their models', as the stack resolves them) and the rest, each sorted: how much
-// of a pack the world can show.
-// Of the unused, those no Minecraft model could name, by why: a numbered variant of a texture the pack
-// has ("stone7" beside "stone", for random-variant models the pack does not ship), an emissive layer
-// ("torch_e", OptiFine's `_e` beside its base), and an older name whose current name the pack also has.
-struct TextureCoverage {
-  std::vector<std::string> used, unused;
-  std::vector<std::string> variants, emissiveLayers, superseded;
-  // The unused that are none of those three.
-  std::size_t otherUnused() const {
-    return unused.size() - variants.size() - emissiveLayers.size() - superseded.size();
-  }
-};
-TextureCoverage textureCoverage(const BlockRegistry& blocks, const PackStack& packs);
-
 // How a block is drawn with a pack stack, for listings: by the stack's models (Model), by its own
 // blocks.json shape from its textures (Derived: a cube, a cross, a torch, a liquid), nothing by design
 // (air, barrier, light, structure_void), or as the placeholder where no pack describes it.

@@ -73,17 +73,6 @@ void writeAll(int fd, const std::uint8_t* data, std::size_t size, std::uint64_t 
   }
 }
 
-void readAll(int fd, std::uint8_t* data, std::size_t size, std::uint64_t offset) {
-  while (size > 0) {
-    const ssize_t n = ::pread(fd, data, size, static_cast<off_t>(offset));
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) throw Error(n == 0 ? "unexpected end of file" : errnoText());
-    data += n;
-    size -= static_cast<std::size_t>(n);
-    offset += static_cast<std::uint64_t>(n);
-  }
-}
-
 // Offset of the next record magic at or after `from`, or `bytes.size()`.
 std::uint64_t findMagic(const std::vector<std::uint8_t>& bytes, std::uint64_t from) {
   for (std::uint64_t i = from; i + 4 <= bytes.size(); ++i) {
@@ -147,7 +136,7 @@ void RegionFile::scan() {
   const auto end = ::lseek(fd_, 0, SEEK_END);
   if (end < 0) throw Error(locate(path_, 0, "cannot read region file: " + errnoText()));
   std::vector<std::uint8_t> bytes(static_cast<std::size_t>(end));
-  if (!bytes.empty()) readAll(fd_, bytes.data(), bytes.size(), 0);
+  if (!bytes.empty()) readAt(fd_, bytes.data(), bytes.size(), 0);
 
   if (bytes.empty()) {  // new file
     writeAll(fd_, reinterpret_cast<const std::uint8_t*>(kFileMagic), kHeaderSize, 0);
@@ -220,7 +209,7 @@ std::optional<std::vector<std::uint8_t>> RegionFile::read(ChunkPos chunk) const 
   if (it == index_.end()) return std::nullopt;
   std::vector<std::uint8_t> payload(it->second.size);
   try {
-    readAll(fd_, payload.data(), payload.size(), it->second.offset + kRecordHeaderSize);
+    readAt(fd_, payload.data(), payload.size(), it->second.offset + kRecordHeaderSize);
   } catch (const Error& e) {
     throw Error(locate(path_, 0, "cannot read chunk: " + std::string(e.what())));
   }
@@ -266,7 +255,7 @@ bool RegionFile::compactIfWasteful() {
     writeAll(out, reinterpret_cast<const std::uint8_t*>(kFileMagic), kHeaderSize, 0);
     for (const auto& [local, entry] : index_) {
       std::vector<std::uint8_t> record(kRecordHeaderSize + entry.size);
-      readAll(fd_, record.data(), record.size(), entry.offset);
+      readAt(fd_, record.data(), record.size(), entry.offset);
       writeAll(out, record.data(), record.size(), offset);
       moved[local] = Entry{offset, entry.size, entry.sequence};
       offset += record.size();

@@ -12,6 +12,7 @@
 #include "core/paths.h"
 #include "packgen.h"
 #include "scene/block_atlas.h"
+#include "scene/texture_coverage.h"
 #include "support/pack_builder.h"
 #include "support/raw_png.h"
 #include "support/test_data.h"

@@ -21,6 +21,7 @@
 #include "core/tool_main.h"
 #include "scene/block_atlas.h"
 #include "scene/pack_blocks.h"
+#include "scene/texture_coverage.h"
 #include "world/block_registry.h"
 
 namespace terrasol {
