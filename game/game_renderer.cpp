@@ -32,7 +32,7 @@ std::unique_ptr<DeferredRenderer> makeRenderer(const BlockAssets& assets, const 
   options.reflections = reflections;
   options.props = props;
   return std::make_unique<DeferredRenderer>(ShaderPreprocessor(shaderDir()), assets.atlas.atlas,
-                                            assets.colormaps, options);
+                                            assets.atlas.tints, options);
 }
 
 }  // namespace
@@ -62,7 +62,6 @@ BlockAssets::BlockAssets(const BlockRegistry& blocks, const PackStack& stack, st
                          const BlockModelBake* defaultBake)
     : atlas(defaultBake && isDefaultPackAlone(stack) ? buildBlockAtlas(blocks, stack, *defaultBake)
                                                      : buildBlockAtlas(blocks, stack)),
-      colormaps(loadColormaps(stack, atlas.problems)),
       table(meshTableOf(blocks, atlas)),
       packNames(std::move(names)) {}
 
@@ -109,7 +108,7 @@ const BlockIcons& GameRenderer::icons() {
     std::vector<SectionMesh> meshes;
     for (const BlockId state : iconStates_) meshes.push_back(iconMesh(assets_->table, blocks_, state));
     icons_ = std::make_unique<BlockIcons>(ShaderPreprocessor(shaderDir()), assets_->atlas.atlas,
-                                          assets_->colormaps, meshes, kIconPixels);
+                                          assets_->atlas.tints, meshes, kIconPixels);
   }
   return *icons_;
 }

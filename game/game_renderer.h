@@ -27,7 +27,6 @@ struct BlockAssets {
   // the game's run, so a pack enabled later draws its own blocks from the next start.
   static BlockRegistry registry(const std::vector<PackChoice>& packs);
   BlockAtlas atlas;
-  BiomeColormaps colormaps;
   BlockMeshTable table;
   std::vector<std::string> packNames;  // bottom to top, as loaded
 };

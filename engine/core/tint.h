@@ -46,6 +46,29 @@ inline constexpr glm::vec3 kWaterCold{0x3D / 255.0f, 0x57 / 255.0f, 0xD6 / 255.0
 inline constexpr glm::vec3 kWaterTemperate{0x3F / 255.0f, 0x76 / 255.0f, 0xE4 / 255.0f};
 inline constexpr glm::vec3 kWaterWarm{0x45 / 255.0f, 0xAD / 255.0f, 0xF2 / 255.0f};
 inline constexpr float kWaterTemperateFrom = 0.5f, kWaterTemperateTo = 0.85f;
+// A biome's own colour for one tinted kind, laid over the colormap's by weight / 255: Minecraft's fixed
+// colours (badlands grass, cherry leaves, each biome's water) weigh 255, dark forest's darkening 128
+// (it halves the colormap's colour towards its own). Averaged, weighted, where biomes blend.
+struct BiomeColour {
+  std::uint8_t r = 0, g = 0, b = 0, weight = 0;
+  friend bool operator==(BiomeColour, BiomeColour) = default;
+};
+
+// A column's biome tint, before any pack: its place on the colormaps and its biome's own colours.
+// Terrasol's generator sets only the climate; Minecraft's biomes bring their own colours too.
+struct ColumnTint {
+  TintClimate climate = kPlainsTint;
+  BiomeColour grass{}, foliage{}, water{};
+  friend bool operator==(const ColumnTint&, const ColumnTint&) = default;
+};
+inline constexpr ColumnTint kPlainsColumn{};
+// A column with a climate and no colours of its own, as Terrasol's biomes are.
+constexpr ColumnTint climateOnly(TintClimate climate) {
+  ColumnTint column;
+  column.climate = climate;
+  return column;
+}
+
 // Minecraft's fixed birch and spruce (evergreen) leaf colours.
 inline constexpr glm::vec3 kBirchFoliage{0x80 / 255.0f, 0xA7 / 255.0f, 0x55 / 255.0f};
 inline constexpr glm::vec3 kSpruceFoliage{0x61 / 255.0f, 0x99 / 255.0f, 0x61 / 255.0f};

@@ -17,7 +17,7 @@ SectionMesh iconMesh(const BlockMeshTable& table, const BlockRegistry& blocks, B
   snapshot->blocks.fill(kAir);
   snapshot->opaque.fill(0);
   snapshot->light.fill(SectionSnapshot::lightTerm(false, 0, kMaxLight));
-  snapshot->tints.fill(kPlainsTint);
+  snapshot->tints.fill(kPlainsColumn);
   const auto cell = static_cast<std::size_t>(SectionSnapshot::index(kIconCell, kIconCell, kIconCell));
   const bool opaque = blocks.opaqueCubes()[state] != 0;
   snapshot->blocks[cell] = state;

@@ -118,7 +118,8 @@ BlockMeshTable::BlockMeshTable(const BlockRegistry& blocks,
                                const std::function<std::uint16_t(BlockId, int)>& textureOf,
                                const std::function<std::vector<ModelQuad>(BlockId)>& modelQuadsOf,
                                const std::function<std::vector<ModelChoice>(BlockId)>& modelChoicesOf,
-                               const std::function<BlockId(BlockId)>& sameAsOf) {
+                               const std::function<BlockId(BlockId)>& sameAsOf, TintPalette tints)
+    : tints_(std::move(tints)) {
   entries_.resize(blocks.size());
   waterState_ = blocks.waterState();
   const auto liquidOf = [&](BlockId state) {

@@ -9,6 +9,7 @@
 #include <span>
 #include <vector>
 
+#include "core/tint_palette.h"
 #include "mesh/mesh_data.h"
 #include "world/block_registry.h"
 #include "world/face_coverage.h"
@@ -52,11 +53,11 @@ class BlockMeshTable {
   // `modelChoicesOf(state)`: the weighted models a state picks among per cell, when it does (its quads
   // are then the origin's pick, for coverage).
   // `sameAsOf(state)`: an earlier state of its block drawn just as it (its entry is copied, all but its
-  // water), or the state itself.
+  // water), or the state itself. `tints`: the pack's colours for tinted vertices.
   BlockMeshTable(const BlockRegistry& blocks, const std::function<std::uint16_t(BlockId, int)>& textureOf,
                  const std::function<std::vector<ModelQuad>(BlockId)>& modelQuadsOf = {},
                  const std::function<std::vector<ModelChoice>(BlockId)>& modelChoicesOf = {},
-                 const std::function<BlockId(BlockId)>& sameAsOf = {});
+                 const std::function<BlockId(BlockId)>& sameAsOf = {}, TintPalette tints = {});
 
   struct Entry {
     BlockShape shape;
@@ -82,6 +83,7 @@ class BlockMeshTable {
   const Entry& operator[](BlockId id) const { return entries_[id]; }
   // The water drawn in waterlogged cells (BlockRegistry::waterState).
   BlockId waterState() const { return waterState_; }
+  const TintPalette& tints() const { return tints_; }
 
   // PackedVertex::material for a texture on face `face` (kFaceBases' index) of a block drawn as `e`.
   static std::uint32_t material(const Entry& e, int texture, int face) {
@@ -94,6 +96,7 @@ class BlockMeshTable {
  private:
   std::vector<Entry> entries_;
   BlockId waterState_ = kAir;
+  TintPalette tints_;
 };
 
 }  // namespace terrasol

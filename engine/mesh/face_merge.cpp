@@ -49,7 +49,13 @@ struct Candidate {
   std::uint32_t quad;
 };
 
-// A full block face (1 x 1 in its plane, corners in the mesher's order) with one light at all corners.
+// The tint's blue, which shares the uv word (the light word holds the rest of the tint).
+int tintBlue(const PackedVertex& v) {
+  return PackedVertex::kTintBlue.get(v.uv);
+}
+
+// A full block face (1 x 1 in its plane, corners in the mesher's order) with one light and tint at
+// all corners.
 bool candidate(const PackedVertex* q, Candidate& out) {
   const int face = q[0].face();
   if (face >= 6 || q[1].light != q[0].light || q[2].light != q[0].light || q[3].light != q[0].light)
@@ -65,7 +71,8 @@ bool candidate(const PackedVertex* q, Candidate& out) {
   if (tMin % 32 != 0 || bMin % 32 != 0 || tMin >= 16 * 32 || bMin >= 16 * 32) return false;
   for (int c = 0; c < 4; ++c) {
     const bool tHigh = (kCornerSigns[c][0] > 0) == a.tAlong, bHigh = (kCornerSigns[c][1] > 0) == a.bAlong;
-    if (q[c].material != q[0].material || q[c].uv != cornerUv(c, 1, 1) || coordinate(q[c], a.n) != height ||
+    if (q[c].material != q[0].material || (q[c].uv & PackedVertex::kUvBits) != cornerUv(c, 1, 1) ||
+        tintBlue(q[c]) != tintBlue(q[0]) || coordinate(q[c], a.n) != height ||
         coordinate(q[c], a.t) != tMin + (tHigh ? 32 : 0) ||
         coordinate(q[c], a.b) != bMin + (bHigh ? 32 : 0)) {
       return false;
@@ -134,7 +141,7 @@ std::size_t mergeFaces(PackedVertices& quads) {
       const auto same = [&](int x, int y) {
         const std::uint32_t r = at(x, y);
         return r != kNone && quads[r * 4].material == quads[q * 4].material &&
-               quads[r * 4].light == quads[q * 4].light;
+               quads[r * 4].light == quads[q * 4].light && tintBlue(quads[r * 4]) == tintBlue(quads[q * 4]);
       };
       // The widest run along i, then as many rows of it along j as match whole.
       int w = 1, h = 1;
@@ -156,7 +163,7 @@ std::size_t mergeFaces(PackedVertices& quads) {
         const int ci = (kCornerSigns[c][0] > 0) == a.tAlong ? i + w - 1 : i;
         const int cj = (kCornerSigns[c][1] > 0) == a.bAlong ? j + h - 1 : j;
         out[c] = quads[at(ci, cj) * 4 + static_cast<std::uint32_t>(c)];
-        out[c].uv = cornerUv(c, w, h);
+        out[c].uv = (out[c].uv & ~PackedVertex::kUvBits) | cornerUv(c, w, h);
       }
       append(merged, out, QuadRole::Merged);
       for (int y = j; y < j + h; ++y)

@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstdint>
+#include <glm/vec3.hpp>
 #include <memory>
 #include <utility>
 #include <vector>
@@ -27,6 +28,9 @@ struct BitField {
   constexpr std::uint32_t mask() const { return (1u << bits) - 1u; }  // before shifting
   constexpr std::uint32_t pack(int value) const { return static_cast<std::uint32_t>(value) << shift; }
   constexpr int get(std::uint32_t word) const { return static_cast<int>((word >> shift) & mask()); }
+  constexpr std::uint32_t replace(std::uint32_t word, int value) const {
+    return (word & ~(mask() << shift)) | pack(value);
+  }
 };
 
 // One vertex in 16 bytes:
@@ -34,13 +38,13 @@ struct BitField {
 //   material: texture id (16 bits) | face (4 bits) << 16 | Tint (3 bits) << 20 | QuadRole (2 bits) << 23
 //             face 0..5 = Direction (normal along an axis), 6..9 = the diagonal planes of cross plants
 //   light:    block light sum (6 bits) | sky light sum (6 bits) << 6 | ambient occlusion 0..3 (2 bits) << 12
-//             | tint temperature (8 bits) << 14 | tint downfall (8 bits) << 22
+//             | tint red (8 bits) << 14 | tint green (8 bits) << 22
 //             smooth light sums the open cells among the four around a corner, and there are always
 //             ao + 1 of them (see the mesher), so the shader divides by that: sums are 0..60.
-//             The tint climate (world/biomes.h TintClimate) is the biomes' at the vertex, interpolated
-//             between column centres; 0 on untinted vertices
-//   uv:       u | v << 9, in 1/16 of the texture (0..256: merged faces repeat it, mesh/face_merge.h),
-//             v = 0 at the texture's top row
+//             The tint colour (sRGB, core/tint_palette.h; blue in uv) is the columns' at the vertex,
+//             interpolated between column centres; 0 on untinted vertices
+//   uv:       u | v << 9 | tint blue (8 bits) << 18; u and v in 1/16 of the texture (0..256: merged
+//             faces repeat it, mesh/face_merge.h), v = 0 at the texture's top row
 // The fields and scales below are the layout's only statement: lib/block_vertex.glsl reads them as
 // injected #defines (render/shader_defines.cpp), and a GL test unpacks packed vertices in GLSL.
 struct PackedVertex {
@@ -52,11 +56,20 @@ struct PackedVertex {
   static constexpr BitField kX{0, 10}, kY{10, 10}, kZ{20, 10};                          // position
   static constexpr BitField kTexture{0, 16}, kFace{16, 4}, kTint{20, 3}, kRole{23, 2};  // material
   static constexpr BitField kBlockLight{0, 6}, kSkyLight{6, 6}, kAo{12, 2};             // light
-  static constexpr BitField kTemperature{14, 8}, kDownfall{22, 8};                      // light
-  static constexpr BitField kU{0, 9}, kV{9, 9};                                         // uv
-  static constexpr int kPositionSteps = 32;                                             // per block
-  static constexpr int kUvSteps = 16;                                                   // per texture
-  static constexpr int kCellLight = 15;  // the brightest level one cell adds to a light sum
+  // A tinted vertex's sRGB colour (TintPalette::rgb): red and green in light, blue in uv.
+  static constexpr BitField kTintRed{14, 8}, kTintGreen{22, 8};    // light
+  static constexpr BitField kU{0, 9}, kV{9, 9}, kTintBlue{18, 8};  // uv
+  static constexpr std::uint32_t kUvBits = kU.mask() << kU.shift | kV.mask() << kV.shift;
+  // A tint colour's bits in the light and uv words, packed once for many vertices.
+  struct TintBits {
+    std::uint32_t light = 0, uv = 0;
+  };
+  static constexpr TintBits packTint(glm::u8vec3 c) {
+    return {kTintRed.pack(c.x) | kTintGreen.pack(c.y), kTintBlue.pack(c.z)};
+  }
+  static constexpr int kPositionSteps = 32;  // per block
+  static constexpr int kUvSteps = 16;        // per texture
+  static constexpr int kCellLight = 15;      // the brightest level one cell adds to a light sum
 
   static constexpr std::uint32_t packPosition(int x32, int y32, int z32) {
     return kX.pack(x32) | kY.pack(y32) | kZ.pack(z32);
@@ -64,11 +77,6 @@ struct PackedVertex {
   static constexpr std::uint32_t packMaterial(int texture, int face, int tint) {
     return kTexture.pack(texture) | kFace.pack(face) | kTint.pack(tint);
   }
-  static constexpr std::uint32_t packTintClimate(int temperature, int downfall) {
-    return kTemperature.pack(temperature) | kDownfall.pack(downfall);
-  }
-  static constexpr std::uint32_t kTintClimateBits =
-      kTemperature.mask() << kTemperature.shift | kDownfall.mask() << kDownfall.shift;
   static constexpr std::uint32_t packUv(int u, int v) { return kU.pack(u) | kV.pack(v); }
   int x32() const { return kX.get(position); }
   int y32() const { return kY.get(position); }
@@ -81,8 +89,13 @@ struct PackedVertex {
     material = (material & ~(kRole.mask() << kRole.shift)) | kRole.pack(static_cast<int>(r));
   }
   int ao() const { return kAo.get(light); }
-  int tintTemperature() const { return kTemperature.get(light); }
-  int tintDownfall() const { return kDownfall.get(light); }
+  glm::u8vec3 tintRgb() const { return {kTintRed.get(light), kTintGreen.get(light), kTintBlue.get(uv)}; }
+  void setTint(TintBits bits) {
+    constexpr TintBits kMask = packTint(glm::u8vec3(255));
+    light = (light & ~kMask.light) | bits.light;
+    uv = (uv & ~kMask.uv) | bits.uv;
+  }
+  void setTintRgb(glm::u8vec3 c) { setTint(packTint(c)); }
   int cellsLit() const { return ao() + 1; }  // how many cells the light sums add up
   // The averages x4, rounded: 0..60.
   int blockLight4() const { return (kBlockLight.get(light) * 4 + cellsLit() / 2) / cellsLit(); }

@@ -359,15 +359,15 @@ thread_local std::array<std::size_t, kMeshLayers> Mesher::lastSize_{};
 SectionMesh meshSection(const SectionSnapshot& snapshot, const BlockMeshTable& table) {
   SectionMesh mesh = Mesher(snapshot, table).run();
   const bool uniform = std::all_of(snapshot.tints.begin(), snapshot.tints.end(),
-                                   [&](TintClimate t) { return t == snapshot.tints[0]; });
+                                   [&](const ColumnTint& t) { return t == snapshot.tints[0]; });
   for (auto& layer : mesh.layers) {
     // Merging compares whole vertices, so varying tints go in first; a uniform one goes in after, on
     // the fewer merged vertices, and merges the same.
     if (uniform) {
       mergeFaces(layer.vertices);
-      applyUniformTint(layer.vertices, snapshot.tints[0]);
+      applyUniformTint(layer.vertices, snapshot.tints[0], table.tints());
     } else {
-      applyTints(layer.vertices, snapshot);
+      applyTints(layer.vertices, snapshot, table.tints());
       mergeFaces(layer.vertices);
     }
   }

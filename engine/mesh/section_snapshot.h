@@ -35,8 +35,10 @@ class SectionSnapshot {
   std::array<std::uint8_t, kCells> opaque;  // 1: an opaque cube (World::opaqueCubes)
   // The columns' tints (Chunk::tint), x and z -1..16 as in index(); a missing neighbour chunk
   // repeats this chunk's edge.
-  std::array<TintClimate, kSide * kSide> tints;
-  TintClimate tint(int x, int z) const { return tints[static_cast<std::size_t>((z + 1) * kSide + x + 1)]; }
+  std::array<ColumnTint, kSide * kSide> tints;
+  const ColumnTint& tint(int x, int z) const {
+    return tints[static_cast<std::size_t>((z + 1) * kSide + x + 1)];
+  }
 };
 
 enum class CaptureResult { Captured, Empty, Buried };

@@ -129,14 +129,15 @@ class ChunkDecoder {
     const int index = static_cast<int>(static_cast<std::int8_t>(y->integer())) - (kMinY >> kChunkShift);
     const Tag* palette = biomes->find("palette", TagType::List);
     if (index < 0 || index >= kSectionCount || !palette || palette->items().empty()) return;
-    std::vector<TintClimate> tints;
+    std::vector<MinecraftBiome> biomeOf;
     for (const Tag& name : palette->items())
-      tints.push_back(minecraftBiomeTint(name.string()).value_or(kPlainsTint));
-    std::array<TintClimate, kBiomeCells>& cells = sectionBiomes_[static_cast<std::size_t>(index)].emplace();
+      biomeOf.push_back(minecraftBiome(name.string()).value_or(minecraftPlains()));
+    std::array<MinecraftBiome, kBiomeCells>& cells =
+        sectionBiomes_[static_cast<std::size_t>(index)].emplace();
     const Tag* data = biomes->find("data", TagType::LongArray);
-    const int bits = static_cast<int>(std::bit_width(tints.size() - 1));
+    const int bits = static_cast<int>(std::bit_width(biomeOf.size() - 1));
     if (!data || bits == 0) {
-      cells.fill(tints[0]);
+      cells.fill(biomeOf[0]);
       return;
     }
     const int perLong = 64 / bits;
@@ -146,9 +147,9 @@ class ChunkDecoder {
     for (int i = 0; i < kBiomeCells; ++i) {
       const auto word = static_cast<std::uint64_t>(longs[static_cast<std::size_t>(i / perLong)]);
       const std::size_t p = (word >> ((i % perLong) * bits)) & ((std::uint64_t{1} << bits) - 1);
-      if (p >= tints.size())
+      if (p >= biomeOf.size())
         fail("section Y=" + std::to_string(y->integer()) + ": biome index past its palette");
-      cells[static_cast<std::size_t>(i)] = tints[p];
+      cells[static_cast<std::size_t>(i)] = biomeOf[p];
     }
   }
 
@@ -157,33 +158,35 @@ class ChunkDecoder {
     const Tag* biomes = level.find("Biomes", TagType::IntArray);
     if (!biomes) return;
     const auto ids = biomes->ints();
-    const auto tint = [](int id) { return minecraftBiomeTint(id).value_or(kPlainsTint); };
+    const auto biome = [](int id) { return minecraftBiome(id).value_or(minecraftPlains()); };
     if (ids.size() == kChunkArea) {
       oldColumns_.emplace();
-      for (std::size_t i = 0; i < kChunkArea; ++i) (*oldColumns_)[i] = tint(ids[i]);
+      for (std::size_t i = 0; i < kChunkArea; ++i) (*oldColumns_)[i] = biome(ids[i]);
     } else if (ids.size() == 1024) {
       for (int cell = 0; cell < 1024; ++cell) {
         const int section = (cell >> 6) - (kMinY >> kChunkShift);  // 16 cell layers of 4: 4 sections
         auto& cells = sectionBiomes_[static_cast<std::size_t>(section)];
-        if (!cells) cells.emplace().fill(kPlainsTint);
-        (*cells)[static_cast<std::size_t>(cell & 63)] = tint(ids[static_cast<std::size_t>(cell)]);
+        if (!cells) cells.emplace().fill(minecraftPlains());
+        (*cells)[static_cast<std::size_t>(cell & 63)] = biome(ids[static_cast<std::size_t>(cell)]);
       }
     }
   }
 
-  // Each column takes the biome where its highest block stands.
+  // Each column takes the biome where its highest block stands (plains where the chunk names none).
   void applyTints(Chunk& chunk) const {
+    const int x0 = chunk.pos().minBlockX(), z0 = chunk.pos().minBlockZ();
     for (int z = 0; z < kChunkSize; ++z)
       for (int x = 0; x < kChunkSize; ++x) {
+        MinecraftBiome biome = minecraftPlains();
         if (oldColumns_) {
-          chunk.setTint(x, z, (*oldColumns_)[static_cast<std::size_t>(columnIndex(x, z))]);
-          continue;
+          biome = (*oldColumns_)[static_cast<std::size_t>(columnIndex(x, z))];
+        } else {
+          const int top = std::max(chunk.highestBlock(x, z), kMinY);
+          if (const auto& cells = sectionBiomes_[static_cast<std::size_t>(sectionOf(top))])
+            biome =
+                (*cells)[static_cast<std::size_t>(((top & kLastCell) >> 2) << 4 | (z >> 2) << 2 | (x >> 2))];
         }
-        const int top = std::max(chunk.highestBlock(x, z), kMinY);
-        const auto& cells = sectionBiomes_[static_cast<std::size_t>(sectionOf(top))];
-        if (!cells) continue;
-        const int cell = ((top & kLastCell) >> 2) << 4 | (z >> 2) << 2 | (x >> 2);
-        chunk.setTint(x, z, (*cells)[static_cast<std::size_t>(cell)]);
+        chunk.setTint(x, z, minecraftBiomeTint(biome, x0 + x, z0 + z));
       }
   }
 
@@ -264,8 +267,8 @@ class ChunkDecoder {
   std::string_view what_;
   bool withLight_;
   static constexpr int kBiomeCells = 64;  // 4 x 4 x 4 a section
-  std::array<std::optional<std::array<TintClimate, kBiomeCells>>, kSectionCount> sectionBiomes_;
-  std::optional<std::array<TintClimate, kChunkArea>> oldColumns_;  // before 1.15: one biome a column
+  std::array<std::optional<std::array<MinecraftBiome, kBiomeCells>>, kSectionCount> sectionBiomes_;
+  std::optional<std::array<MinecraftBiome, kChunkArea>> oldColumns_;  // before 1.15: one biome a column
   StateProperties properties_;
   std::set<std::string> unknown_;
 };

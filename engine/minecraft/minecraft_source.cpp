@@ -16,11 +16,6 @@ BlockId placeholderOf(const BlockRegistry& blocks) {
   return id;
 }
 
-void copyTints(const Chunk& from, Chunk& to) {
-  for (int z = 0; z < kChunkSize; ++z)
-    for (int x = 0; x < kChunkSize; ++x) to.setTint(x, z, from.tint(x, z));
-}
-
 }  // namespace
 
 MinecraftChunkSource::MinecraftChunkSource(const std::filesystem::path& dir, const BlockRegistry& blocks)
@@ -39,33 +34,71 @@ void MinecraftChunkSource::giveBack(std::unique_ptr<BlockStateMapper> mapper) co
   mappers_.push_back(std::move(mapper));
 }
 
-std::unique_ptr<Chunk> MinecraftChunkSource::read(ChunkPos pos) const {
+void MinecraftChunkSource::report(std::string problem) const {
+  const std::lock_guard lock(mutex_);
+  // A damaged neighbour is read for its tints before its own turn: said once.
+  if (std::find(problems_.begin(), problems_.end(), problem) == problems_.end())
+    problems_.push_back(std::move(problem));
+}
+
+std::unique_ptr<Chunk> MinecraftChunkSource::read(ChunkPos pos, std::atomic<std::size_t>* unknown) const {
   if (!save_.contains(pos)) return nullptr;
   std::unique_ptr<BlockStateMapper> mapper = takeMapper();
   std::unique_ptr<Chunk> chunk;
   try {
     std::optional<AnvilChunk> read = save_.load(pos, *mapper);
     if (read && read->full) {
-      unknownCells_ += read->unknownCells;
+      if (unknown) *unknown += read->unknownCells;
       chunk = std::move(read->chunk);
     }
   } catch (const Error& e) {
-    const std::lock_guard lock(mutex_);
-    problems_.push_back(std::string(e.what()) + "; chunk left out");
+    report(std::string(e.what()) + "; chunk left out");
   }
   giveBack(std::move(mapper));
   return chunk;
 }
 
+std::shared_ptr<const ColumnTints> MinecraftChunkSource::columnTints(ChunkPos pos, const Chunk* read) const {
+  {
+    const std::lock_guard lock(mutex_);
+    if (const auto found = tints_.find(pos); found != tints_.end()) return found->second;
+  }
+  std::unique_ptr<Chunk> fresh;
+  if (!read) read = (fresh = this->read(pos)).get();
+  std::shared_ptr<const ColumnTints> tints;
+  if (read) tints = std::make_shared<const ColumnTints>(columnTintsOf(*read));
+  const std::lock_guard lock(mutex_);
+  if (tints_.emplace(pos, tints).second) {
+    tintOrder_.push_back(pos);
+    if (tintOrder_.size() > kKeptTints) {
+      tints_.erase(tintOrder_.front());
+      tintOrder_.pop_front();
+    }
+  }
+  return tints;
+}
+
+void MinecraftChunkSource::blendTints(Chunk& chunk, std::shared_ptr<const ColumnTints> own) const {
+  std::array<std::shared_ptr<const ColumnTints>, 9> held;
+  std::array<const ColumnTints*, 9> around{};
+  for (int dz = -1; dz <= 1; ++dz)
+    for (int dx = -1; dx <= 1; ++dx) {
+      const auto i = static_cast<std::size_t>((dz + 1) * 3 + dx + 1);
+      held[i] = dx == 0 && dz == 0 ? own : columnTints({chunk.pos().x + dx, chunk.pos().z + dz});
+      around[i] = held[i].get();
+    }
+  blendBiomeTints(around, chunk);
+}
+
 void MinecraftChunkSource::generate(Chunk& chunk) const {
-  const std::unique_ptr<Chunk> read = this->read(chunk.pos());
+  const std::unique_ptr<Chunk> read = this->read(chunk.pos(), &unknownCells_);
   if (!read) return;
   for (int s = 0; s < kSectionCount; ++s) chunk.section(s) = std::move(read->section(s));
-  copyTints(*read, chunk);
+  blendTints(chunk, columnTints(chunk.pos(), read.get()));
 }
 
 void MinecraftChunkSource::fillTints(Chunk& chunk) const {
-  if (const std::unique_ptr<Chunk> read = this->read(chunk.pos())) copyTints(*read, chunk);
+  if (std::shared_ptr<const ColumnTints> own = columnTints(chunk.pos())) blendTints(chunk, std::move(own));
 }
 
 int MinecraftChunkSource::surfaceHeight(int x, int z) const {

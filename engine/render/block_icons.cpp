@@ -42,7 +42,7 @@ glm::mat4 iconTransform(const SectionMesh& mesh) {
 
 }  // namespace
 
-BlockIcons::BlockIcons(const ShaderPreprocessor& shaders, const Atlas& atlas, const BiomeColormaps& colormaps,
+BlockIcons::BlockIcons(const ShaderPreprocessor& shaders, const Atlas& atlas, const TintPalette& tints,
                        const std::vector<SectionMesh>& meshes, int cell)
     : count_(meshes.size()),
       cell_(cell),
@@ -58,7 +58,7 @@ BlockIcons::BlockIcons(const ShaderPreprocessor& shaders, const Atlas& atlas, co
     throw Error("block icons: incomplete framebuffer");
   }
   // The atlas and meshes are needed only while drawing: made here, gone when the icons are done.
-  const BlockTextures textures(atlas, colormaps);
+  const BlockTextures textures(atlas, tints);
   SectionMeshes uploaded;
   for (std::size_t i = 0; i < meshes.size(); ++i) {
     SectionMesh mesh = meshes[i];

@@ -10,7 +10,7 @@
 #include "assets/atlas.h"
 #include "assets/image.h"
 #include "assets/shader_source.h"
-#include "assets/tints.h"
+#include "core/tint_palette.h"
 #include "mesh/mesh_data.h"
 #include "render/gl/object.h"
 
@@ -19,7 +19,7 @@ namespace terrasol {
 class BlockIcons {
  public:
   // `meshes`: one per icon (mesh/block_icon_mesh.h). `cell`: pixels per icon side.
-  BlockIcons(const ShaderPreprocessor& shaders, const Atlas& atlas, const BiomeColormaps& colormaps,
+  BlockIcons(const ShaderPreprocessor& shaders, const Atlas& atlas, const TintPalette& tints,
              const std::vector<SectionMesh>& meshes, int cell);
 
   GLuint texture() const { return texture_.id(); }

@@ -16,7 +16,7 @@ glm::vec3 srgbToLinear(glm::vec3 c) {
 
 }  // namespace
 
-BlockTextures::BlockTextures(const Atlas& atlas, const BiomeColormaps& colormaps)
+BlockTextures::BlockTextures(const Atlas& atlas, const TintPalette& tints)
     : textures_(atlas),
       tiles_(gl::Buffer::create()),
       entries_(atlas.textures),
@@ -24,10 +24,7 @@ BlockTextures::BlockTextures(const Atlas& atlas, const BiomeColormaps& colormaps
       grid_(atlas.columns, atlas.slotSize, atlas.tileSize),
       size_(static_cast<float>(atlas.columns * atlas.slotSize),
             static_cast<float>(atlas.rows * atlas.slotSize)),
-      // Sampled in the vertex shader at a vertex's climate, between texels for maps not 256 wide.
-      grassColormap_(uploadTexture({colormaps.grass}, GL_SRGB8_ALPHA8, GL_LINEAR, GL_LINEAR)),
-      foliageColormap_(uploadTexture({colormaps.foliage}, GL_SRGB8_ALPHA8, GL_LINEAR, GL_LINEAR)),
-      waterTint_(srgbToLinear(tintColour(colormaps, Tint::Water))) {
+      waterTint_(srgbToLinear(tints.colour(Tint::Water))) {
   for (std::size_t i = 0; i < entries_.size(); ++i)
     current_[i] = static_cast<std::uint32_t>(entries_[i].firstTile);
   if (current_.empty()) current_.push_back(0);  // a storage buffer may not be empty
@@ -55,8 +52,6 @@ void BlockTextures::bind(const AtlasUniforms& uniforms) const {
   glBindTextureUnit(slots::kUnitAtlasAlbedo, textures_.albedo());
   glBindTextureUnit(slots::kUnitAtlasNormal, textures_.normal());
   glBindTextureUnit(slots::kUnitAtlasSpecular, textures_.specular());
-  glBindTextureUnit(slots::kUnitGrassColormap, grassColormap_.id());
-  glBindTextureUnit(slots::kUnitFoliageColormap, foliageColormap_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, slots::kStorageTiles, tiles_.id());
   uniforms.grid.set(grid_);
   uniforms.size.set(size_);

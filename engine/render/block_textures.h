@@ -1,7 +1,7 @@
 #pragma once
 // Everything the block passes sample besides the G-buffer: the three atlases, the tile each texture
 // id shows this frame (animations advance it; a storage buffer the vertex shader indexes), the atlas
-// grid and the biome colormaps. GL thread only.
+// grid. GL thread only.
 
 #include <array>
 #include <cstdint>
@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "assets/atlas.h"
-#include "assets/tints.h"
+#include "core/tint_palette.h"
 #include "render/atlas_textures.h"
 #include "render/gl/uniforms.h"
 
@@ -27,11 +27,11 @@ struct AtlasUniforms {
 
 class BlockTextures {
  public:
-  BlockTextures(const Atlas& atlas, const BiomeColormaps& colormaps);
+  BlockTextures(const Atlas& atlas, const TintPalette& tints);
 
   // Points every animated texture at its frame for world time `ticks`.
   void update(std::int64_t ticks);
-  // Binds the atlases, the colormaps and the tile buffer, and sets a program's atlas uniforms.
+  // Binds the atlases and the tile buffer, and sets a program's atlas uniforms.
   void bind(const AtlasUniforms& uniforms) const;
   const AtlasTextures& atlas() const { return textures_; }
   glm::vec3 waterTint() const { return waterTint_; }  // linear, at the plains' temperature
@@ -43,7 +43,6 @@ class BlockTextures {
   std::vector<std::uint32_t> current_;
   glm::ivec3 grid_;  // columns, slot size, tile size
   glm::vec2 size_;   // texels
-  gl::Texture grassColormap_, foliageColormap_;
   glm::vec3 waterTint_;
 };
 

@@ -15,8 +15,8 @@
 namespace terrasol {
 
 DeferredRenderer::DeferredRenderer(const ShaderPreprocessor& shaders, const Atlas& atlas,
-                                   const BiomeColormaps& colormaps, const RendererOptions& options)
-    : shared_(atlas, colormaps, options),
+                                   const TintPalette& tints, const RendererOptions& options)
+    : shared_(atlas, tints, options),
       geometry_(VariantBuilder(shaders, shared_), shared_),
       lighting_(VariantBuilder(shaders, shared_), shared_),
       reflection_(VariantBuilder(shaders, shared_), shared_),

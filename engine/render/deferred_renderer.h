@@ -34,7 +34,7 @@ namespace terrasol {
 
 class DeferredRenderer {
  public:
-  DeferredRenderer(const ShaderPreprocessor& shaders, const Atlas& atlas, const BiomeColormaps& colormaps,
+  DeferredRenderer(const ShaderPreprocessor& shaders, const Atlas& atlas, const TintPalette& tints,
                    const RendererOptions& options = {});
 
   // Draws a frame into `framebuffer` (0 for a window) of `size`. With `timings`, each pass's time is

@@ -33,8 +33,6 @@ std::vector<ShaderDefine> slotDefines() {
       define("UNIT_SSR_DEPTH", slots::kUnitSsrDepth),
       define("UNIT_SURFACE_REFLECTION", slots::kUnitSurfaceReflection),
       define("UNIT_SURFACE_REFLECTION_HITS", slots::kUnitSurfaceReflectionHits),
-      define("UNIT_GRASS_COLORMAP", slots::kUnitGrassColormap),
-      define("UNIT_FOLIAGE_COLORMAP", slots::kUnitFoliageColormap),
       define("STORAGE_TILES", slots::kStorageTiles),
   };
 }

@@ -48,9 +48,6 @@ inline constexpr int kUnitSsrDepth = 17;  // the depth a reflected ray is marche
 // The march from water and glass, for the debug views.
 inline constexpr int kUnitSurfaceReflection = 18;
 inline constexpr int kUnitSurfaceReflectionHits = 19;
-// The biome colormaps the block vertex shaders read (lib/block_tint.glsl).
-inline constexpr int kUnitGrassColormap = 20;
-inline constexpr int kUnitFoliageColormap = 21;
 
 // Shader storage buffers.
 inline constexpr int kStorageTiles = 0;  // atlas tile of each texture id for the current frame

@@ -15,12 +15,12 @@ GBufferContents contentsFor(const Atlas& atlas, const RendererOptions& options) 
 
 }  // namespace
 
-PassShared::PassShared(const Atlas& atlas, const BiomeColormaps& colormaps, const RendererOptions& options)
+PassShared::PassShared(const Atlas& atlas, const TintPalette& tints, const RendererOptions& options)
     : options(options),
       contents(contentsFor(atlas, options)),
       smoothness(contents.specular ? textureSmoothness(atlas) : std::vector<float>{}),
       maxSmoothness(smoothness.empty() ? 0.0f : *std::max_element(smoothness.begin(), smoothness.end())),
-      textures(atlas, colormaps),
+      textures(atlas, tints),
       empty(gl::VertexArray::create()) {}
 
 LinkedProgram VariantBuilder::operator()(const char* vertex, const char* fragment,

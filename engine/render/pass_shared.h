@@ -15,7 +15,7 @@
 namespace terrasol {
 
 struct PassShared {
-  PassShared(const Atlas& atlas, const BiomeColormaps& colormaps, const RendererOptions& options);
+  PassShared(const Atlas& atlas, const TintPalette& tints, const RendererOptions& options);
 
   RendererOptions options;
   GBufferContents contents;       // the programs are built for it

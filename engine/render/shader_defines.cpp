@@ -53,22 +53,10 @@ std::string metalArray() {
   return text + ")";
 }
 
-// Tint ids and colours (core/tint.h) for lib/block_tint.glsl.
+// Tint ids (core/tint.h) for lib/block_tint.glsl and the passes that single out water.
 std::vector<ShaderDefine> tintDefines() {
-  auto literal = [](glm::vec3 c) { return vec3Literal(c.r, c.g, c.b); };
   auto id = [](Tint t) { return std::to_string(static_cast<int>(t)); };
-  return {{"TINT_GRASS", id(Tint::Grass)},
-          {"TINT_FOLIAGE", id(Tint::Foliage)},
-          {"TINT_WATER", id(Tint::Water)},
-          {"TINT_BIRCH", id(Tint::Birch)},
-          {"TINT_SPRUCE", id(Tint::Spruce)},
-          {"WATER_COLD", literal(kWaterCold)},
-          {"WATER_TEMPERATE", literal(kWaterTemperate)},
-          {"WATER_WARM", literal(kWaterWarm)},
-          {"WATER_TEMPERATE_FROM", std::to_string(kWaterTemperateFrom)},
-          {"WATER_TEMPERATE_TO", std::to_string(kWaterTemperateTo)},
-          {"BIRCH_FOLIAGE", literal(kBirchFoliage)},
-          {"SPRUCE_FOLIAGE", literal(kSpruceFoliage)}};
+  return {{"TINT_NONE", id(Tint::None)}, {"TINT_WATER", id(Tint::Water)}};
 }
 
 // The packed vertex's fields and scales (mesh/mesh_data.h) for lib/block_vertex.glsl.
@@ -84,8 +72,9 @@ std::vector<ShaderDefine> vertexDefines() {
                                                      {"BLOCK_LIGHT", V::kBlockLight},
                                                      {"SKY_LIGHT", V::kSkyLight},
                                                      {"AO", V::kAo},  // light
-                                                     {"TEMPERATURE", V::kTemperature},
-                                                     {"DOWNFALL", V::kDownfall},
+                                                     {"TINT_RED", V::kTintRed},
+                                                     {"TINT_GREEN", V::kTintGreen},
+                                                     {"TINT_BLUE", V::kTintBlue},
                                                      {"U", V::kU},
                                                      {"V", V::kV}};  // uv
   std::vector<ShaderDefine> defines;

@@ -11,6 +11,7 @@
 #include "assets/block_model.h"
 #include "assets/block_states.h"
 #include "assets/model_bake.h"
+#include "assets/tints.h"
 #include "core/error.h"
 #include "core/json_check.h"
 #include "core/model_units.h"
@@ -243,6 +244,7 @@ BlockAtlas buildBlockAtlas(const BlockRegistry& blocks, const PackStack& packs, 
   }
   if (textures.empty()) textures.push_back(loadBlockTexture(packs, {"missing"}, result.problems));
   result.atlas = buildAtlas(textures);
+  result.tints = loadColormaps(packs, result.problems);
   result.faceTextures.resize(blocks.size());
   result.modelQuads.resize(blocks.size());
   result.modelChoices.resize(blocks.size());
@@ -314,7 +316,7 @@ BlockMeshTable meshTableOf(const BlockRegistry& blocks, const BlockAtlas& atlas)
   return BlockMeshTable(
       blocks, [&](BlockId id, int face) { return atlas.textureOf(id, face); },
       [&](BlockId id) { return atlas.modelQuads[id]; }, [&](BlockId id) { return atlas.modelChoices[id]; },
-      [&](BlockId id) { return atlas.sameAs.empty() ? id : atlas.sameAs[id]; });
+      [&](BlockId id) { return atlas.sameAs.empty() ? id : atlas.sameAs[id]; }, atlas.tints);
 }
 
 }  // namespace terrasol

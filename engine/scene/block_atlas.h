@@ -12,6 +12,7 @@
 #include "assets/model_bake.h"
 #include "assets/resource_pack.h"
 #include "core/enum_names.h"
+#include "core/tint_palette.h"
 #include "mesh/mesher.h"
 #include "world/block_registry.h"
 #include "world/block_shapes.h"
@@ -28,6 +29,7 @@ struct BlockAtlas {
   std::vector<std::string> placeholders;
   // Per state: the earlier state of its block drawn just as it (BlockModelBake::sameAs), or itself.
   std::vector<BlockId> sameAs;
+  TintPalette tints;  // the packs' colormaps
   std::uint16_t textureOf(BlockId id, int face) const {
     return faceTextures[id][static_cast<std::size_t>(face)];
   }

@@ -1,7 +1,5 @@
 #include "scene/block_colours.h"
 
-#include "assets/tints.h"
-
 namespace terrasol {
 namespace {
 
@@ -41,9 +39,8 @@ const ModelQuad* topQuad(const std::vector<ModelQuad>& quads) {
 
 }  // namespace
 
-std::vector<glm::vec4> blockTopColours(const BlockRegistry& blocks, const BlockAtlas& atlas,
-                                       const BiomeColormaps& colormaps) {
-  std::vector<glm::vec4> colours(blocks.size(), glm::vec4(0.0f));
+std::vector<TopColour> blockTopColours(const BlockRegistry& blocks, const BlockAtlas& atlas) {
+  std::vector<TopColour> colours(blocks.size());
   std::vector<glm::vec4> means(atlas.atlas.textures.size(), glm::vec4(-1.0f));
   const auto mean = [&](int texture) {
     glm::vec4& m = means[static_cast<std::size_t>(texture)];
@@ -64,8 +61,7 @@ std::vector<glm::vec4> blockTopColours(const BlockRegistry& blocks, const BlockA
     } else {
       c = mean(atlas.textureOf(id, kUp));
     }
-    if (tinted) c = glm::vec4(glm::vec3(c) * tintColour(colormaps, type.tint), c.a);
-    colours[id] = c;
+    colours[id] = {c, tinted ? type.tint : Tint::None};
   }
   return colours;
 }

@@ -81,10 +81,10 @@ RendererOptions withProps(RendererOptions options, const PlacedProps& props) {
 }  // namespace
 
 struct SceneRenderer::Gpu {
-  Gpu(const ShaderPreprocessor& shaders, const Atlas& atlas, const BiomeColormaps& colormaps,
+  Gpu(const ShaderPreprocessor& shaders, const Atlas& atlas, const TintPalette& tints,
       const RendererOptions& options, glm::ivec2 size, const SceneFile& scene, const SceneWorld& world)
       : props(placeProps(scene, world)),
-        renderer(shaders, atlas, colormaps, withProps(options, props)),
+        renderer(shaders, atlas, tints, withProps(options, props)),
         target(size) {}
   PlacedProps props;  // before the renderer, which is built for what they need
   DeferredRenderer renderer;
@@ -97,9 +97,7 @@ SceneRenderer::SceneRenderer(const SceneFile& scene)
   const auto start = std::chrono::steady_clock::now();
   const PackStack packs = openPacks(scene);
   world_ = std::make_unique<World>(scene, packs);
-  std::vector<PackProblem>& problems = world_->atlas.problems;
-  const BiomeColormaps colormaps = loadColormaps(packs, problems);
-  stats_.problems = problems;
+  stats_.problems = world_->atlas.problems;
   const std::vector<SectionMesh> meshes = world_->world.meshVisible(world_->table);
   stats_.loadMs = msSince(start);
 
@@ -114,7 +112,7 @@ SceneRenderer::SceneRenderer(const SceneFile& scene)
   options.cullPasses = scene.cullPasses;
   options.reflections = scene.reflections;
   options.water = scene.water;
-  gpu_ = std::make_unique<Gpu>(shaders, world_->atlas.atlas, colormaps, options,
+  gpu_ = std::make_unique<Gpu>(shaders, world_->atlas.atlas, world_->atlas.tints, options,
                                glm::ivec2(scene.width, scene.height), scene, world_->world);
   for (const auto& mesh : meshes) {
     gpu_->meshes.upload(mesh);

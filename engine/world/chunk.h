@@ -40,26 +40,22 @@ class Chunk {
   ChunkLight& light() { return light_; }
   const ChunkLight& light() const { return light_; }
 
-  // Each column's grass and foliage colour, blended over its neighbourhood by the generator. Not
-  // saved: a loaded chunk asks its generator again (ChunkGenerator::fillTints).
-  TintClimate tint(int x, int z) const { return tints_[static_cast<std::size_t>(columnIndex(x, z))]; }
-  void setTint(int x, int z, TintClimate tint) { tints_[static_cast<std::size_t>(columnIndex(x, z))] = tint; }
+  // Each column's biome tint, blended over its neighbourhood by the generator. Not saved: a loaded
+  // chunk asks its generator again (ChunkGenerator::fillTints).
+  const ColumnTint& tint(int x, int z) const { return tints_[static_cast<std::size_t>(columnIndex(x, z))]; }
+  void setTint(int x, int z, const ColumnTint& tint) {
+    tints_[static_cast<std::size_t>(columnIndex(x, z))] = tint;
+  }
 
   // Edited since load or generation: must be saved before unloading.
   bool modified() const { return modified_; }
   void setModified(bool modified) { modified_ = modified; }
 
  private:
-  static constexpr std::array<TintClimate, kChunkArea> filledTints() {
-    std::array<TintClimate, kChunkArea> tints{};
-    tints.fill(kPlainsTint);
-    return tints;
-  }
-
   ChunkPos pos_;
   std::array<Section, kSectionCount> sections_;
   ChunkLight light_;
-  std::array<TintClimate, kChunkArea> tints_ = filledTints();
+  std::array<ColumnTint, kChunkArea> tints_{};
   bool modified_ = false;
 };
 

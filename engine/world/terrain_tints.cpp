@@ -48,7 +48,7 @@ void blendTints(Chunk& chunk, const TerrainContext& terrain) {
         const float south = node(0, 1).*axis + (node(1, 1).*axis - node(0, 1).*axis) * fx;
         return north + (south - north) * fz;
       };
-      chunk.setTint(x, z, {byte(mix(&Tint::temperature)), byte(mix(&Tint::downfall))});
+      chunk.setTint(x, z, climateOnly({byte(mix(&Tint::temperature)), byte(mix(&Tint::downfall))}));
     }
 }
 

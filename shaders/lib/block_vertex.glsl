@@ -5,8 +5,8 @@ struct BlockVertex {
   vec3 position;  // blocks, from the section's minimum corner
   int texture;
   int face;       // 0..5 Direction, 6..9 cross planes: indexes FACE_NORMALS / FACE_TANGENTS / FACE_UPS
-  int tint;       // Tint: TINT_GRASS, ... (lib/block_tint.glsl)
-  vec2 tintClimate;  // temperature, downfall: 0..1 along the colormaps' axes
+  int tint;       // Tint id (core/tint.h): TINT_NONE, TINT_WATER, ...
+  vec3 tintColour;  // sRGB 0..1: what a tinted vertex's texture is multiplied by (lib/block_tint.glsl)
   float blockLight, skyLight;  // 0..1
   float ao;                    // 0..1 (0 = darkest corner)
   vec2 uv;                     // textures across (0..1, or up to 16 on a merged quad), v = 0 at the top row
@@ -29,9 +29,10 @@ BlockVertex unpackBlockVertex(uvec4 p) {
   v.blockLight = float(bitField(p.z, BV_BLOCK_LIGHT_SHIFT, BV_BLOCK_LIGHT_MASK)) / cells;
   v.skyLight = float(bitField(p.z, BV_SKY_LIGHT_SHIFT, BV_SKY_LIGHT_MASK)) / cells;
   v.ao = float(ao) / float(BV_AO_MASK);
-  v.tintClimate = vec2(bitField(p.z, BV_TEMPERATURE_SHIFT, BV_TEMPERATURE_MASK),
-                       bitField(p.z, BV_DOWNFALL_SHIFT, BV_DOWNFALL_MASK)) /
-                  vec2(BV_TEMPERATURE_MASK, BV_DOWNFALL_MASK);
+  v.tintColour = vec3(bitField(p.z, BV_TINT_RED_SHIFT, BV_TINT_RED_MASK),
+                      bitField(p.z, BV_TINT_GREEN_SHIFT, BV_TINT_GREEN_MASK),
+                      bitField(p.w, BV_TINT_BLUE_SHIFT, BV_TINT_BLUE_MASK)) /
+                 vec3(BV_TINT_RED_MASK, BV_TINT_GREEN_MASK, BV_TINT_BLUE_MASK);
   v.uv = vec2(bitField(p.w, BV_U_SHIFT, BV_U_MASK), bitField(p.w, BV_V_SHIFT, BV_V_MASK)) / BV_UV_STEPS;
   return v;
 }

@@ -34,15 +34,15 @@ Exported exportOf(const Region& region, const std::string& name) {
   PackStack packs;
   packs.push(ResourcePack::open(resourcePackDir() / "default"));
   BlockAtlas atlas = buildBlockAtlas(blocks, packs);
-  const BiomeColormaps tints = loadColormaps(packs, atlas.problems);
-  const BlockMeshTable table(blocks, [&](BlockId id, int face) { return atlas.textureOf(id, face); });
+  const BlockMeshTable table(
+      blocks, [&](BlockId id, int face) { return atlas.textureOf(id, face); }, {}, {}, {}, atlas.tints);
   const SceneWorld world(scene, blocks);
   const std::vector<SectionMesh> meshes = meshRegion(world.world(), region, table);
   Exported out;
   for (const SectionMesh& m : meshes) out.mesherQuads += m.quads();
   // A folder per export: ctest runs these tests in parallel, and scratchDir empties its folder.
   const auto file = testing::scratchDir("export-" + name) / (name + ".glb");
-  out.stats = exportRegion(meshes, region, atlas, tints, file);
+  out.stats = exportRegion(meshes, region, atlas, file);
   out.model = loadModel(file);
   return out;
 }

@@ -204,14 +204,20 @@ NbtValue& memberOf(NbtCompound& compound, const std::string& name) {
 }
 
 // Each column takes the tint of the biome its highest block stands in: 1.18's biome cells by name,
-// 1.15-1.17's numeric cells, 1.13-1.14's numeric columns; the west half desert, the east half swamp.
+// 1.15-1.17's numeric cells, 1.13-1.14's numeric columns; the west half desert, the east half swamp,
+// whose water and leaves have colours of their own.
 TEST(MinecraftSave, ColumnsTakeTheirBiomesTint) {
   const TestSection ground{.y = 3, .palette = {"stone"}, .indices = {}};  // y 48..63
   const TintClimate desert = tintClimate(2.0f, 0.0f), swamp = tintClimate(0.8f, 0.9f);
   const auto expectHalves = [&](const std::filesystem::path& dir) {
     const AnvilChunk c = loadOne(dir, {0, 0});
     for (int z = 0; z < 16; ++z)
-      for (int x = 0; x < 16; ++x) ASSERT_EQ(c.chunk->tint(x, z), x < 8 ? desert : swamp) << x << "," << z;
+      for (int x = 0; x < 16; ++x) {
+        const ColumnTint& t = c.chunk->tint(x, z);
+        ASSERT_EQ(t.climate, x < 8 ? desert : swamp) << x << "," << z;
+        ASSERT_EQ(t.water, (x < 8 ? BiomeColour{0x3F, 0x76, 0xE4, 255} : BiomeColour{0x61, 0x7B, 0x64, 255}));
+        ASSERT_EQ(t.foliage, (x < 8 ? BiomeColour{} : BiomeColour{0x6A, 0x70, 0x39, 255}));
+      }
   };
   {
     NbtCompound nbt = chunkNbt(kV1_18_1, {0, 0}, {ground});

@@ -1,5 +1,5 @@
-// Biome tints: the colormaps' lookup, the default pack's maps, the blend across biome borders, the
-// climate each vertex carries, and a loaded chunk getting its tints back.
+// Biome tints: the colormaps' lookup, the default pack's maps, biomes' own colours, the blend across
+// biome borders, the colour each vertex carries, and a loaded chunk getting its tints back.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -27,11 +27,24 @@ PackStack stackOf(std::initializer_list<std::filesystem::path> dirs) {
   return stack;
 }
 
-BiomeColormaps defaultColormaps() {
+TintPalette defaultPalette() {
   std::vector<PackProblem> problems;
-  BiomeColormaps maps = loadColormaps(stackOf({resourcePackDir() / "default"}), problems);
+  TintPalette palette = loadColormaps(stackOf({resourcePackDir() / "default"}), problems);
   EXPECT_TRUE(problems.empty());
-  return maps;
+  return palette;
+}
+
+// 256 x 256, texel (x, y) = (x, y, 7): a climate's colour names its texel.
+Colormap gradientMap() {
+  Colormap map{256, 256, {}};
+  for (int y = 0; y < 256; ++y)
+    for (int x = 0; x < 256; ++x)
+      map.rgb.insert(map.rgb.end(), {static_cast<std::uint8_t>(x), static_cast<std::uint8_t>(y), 7});
+  return map;
+}
+
+glm::vec3 rgb(std::uint32_t c) {
+  return glm::vec3(c >> 16 & 255, c >> 8 & 255, c & 255) / 255.0f;
 }
 
 // A border between forest and desert for seed 1 lies in the 8 x 8 chunks from here.
@@ -45,32 +58,22 @@ float largestChannelStep(glm::vec3 a, glm::vec3 b) {
 }
 
 TEST(Tints, ColormapsAreSampledLikeMinecraftAndDefaultsFillIn) {
-  Image map(256, 256);
-  for (int y = 0; y < 256; ++y)
-    for (int x = 0; x < 256; ++x) {
-      std::uint8_t* p = map.pixel(x, y);
-      p[0] = static_cast<std::uint8_t>(x), p[1] = static_cast<std::uint8_t>(y), p[2] = 7, p[3] = 255;
-    }
-  // x = (int)((1 - 0.8f) * 255) = 50 (0.8f is a little above 0.8, as in Minecraft), y = (int)(0.68 * 255) =
-  // 173
-  const glm::vec3 plains = sampleColormap(map, 0.8f, 0.4f);
-  EXPECT_NEAR(plains.r * 255.0f, 50.0f, 0.5f);
-  EXPECT_NEAR(plains.g * 255.0f, 173.0f, 0.5f);
-  const glm::vec3 extreme = sampleColormap(map, 5.0f, -3.0f);  // clamped, never outside the map
-  EXPECT_NEAR(extreme.r, 0.0f, 1e-6f);
-  // The tint climate names the same texel, and tintColour reads it.
+  const TintPalette maps(gradientMap(), gradientMap());
+  // Minecraft's texel for plains: x = (int)((1 - 0.8f) * 255) = 50 (0.8f is a little above 0.8),
+  // y = (int)(0.68 * 255) = 173. The tint climate names it, and the palette reads it.
   EXPECT_EQ(kPlainsTint, (TintClimate{255 - 50, 255 - 173}));
-  const BiomeColormaps maps{map, map};
-  EXPECT_EQ(tintColour(maps, Tint::Grass, kPlainsTint) * 255.0f, glm::vec3(50, 173, 7));
-  EXPECT_EQ(tintColour(maps, Tint::Foliage, tintClimate(5.0f, -3.0f)) * 255.0f, glm::vec3(0, 255, 7));
-  EXPECT_EQ(tintColour(maps, Tint::None, kPlainsTint), glm::vec3(1.0f));
+  EXPECT_EQ(maps.rgb(Tint::Grass), glm::u8vec3(50, 173, 7));
+  EXPECT_EQ(maps.rgb(Tint::Foliage, climateOnly(tintClimate(5.0f, -3.0f))), glm::u8vec3(0, 255, 7))
+      << "clamped, never outside the map";
+  EXPECT_EQ(maps.colour(Tint::None), glm::vec3(1.0f));
 
   testing::PackBuilder pack("pack_tints");
   std::vector<PackProblem> problems;
-  const BiomeColormaps none = loadColormaps(stackOf({pack.dir()}), problems);
-  EXPECT_LT(largestChannelStep(tintColour(none, Tint::Grass), kDefaultGrass), 0.5f / 255.0f);
-  EXPECT_LT(largestChannelStep(tintColour(none, Tint::Foliage, tintClimate(2.0f, 0.0f)), kDefaultFoliage),
-            0.5f / 255.0f)
+  const TintPalette none = loadColormaps(stackOf({pack.dir()}), problems);
+  EXPECT_LT(largestChannelStep(none.colour(Tint::Grass), kDefaultGrass), 0.5f / 255.0f);
+  EXPECT_LT(
+      largestChannelStep(none.colour(Tint::Foliage, climateOnly(tintClimate(2.0f, 0.0f))), kDefaultFoliage),
+      0.5f / 255.0f)
       << "without a colormap every climate gets Minecraft's default";
   pack.asset("textures/colormap/grass.png", "not a png");
   loadColormaps(stackOf({pack.dir()}), problems);
@@ -78,10 +81,10 @@ TEST(Tints, ColormapsAreSampledLikeMinecraftAndDefaultsFillIn) {
   EXPECT_NE(problems[0].message.find("grass.png"), std::string::npos) << problems[0].message;
   problems.clear();
   TERRASOL_SKIP_WITHOUT_TEST_DATA();
-  const BiomeColormaps real =
+  const TintPalette real =
       loadColormaps(stackOf({testing::testData() / "packs" / "pixel_perfection_ce"}), problems);
   EXPECT_TRUE(problems.empty());
-  const glm::vec3 grass = tintColour(real, Tint::Grass);
+  const glm::vec3 grass = real.colour(Tint::Grass);
   EXPECT_GT(largestChannelStep(grass, kDefaultGrass), 1.0f / 255.0f)
       << "pixel_perfection_ce's grass colormap is used";
   EXPECT_GT(grass.g, grass.b) << "and it is green";
@@ -90,18 +93,18 @@ TEST(Tints, ColormapsAreSampledLikeMinecraftAndDefaultsFillIn) {
 // The default pack ships colormaps whose plains texels are Minecraft's plains colours; other climates
 // move the way Minecraft's maps do. The committed maps are what the pack generator makes.
 TEST(Tints, DefaultPackColormapsGiveMinecraftsColours) {
-  const BiomeColormaps maps = defaultColormaps();
-  ASSERT_EQ(maps.grass.width, 256);
-  EXPECT_LT(largestChannelStep(tintColour(maps, Tint::Grass), kDefaultGrass), 1.5f / 255.0f);
-  EXPECT_LT(largestChannelStep(tintColour(maps, Tint::Foliage), kDefaultFoliage), 1.5f / 255.0f);
-  const glm::vec3 desert = tintColour(maps, Tint::Grass, biomeTint(Biome::Desert));
-  const glm::vec3 forest = tintColour(maps, Tint::Grass, biomeTint(Biome::Forest));
-  const glm::vec3 snowy = tintColour(maps, Tint::Grass, biomeTint(Biome::SnowyPlains));
+  const TintPalette maps = defaultPalette();
+  ASSERT_EQ(maps.grass().width, 256);
+  EXPECT_LT(largestChannelStep(maps.colour(Tint::Grass), kDefaultGrass), 1.5f / 255.0f);
+  EXPECT_LT(largestChannelStep(maps.colour(Tint::Foliage), kDefaultFoliage), 1.5f / 255.0f);
+  const auto in = [](Biome b) { return climateOnly(biomeTint(b)); };
+  const glm::vec3 desert = maps.colour(Tint::Grass, in(Biome::Desert));
+  const glm::vec3 forest = maps.colour(Tint::Grass, in(Biome::Forest));
+  const glm::vec3 snowy = maps.colour(Tint::Grass, in(Biome::SnowyPlains));
   EXPECT_GT(desert.r, forest.r + 0.2f) << "dry heat yellows the grass";
   EXPECT_GT(snowy.b, forest.b + 0.15f) << "cold blues it";
-  EXPECT_EQ(tintColour(maps, Tint::Birch, biomeTint(Biome::Desert)), kBirchFoliage)
-      << "fixed, whatever the biome";
-  EXPECT_EQ(tintColour(maps, Tint::Spruce, biomeTint(Biome::Taiga)), kSpruceFoliage);
+  EXPECT_EQ(maps.colour(Tint::Birch, in(Biome::Desert)), kBirchFoliage) << "fixed, whatever the biome";
+  EXPECT_EQ(maps.colour(Tint::Spruce, in(Biome::Taiga)), kSpruceFoliage);
 
   for (const auto& c : packgen::generateColormaps()) {
     const Image committed = loadImage(resourcePackDir() / "default" / "assets" / "minecraft" / "textures" /
@@ -111,21 +114,43 @@ TEST(Tints, DefaultPackColormapsGiveMinecraftsColours) {
 }
 
 TEST(Tints, WaterIsBluerInTheColdAndTurquoiseInTheHeat) {
-  const BiomeColormaps maps = defaultColormaps();
-  EXPECT_EQ(tintColour(maps, Tint::Water, biomeTint(Biome::Plains)), kWaterTemperate);
-  EXPECT_EQ(tintColour(maps, Tint::Water, biomeTint(Biome::Ocean)), kWaterTemperate);
-  EXPECT_EQ(tintColour(maps, Tint::Water, biomeTint(Biome::SnowyPlains)), kWaterCold);
-  EXPECT_EQ(tintColour(maps, Tint::Water, biomeTint(Biome::Desert)), kWaterWarm);
-  const glm::vec3 taiga = tintColour(maps, Tint::Water, biomeTint(Biome::Taiga));
+  const TintPalette maps = defaultPalette();
+  const auto water = [&](Biome b) { return maps.colour(Tint::Water, climateOnly(biomeTint(b))); };
+  EXPECT_EQ(water(Biome::Plains), kWaterTemperate);
+  EXPECT_EQ(water(Biome::Ocean), kWaterTemperate);
+  EXPECT_EQ(water(Biome::SnowyPlains), kWaterCold);
+  EXPECT_EQ(water(Biome::Desert), kWaterWarm);
+  const glm::vec3 taiga = water(Biome::Taiga);
   EXPECT_GT(taiga.g, kWaterCold.g);
   EXPECT_LT(taiga.g, kWaterTemperate.g);
+}
+
+// A biome's own colour lies over the colormap's by its weight: whole for Minecraft's fixed colours,
+// half for dark forest's darkening, which Minecraft computes as ((c & 0xFEFEFE) + 0x28340A) >> 1.
+TEST(Tints, ABiomesOwnColourLiesOverTheColormapsByItsWeight) {
+  const TintPalette maps(gradientMap(), gradientMap());
+  ColumnTint badlands = climateOnly(tintClimate(2.0f, 0.0f));
+  badlands.grass = {0x90, 0x81, 0x4D, 255};
+  EXPECT_EQ(maps.colour(Tint::Grass, badlands), rgb(0x90814D));
+  EXPECT_EQ(maps.rgb(Tint::Foliage, badlands), glm::u8vec3(0, 255, 7)) << "the colormap, where it has none";
+  ColumnTint darkForest = climateOnly(tintClimate(0.7f, 0.8f));
+  const glm::u8vec3 map = maps.rgb(Tint::Grass, darkForest);
+  darkForest.grass = {0x28, 0x34, 0x0A, 128};
+  const glm::u8vec3 dark = maps.rgb(Tint::Grass, darkForest);
+  for (int c = 0; c < 3; ++c) {
+    const int minecraft = ((map[c] & 0xFE) + std::array{0x28, 0x34, 0x0A}[static_cast<std::size_t>(c)]) >> 1;
+    EXPECT_NEAR(dark[c], minecraft, 1) << "channel " << c;
+  }
+  ColumnTint swampWater;
+  swampWater.water = {0x61, 0x7B, 0x64, 255};
+  EXPECT_EQ(maps.colour(Tint::Water, swampWater), rgb(0x617B64));
 }
 
 // Across a border between forest and desert, neighbouring columns' grass differs by at most a few
 // levels, while the two sides differ by far more: the border fades, no seam shows.
 TEST(Tints, BiomeBordersBlendWithoutASeam) {
   const TerrainGenerator gen(1, testing::defaultBlocks());
-  const BiomeColormaps maps = defaultColormaps();
+  const TintPalette maps = defaultPalette();
   constexpr int kChunks = 8;  // 128 x 128 columns
   const ChunkPos corner{kBorderChunkX, kBorderChunkZ};
   std::vector<glm::vec3> grass(kChunks * 16 * kChunks * 16);
@@ -137,7 +162,7 @@ TEST(Tints, BiomeBordersBlendWithoutASeam) {
       gen.fillTints(chunk);
       for (int z = 0; z < 16; ++z)
         for (int x = 0; x < 16; ++x) {
-          at(cx * 16 + x, cz * 16 + z) = tintColour(maps, Tint::Grass, chunk.tint(x, z));
+          at(cx * 16 + x, cz * 16 + z) = maps.colour(Tint::Grass, chunk.tint(x, z));
           biomes[static_cast<int>(gen.biomeAt(chunk.pos().minBlockX() + x, chunk.pos().minBlockZ() + z))] =
               true;
         }
@@ -157,11 +182,12 @@ TEST(Tints, BiomeBordersBlendWithoutASeam) {
   EXPECT_GT(range, 8.0f * kBlendStepLimit);
 }
 
-// Each tinted vertex carries the climate at its position: between column centres, interpolated; the
-// mesher reads neighbouring chunks' columns at a chunk's edge. Untinted vertices carry none.
-TEST(Tints, VerticesCarryTheirColumnsClimateInterpolated) {
-  testing::MeshWorld w(
-      BlockMeshTable(testing::defaultBlocks(), [](BlockId, int) { return std::uint16_t{1}; }));
+// Each tinted vertex carries its columns' colour: between column centres, interpolated; the mesher
+// reads neighbouring chunks' columns at a chunk's edge. Untinted vertices carry none.
+TEST(Tints, VerticesCarryTheirColumnsColourInterpolated) {
+  const TintPalette palette(gradientMap(), gradientMap());
+  testing::MeshWorld w(BlockMeshTable(
+      testing::defaultBlocks(), [](BlockId, int) { return std::uint16_t{1}; }, {}, {}, {}, palette));
   w.set({5, 64, 5}, "grass_block");
   w.set({5, 65, 5}, "oak_leaves");
   int uniform = 0;
@@ -169,15 +195,13 @@ TEST(Tints, VerticesCarryTheirColumnsClimateInterpolated) {
     for (const PackedVertex& v : layer.vertices) {
       if (v.tint() == 0) continue;
       ++uniform;
-      EXPECT_EQ(v.tintTemperature(), kPlainsTint.temperature)
-          << "one biome all round: its climate everywhere";
-      EXPECT_EQ(v.tintDownfall(), kPlainsTint.downfall);
+      EXPECT_EQ(v.tintRgb(), palette.rgb(Tint::Foliage)) << "one biome all round: its colour everywhere";
     }
   EXPECT_EQ(uniform, 4 * 6) << "the leaves' six faces (the grass top is hidden)";
   w.set({5, 64, 5}, "air");
   w.set({5, 65, 5}, "air");
 
-  const TintClimate warm{200, 40}, cold{40, 20};
+  const ColumnTint warm = climateOnly({200, 40}), cold = climateOnly({40, 20});
   for (int z = 0; z < 16; ++z)
     for (int x = 0; x < 16; ++x) w.world.chunk({0, 0})->setTint(x, z, x < 8 ? warm : cold);
   for (int z = 0; z < 16; ++z) {
@@ -190,20 +214,19 @@ TEST(Tints, VerticesCarryTheirColumnsClimateInterpolated) {
   int tops = 0;
   for (const PackedVertex& v : mesh.layers[static_cast<std::size_t>(MeshLayer::Opaque)].vertices) {
     if (v.tint() == 0) {
-      EXPECT_EQ(v.tintTemperature(), 0);
-      EXPECT_EQ(v.tintDownfall(), 0);
+      EXPECT_EQ(v.tintRgb(), glm::u8vec3(0));
       continue;
     }
     ASSERT_EQ(v.face(), static_cast<int>(Direction::Up));
     ++tops;
     const int x32 = v.x32();
     // Corners at x = 0..7 lie between warm columns, x = 8 between warm and cold, 9..15 between cold
-    // ones, x = 16 between this chunk's cold column 15 and the east chunk's warm column 0.
-    const TintClimate expected = x32 < 8 * 32                    ? warm
-                                 : x32 > 8 * 32 && x32 < 16 * 32 ? cold
-                                                                 : TintClimate{120, 30};
-    EXPECT_EQ(v.tintTemperature(), expected.temperature) << "corner x = " << x32 / 32;
-    EXPECT_EQ(v.tintDownfall(), expected.downfall) << "corner x = " << x32 / 32;
+    // ones, x = 16 between this chunk's cold column 15 and the east chunk's warm column 0. The map's
+    // texel is (255 - temperature, 255 - downfall, 7).
+    const glm::u8vec3 expected = x32 < 8 * 32                    ? glm::u8vec3(55, 215, 7)
+                                 : x32 > 8 * 32 && x32 < 16 * 32 ? glm::u8vec3(215, 235, 7)
+                                                                 : glm::u8vec3(135, 225, 7);
+    EXPECT_EQ(v.tintRgb(), expected) << "corner x = " << x32 / 32;
   }
   EXPECT_GT(tops, 0);
 }
@@ -217,7 +240,7 @@ TEST(Tints, ALoadedChunkGetsItsTintsBack) {
   gen.generate(generated);
   bool plainsOnly = true;
   for (int z = 0; z < 16; ++z)
-    for (int x = 0; x < 16; ++x) plainsOnly &= generated.tint(x, z) == kPlainsTint;
+    for (int x = 0; x < 16; ++x) plainsOnly &= generated.tint(x, z) == kPlainsColumn;
   ASSERT_FALSE(plainsOnly) << "a chunk whose tints tell";
   const auto dir = testing::scratchDir("tints_saved");
   {

@@ -19,15 +19,13 @@ TEST_F(BlockIconsTest, EveryBlockGetsAnIcon) {
   PackStack packs;
   packs.push(ResourcePack::open(resourcePackDir() / "default"));
   const BlockAtlas atlas = buildBlockAtlas(blocks, packs);
-  std::vector<PackProblem> problems = atlas.problems;
-  const BiomeColormaps colormaps = loadColormaps(packs, problems);
-  ASSERT_TRUE(problems.empty());
+  ASSERT_TRUE(atlas.problems.empty());
   const BlockMeshTable table = meshTableOf(blocks, atlas);
   const std::vector<BlockId> states = iconStates(blocks, atlas.placeholders);
   std::vector<SectionMesh> meshes;
   for (const BlockId s : states) meshes.push_back(iconMesh(table, blocks, s));
   constexpr int kCell = 32;
-  const BlockIcons icons(ShaderPreprocessor(shaderDir()), atlas.atlas, colormaps, meshes, kCell);
+  const BlockIcons icons(ShaderPreprocessor(shaderDir()), atlas.atlas, atlas.tints, meshes, kCell);
   context_->checkErrors("drawing the icons");
   ASSERT_EQ(icons.count(), states.size());
   const Image sheet = icons.read();

@@ -182,21 +182,21 @@ TEST_F(GlslReferenceTest, TheShadersLightmapIsTheCppTableAtWholeLevels) {
   }
 }
 
-// Every field at 0 and at its largest in all 16 384 combinations, then random vertices.
+// Every field at 0 and at its largest in all 32 768 combinations, then random vertices.
 std::vector<PackedVertex> verticesToUnpack() {
   using V = PackedVertex;
-  const BitField fields[] = {V::kX,           V::kY,        V::kZ,  V::kTexture,    V::kFace,
-                             V::kTint,        V::kRole,     V::kAo, V::kBlockLight, V::kSkyLight,
-                             V::kTemperature, V::kDownfall, V::kU,  V::kV};
+  const BitField fields[] = {V::kX,    V::kY,    V::kZ,       V::kTexture,    V::kFace,
+                             V::kTint, V::kRole, V::kAo,      V::kBlockLight, V::kSkyLight,
+                             V::kU,    V::kV,    V::kTintRed, V::kTintGreen,  V::kTintBlue};
   constexpr int kFields = static_cast<int>(std::size(fields));
   const auto vertex = [&](auto valueOf) {
     int f[kFields];
     for (int k = 0; k < kFields; ++k) f[k] = valueOf(k, static_cast<int>(fields[k].mask()));
     PackedVertex v{V::packPosition(f[0], f[1], f[2]), V::packMaterial(f[3], f[4], f[5]),
-                   V::kAo.pack(f[7]) | V::kBlockLight.pack(f[8]) | V::kSkyLight.pack(f[9]) |
-                       V::packTintClimate(f[10], f[11]),
-                   V::packUv(f[12], f[13])};
+                   V::kAo.pack(f[7]) | V::kBlockLight.pack(f[8]) | V::kSkyLight.pack(f[9]),
+                   V::packUv(f[10], f[11])};
     v.setRole(static_cast<QuadRole>(f[6]));
+    v.setTintRgb(glm::u8vec3(f[12], f[13], f[14]));
     return v;
   };
   std::vector<PackedVertex> vertices;
@@ -222,21 +222,20 @@ TEST_F(GlslReferenceTest, TheShaderUnpacksEveryFieldOfThePackedVertexAsCppPacksI
     outputs[i * per] = vec4(v.position, float(v.texture));
     outputs[i * per + 1u] = vec4(float(v.face), float(v.tint), v.merged ? 1.0 : 0.0, v.ao);
     outputs[i * per + 2u] = vec4(v.blockLight, v.skyLight, v.uv);
-    outputs[i * per + 3u] = vec4(v.tintClimate, 0.0, 0.0);)",
+    outputs[i * per + 3u] = vec4(v.tintColour, 0.0);)",
                            words, 4);
-  constexpr const char* kNames[14] = {"x",    "y",      "z",           "texture",     "face",
-                                      "tint", "merged", "ao",          "block light", "sky light",
-                                      "u",    "v",      "temperature", "downfall"};
+  constexpr const char* kNames[15] = {"x",    "y",      "z",        "texture",     "face",
+                                      "tint", "merged", "ao",       "block light", "sky light",
+                                      "u",    "v",      "tint red", "tint green",  "tint blue"};
   const float steps = static_cast<float>(V::kPositionSteps), uvSteps = static_cast<float>(V::kUvSteps);
   const float aoMax = static_cast<float>(V::kAo.mask());
-  const float climateMax = static_cast<float>(V::kTemperature.mask());
-  int wrong[14] = {};
-  std::string first[14];
+  int wrong[15] = {};
+  std::string first[15];
   for (std::size_t n = 0; n < vertices.size(); ++n) {
     const PackedVertex& v = vertices[n];
     const auto f = [](int value) { return static_cast<float>(value); };
     const float cells = f(v.cellsLit() * V::kCellLight);
-    const float cpu[14] = {f(v.x32()) / steps,
+    const float cpu[15] = {f(v.x32()) / steps,
                            f(v.y32()) / steps,
                            f(v.z32()) / steps,
                            f(v.texture()),
@@ -248,9 +247,10 @@ TEST_F(GlslReferenceTest, TheShaderUnpacksEveryFieldOfThePackedVertexAsCppPacksI
                            f(V::kSkyLight.get(v.light)) / cells,
                            f(v.u()) / uvSteps,
                            f(v.v()) / uvSteps,
-                           f(v.tintTemperature()) / climateMax,
-                           f(v.tintDownfall()) / climateMax};
-    for (int k = 0; k < 14; ++k) {
+                           f(v.tintRgb().r) / 255.0f,
+                           f(v.tintRgb().g) / 255.0f,
+                           f(v.tintRgb().b) / 255.0f};
+    for (int k = 0; k < 15; ++k) {
       const float shader = gpu[n * 4 + static_cast<std::size_t>(k / 4)][k % 4];
       if (std::abs(shader - cpu[k]) <= 1e-6f) continue;
       if (wrong[k]++ == 0) {
@@ -260,7 +260,7 @@ TEST_F(GlslReferenceTest, TheShaderUnpacksEveryFieldOfThePackedVertexAsCppPacksI
       }
     }
   }
-  for (int k = 0; k < 14; ++k) {
+  for (int k = 0; k < 15; ++k) {
     EXPECT_EQ(wrong[k], 0) << kNames[k] << " differs in " << wrong[k] << " of " << vertices.size()
                            << " vertices, first: " << first[k];
   }

@@ -205,6 +205,9 @@ NbtCompound chunkNbt(int dataVersion, ChunkPos pos, const std::vector<TestSectio
       NbtCompound states{{"palette", nbtList(TagType::Compound, palette)}};
       if (!indices.empty()) states.emplace_back("data", nbtLongs(packIndices(indices, bits, false)));
       section.emplace_back("block_states", nbtCompound(states));
+      if (!s.biome.empty())
+        section.emplace_back("biomes",
+                             nbtCompound({{"palette", nbtList(TagType::String, {nbtString(s.biome)})}}));
     } else {
       section.emplace_back("Palette", nbtList(TagType::Compound, palette));
       section.emplace_back("BlockStates", nbtLongs(packIndices(indices, bits, spanning)));

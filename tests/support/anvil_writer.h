@@ -44,11 +44,13 @@ std::vector<std::uint8_t> encodeNbt(const NbtCompound& root);
 std::vector<std::int64_t> packIndices(const std::vector<std::uint16_t>& indices, int bits, bool spanning);
 
 // One section of a test chunk: palette entries as "name" or "name[k=v,...]", and an index per cell
-// ((y << 8) | (z << 4) | x); no indices with one entry writes no data (1.18's form).
+// ((y << 8) | (z << 4) | x); no indices with one entry writes no data (1.18's form). From 1.18 on, a
+// biome names the section's one biome (none written without).
 struct TestSection {
   int y = 0;
   std::vector<std::string> palette;
   std::vector<std::uint16_t> indices;
+  std::string biome = {};
 };
 
 // A chunk's NBT in the layout of `dataVersion` (Level-wrapped before 1.18).

@@ -90,7 +90,6 @@ int run(int argc, char** argv) {
   for (const auto& p : extraPacks) packPaths.push_back(p);
   for (const auto& p : packPaths) packs.push(ResourcePack::open(p));
   BlockAtlas atlas = buildBlockAtlas(blocks, packs);
-  const BiomeColormaps colormaps = loadColormaps(packs, atlas.problems);
   const BlockMeshTable table = meshTableOf(blocks, atlas);
 
   std::vector<SectionMesh> meshes;
@@ -111,7 +110,7 @@ int run(int argc, char** argv) {
     }
     meshes = meshRegion(world.world(), *region, table);
   }
-  const ExportStats stats = exportRegion(meshes, *region, atlas, colormaps, out);
+  const ExportStats stats = exportRegion(meshes, *region, atlas, out);
   std::printf("terrasol-export: %zu quads (%zu vertices, %zu triangles) from %zu sections written to %s\n",
               stats.quads, stats.vertices, stats.triangles, meshes.size(), out.string().c_str());
   return 0;

@@ -92,8 +92,7 @@ std::vector<SectionMesh> meshRegion(const World& world, const Region& region, co
 }
 
 ExportStats exportRegion(const std::vector<SectionMesh>& meshes, const Region& region,
-                         const BlockAtlas& atlas, const BiomeColormaps& colormaps,
-                         const std::filesystem::path& file) {
+                         const BlockAtlas& atlas, const std::filesystem::path& file) {
   const glm::vec3 origin(region.min);
   LayerData layers[kMeshLayers];
   ExportStats stats;
@@ -117,9 +116,8 @@ ExportStats exportRegion(const std::vector<SectionMesh>& meshes, const Region& r
               texture >= 0 ? atlas.atlas.textures[static_cast<std::size_t>(texture)].firstTile : 0);
           out.uvs.push_back(rect.x + (rect.z - rect.x) * static_cast<float>(p.u()) / 16.0f);
           out.uvs.push_back(rect.y + (rect.w - rect.y) * static_cast<float>(p.v()) / 16.0f);
-          const glm::vec3 tint = tintColour(
-              colormaps, static_cast<Tint>(p.tint()),
-              {static_cast<std::uint8_t>(p.tintTemperature()), static_cast<std::uint8_t>(p.tintDownfall())});
+          const glm::vec3 tint =
+              p.tint() == static_cast<int>(Tint::None) ? glm::vec3(1.0f) : glm::vec3(p.tintRgb()) / 255.0f;
           const glm::vec3 c = tint * (0.4f + 0.6f * static_cast<float>(p.ao()) / 3.0f);
           out.colors.insert(out.colors.end(), {c.r, c.g, c.b});
         }

@@ -8,7 +8,6 @@
 #include <glm/vec3.hpp>
 #include <vector>
 
-#include "assets/tints.h"
 #include "mesh/mesher.h"
 #include "scene/block_atlas.h"
 
@@ -33,7 +32,6 @@ struct ExportStats {
 
 // Writes `meshes` (sections covering the region) clipped to `region`. Throws Error naming the file.
 ExportStats exportRegion(const std::vector<SectionMesh>& meshes, const Region& region,
-                         const BlockAtlas& atlas, const BiomeColormaps& colormaps,
-                         const std::filesystem::path& file);
+                         const BlockAtlas& atlas, const std::filesystem::path& file);
 
 }  // namespace terrasol

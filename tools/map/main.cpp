@@ -5,8 +5,8 @@
 //   --slice   draw a vertical cut along x at the centre's z (y from -64 at the bottom to 320 at the top)
 //   --biomes  draw the terrain generator's biomes (one colour each, printed with their share)
 // Chunks are made on all cores. The top view colours each column by its highest block seen from
-// above (its top texture's mean colour in the default pack, tinted), brighter where it stands higher
-// than its northern neighbour and darker where lower, as Minecraft's maps shade.
+// above (its top texture's mean colour in the default pack, tinted by the column's biome), brighter
+// where it stands higher than its northern neighbour and darker where lower, as Minecraft's maps shade.
 
 #include <charconv>
 #include <cmath>
@@ -122,21 +122,21 @@ int biomeMap(const MapOptions& o, const BlockRegistry& blocks) {
   return 0;
 }
 
-// Each state's colour from above (scene/block_colours.h, the default pack) as bytes; alpha 0 for what
-// the view looks through (air, plants that cover little of their cell).
-std::vector<std::array<std::uint8_t, 4>> paletteOf(const BlockRegistry& blocks) {
+// Each state's colour from above (scene/block_colours.h, the default pack); alpha 0 for what the view
+// looks through (air, plants that cover little of their cell).
+struct MapPalette {
+  std::vector<TopColour> colours;
+  std::vector<bool> seen;
+  TintPalette tints;
+};
+MapPalette paletteOf(const BlockRegistry& blocks) {
   PackStack packs;
   packs.push(ResourcePack::open(resourcePackDir() / "default"));
-  std::vector<PackProblem> problems;
-  const std::vector<glm::vec4> colours =
-      blockTopColours(blocks, buildBlockAtlas(blocks, packs), loadColormaps(packs, problems));
-  std::vector<std::array<std::uint8_t, 4>> palette(blocks.size());
-  for (std::size_t i = 0; i < colours.size(); ++i) {
-    const glm::vec4 c = glm::clamp(colours[i], 0.0f, 1.0f) * 255.0f + 0.5f;
-    const bool seen = colours[i].a >= 0.3f && blocks[static_cast<BlockId>(i)].shape != BlockShape::Cross;
-    palette[i] = {static_cast<std::uint8_t>(c.r), static_cast<std::uint8_t>(c.g),
-                  static_cast<std::uint8_t>(c.b), static_cast<std::uint8_t>(seen ? 255 : 0)};
-  }
+  const BlockAtlas atlas = buildBlockAtlas(blocks, packs);
+  MapPalette palette{blockTopColours(blocks, atlas), std::vector<bool>(blocks.size()), atlas.tints};
+  for (std::size_t i = 0; i < blocks.size(); ++i)
+    palette.seen[i] =
+        palette.colours[i].texture.a >= 0.3f && blocks[static_cast<BlockId>(i)].shape != BlockShape::Cross;
   return palette;
 }
 
@@ -158,7 +158,7 @@ int run(int argc, char** argv) {
   } else {
     generator = makeGenerator(o.generator, blocks);
   }
-  const std::vector<std::array<std::uint8_t, 4>> palette = paletteOf(blocks);
+  const MapPalette palette = paletteOf(blocks);
   const int x0 = at.centerX - o.size / 2, z0 = o.slice ? at.centerZ : at.centerZ - o.size / 2;
   const int chunksX = (o.size + 15) / 16 + 1, chunksZ = o.slice ? 1 : chunksX;
   // Generate chunk rows in parallel; each task returns its finished chunks.
@@ -175,38 +175,42 @@ int run(int argc, char** argv) {
   }
   std::vector<std::vector<std::unique_ptr<Chunk>>> chunks;
   for (auto& r : rows) chunks.push_back(r.get());
-  auto blockAt = [&](int x, int y, int z) {
-    const auto& c = chunks[static_cast<std::size_t>(chunkOf(z) - chunkOf(z0))]
-                          [static_cast<std::size_t>(chunkOf(x) - chunkOf(x0))];
-    return c->get(localOf(x), y, localOf(z));
+  auto chunkAt = [&](int x, int z) -> const Chunk& {
+    return *chunks[static_cast<std::size_t>(chunkOf(z) - chunkOf(z0))]
+                  [static_cast<std::size_t>(chunkOf(x) - chunkOf(x0))];
+  };
+  auto blockAt = [&](int x, int y, int z) { return chunkAt(x, z).get(localOf(x), y, localOf(z)); };
+  // A state's colour in column (x, z): tinted by the column's biome.
+  auto colourAt = [&](BlockId id, int x, int z) {
+    const glm::vec4 c = palette.colours[id].in(palette.tints, chunkAt(x, z).tint(localOf(x), localOf(z)));
+    return glm::dvec3(glm::clamp(glm::vec3(c), 0.0f, 1.0f)) * 255.0;
   };
 
   // The highest block seen from above in a column, and its y (kMinY - 1 for none).
   const auto topAt = [&](int x, int z) {
     for (int y = kMaxY - 1; y >= kMinY; --y) {
       const BlockId id = blockAt(x, y, z);
-      if (palette[id][3]) return std::pair{id, y};
+      if (palette.seen[id]) return std::pair{id, y};
     }
     return std::pair{kAir, kMinY - 1};
   };
   Image image(o.size, o.slice ? kMaxY - kMinY : o.size);
   for (int py = 0; py < image.height; ++py)
     for (int px = 0; px < image.width; ++px) {
-      std::array<std::uint8_t, 4> c{0, 0, 0, 255};
+      glm::dvec3 c(0.0);
       if (o.slice) {
         const BlockId id = blockAt(x0 + px, kMaxY - 1 - py, z0);
-        c = palette[id][3] ? palette[id] : std::array<std::uint8_t, 4>{170, 200, 255, 255};
+        c = palette.seen[id] ? colourAt(id, x0 + px, z0) : glm::dvec3(170, 200, 255);
       } else {
         const auto [id, y] = topAt(x0 + px, z0 + py);
         // The northern neighbour (the row above), inside the drawn area.
         const int north = py > 0 ? topAt(x0 + px, z0 + py - 1).second : y;
         const double shade = y < north ? 0.8 : y > north ? 1.1 : 0.95;
-        for (int k = 0; k < 3; ++k)
-          c[static_cast<std::size_t>(k)] =
-              static_cast<std::uint8_t>(std::min(255.0, palette[id][static_cast<std::size_t>(k)] * shade));
+        if (y >= kMinY) c = glm::min(colourAt(id, x0 + px, z0 + py) * shade, glm::dvec3(255.0));
       }
       std::uint8_t* p = image.pixel(px, py);
-      p[0] = c[0], p[1] = c[1], p[2] = c[2], p[3] = 255;
+      for (int k = 0; k < 3; ++k) p[k] = static_cast<std::uint8_t>(c[k] + 0.5);
+      p[3] = 255;
     }
   saveImage(o.out, image);
   std::printf("wrote %s (%dx%d)\n", o.out.c_str(), image.width, image.height);
