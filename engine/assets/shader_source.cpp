@@ -45,8 +45,10 @@ std::optional<std::string> normalise(const std::string& path) {
 struct Expander {
   const ShaderPreprocessor& pre;
   const ShaderPreprocessor::FileReader& reader;
+  const IncludeRules& rules;
   PreprocessedShader out;
   std::set<std::string> included;
+  std::vector<std::string> open;  // the files being expanded, outermost first
 
   void emit(const std::string& text, std::string file, int line) {
     out.text += text;
@@ -61,7 +63,11 @@ struct Expander {
       throw Error(locate(pre.displayName(file), line, "malformed #include, expected #include \"path\""));
     }
     const std::string raw(text.substr(open + 1, close - open - 1));
-    const auto path = normalise(raw);
+    std::string from = raw;
+    if (rules.relativeToFile)
+      from = raw.starts_with('/') ? raw.substr(1)
+                                  : std::filesystem::path(file).parent_path().append(raw).generic_string();
+    const auto path = normalise(from);
     if (!path)
       throw Error(locate(pre.displayName(file), line, "include path '" + raw + "' leaves the shader root"));
     return *path;
@@ -69,12 +75,17 @@ struct Expander {
 
   void expand(const std::string& file, bool isMain, const std::vector<ShaderDefine>& defines,
               const std::string& includedFrom, int includedAt) {
+    const auto where = [&](const std::string& what) {
+      return includedFrom.empty() ? what : locate(pre.displayName(includedFrom), includedAt, what);
+    };
+    if (std::find(open.begin(), open.end(), file) != open.end())
+      throw Error(where("'" + pre.displayName(file) + "' includes itself"));
+    if (rules.depthLimit > 0 && static_cast<int>(open.size()) > rules.depthLimit)
+      throw Error(where("includes nested deeper than " + std::to_string(rules.depthLimit)));
     included.insert(file);
     const auto text = reader(file);
-    if (!text) {
-      const std::string what = "cannot find shader file '" + pre.displayName(file) + "'";
-      throw Error(includedFrom.empty() ? what : locate(pre.displayName(includedFrom), includedAt, what));
-    }
+    if (!text) throw Error(where("cannot find shader file '" + pre.displayName(file) + "'"));
+    open.push_back(file);
     const auto lines = splitLines(*text);
     bool sawVersion = false;
     for (std::size_t i = 0; i < lines.size(); ++i) {
@@ -90,12 +101,13 @@ struct Expander {
         if (isMain && !sawVersion)
           throw Error(locate(pre.displayName(file), lineNo, "#include before #version"));
         const std::string target = includeTarget(file, lineNo, lines[i]);
-        if (!included.contains(target)) expand(target, false, defines, file, lineNo);
+        if (!rules.oncePerFile || !included.contains(target)) expand(target, false, defines, file, lineNo);
       } else {
         emit(lines[i], file, lineNo);
       }
     }
     if (isMain && !sawVersion) throw Error(locate(pre.displayName(file), 1, "missing #version"));
+    open.pop_back();
   }
 };
 
@@ -194,8 +206,8 @@ ShaderPreprocessor::ShaderPreprocessor(std::filesystem::path root)
       }),
       rootName_(root.filename().string()) {}
 
-ShaderPreprocessor::ShaderPreprocessor(FileReader reader, std::string rootName)
-    : reader_(std::move(reader)), rootName_(std::move(rootName)) {}
+ShaderPreprocessor::ShaderPreprocessor(FileReader reader, std::string rootName, IncludeRules rules)
+    : reader_(std::move(reader)), rootName_(std::move(rootName)), rules_(rules) {}
 
 std::string ShaderPreprocessor::displayName(const std::string& file) const {
   return rootName_ + "/" + file;
@@ -205,7 +217,7 @@ PreprocessedShader ShaderPreprocessor::process(const std::string& file,
                                                const std::vector<ShaderDefine>& defines) const {
   const auto path = normalise(file);
   if (!path) throw Error("shader path '" + file + "' leaves the shader root");
-  Expander expander{*this, reader_, {}, {}};
+  Expander expander{*this, reader_, rules_, {}, {}, {}};
   expander.expand(*path, true, defines, "", 0);
   for (auto& loc : expander.out.lines) {
     if (loc.file != "<defines>") loc.file = displayName(loc.file);

@@ -37,6 +37,18 @@ struct PreprocessedShader {
 // #if blocks counts: a declaration is there whether or not a variant's defines keep it.
 std::vector<std::string> declaredUniforms(std::string_view source);
 
+// How `#include "path"` is resolved. Terrasol's shaders: paths from the root, each file once. Shader
+// packs (OptiFine, Iris): "path" from the including file's folder and "/path" from the root, every
+// include expanded (packs guard their own), a file including itself through others an error, and
+// at most 10 deep.
+struct IncludeRules {
+  bool oncePerFile = true;
+  bool relativeToFile = false;
+  int depthLimit = 0;  // 0: none
+
+  static IncludeRules shaderPack() { return {false, true, 10}; }
+};
+
 class ShaderPreprocessor {
  public:
   // Returns a file's text by its root-relative path, or nothing when it does not exist.
@@ -45,7 +57,7 @@ class ShaderPreprocessor {
   // Reads files from `root` (normally paths::shaderDir()).
   explicit ShaderPreprocessor(std::filesystem::path root);
   // Reads files through `reader`; used by tests with in-memory sources.
-  explicit ShaderPreprocessor(FileReader reader, std::string rootName = "shaders");
+  explicit ShaderPreprocessor(FileReader reader, std::string rootName = "shaders", IncludeRules rules = {});
 
   // Throws Error naming "file:line" for a missing file or include, a malformed directive, a
   // missing `#version`, or a `#version` inside an included file.
@@ -57,6 +69,7 @@ class ShaderPreprocessor {
  private:
   FileReader reader_;
   std::string rootName_;
+  IncludeRules rules_;
 };
 
 }  // namespace terrasol

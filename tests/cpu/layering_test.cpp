@@ -24,6 +24,7 @@ const std::map<std::string, std::set<std::string>> kAllowed = {
     {"light", {"core", "world", "light"}},
     {"mesh", {"core", "world", "mesh"}},
     {"assets", {"core", "assets"}},
+    {"shaderpack", {"core", "world", "assets", "shaderpack"}},
     {"render", {"core", "assets", "mesh", "render"}},
     {"platform", {"core", "platform"}},
     {"scene", {"core", "world", "minecraft", "light", "mesh", "assets", "scene"}},
