@@ -11,6 +11,7 @@
 #include "core/error.h"
 #include "core/paths.h"
 #include "shaderpack/block_properties.h"
+#include "shaderpack/pack_directives.h"
 #include "shaderpack/pack_macros.h"
 #include "support/world_support.h"
 
@@ -217,6 +218,49 @@ TEST(BlockProperties, PropertiesFiltersContinuationsAndErrors) {
   const std::string noValue =
       errorOf([&] { parseBlockProperties("block.1=oak_log:axis=\n", "bp", PackMacros(), blocks); });
   EXPECT_NE(noValue.find("bp:1"), std::string::npos) << noValue;
+}
+
+TEST(PackDirectives, TheTestPacksOutputsAndConstants) {
+  const ShaderPack tutorial = ShaderPack::open(vendored("Shadow-Tutorial"));
+  const ProgramDirectives terrain = parseDirectives(tutorial.source("gbuffers_terrain.fsh", packMacros()));
+  EXPECT_EQ(terrain.drawBuffers, std::vector<int>{0});
+  EXPECT_EQ(terrain.flag("shadowtex0Nearest"), true);
+  EXPECT_EQ(parseDirectives(tutorial.source("shadow.vsh", packMacros())).number("shadowMapResolution"),
+            1024.0)
+      << "from distort.glsl, which shadow.vsh includes";
+  EXPECT_EQ(parseDirectives(tutorial.source("gbuffers_skybasic.fsh", packMacros())).number("sunPathRotation"),
+            30.0);
+  const ShaderPack base = ShaderPack::open(vendored("Base-330"));
+  EXPECT_EQ(parseDirectives(base.source("gbuffers_block.fsh", packMacros())).drawBuffers,
+            std::vector<int>{0});
+}
+
+TEST(PackDirectives, TheLastListWinsRenderTargetsFirstAndBadListsNameTheirLine) {
+  const auto dir = writePack(
+      "shaderpack_directives",
+      {{"shaders/a.fsh",
+        "#version 120\n/* DRAWBUFFERS:0257 */\n/*DRAWBUFFERS: 13 */\n// const int shadowMapResolution = "
+        "4096;\n"
+        "const float shadowDistance = 120.0f;\nconst vec4 colortex1ClearColor = vec4(0.0, 0.0, 0.0, 1.0);\n"},
+       {"shaders/b.fsh", "#version 330\n/* RENDERTARGETS: 0, 2 ,11 */\n/* DRAWBUFFERS:01 */\n"},
+       {"shaders/c.fsh", "#version 120\n#include \"lib/out.glsl\"\n"},
+       {"shaders/lib/out.glsl", "\n/* DRAWBUFFERS:0a */\n"},
+       {"shaders/d.fsh", "#version 330\n/* RENDERTARGETS: 0,16 */\n"},
+       {"shaders/e.fsh", "#version 330\n/* RENDERTARGETS: 3,3 */\n"},
+       {"shaders/f.fsh", "#version 120\n/* DRAWBUFFERS:012345678 */\n"}});
+  const ShaderPack pack = ShaderPack::open(dir);
+  const ProgramDirectives a = parseDirectives(pack.source("a.fsh", {}));
+  EXPECT_EQ(a.drawBuffers, (std::vector<int>{1, 3}));
+  EXPECT_FALSE(a.number("shadowMapResolution")) << "a commented-out const is no directive";
+  EXPECT_EQ(a.number("shadowDistance"), 120.0);
+  EXPECT_EQ(a.constants.at("colortex1ClearColor"), "vec4(0.0, 0.0, 0.0, 1.0)");
+  EXPECT_EQ(parseDirectives(pack.source("b.fsh", {})).drawBuffers, (std::vector<int>{0, 2, 11}));
+  const std::string c = errorOf([&] { parseDirectives(pack.source("c.fsh", {})); });
+  EXPECT_NE(c.find("shaders/lib/out.glsl:2"), std::string::npos) << c;
+  for (const char* bad : {"d.fsh", "e.fsh", "f.fsh"}) {
+    const std::string e = errorOf([&] { parseDirectives(pack.source(bad, {})); });
+    EXPECT_NE(e.find(std::string(bad) + ":2"), std::string::npos) << e;
+  }
 }
 
 }  // namespace
