@@ -61,15 +61,9 @@ int BlockIdMap::mappedStates() const {
 BlockIdMap parseBlockProperties(std::string_view text, const std::string& file, PackMacros macros,
                                 const BlockRegistry& blocks) {
   BlockIdMap map{std::vector<int>(blocks.size(), -1), {}};
-  const std::vector<KeptLine> lines = keptLines(text, file, macros);
-  for (std::size_t i = 0; i < lines.size(); ++i) {
-    std::string line = lines[i].text;
-    const int number = lines[i].number;
-    while (!line.empty() && line.back() == '\\' && i + 1 < lines.size()) {
-      line.pop_back();
-      line += ' ' + lines[++i].text;
-    }
-    const std::string where = file + ":" + std::to_string(number);
+  for (const KeptLine& kept : propertyLines(text, file, macros)) {
+    const std::string& line = kept.text;
+    const std::string where = file + ":" + std::to_string(kept.number);
     const auto eq = line.find('=');
     if (line.empty() || eq == std::string::npos || !line.starts_with("block.")) continue;  // other keys
     const std::string key = line.substr(6, eq - 6);

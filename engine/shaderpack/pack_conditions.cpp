@@ -10,13 +10,6 @@
 namespace terrasol {
 namespace {
 
-std::string_view trim(std::string_view s) {
-  const auto first = s.find_first_not_of(" \t\r");
-  if (first == std::string_view::npos) return {};
-  const auto last = s.find_last_not_of(" \t\r");
-  return s.substr(first, last - first + 1);
-}
-
 bool isWordChar(char c) {
   return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_';
 }
@@ -166,7 +159,7 @@ class Expression {
     if (!macros_.defined(name)) return 0.0;
     if (depth_ > 16) fail("macro '" + name + "' expands too deep");
     const std::string value = macros_.value(name);
-    if (trim(value).empty()) return 0.0;
+    if (trimmed(value).empty()) return 0.0;
     return Expression(value, macros_, where_, depth_ + 1).parse();
   }
 
@@ -179,12 +172,33 @@ class Expression {
 
 }  // namespace
 
+std::string_view trimmed(std::string_view s) {
+  const auto first = s.find_first_not_of(" \t\r");
+  if (first == std::string_view::npos) return {};
+  const auto last = s.find_last_not_of(" \t\r");
+  return s.substr(first, last - first + 1);
+}
+
+std::vector<KeptLine> propertyLines(std::string_view text, const std::string& file, PackMacros& macros) {
+  std::vector<KeptLine> lines = keptLines(text, file, macros);
+  std::vector<KeptLine> joined;
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    KeptLine line = std::move(lines[i]);
+    while (!line.text.empty() && line.text.back() == '\\' && i + 1 < lines.size()) {
+      line.text.pop_back();
+      line.text += lines[++i].text;
+    }
+    joined.push_back(std::move(line));
+  }
+  return joined;
+}
+
 PackMacros::PackMacros(const std::vector<ShaderDefine>& defines) {
   for (const ShaderDefine& d : defines) values_[d.name] = d.value;
 }
 
 double PackMacros::evaluate(std::string_view expression, const std::string& where) const {
-  return Expression(trim(expression), *this, where).parse();
+  return Expression(trimmed(expression), *this, where).parse();
 }
 
 std::vector<KeptLine> keptLines(std::string_view text, const std::string& file, PackMacros& macros) {
@@ -201,15 +215,15 @@ std::vector<KeptLine> keptLines(std::string_view text, const std::string& file, 
   for (std::string raw; std::getline(in, raw);) {
     ++number;
     const std::string where = file + ":" + std::to_string(number);
-    const std::string_view line = trim(raw);
+    const std::string_view line = trimmed(raw);
     if (line.empty() || line[0] != '#') {
       if (keeping()) kept.push_back({number, std::string(line)});
       continue;
     }
-    std::string_view rest = trim(line.substr(1));
+    std::string_view rest = trimmed(line.substr(1));
     const auto nameEnd = std::find_if(rest.begin(), rest.end(), [](char c) { return !isWordChar(c); });
     const std::string_view name = rest.substr(0, static_cast<std::size_t>(nameEnd - rest.begin()));
-    const std::string_view argument = trim(rest.substr(name.size()));
+    const std::string_view argument = trimmed(rest.substr(name.size()));
     if (name == "if" || name == "ifdef" || name == "ifndef") {
       const bool parentKeeps = keeping();
       bool holds = false;
@@ -232,7 +246,7 @@ std::vector<KeptLine> keptLines(std::string_view text, const std::string& file, 
     } else if (name == "define" && keeping()) {
       const auto space = argument.find_first_of(" \t");
       macros.define(std::string(argument.substr(0, space)),
-                    space == std::string_view::npos ? "1" : std::string(trim(argument.substr(space))));
+                    space == std::string_view::npos ? "1" : std::string(trimmed(argument.substr(space))));
     } else if (name == "undef" && keeping()) {
       macros.undefine(std::string(argument));
     }

@@ -42,9 +42,15 @@ struct KeptLine {
   std::string text;
 };
 
-// The lines of `text` that the conditionals keep, directives taken out; `#define` and `#undef` change
-// `macros` as they are met. Throws Error naming `file` and the line for an unbalanced or malformed
-// conditional.
+// The lines of `text` that the conditionals keep, trimmed, directives taken out; `#define` and
+// `#undef` change `macros` as they are met. Throws Error naming `file` and the line for an unbalanced
+// or malformed conditional.
 std::vector<KeptLine> keptLines(std::string_view text, const std::string& file, PackMacros& macros);
+// The same, with a line ending in `\` joined to the next as Java's Properties joins them (the next
+// line's leading spaces dropped), numbered by its first line: a `.properties` file's entries.
+std::vector<KeptLine> propertyLines(std::string_view text, const std::string& file, PackMacros& macros);
+
+// `s` without leading and trailing spaces, tabs and carriage returns.
+std::string_view trimmed(std::string_view s);
 
 }  // namespace terrasol

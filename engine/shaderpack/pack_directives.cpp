@@ -6,16 +6,10 @@
 #include <regex>
 
 #include "core/error.h"
+#include "shaderpack/pack_conditions.h"
 
 namespace terrasol {
 namespace {
-
-std::string_view trim(std::string_view s) {
-  const auto first = s.find_first_not_of(" \t\r\n");
-  if (first == std::string_view::npos) return {};
-  const auto last = s.find_last_not_of(" \t\r\n");
-  return s.substr(first, last - first + 1);
-}
 
 // A /* KEY: value */ comment's value and where it starts, the last one with this key.
 struct Directive {
@@ -27,9 +21,9 @@ std::optional<Directive> lastDirective(const std::string& text, std::string_view
   std::optional<Directive> found;
   for (std::size_t open = text.find("/*"); open != std::string::npos; open = text.find("/*", open + 2)) {
     const std::size_t close = text.find("*/", open + 2);
-    const std::string_view body = trim(std::string_view(text).substr(open + 2, close - open - 2));
-    if (body.starts_with(key) && trim(body.substr(key.size())).starts_with(':'))
-      found = Directive{std::string(trim(trim(body.substr(key.size())).substr(1))), open};
+    const std::string_view body = trimmed(std::string_view(text).substr(open + 2, close - open - 2));
+    if (body.starts_with(key) && trimmed(body.substr(key.size())).starts_with(':'))
+      found = Directive{std::string(trimmed(trimmed(body.substr(key.size())).substr(1))), open};
     if (close == std::string::npos) break;
   }
   return found;
@@ -93,7 +87,7 @@ ProgramDirectives parseDirectives(const PreprocessedShader& source) {
       std::size_t start = 0;
       for (std::size_t i = 0; i <= targets->value.size(); ++i) {
         if (i < targets->value.size() && targets->value[i] != ',') continue;
-        const std::string_view item = trim(std::string_view(targets->value).substr(start, i - start));
+        const std::string_view item = trimmed(std::string_view(targets->value).substr(start, i - start));
         int b = -1;
         const auto [end, ec] = std::from_chars(item.data(), item.data() + item.size(), b);
         if (item.empty() || ec != std::errc() || end != item.data() + item.size())
@@ -120,7 +114,7 @@ ProgramDirectives parseDirectives(const PreprocessedShader& source) {
   static const std::regex kConst(R"(\bconst\s+(?:(?:lowp|mediump|highp)\s+)?\w+\s+(\w+)\s*=\s*([^;]+);)");
   const std::string code = withoutComments(text);
   for (auto it = std::sregex_iterator(code.begin(), code.end(), kConst); it != std::sregex_iterator(); ++it)
-    d.constants[(*it)[1].str()] = std::string(trim((*it)[2].str()));
+    d.constants[(*it)[1].str()] = std::string(trimmed((*it)[2].str()));
   return d;
 }
 

@@ -13,6 +13,7 @@
 #include "shaderpack/block_properties.h"
 #include "shaderpack/pack_directives.h"
 #include "shaderpack/pack_macros.h"
+#include "support/error_of.h"
 #include "support/world_support.h"
 
 namespace terrasol {
@@ -34,15 +35,7 @@ std::filesystem::path writePack(const std::string& name,
   return dir;
 }
 
-template <typename F>
-std::string errorOf(F&& f) {
-  try {
-    f();
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "no error";
-}
+using testing::errorOf;
 
 TEST(ShaderPack, TheTestPacksProgramsAreFoundAndFallBackAsInOptiFine) {
   const ShaderPack tutorial = ShaderPack::open(vendored("Shadow-Tutorial"));
