@@ -13,6 +13,7 @@
 #include "shaderpack/block_properties.h"
 #include "shaderpack/pack_directives.h"
 #include "shaderpack/pack_macros.h"
+#include "shaderpack/pack_settings.h"
 #include "support/error_of.h"
 #include "support/world_support.h"
 
@@ -254,6 +255,56 @@ TEST(PackDirectives, TheLastListWinsRenderTargetsFirstAndBadListsNameTheirLine) 
     const std::string e = errorOf([&] { parseDirectives(pack.source(bad, {})); });
     EXPECT_NE(e.find(std::string(bad) + ":2"), std::string::npos) << e;
   }
+}
+
+TEST(PackSettings, TheTutorialsShadowAndSunSettings) {
+  const ShaderPack tutorial = ShaderPack::open(vendored("Shadow-Tutorial"));
+  std::vector<ProgramDirectives> directives;
+  for (const std::string& name : tutorial.programs()) {
+    const PackProgram p = *tutorial.program(name);
+    for (const std::string& stage : {p.vertex, p.fragment})
+      directives.push_back(parseDirectives(tutorial.source(stage, packMacros())));
+  }
+  const PackSettings s = packSettings(directives, tutorial.name());
+  EXPECT_EQ(s.shadowMapResolution, 1024);
+  EXPECT_EQ(s.sunPathRotation, 30.0f);
+  EXPECT_EQ(s.shadowDistance, 160.0f) << "OptiFine's default";
+  EXPECT_EQ(s.shadowtexNearest, (std::array<bool, 2>{true, true}));
+  EXPECT_EQ(s.shadowcolorNearest, (std::array<bool, 2>{true, false}));
+  EXPECT_EQ(s.buffers[0].format.name, "RGBA8");
+  EXPECT_TRUE(s.buffers[0].clear);
+  EXPECT_FALSE(s.buffers[0].clearColor);
+}
+
+TEST(PackSettings, BufferFormatsClearsAndMipmapsByEitherName) {
+  ProgramDirectives first, later;
+  first.constants = {{"colortex2Format", "RGBA16F"},
+                     {"gaux1Format", "R11F_G11F_B10F"},
+                     {"colortex3Clear", "false"},
+                     {"colortex5ClearColor", "vec4(0.5)"},
+                     {"colortex6ClearColor", "vec4(1.0, 0.0, 0.0f, 1.0)"},
+                     {"gdepthMipmapEnabled", "true"},
+                     {"shadowDistance", "120.0f"},
+                     {"noiseTextureResolution", "512"}};
+  later.constants = {{"colortex2Format", "RGB8"}};
+  const PackSettings s = packSettings({first, later}, "pack");
+  EXPECT_EQ(s.buffers[2].format.name, "RGB8") << "the later program's";
+  EXPECT_EQ(s.buffers[4].format.name, "R11F_G11F_B10F") << "gaux1 is colortex4";
+  EXPECT_EQ(s.buffers[4].format.kind, PackFormat::Kind::Packed);
+  EXPECT_FALSE(s.buffers[3].clear);
+  EXPECT_EQ(s.buffers[5].clearColor, glm::vec4(0.5f));
+  EXPECT_EQ(s.buffers[6].clearColor, glm::vec4(1, 0, 0, 1));
+  EXPECT_TRUE(s.buffers[1].mipmap) << "gdepth is colortex1";
+  EXPECT_FALSE(s.buffers[0].mipmap);
+  EXPECT_EQ(s.shadowDistance, 120.0f);
+  EXPECT_EQ(s.noiseTextureResolution, 512);
+  ProgramDirectives badFormat, badColour;
+  badFormat.constants = {{"colortex7Format", "RGBA64F"}};
+  badColour.constants = {{"colortex1ClearColor", "vec3(1.0, 0.0, 0.0)"}};
+  const std::string format = errorOf([&] { packSettings({badFormat}, "MyPack"); });
+  EXPECT_NE(format.find("MyPack: colortex7Format: 'RGBA64F'"), std::string::npos) << format;
+  const std::string colour = errorOf([&] { packSettings({badColour}, "MyPack"); });
+  EXPECT_NE(colour.find("colortex1ClearColor"), std::string::npos) << colour;
 }
 
 }  // namespace
