@@ -1,5 +1,4 @@
 #include <gtest/gtest.h>
-#include <zip.h>
 
 #include <algorithm>
 #include <array>
@@ -17,6 +16,7 @@
 #include "support/raw_png.h"
 #include "support/test_data.h"
 #include "support/world_support.h"
+#include "support/zip_writer.h"
 #include "world/block_table.h"
 
 namespace terrasol {
@@ -234,21 +234,7 @@ TEST(ResourcePack, SixteenBitGreyAndPaletteImagesAreConverted) {
   EXPECT_TRUE(problems.empty()) << problemsText(problems);
 }
 
-void writeZip(const std::filesystem::path& file,
-              const std::vector<std::pair<std::string, std::string>>& entries) {
-  std::filesystem::remove(file);
-  int error = 0;
-  zip_t* z = zip_open(file.c_str(), ZIP_CREATE | ZIP_TRUNCATE, &error);
-  ASSERT_NE(z, nullptr);
-  std::vector<std::string> keep;  // libzip reads the buffers at zip_close
-  keep.reserve(entries.size());
-  for (const auto& [name, data] : entries) {
-    keep.push_back(data);
-    zip_source_t* src = zip_source_buffer(z, keep.back().data(), keep.back().size(), 0);
-    ASSERT_GE(zip_file_add(z, name.c_str(), src, ZIP_FL_OVERWRITE), 0) << name;
-  }
-  ASSERT_EQ(zip_close(z), 0);
-}
+using testing::writeZip;
 
 std::string pngBytes(const Image& image) {
   const auto file = testing::scratchDir("png_bytes") / "x.png";

@@ -16,6 +16,7 @@
 #include "shaderpack/pack_settings.h"
 #include "support/error_of.h"
 #include "support/world_support.h"
+#include "support/zip_writer.h"
 
 namespace terrasol {
 namespace {
@@ -116,6 +117,22 @@ TEST(ShaderPack, IncludesAreRelativeOrFromTheRootAndExpandedEachTime) {
   const std::string missing = errorOf([&] { pack.source("missing.vsh", {}); });
   EXPECT_NE(missing.find("missing.vsh:3"), std::string::npos) << missing;
   EXPECT_NE(missing.find("nowhere.glsl"), std::string::npos) << missing;
+}
+
+// A zipped pack reads as the folder does, its messages naming the archive.
+TEST(ShaderPack, AZippedPackReadsAsAFolder) {
+  const auto zip = testing::scratchDir("shaderpack_zip") / "Zipped.zip";
+  testing::writeZip(zip, {{"shaders/composite.vsh", "#version 120\n#include \"lib/x.glsl\"\n"},
+                          {"shaders/composite.fsh", "#version 120\n"},
+                          {"shaders/lib/x.glsl", "float x;\n"},
+                          {"shaders/block.properties", "block.1=stone\n"}});
+  const ShaderPack pack = ShaderPack::open(zip);
+  EXPECT_EQ(pack.name(), "Zipped.zip");
+  EXPECT_EQ(pack.programs(), std::vector<std::string>{"composite"});
+  const PreprocessedShader s = pack.source("composite.vsh", {});
+  EXPECT_EQ(s.text, "#version 120\nfloat x;\n");
+  EXPECT_TRUE(s.origin(2).file.ends_with("/Zipped.zip!shaders/lib/x.glsl")) << s.origin(2).file;
+  EXPECT_EQ(pack.text("block.properties"), "block.1=stone\n");
 }
 
 TEST(ShaderPack, World0ProgramsReplaceTheRootsAndAFolderWithoutShadersIsRefused) {
