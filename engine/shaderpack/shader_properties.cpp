@@ -13,9 +13,8 @@ const ShaderProperties::Entry* ShaderProperties::find(std::string_view key) cons
 }
 
 bool ShaderProperties::programEnabled(std::string_view program, const PackEvaluation& context) const {
-  const Entry* e = find("program." + std::string(program) + ".enabled");
-  if (!e) return true;
-  return PackExpression::parse(e->value, e->where).evaluate(context).scalar() != 0.0f;
+  const auto found = programSwitches.find(program);
+  return found == programSwitches.end() || found->second.evaluate(context).scalar() != 0.0f;
 }
 
 ShaderProperties parseShaderProperties(std::string_view text, const std::string& file, PackMacros macros) {
@@ -41,6 +40,12 @@ ShaderProperties parseShaderProperties(std::string_view text, const std::string&
       p.customs.push_back(
           {kind == "uniform.", type, rest.substr(dot + 1), PackExpression::parse(e.value, where), where});
     }
+    constexpr std::string_view kProgram = "program.", kEnabled = ".enabled";
+    if (e.key.starts_with(kProgram) && e.key.ends_with(kEnabled) &&
+        e.key.size() > kProgram.size() + kEnabled.size())
+      p.programSwitches.insert_or_assign(
+          e.key.substr(kProgram.size(), e.key.size() - kProgram.size() - kEnabled.size()),
+          PackExpression::parse(e.value, where));
     p.entries.push_back(std::move(e));
   }
   return p;

@@ -4,6 +4,7 @@
 // earlier one's key; custom uniforms and variables (`uniform.<type>.<name>`, `variable.<type>.<name>`)
 // parsed as expressions, in the order they are evaluated each frame. GL-free.
 
+#include <map>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -28,6 +29,8 @@ struct ShaderProperties {
   };
   std::vector<Entry> entries;
   std::vector<PackCustom> customs;
+  // `program.<name>.enabled`, parsed once, by program name (the last line's).
+  std::map<std::string, PackExpression, std::less<>> programSwitches;
 
   // The last line with this key, or nothing.
   const Entry* find(std::string_view key) const;

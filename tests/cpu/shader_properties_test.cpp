@@ -139,6 +139,7 @@ TEST(ShaderProperties, KeysConditionalsCustomsAndPrograms) {
        std::vector<std::pair<std::string, std::string>>{{"a = 1\nno separator here\n", ":2"},
                                                         {"uniform.double.x = 1\n", ":1"},
                                                         {"uniform.float.x = 1 +\n", ":1"},
+                                                        {"a = 1\nprogram.composite.enabled = (1\n", ":2"},
                                                         {"#if 1\nx = 1\n", ":1"}}) {
     const std::string e = errorOf([&] { parseShaderProperties(bad, "sp", PackMacros()); });
     EXPECT_NE(e.find("sp" + line), std::string::npos) << bad << ": " << e;
