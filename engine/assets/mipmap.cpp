@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "assets/labpbr.h"
+#include "core/srgb.h"
 
 namespace terrasol::mip {
 namespace {
@@ -13,8 +14,7 @@ const std::array<float, 256>& srgbToLinear() {
   static const auto table = [] {
     std::array<float, 256> t{};
     for (int i = 0; i < 256; ++i) {
-      const float c = static_cast<float>(i) / 255.0f;
-      t[static_cast<std::size_t>(i)] = c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
+      t[static_cast<std::size_t>(i)] = terrasol::srgbToLinear(static_cast<float>(i) / 255.0f);
     }
     return t;
   }();
@@ -22,9 +22,7 @@ const std::array<float, 256>& srgbToLinear() {
 }
 
 std::uint8_t linearToSrgb(float c) {
-  c = std::clamp(c, 0.0f, 1.0f);
-  const float s = c <= 0.0031308f ? c * 12.92f : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
-  return static_cast<std::uint8_t>(std::lround(s * 255.0f));
+  return static_cast<std::uint8_t>(std::lround(terrasol::linearToSrgb(c) * 255.0f));
 }
 
 std::uint8_t average(int a, int b, int c, int d) {

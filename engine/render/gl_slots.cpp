@@ -34,6 +34,7 @@ std::vector<ShaderDefine> slotDefines() {
       define("UNIT_SURFACE_REFLECTION", slots::kUnitSurfaceReflection),
       define("UNIT_SURFACE_REFLECTION_HITS", slots::kUnitSurfaceReflectionHits),
       define("STORAGE_TILES", slots::kStorageTiles),
+      define("STORAGE_PACK_ENTITIES", slots::kStoragePackEntities),
   };
 }
 

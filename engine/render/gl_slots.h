@@ -49,8 +49,12 @@ inline constexpr int kUnitSsrDepth = 17;  // the depth a reflected ray is marche
 inline constexpr int kUnitSurfaceReflection = 18;
 inline constexpr int kUnitSurfaceReflectionHits = 19;
 
+// A shader pack's samplers: OptiFine's units (0 the atlas, 1 the lightmap, ...) from here on.
+inline constexpr int kUnitPackBase = 24;
+
 // Shader storage buffers.
-inline constexpr int kStorageTiles = 0;  // atlas tile of each texture id for the current frame
+inline constexpr int kStorageTiles = 0;         // atlas tile of each texture id for the current frame
+inline constexpr int kStoragePackEntities = 1;  // a shader pack's mc_Entity of each texture id
 
 }  // namespace terrasol::slots
 

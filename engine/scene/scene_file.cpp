@@ -230,11 +230,14 @@ nlohmann::json shadowJson(const ShadowSettings& s) {
 
 namespace {
 
-void parseRender(const json& render, SceneFile& scene) {
+void parseRender(const json& render, const path& sceneDir, SceneFile& scene) {
   checkObject(render, "render",
               {"width", "height", "scale", "target_fps", "view_distance", "debug_view", "specular",
                "material_ao", "cave_culling", "shadow_caster_culling", "cull_faces_away",
-               "leave_out_absent_maps", "cull_passes", "shadow", "reflections", "water"});
+               "leave_out_absent_maps", "cull_passes", "shadow", "reflections", "water", "shaderpack"});
+  if (const json* v = field(render, "shaderpack")) {
+    scene.shaderpack = resolvePath(nonEmptyString(*v, "render.shaderpack"), sceneDir, "render.shaderpack");
+  }
   if (const json* v = field(render, "width")) {
     scene.width = static_cast<int>(wholeNumber(*v, "render.width", 1, 8192));
   }
@@ -356,7 +359,7 @@ SceneFile parseRoot(const json& root, const path& file) {
   if (const json* v = field(root, "sun_path_rotation")) {
     scene.sunPathRotation = numberIn(*v, "sun_path_rotation", -90.0, 90.0, false);
   }
-  if (const json* v = field(root, "render")) parseRender(*v, scene);
+  if (const json* v = field(root, "render")) parseRender(*v, file.parent_path(), scene);
   if (const json* v = field(root, "camera")) parseCamera(*v, scene);
   if (const json* v = field(root, "camera_path")) scene.cameraPath = parseCameraPath(*v, scene);
   if (const json* v = field(root, "compare")) parseCompare(*v, scene);

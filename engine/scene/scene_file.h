@@ -64,6 +64,9 @@ struct SceneFile {
   // Bottom to top. "default" becomes resourcePackDir()/"default"; relative paths are resolved against
   // the scene file's directory. When the key is absent: just the default pack.
   std::vector<std::filesystem::path> packs;
+  // "render.shaderpack": an OptiFine/Iris shader pack (folder or .zip) drawn in place of Terrasol's own
+  // pipeline, resolved as packs are; empty: none.
+  std::filesystem::path shaderpack;
   std::int64_t time = kNoon;      // ticks, >= 0: core/day_cycle.h (kSunrise, kNoon, kSunset, kMidnight)
   float sunPathRotation = 0.0f;   // degrees in [-90, 90], tilts the sun and moon path
   int width = 320, height = 180;  // pixels, 1..8192 each

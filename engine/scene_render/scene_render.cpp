@@ -7,6 +7,8 @@
 
 #include "core/error.h"
 #include "core/paths.h"
+#include "pack_render/pack_entities.h"
+#include "pack_render/pack_renderer.h"
 #include "render/gl/render_target.h"
 #include "scene/block_atlas.h"
 #include "scene/camera_path.h"
@@ -14,6 +16,8 @@
 #include "scene/scene_world.h"
 #include "scene_render/placed_props.h"
 #include "scene_render/under_water.h"
+#include "shaderpack/block_properties.h"
+#include "shaderpack/pack_macros.h"
 
 namespace terrasol {
 namespace {
@@ -88,6 +92,7 @@ struct SceneRenderer::Gpu {
         target(size) {}
   PlacedProps props;  // before the renderer, which is built for what they need
   DeferredRenderer renderer;
+  std::unique_ptr<PackRenderer> pack;  // render.shaderpack: drawn in the renderer's place
   SectionMeshes meshes;
   RenderTarget target;
 };
@@ -114,6 +119,14 @@ SceneRenderer::SceneRenderer(const SceneFile& scene)
   options.water = scene.water;
   gpu_ = std::make_unique<Gpu>(shaders, world_->atlas.atlas, world_->atlas.tints, options,
                                glm::ivec2(scene.width, scene.height), scene, world_->world);
+  if (!scene.shaderpack.empty()) {
+    // A pack that cannot be read or built leaves Terrasol's pipeline drawing, with the pack's error.
+    try {
+      gpu_->pack = openShaderPack(scene.shaderpack, shaders);
+    } catch (const Error& e) {
+      stats_.shaderpackError = e.what();
+    }
+  }
   for (const auto& mesh : meshes) {
     gpu_->meshes.upload(mesh);
     stats_.quads += mesh.quads();
@@ -123,8 +136,24 @@ SceneRenderer::SceneRenderer(const SceneFile& scene)
 
 SceneRenderer::~SceneRenderer() = default;
 
+std::unique_ptr<PackRenderer> SceneRenderer::openShaderPack(const std::filesystem::path& path,
+                                                            const ShaderPreprocessor& shaders) const {
+  const ShaderPack pack = ShaderPack::open(path);
+  BlockIdMap ids;
+  if (const auto text = pack.text("block.properties"))
+    ids = parseBlockProperties(*text, pack.displayName("block.properties"), PackMacros(packMacros()),
+                               world_->blocks);
+  const Atlas& atlas = world_->atlas.atlas;
+  return std::make_unique<PackRenderer>(pack, shaders, atlas, world_->atlas.tints,
+                                        packEntityIds(ids, world_->table, atlas.textures.size()));
+}
+
 DeferredRenderer& SceneRenderer::renderer() {
   return gpu_->renderer;
+}
+
+const PackRenderer* SceneRenderer::shaderPack() const {
+  return gpu_->pack.get();
 }
 
 const terrasol::World& SceneRenderer::world() const {
@@ -165,13 +194,24 @@ RenderedFrame SceneRenderer::renderFrame(int frame, const FrameRequest& request)
   const GLuint fbo = gpu_->target.framebuffer();
   if (scene_.targetFps > 0) inputs.renderScale = resolution_.scale();
   const auto start = std::chrono::steady_clock::now();
-  gpu_->renderer.render(inputs, gpu_->meshes, fbo, gpu_->target.size(),
-                        request.timed ? &out.timings : nullptr);
+  if (gpu_->pack) {
+    gpu_->pack->render(inputs, gpu_->meshes, fbo, gpu_->target.size(),
+                       request.timed ? &out.timings : nullptr);
+  } else {
+    gpu_->renderer.render(inputs, gpu_->meshes, fbo, gpu_->target.size(),
+                          request.timed ? &out.timings : nullptr);
+  }
   if (scene_.targetFps > 0) {
     glFinish();  // the frame's whole time, as the game measures it
     resolution_.update(
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count(),
         scene_.targetFps);
+  }
+  out.image = gpu_->target.readPixels();
+  if (gpu_->pack) {
+    out.stats = gpu_->pack->lastFrame();
+    if (request.checkNan) out.nanPixels = gpu_->pack->nonFinitePixels();
+    return out;
   }
   out.stats = gpu_->renderer.lastFrame();
   if (request.checkNan || request.readBack) {
@@ -180,13 +220,16 @@ RenderedFrame SceneRenderer::renderFrame(int frame, const FrameRequest& request)
   }
   if (request.readBack) out.reflections = gpu_->renderer.readReflections();
   out.geometry = gpu_->renderer.lastGeometry();
-  out.image = gpu_->target.readPixels();
   return out;
 }
 
 void SceneRenderer::draw(int frame, GLuint framebuffer, glm::ivec2 size) {
   advanceTo(frame);
-  gpu_->renderer.render(inputsFor(frame), gpu_->meshes, framebuffer, size);
+  if (gpu_->pack) {
+    gpu_->pack->render(inputsFor(frame), gpu_->meshes, framebuffer, size);
+  } else {
+    gpu_->renderer.render(inputsFor(frame), gpu_->meshes, framebuffer, size);
+  }
 }
 
 Image SceneRenderer::render(std::vector<PassTiming>* timings) {

@@ -15,10 +15,13 @@
 
 namespace terrasol {
 
+class PackRenderer;
+
 struct SceneRenderStats {
   std::size_t sections = 0, quads = 0;
   double loadMs = 0.0, worldMs = 0.0;  // packs and atlas; world generation, light and meshing
   std::vector<PackProblem> problems;   // from the packs: warnings, never fatal
+  std::string shaderpackError;         // render.shaderpack failed to load: Terrasol's pipeline draws
 };
 
 struct RenderedFrame {
@@ -62,12 +65,17 @@ class SceneRenderer {
   const SceneFile& scene() const { return scene_; }
   const terrasol::World& world() const;
   DeferredRenderer& renderer();
+  // The shader pack drawing in the renderer's place (render.shaderpack), or null.
+  const PackRenderer* shaderPack() const;
 
  private:
   struct Gpu;
   struct World;
   FrameInputs inputsFor(int frame) const;
-  void advanceTo(int frame);  // edits keyed to frames up to `frame`, their meshes and the props' light
+  void advanceTo(int frame);
+  std::unique_ptr<PackRenderer> openShaderPack(const std::filesystem::path& path,
+                                               const ShaderPreprocessor& shaders)
+      const;  // edits keyed to frames up to `frame`, their meshes and the props' light
 
   SceneFile scene_;
   DebugView debugView_;

@@ -31,12 +31,16 @@ PackTime packTimeAt(std::int64_t ticks) {
   return t;
 }
 
+glm::mat4 packSkyRotation(const PackTime& time, float sunPathRotationDegrees) {
+  // Vanilla's sky: Ry(-90), the path's tilt about z, then the celestial angle about x.
+  glm::mat4 sky = rotateDegrees(glm::mat4(1.0f), -90.0f, {0, 1, 0});
+  sky = rotateDegrees(sky, sunPathRotationDegrees, {0, 0, 1});
+  return rotateDegrees(sky, time.skyAngle * 360.0f, {1, 0, 0});
+}
+
 PackCelestial packCelestial(const PackTime& time, float sunPathRotationDegrees,
                             const glm::mat4& gbufferModelView) {
-  // Vanilla's sky: Ry(-90), the path's tilt about z, then the celestial angle about x.
-  glm::mat4 sky = rotateDegrees(gbufferModelView, -90.0f, {0, 1, 0});
-  sky = rotateDegrees(sky, sunPathRotationDegrees, {0, 0, 1});
-  sky = rotateDegrees(sky, time.skyAngle * 360.0f, {1, 0, 0});
+  const glm::mat4 sky = gbufferModelView * packSkyRotation(time, sunPathRotationDegrees);
   PackCelestial c;
   c.sunPosition = glm::vec3(sky * glm::vec4(0, 100, 0, 0));
   c.moonPosition = glm::vec3(sky * glm::vec4(0, -100, 0, 0));

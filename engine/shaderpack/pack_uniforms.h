@@ -22,6 +22,9 @@ struct PackTime {
 // Negative ticks count back from 0.
 PackTime packTimeAt(std::int64_t ticks);
 
+// Vanilla's sky rotation in player space: the sun at +y, the moon at -y.
+glm::mat4 packSkyRotation(const PackTime& time, float sunPathRotationDegrees);
+
 // Eye-space positions 100 blocks away (w = 0 directions through `gbufferModelView`).
 struct PackCelestial {
   glm::vec3 sunPosition, moonPosition, shadowLightPosition, upPosition;

@@ -26,11 +26,13 @@ const std::map<std::string, std::set<std::string>> kAllowed = {
     {"assets", {"core", "assets"}},
     {"shaderpack", {"core", "world", "assets", "shaderpack"}},
     {"render", {"core", "assets", "mesh", "render"}},
+    {"pack_render", {"core", "world", "assets", "mesh", "render", "shaderpack", "pack_render"}},
     {"platform", {"core", "platform"}},
     {"scene", {"core", "world", "minecraft", "light", "mesh", "assets", "scene"}},
     {"pipeline", {"core", "world", "minecraft", "light", "mesh", "pipeline"}},
     {"scene_render",
-     {"core", "world", "minecraft", "light", "mesh", "assets", "render", "scene", "scene_render"}},
+     {"core", "world", "minecraft", "light", "mesh", "assets", "render", "shaderpack", "pack_render", "scene",
+      "scene_render"}},
 };
 
 const std::set<std::string> kEngine = [] {

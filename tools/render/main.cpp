@@ -16,6 +16,7 @@
 
 #include "core/error.h"
 #include "core/tool_main.h"
+#include "pack_render/pack_renderer.h"
 #include "platform/egl/egl_context.h"
 #include "progress.h"
 #include "render/gl/program.h"
@@ -30,7 +31,7 @@ namespace {
 constexpr int kBadInput = 2;
 
 struct Options {
-  std::filesystem::path scene, out, compare, report;
+  std::filesystem::path scene, out, compare, report, shaderpack;
   std::vector<std::string> overrides;
   std::vector<Sweep> sweeps;
   bool updateGoldens = false, timings = false, noImages = false, gameShadows = false;
@@ -47,6 +48,8 @@ const char* const kUsage =
     "  --report FILE.json     per-frame report: ms per pass, NaN/Inf pixels, sections drawn and culled,\n"
     "                         shadow and reflection error against the ray-traced truth; the GL renderer\n"
     "  --timings              print ms per pass (after a warm-up frame)\n"
+    "  --shaderpack PATH      draw with an OptiFine/Iris shader pack (folder or .zip) instead of\n"
+    "                         Terrasol's pipeline (the scene's render.shaderpack)\n"
     "  --game-shadows         keep and spread the shadow map as the game does (FrameInputs::reuseShadowMap)\n"
     "                         instead of drawing it whole every frame\n"
     "  --no-images            write no frames (benchmarks: the time to encode a PNG would leave the GPU\n"
@@ -93,6 +96,8 @@ Options parseOptions(int argc, char** argv) {
       o.report = value(i, arg);
     else if (arg == "--timings")
       o.timings = true;
+    else if (arg == "--shaderpack")
+      o.shaderpack = std::filesystem::absolute(value(i, arg));
     else if (arg == "--no-images")
       o.noImages = true;
     else if (arg == "--game-shadows")
@@ -264,6 +269,7 @@ int run(int argc, char** argv) {
   try {
     options = parseOptions(argc, argv);
     scene = loadScene(options.scene, options.overrides);
+    if (!options.shaderpack.empty()) scene->shaderpack = options.shaderpack;
     if (!options.sweeps.empty()) {
       // Every value must make a valid scene before anything is rendered.
       for (const Sweep& s : options.sweeps)
@@ -297,7 +303,19 @@ int run(int argc, char** argv) {
     std::fprintf(stderr, "terrasol-render: %s: %s\n",
                  p.severity == PackProblem::Severity::Error ? "error" : "warning", p.message.c_str());
   }
+  if (!renderer->stats().shaderpackError.empty()) {
+    std::fprintf(
+        stderr,
+        "terrasol-render: error: shader pack: %s\nterrasol-render: drawing with Terrasol's pipeline\n",
+        renderer->stats().shaderpackError.c_str());
+  }
   const int status = renderScene(options, *scene, *renderer, context->description());
+  if (const PackRenderer* pack = renderer->shaderPack()) {
+    for (const std::string& u : pack->unknownUniforms())
+      std::fprintf(stderr, "terrasol-render: warning: shader pack %s: %s is not set\n",
+                   pack->packName().c_str(), u.c_str());
+  }
+
   context->checkErrors("rendering the scene");
   return status;
 }

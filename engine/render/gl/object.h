@@ -63,6 +63,7 @@ TERRASOL_GL_TRAITS(Texture, glCreateTextures(args..., 1, &id), glDeleteTextures(
 TERRASOL_GL_TRAITS(TextureView, glGenTextures(1, &id); glTextureView(id, args...), glDeleteTextures(1, &id))
 TERRASOL_GL_TRAITS(Renderbuffer, glCreateRenderbuffers(1, &id), glDeleteRenderbuffers(1, &id))
 TERRASOL_GL_TRAITS(Framebuffer, glCreateFramebuffers(1, &id), glDeleteFramebuffers(1, &id))
+TERRASOL_GL_TRAITS(Sampler, glCreateSamplers(1, &id), glDeleteSamplers(1, &id))
 TERRASOL_GL_TRAITS(Query, glCreateQueries(args..., 1, &id), glDeleteQueries(1, &id))
 TERRASOL_GL_TRAITS(Shader, id = glCreateShader(args...), glDeleteShader(id))
 TERRASOL_GL_TRAITS(Program, id = glCreateProgram(args...), glDeleteProgram(id))

@@ -1,6 +1,7 @@
 #include "render/gl/program.h"
 
 #include <algorithm>
+#include <functional>
 
 namespace terrasol {
 namespace {
@@ -16,21 +17,35 @@ std::string infoLog(GLuint object, bool isProgram) {
   return log;
 }
 
-gl::Shader compile(const ShaderPreprocessor& sources, const ShaderStageSource& stage,
-                   const std::vector<ShaderDefine>& defines, std::vector<std::string>& declared) {
-  const PreprocessedShader pre = sources.process(stage.file, defines);
-  for (auto& name : declaredUniforms(pre.text)) declared.push_back(std::move(name));
-  gl::Shader shader = gl::Shader::create(stage.stage);
+gl::Shader compileText(GLenum stage, const PreprocessedShader& pre, const std::string& name) {
+  gl::Shader shader = gl::Shader::create(stage);
   const char* text = pre.text.c_str();
   glShaderSource(shader.id(), 1, &text, nullptr);
   glCompileShader(shader.id());
   GLint ok = GL_FALSE;
   glGetShaderiv(shader.id(), GL_COMPILE_STATUS, &ok);
-  if (!ok) {
-    throw ShaderError("cannot compile " + sources.displayName(stage.file) + ":\n" +
-                      pre.mapLog(infoLog(shader.id(), false)));
-  }
+  if (!ok) throw ShaderError("cannot compile " + name + ":\n" + pre.mapLog(infoLog(shader.id(), false)));
   return shader;
+}
+
+gl::Shader compile(const ShaderPreprocessor& sources, const ShaderStageSource& stage,
+                   const std::vector<ShaderDefine>& defines, std::vector<std::string>& declared) {
+  const PreprocessedShader pre = sources.process(stage.file, defines);
+  for (auto& name : declaredUniforms(pre.text)) declared.push_back(std::move(name));
+  return compileText(stage.stage, pre, sources.displayName(stage.file));
+}
+
+void link(LinkedProgram& linked, const std::vector<gl::Shader>& shaders,
+          const std::function<void(GLuint)>& beforeLink) {
+  linked.program = gl::Program::create();
+  const GLuint program = linked.program.id();
+  for (const auto& shader : shaders) glAttachShader(program, shader.id());
+  if (beforeLink) beforeLink(program);
+  glLinkProgram(program);
+  for (const auto& shader : shaders) glDetachShader(program, shader.id());
+  GLint ok = GL_FALSE;
+  glGetProgramiv(program, GL_LINK_STATUS, &ok);
+  if (!ok) throw ShaderError("cannot link " + linked.name + ":\n" + infoLog(program, true));
 }
 
 }  // namespace
@@ -47,14 +62,20 @@ LinkedProgram linkProgram(const ShaderPreprocessor& sources, const std::vector<S
     shaders.push_back(compile(sources, stage, defines, linked.declared));
     linked.name += (linked.name.empty() ? "" : " + ") + sources.displayName(stage.file);
   }
-  linked.program = gl::Program::create();
-  const GLuint program = linked.program.id();
-  for (const auto& shader : shaders) glAttachShader(program, shader.id());
-  glLinkProgram(program);
-  for (const auto& shader : shaders) glDetachShader(program, shader.id());
-  GLint ok = GL_FALSE;
-  glGetProgramiv(program, GL_LINK_STATUS, &ok);
-  if (!ok) throw ShaderError("cannot link " + linked.name + ":\n" + infoLog(program, true));
+  link(linked, shaders, {});
+  return linked;
+}
+
+LinkedProgram linkPreprocessed(const std::vector<PreprocessedStage>& stages,
+                               const std::function<void(GLuint)>& beforeLink) {
+  LinkedProgram linked;
+  std::vector<gl::Shader> shaders;
+  for (const PreprocessedStage& stage : stages) {
+    for (auto& name : declaredUniforms(stage.source->text)) linked.declared.push_back(std::move(name));
+    shaders.push_back(compileText(stage.stage, *stage.source, stage.name));
+    linked.name += (linked.name.empty() ? "" : " + ") + stage.name;
+  }
+  link(linked, shaders, beforeLink);
   return linked;
 }
 

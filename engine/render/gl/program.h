@@ -1,6 +1,7 @@
 #pragma once
 // Compiling and linking GLSL programs from preprocessed sources; errors name the original file:line.
 
+#include <functional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -37,6 +38,15 @@ struct LinkedProgram {
 // position mapped back to "shaders/<file>:<line>", or Error from the preprocessor.
 LinkedProgram linkProgram(const ShaderPreprocessor& sources, const std::vector<ShaderStageSource>& stages,
                           const std::vector<ShaderDefine>& defines);
+// A stage already preprocessed (a shader pack's, rewritten), named `name` in messages.
+struct PreprocessedStage {
+  GLenum stage;
+  const PreprocessedShader* source;
+  std::string name;
+};
+// Compiles and links; `beforeLink` binds attribute or output locations. Throws ShaderError as above.
+LinkedProgram linkPreprocessed(const std::vector<PreprocessedStage>& stages,
+                               const std::function<void(GLuint)>& beforeLink = {});
 // The same, for a program whose uniforms are set by hand.
 gl::Program buildProgram(const ShaderPreprocessor& sources, const std::vector<ShaderStageSource>& stages,
                          const std::vector<ShaderDefine>& defines);

@@ -1,0 +1,555 @@
+#include "pack_render/pack_renderer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
+#include <random>
+
+#include "core/camera.h"
+#include "core/day_cycle.h"
+#include "core/error.h"
+#include "core/lightmap.h"
+#include "core/srgb.h"
+#include "render/frame_graph.h"
+#include "render/frustum.h"
+#include "render/gl_slots.h"
+#include "render/section_draw.h"
+#include "render/shader_defines.h"
+#include "shaderpack/pack_macros.h"
+#include "shaderpack/pack_uniforms.h"
+
+namespace terrasol {
+namespace {
+
+enum class StageKind { Shadow, SkyBasic, SkyTextured, Terrain, Deferred, Water, Composite, Final };
+
+constexpr float kCutoutAlpha = 0.1f;  // OptiFine's alpha test for cutout geometry
+constexpr float kTicksPerSecond = 20.0f;
+constexpr double kFrameTimeWrap = 3600.0;  // frameTimeCounter wraps every hour
+
+GLuint unitOf(int optifineUnit) {
+  return static_cast<GLuint>(slots::kUnitPackBase + optifineUnit);
+}
+
+// The vertex reader's GLSL, its #version line dropped: it is spliced into a pack's stage.
+PreprocessedShader readerSource(const ShaderPreprocessor& shaders, const char* file) {
+  std::vector<ShaderDefine> defines = rendererDefines();
+  defines.push_back({"PACK_LIGHT_SCALE", std::to_string(PackedVertex::kCellLight * 16) + ".0"});
+  PreprocessedShader source = shaders.process(file, defines);
+  const std::size_t firstLine = source.text.find('\n');
+  source.text.erase(0, firstLine + 1);
+  source.lines.erase(source.lines.begin());
+  return source;
+}
+
+gl::Texture texture2d(GLenum format, glm::ivec2 size, GLenum filter, GLenum wrap = GL_CLAMP_TO_EDGE) {
+  gl::Texture t = gl::Texture::create(GL_TEXTURE_2D);
+  glTextureStorage2D(t.id(), 1, format, size.x, size.y);
+  glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, static_cast<GLint>(filter));
+  glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, static_cast<GLint>(filter));
+  glTextureParameteri(t.id(), GL_TEXTURE_WRAP_S, static_cast<GLint>(wrap));
+  glTextureParameteri(t.id(), GL_TEXTURE_WRAP_T, static_cast<GLint>(wrap));
+  return t;
+}
+
+gl::Sampler samplerFor(bool compare, bool nearest) {
+  gl::Sampler s = gl::Sampler::create();
+  const GLint filter = nearest ? GL_NEAREST : GL_LINEAR;
+  glSamplerParameteri(s.id(), GL_TEXTURE_MIN_FILTER, filter);
+  glSamplerParameteri(s.id(), GL_TEXTURE_MAG_FILTER, filter);
+  glSamplerParameteri(s.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glSamplerParameteri(s.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  if (compare) {
+    glSamplerParameteri(s.id(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+    glSamplerParameteri(s.id(), GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+  }
+  return s;
+}
+
+glm::vec3 srgbOf(glm::vec3 linear) {
+  const glm::vec3 c = glm::clamp(linear, 0.0f, 1.0f);
+  return {linearToSrgb(c.r), linearToSrgb(c.g), linearToSrgb(c.b)};
+}
+
+}  // namespace
+
+struct PackRenderer::Stage {
+  StageKind kind;
+  std::string slot;  // the program's name in the frame ("composite2", "gbuffers_water")
+  std::unique_ptr<PackGlProgram> program;
+};
+
+// What the pack's samplers read besides its buffers.
+struct PackRenderer::Textures {
+  Textures(const BlockTextures& blocks, int shadowResolution, int noiseResolution,
+           const std::vector<glm::vec2>& entityIds)
+      : atlas(gl::TextureView::create(GL_TEXTURE_2D, blocks.atlas().albedo(), GL_RGBA8, 0u, levelsOf(blocks),
+                                      0u, 1u)),
+        lightmap(texture2d(GL_RGBA8, glm::ivec2(Lightmap::kSize), GL_LINEAR)),
+        noise(texture2d(GL_RGB8, glm::ivec2(noiseResolution), GL_LINEAR, GL_REPEAT)),
+        entities(gl::Buffer::create()),
+        shadowResolution(shadowResolution) {
+    // The atlas as packs sample it: its sRGB texels as stored, not decoded.
+    glTextureParameteri(atlas.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_LINEAR);
+    glTextureParameteri(atlas.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    // Random RGB, the same every run (Iris fills it from a seeded generator too).
+    std::vector<std::uint8_t> texels(static_cast<std::size_t>(noiseResolution * noiseResolution * 3));
+    std::mt19937 random(0);
+    for (std::uint8_t& t : texels) t = static_cast<std::uint8_t>(random() & 0xff);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTextureSubImage2D(noise.id(), 0, 0, 0, noiseResolution, noiseResolution, GL_RGB, GL_UNSIGNED_BYTE,
+                        texels.data());
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    std::vector<glm::vec2> ids = entityIds;
+    if (ids.empty()) ids.push_back(glm::vec2(-1.0f));
+    glNamedBufferStorage(entities.id(), static_cast<GLsizeiptr>(ids.size() * sizeof(glm::vec2)), ids.data(),
+                         0);
+    const glm::ivec2 shadowSize(shadowResolution);
+    for (gl::Texture& t : shadowDepth) t = texture2d(GL_DEPTH_COMPONENT32F, shadowSize, GL_NEAREST);
+    for (gl::Texture& t : shadowColour) t = texture2d(GL_RGBA8, shadowSize, GL_LINEAR);
+    for (gl::Framebuffer& f : shadowFramebuffers) f = gl::Framebuffer::create();
+    for (int i = 0; i < 2; ++i) {
+      glNamedFramebufferTexture(shadowFramebuffers[i].id(), GL_DEPTH_ATTACHMENT, shadowDepth[1 - i].id(), 0);
+      for (int c = 0; c < 2; ++c) {
+        glNamedFramebufferTexture(shadowFramebuffers[i].id(), GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(c),
+                                  shadowColour[c].id(), 0);
+      }
+    }
+  }
+  static GLuint levelsOf(const BlockTextures& blocks) {
+    GLint levels = 1;
+    glGetTextureParameteriv(blocks.atlas().albedo(), GL_TEXTURE_IMMUTABLE_LEVELS, &levels);
+    return static_cast<GLuint>(std::max(levels, 1));
+  }
+
+  gl::TextureView atlas;
+  gl::Texture lightmap, noise;
+  gl::Buffer entities;
+  int shadowResolution;
+  std::array<gl::Texture, 2> shadowDepth;             // shadowtex0 (everything), shadowtex1 (opaque)
+  std::array<gl::Texture, 2> shadowColour;            // shadowcolor0, shadowcolor1
+  std::array<gl::Framebuffer, 2> shadowFramebuffers;  // drawing into shadowtex1, then shadowtex0
+  gl::Sampler compareLinear = samplerFor(true, false), compareNearest = samplerFor(true, true);
+  gl::Sampler nearest = samplerFor(false, true), linear = samplerFor(false, false);
+  gl::VertexArray empty = gl::VertexArray::create();
+};
+
+PackRenderer::PackRenderer(const ShaderPack& pack, const ShaderPreprocessor& shaders, const Atlas& atlas,
+                           const TintPalette& tints, const std::vector<glm::vec2>& entityIds)
+    : packName_(pack.name()), blockTextures_(atlas, tints), gpuTimer_(!softwareRenderer()) {
+  const std::vector<ShaderDefine> macros = packMacros();
+  if (const auto text = pack.text("shaders.properties"))
+    properties_ = parseShaderProperties(*text, pack.displayName("shaders.properties"), PackMacros(macros));
+  const PreprocessedShader blockReader = readerSource(shaders, "pack/block_input.glsl");
+  const PreprocessedShader skyReader = readerSource(shaders, "pack/sky_input.glsl");
+  const PreprocessedShader screenReader = readerSource(shaders, "pack/screen_input.glsl");
+
+  const PackEvaluation atLoad{[](std::string_view) { return std::optional<PackValue>(); }, 0.0f};
+  const auto enabled = [&](const std::string& name) {
+    try {
+      return properties_.programEnabled(name, atLoad);
+    } catch (const Error&) {
+      return true;  // it reads a uniform: OptiFine decides per frame; Terrasol keeps the program
+    }
+  };
+  const auto add = [&](StageKind kind, const std::string& slot) {
+    std::optional<PackProgram> files = enabled(slot) ? pack.resolve(slot) : std::nullopt;
+    if (!enabled(slot)) {
+      const std::string_view fallback = programFallback(slot);
+      if (!fallback.empty()) files = pack.resolve(fallback);
+    }
+    if (!files) return;
+    const bool screen =
+        kind == StageKind::Deferred || kind == StageKind::Composite || kind == StageKind::Final;
+    const bool sky = kind == StageKind::SkyBasic || kind == StageKind::SkyTextured;
+    PackProgramSource source{
+        &pack,           *files, screen ? PackInput::Screen : sky ? PackInput::Sky : PackInput::Block,
+        !screen && !sky, macros, screen ? &screenReader : sky ? &skyReader : &blockReader};
+    stages_.push_back({kind, slot, std::make_unique<PackGlProgram>(source)});
+    names_.push_back(files->name == slot ? slot : slot + ": " + files->name);
+  };
+  add(StageKind::Shadow, "shadow");
+  add(StageKind::SkyBasic, "gbuffers_skybasic");
+  add(StageKind::SkyTextured, "gbuffers_skytextured");
+  add(StageKind::Terrain, "gbuffers_terrain");
+  for (const std::string& name : packProgramNames()) {
+    if (name.starts_with("deferred") && pack.program(name)) add(StageKind::Deferred, name);
+  }
+  add(StageKind::Water, "gbuffers_water");
+  for (const std::string& name : packProgramNames()) {
+    if (name.starts_with("composite") && pack.program(name)) add(StageKind::Composite, name);
+  }
+  if (pack.program("final")) add(StageKind::Final, "final");
+
+  std::vector<ProgramDirectives> directives;
+  for (const Stage& s : stages_) directives.push_back(s.program->directives());
+  settings_ = packSettings(directives, pack.name());
+  usedBuffers_.set(0);
+  for (const Stage& s : stages_) {
+    if (s.kind != StageKind::Final && s.kind != StageKind::Shadow)
+      for (int b : s.program->drawBuffers()) usedBuffers_.set(static_cast<std::size_t>(b));
+    for (const PackSampler& sampler : s.program->samplers())
+      if (sampler.texture == PackTexture::ColorTex)
+        usedBuffers_.set(static_cast<std::size_t>(sampler.buffer));
+  }
+  textures_ = std::make_unique<Textures>(blockTextures_, std::clamp(settings_.shadowMapResolution, 16, 8192),
+                                         std::clamp(settings_.noiseTextureResolution, 1, 4096), entityIds);
+}
+
+PackRenderer::~PackRenderer() = default;
+
+std::vector<std::string> PackRenderer::unknownUniforms() const {
+  std::vector<std::string> out;
+  for (const Stage& s : stages_)
+    for (const std::string& u : s.program->unknownUniforms()) out.push_back(s.slot + ": " + u);
+  return out;
+}
+
+void PackRenderer::render(const FrameInputs& inputs, const SectionMeshes& meshes, GLuint framebuffer,
+                          glm::ivec2 targetSize, std::vector<PassTiming>* timings) {
+  if (targetSize.x <= 0 || targetSize.y <= 0) return;
+  stats_ = {};
+  const glm::ivec2 size = targetSize;
+  if (!targets_ || targets_->size() != size) targets_.emplace(size, settings_, usedBuffers_);
+  blockTextures_.update(inputs.ticks);
+
+  // The frame's uniforms.
+  const DayState day = dayStateAt(inputs.ticks, settings_.sunPathRotation);
+  PackView view;
+  view.camera = inputs.cameraPosition;
+  view.lookAt = inputs.cameraLookAt;
+  view.up = inputs.cameraUp;
+  view.fovDegrees = inputs.fovDegrees;
+  view.ticks = inputs.ticks;
+  view.size = size;
+  view.viewDistance = inputs.viewDistance;
+  // Time from the world's ticks, so a frame is the same whenever it is drawn.
+  view.frameTime =
+      frameCounter_ == 0 ? 0.0f : static_cast<float>(inputs.ticks - lastTicks_) / kTicksPerSecond;
+  view.frameTimeCounter =
+      static_cast<float>(std::fmod(static_cast<double>(inputs.ticks) / kTicksPerSecond, kFrameTimeWrap));
+  view.frameCounter = frameCounter_++;
+  lastTicks_ = inputs.ticks;
+  view.underWater = inputs.underWater.has_value();
+  view.fogColor = srgbOf(day.fogColor);
+  view.skyColor = srgbOf(day.skyZenith);
+  view.atlasSize = glm::ivec2(0);
+  uniforms_ = packFrameUniforms(view, settings_, history_);
+  evaluateCustoms(properties_, uniforms_, view.frameTime);
+  for (Stage& s : stages_) s.program->setUniforms(uniforms_);
+
+  const PackCamera camera = packCamera(view);
+  const PackTime time = packTimeAt(inputs.ticks);
+  const glm::mat4 shadowModelView = std::get<glm::mat4>(*uniforms_.find("shadowModelView"));
+  const glm::mat4 shadowProjection = std::get<glm::mat4>(*uniforms_.find("shadowProjection"));
+  const glm::mat4 lightmapMatrix =
+      glm::scale(glm::translate(glm::mat4(1.0f), glm::vec3(1.0f / 32.0f)), glm::vec3(1.0f / 256.0f));
+  const PackMatrices world{camera.modelView, camera.projection, glm::mat4(1.0f), lightmapMatrix};
+  const PackMatrices light{shadowModelView, shadowProjection, glm::mat4(1.0f), lightmapMatrix};
+  const PackMatrices screen{glm::mat4(1.0f), glm::ortho(0.0f, 1.0f, 0.0f, 1.0f, -1.0f, 1.0f), glm::mat4(1.0f),
+                            glm::mat4(1.0f)};
+
+  // The lightmap: vanilla's 16x16 colours for this moment, as sRGB.
+  {
+    const Lightmap lightmap = buildLightmap(day, inputs.ticks);
+    std::vector<std::uint8_t> texels;
+    for (const glm::vec3& c : lightmap.texels) {
+      const glm::vec3 s = srgbOf(c) * 255.0f;
+      texels.insert(texels.end(),
+                    {static_cast<std::uint8_t>(std::lround(s.r)), static_cast<std::uint8_t>(std::lround(s.g)),
+                     static_cast<std::uint8_t>(std::lround(s.b)), 255});
+    }
+    glTextureSubImage2D(textures_->lightmap.id(), 0, 0, 0, Lightmap::kSize, Lightmap::kSize, GL_RGBA,
+                        GL_UNSIGNED_BYTE, texels.data());
+  }
+  sky_.update(view.skyColor, packSkyRotation(time, settings_.sunPathRotation));
+
+  // Culling: the camera's frustum, and the shadow camera's box.
+  const std::vector<VisibleSection> visible = sectionsInside(
+      frustumPlanes(camera.projection * camera.modelView), view.camera, meshes, &stats_.sectionsCulled);
+  stats_.sectionsDrawn = static_cast<int>(visible.size());
+
+  const auto bindSamplers = [&](const PackGlProgram& program, GLuint drawnTexture) {
+    const Textures& t = *textures_;
+    for (const PackSampler& s : program.samplers()) {
+      GLuint texture = 0;
+      GLuint sampler = 0;
+      const auto shadowSampler = [&](bool nearestWanted) {
+        return s.shadow ? (nearestWanted ? t.compareNearest.id() : t.compareLinear.id())
+                        : (nearestWanted ? t.nearest.id() : t.linear.id());
+      };
+      switch (s.texture) {
+        case PackTexture::Texture:
+          texture = drawnTexture;
+          break;
+        case PackTexture::Lightmap:
+          texture = t.lightmap.id();
+          break;
+        case PackTexture::Normals:
+          texture = blockTextures_.atlas().normal();
+          break;
+        case PackTexture::Specular:
+          texture = blockTextures_.atlas().specular();
+          break;
+        case PackTexture::ShadowTex0:
+        case PackTexture::ShadowTex1: {
+          const int i = s.texture == PackTexture::ShadowTex0 ? 0 : 1;
+          texture = t.shadowDepth[static_cast<std::size_t>(i)].id();
+          sampler = shadowSampler(settings_.shadowtexNearest[static_cast<std::size_t>(i)] ||
+                                  (s.shadow && !settings_.shadowHardwareFiltering));
+          break;
+        }
+        case PackTexture::ShadowColor0:
+        case PackTexture::ShadowColor1: {
+          const int i = s.texture == PackTexture::ShadowColor0 ? 0 : 1;
+          texture = t.shadowColour[static_cast<std::size_t>(i)].id();
+          sampler =
+              settings_.shadowcolorNearest[static_cast<std::size_t>(i)] ? t.nearest.id() : t.linear.id();
+          break;
+        }
+        case PackTexture::DepthTex0:
+          texture = targets_->depth(0);
+          break;
+        case PackTexture::DepthTex1:
+        case PackTexture::DepthTex2:
+          texture = targets_->depth(1);
+          break;
+        case PackTexture::Noise:
+          texture = t.noise.id();
+          break;
+        case PackTexture::ColorTex:
+          texture = targets_->has(s.buffer) ? targets_->main(s.buffer) : 0;
+          break;
+      }
+      if (s.texture == PackTexture::Texture && drawnTexture == 0) continue;  // bound by the draw
+      glBindTextureUnit(unitOf(s.unit), texture);
+      glBindSampler(unitOf(s.unit), sampler);
+    }
+  };
+  const auto drawTerrain = [&](PackGlProgram& program, const std::vector<VisibleSection>& sections,
+                               MeshLayer layer, DrawOrder order, FrameStats* stats) {
+    program.setAlphaTest(layer == MeshLayer::Cutout ? kCutoutAlpha : 0.0f);
+    program.setRenderStage(static_cast<int>(layer == MeshLayer::Opaque   ? RenderStage::TerrainSolid
+                                            : layer == MeshLayer::Cutout ? RenderStage::TerrainCutout
+                                                                         : RenderStage::TerrainTranslucent));
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, slots::kStoragePackEntities, textures_->entities.id());
+    SectionDraw how;
+    how.order = order;
+    how.stats = stats;
+    how.view = SectionMeshes::View::Light;  // faces, not merged quads: a pack's UVs stay in their tile
+    drawSections(program.id(), program.section(), blockTextures_, sections, meshes, layer, how);
+    if (stats) stats->quadsDrawn += static_cast<std::int64_t>(quadsIn(sections, layer));
+  };
+  const auto screenPass = [&](Stage& s) {
+    PackGlProgram& program = *s.program;
+    for (int b = 0; b < kPackColorBuffers; ++b) {
+      const std::string n = "colortex" + std::to_string(b) + "MipmapEnabled";
+      if (program.directives().flag(n).value_or(false)) targets_->generateMipmaps(b);
+    }
+    const bool toTarget = s.kind == StageKind::Final;
+    if (toTarget) {
+      glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+      glViewport(0, 0, targetSize.x, targetSize.y);
+    } else {
+      targets_->bindDraw(program.drawBuffers(), true, false);
+    }
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_BLEND);
+    glDisable(GL_CULL_FACE);
+    glUseProgram(program.id());
+    program.setMatrices(screen);
+    bindSamplers(program, 0);
+    glBindVertexArray(textures_->empty.id());
+    glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+    if (toTarget) return;
+    // The buffers it wrote flip, unless the pack says otherwise (flip.<program>.<buffer>).
+    for (int b = 0; b < kPackColorBuffers; ++b) {
+      const auto& written = program.drawBuffers();
+      bool flip = std::find(written.begin(), written.end(), b) != written.end();
+      if (const auto* e = properties_.find("flip." + s.slot + ".colortex" + std::to_string(b)))
+        flip = e->value == "true";
+      if (flip && targets_->has(b)) targets_->flip(b);
+    }
+  };
+  const auto stageOf = [&](StageKind kind) -> Stage* {
+    const auto it =
+        std::find_if(stages_.begin(), stages_.end(), [&](const Stage& s) { return s.kind == kind; });
+    return it == stages_.end() ? nullptr : &*it;
+  };
+
+  FrameGraph graph;
+  PassClock clock(timings, gpuTimer_);
+  const FrameGraph::Resource shadowMaps = graph.transient("shadow maps");
+  const FrameGraph::Resource buffers = graph.transient("buffers");
+  const FrameGraph::Resource target = graph.import("target");
+
+  if (Stage* shadow = stageOf(StageKind::Shadow)) {
+    const std::vector<VisibleSection> casters =
+        sectionsInside(frustumPlanes(shadowProjection * shadowModelView), view.camera, meshes);
+    stats_.shadowCasters = static_cast<int>(casters.size());
+    graph.add(
+        "shadow", [&](FrameGraph::Builder& b) { b.write(shadowMaps); },
+        [&, shadow, casters] {
+          PackGlProgram& program = *shadow->program;
+          Textures& t = *textures_;
+          std::vector<GLenum> draw;
+          for (int i : program.drawBuffers())
+            draw.push_back(i < 2 ? GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(i) : GL_NONE);
+          const glm::vec4 white(1.0f);
+          const float far = 1.0f;
+          for (const gl::Texture& c : t.shadowColour) glClearTexImage(c.id(), 0, GL_RGBA, GL_FLOAT, &white);
+          for (const gl::Texture& d : t.shadowDepth)
+            glClearTexImage(d.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, &far);
+          glViewport(0, 0, t.shadowResolution, t.shadowResolution);
+          glEnable(GL_DEPTH_TEST);
+          glDepthFunc(GL_LEQUAL);
+          glDepthMask(GL_TRUE);
+          glDisable(GL_BLEND);
+          glDisable(GL_CULL_FACE);
+          program.setMatrices(light);
+          glUseProgram(program.id());
+          bindSamplers(program, t.atlas.id());
+          for (int pass = 0; pass < 2; ++pass) {
+            glNamedFramebufferDrawBuffers(t.shadowFramebuffers[pass].id(), static_cast<GLsizei>(draw.size()),
+                                          draw.data());
+            glBindFramebuffer(GL_FRAMEBUFFER, t.shadowFramebuffers[pass].id());
+            if (pass == 0) {
+              drawTerrain(program, casters, MeshLayer::Opaque, DrawOrder::NearestFirst, nullptr);
+              drawTerrain(program, casters, MeshLayer::Cutout, DrawOrder::NearestFirst, nullptr);
+              // shadowtex1 holds the opaque; shadowtex0 starts from it and adds the translucent.
+              glCopyImageSubData(t.shadowDepth[1].id(), GL_TEXTURE_2D, 0, 0, 0, 0, t.shadowDepth[0].id(),
+                                 GL_TEXTURE_2D, 0, 0, 0, 0, t.shadowResolution, t.shadowResolution, 1);
+            } else {
+              drawTerrain(program, casters, MeshLayer::Translucent, DrawOrder::NearestFirst, nullptr);
+            }
+          }
+        });
+  }
+
+  graph.add(
+      "sky", [&](FrameGraph::Builder& b) { b.write(buffers); },
+      [&] {
+        targets_->clear(view.fogColor);
+        glDisable(GL_DEPTH_TEST);
+        glDepthMask(GL_FALSE);
+        glDisable(GL_CULL_FACE);
+        const PackMatrices skyMatrices{camera.modelView, camera.projection, glm::mat4(1.0f), lightmapMatrix};
+        if (Stage* basic = stageOf(StageKind::SkyBasic)) {
+          PackGlProgram& p = *basic->program;
+          targets_->bindDraw(p.drawBuffers(), false, false);
+          glUseProgram(p.id());
+          p.setMatrices(skyMatrices);
+          p.setRenderStage(static_cast<int>(RenderStage::Sky));
+          bindSamplers(p, 0);
+          glDisable(GL_BLEND);
+          sky_.drawSky();
+        }
+        if (Stage* textured = stageOf(StageKind::SkyTextured)) {
+          PackGlProgram& p = *textured->program;
+          targets_->bindDraw(p.drawBuffers(), false, false);
+          glUseProgram(p.id());
+          p.setMatrices(skyMatrices);
+          bindSamplers(p, 0);
+          // Vanilla adds the sun and moon onto the sky.
+          glEnable(GL_BLEND);
+          glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE, GL_ONE, GL_ZERO);
+          const GLuint unit = unitOf(0);
+          p.setRenderStage(static_cast<int>(RenderStage::Sun));
+          sky_.drawSun(unit);
+          p.setRenderStage(static_cast<int>(RenderStage::Moon));
+          sky_.drawMoon(unit);
+          glDisable(GL_BLEND);
+        }
+        glDepthMask(GL_TRUE);
+      });
+
+  Stage* terrain = stageOf(StageKind::Terrain);
+  graph.add(
+      "terrain",
+      [&](FrameGraph::Builder& b) {
+        if (!terrain) return b.skip("the pack has no terrain program");
+        if (b.written(shadowMaps)) b.read(shadowMaps);
+        b.read(buffers);
+        b.write(buffers);
+      },
+      [&] {
+        PackGlProgram& p = *terrain->program;
+        targets_->bindDraw(p.drawBuffers(), false, true);
+        glEnable(GL_DEPTH_TEST);
+        glDepthFunc(GL_LEQUAL);
+        glDepthMask(GL_TRUE);
+        glEnable(GL_CULL_FACE);
+        glCullFace(GL_BACK);
+        glDisable(GL_BLEND);
+        glUseProgram(p.id());
+        p.setMatrices(world);
+        bindSamplers(p, textures_->atlas.id());
+        drawTerrain(p, visible, MeshLayer::Opaque, DrawOrder::NearestFirst, &stats_);
+        drawTerrain(p, visible, MeshLayer::Cutout, DrawOrder::NearestFirst, &stats_);
+        glDisable(GL_CULL_FACE);
+      });
+
+  const auto addScreen = [&](Stage& s) {
+    graph.add(
+        s.slot,
+        [&](FrameGraph::Builder& b) {
+          if (b.written(shadowMaps)) b.read(shadowMaps);
+          b.read(buffers);
+          b.write(s.kind == StageKind::Final ? target : buffers);
+        },
+        [&] { screenPass(s); });
+  };
+  for (Stage& s : stages_)
+    if (s.kind == StageKind::Deferred) addScreen(s);
+
+  Stage* water = stageOf(StageKind::Water);
+  graph.add(
+      "water",
+      [&](FrameGraph::Builder& b) {
+        b.read(buffers);
+        b.write(buffers);
+      },
+      [&] {
+        targets_->keepOpaqueDepth();
+        if (!water || quadsIn(visible, MeshLayer::Translucent) == 0) return;
+        PackGlProgram& p = *water->program;
+        targets_->bindDraw(p.drawBuffers(), false, true);
+        glEnable(GL_DEPTH_TEST);
+        glDepthMask(GL_TRUE);
+        glDisable(GL_CULL_FACE);
+        glEnable(GL_BLEND);
+        glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+        glUseProgram(p.id());
+        p.setMatrices(world);
+        bindSamplers(p, textures_->atlas.id());
+        drawTerrain(p, visible, MeshLayer::Translucent, DrawOrder::FarthestFirst, &stats_);
+        glDisable(GL_BLEND);
+      });
+  for (Stage& s : stages_)
+    if (s.kind == StageKind::Composite) addScreen(s);
+  if (Stage* final = stageOf(StageKind::Final)) {
+    addScreen(*final);
+  } else {
+    graph.add(
+        "final",
+        [&](FrameGraph::Builder& b) {
+          b.read(buffers);
+          b.write(target);
+        },
+        [&] {
+          // No final program: colortex0 is the picture (OptiFine copies it).
+          targets_->bindRead(0);
+          glBlitNamedFramebuffer(targets_->framebuffer(), framebuffer, 0, 0, size.x, size.y, 0, 0,
+                                 targetSize.x, targetSize.y, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+        });
+  }
+  graph.output(target);
+  graph.execute([&](const std::string& pass) { clock.lap(pass); });
+  for (const FrameGraph::Skipped& s : graph.skipped()) stats_.passesSkipped.push_back({s.pass, s.why});
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  for (int unit = 0; unit < 24; ++unit) glBindSampler(unitOf(unit), 0);
+}
+
+}  // namespace terrasol

@@ -1,0 +1,77 @@
+#pragma once
+// A shader pack as Terrasol's second pipeline: the pack's programs over the same section meshes, atlas
+// and culling as the deferred renderer, in OptiFine's order, each a node of the frame graph:
+//   shadow       the pack's shadow program from the sun (or moon) -> shadowtex0/1, shadowcolor0/1
+//   sky          gbuffers_skybasic (discs), gbuffers_skytextured (sun, moon)
+//   terrain      gbuffers_terrain: opaque, then cutout with the alpha test
+//   deferredN    full-screen programs over the buffers
+//   water        gbuffers_water: translucent terrain, blended
+//   compositeN   full-screen programs over the buffers
+//   final        to the target (colortex0 copied there when the pack has none)
+// A program the pack lacks falls back along OptiFine's chain or leaves its node out. GL thread only.
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "assets/atlas.h"
+#include "core/tint_palette.h"
+#include "pack_render/pack_program.h"
+#include "pack_render/pack_sky.h"
+#include "pack_render/pack_targets.h"
+#include "render/block_textures.h"
+#include "render/frame_inputs.h"
+#include "render/pass_clock.h"
+#include "render/section_meshes.h"
+#include "shaderpack/pack_frame_uniforms.h"
+#include "shaderpack/shader_pack.h"
+#include "shaderpack/shader_properties.h"
+
+namespace terrasol {
+
+class PackRenderer {
+ public:
+  // Builds every program the frame runs. Throws Error naming the pack's file and line: a source that
+  // does not preprocess, rewrite, compile or link, or malformed properties. `entityIds`: mc_Entity.xy
+  // per atlas texture id (pack_render/pack_entities.h).
+  PackRenderer(const ShaderPack& pack, const ShaderPreprocessor& shaders, const Atlas& atlas,
+               const TintPalette& tints, const std::vector<glm::vec2>& entityIds);
+  ~PackRenderer();
+
+  void render(const FrameInputs& frame, const SectionMeshes& meshes, GLuint framebuffer, glm::ivec2 size,
+              std::vector<PassTiming>* timings = nullptr);
+
+  const FrameStats& lastFrame() const { return stats_; }
+  // Pixels holding NaN or Inf in the last frame's float buffers (slow: reads them back).
+  std::size_t nonFinitePixels() const { return targets_ ? targets_->nonFinitePixels() : 0; }
+  const std::string& packName() const { return packName_; }
+  // The programs built, in the frame's order ("gbuffers_water: gbuffers_terrain" for a fallback).
+  const std::vector<std::string>& programNames() const { return names_; }
+  // Uniforms and samplers some program declares that Terrasol does not set, "program: name".
+  std::vector<std::string> unknownUniforms() const;
+
+ private:
+  struct Stage;
+  struct Textures;
+  void setUpFrame(const FrameInputs& inputs, glm::ivec2 size);
+
+  std::string packName_;
+  ShaderProperties properties_;
+  PackSettings settings_;
+  BlockTextures blockTextures_;
+  std::unique_ptr<Textures> textures_;
+  std::vector<Stage> stages_;
+  std::vector<std::string> names_;
+  std::optional<PackTargets> targets_;
+  std::bitset<kPackColorBuffers> usedBuffers_;
+  PackSky sky_;
+  PackHistory history_;
+  PackUniforms uniforms_;
+  int frameCounter_ = 0;
+  std::int64_t lastTicks_ = 0;
+  bool gpuTimer_;
+  FrameStats stats_;
+};
+
+}  // namespace terrasol
