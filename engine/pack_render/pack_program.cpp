@@ -7,7 +7,9 @@
 #include <map>
 
 #include "core/error.h"
+#include "mesh/mesh_data.h"
 #include "render/gl_slots.h"
+#include "render/shader_defines.h"
 #include "shaderpack/glsl_rewriter.h"
 
 namespace terrasol {
@@ -119,6 +121,19 @@ PreprocessedStage stageOf(GLenum stage, const PreprocessedShader& source, const 
 }
 
 }  // namespace
+
+PreprocessedShader packVertexReader(const ShaderPreprocessor& shaders, PackInput input) {
+  const char* file = input == PackInput::Block ? "pack/block_input.glsl"
+                     : input == PackInput::Sky ? "pack/sky_input.glsl"
+                                               : "pack/screen_input.glsl";
+  std::vector<ShaderDefine> defines = rendererDefines();
+  defines.push_back({"PACK_LIGHT_SCALE", std::to_string(PackedVertex::kCellLight * 16) + ".0"});
+  PreprocessedShader source = shaders.process(file, defines);
+  // Spliced into a pack's stage after its #version: drop ours.
+  source.text.erase(0, source.text.find('\n') + 1);
+  source.lines.erase(source.lines.begin());
+  return source;
+}
 
 std::optional<PackSampler> packSamplerNamed(const std::string& name, PackInput input) {
   const bool screen = input == PackInput::Screen;

@@ -47,6 +47,10 @@ struct PackSampler {
   bool shadow = false;  // declared sampler2DShadow: compares depth
 };
 
+// The GLSL that reads `input`'s vertices into the rewrite's tsol_* inputs (shaders/pack/*_input.glsl),
+// with the renderer's defines, without its #version line.
+PreprocessedShader packVertexReader(const ShaderPreprocessor& shaders, PackInput input);
+
 // The sampler a name reads in a program drawing `input`; nothing for a name OptiFine does not bind.
 std::optional<PackSampler> packSamplerNamed(const std::string& name, PackInput input);
 

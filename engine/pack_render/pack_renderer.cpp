@@ -14,7 +14,6 @@
 #include "render/frustum.h"
 #include "render/gl_slots.h"
 #include "render/section_draw.h"
-#include "render/shader_defines.h"
 #include "shaderpack/pack_macros.h"
 #include "shaderpack/pack_uniforms.h"
 
@@ -29,17 +28,6 @@ constexpr double kFrameTimeWrap = 3600.0;  // frameTimeCounter wraps every hour
 
 GLuint unitOf(int optifineUnit) {
   return static_cast<GLuint>(slots::kUnitPackBase + optifineUnit);
-}
-
-// The vertex reader's GLSL, its #version line dropped: it is spliced into a pack's stage.
-PreprocessedShader readerSource(const ShaderPreprocessor& shaders, const char* file) {
-  std::vector<ShaderDefine> defines = rendererDefines();
-  defines.push_back({"PACK_LIGHT_SCALE", std::to_string(PackedVertex::kCellLight * 16) + ".0"});
-  PreprocessedShader source = shaders.process(file, defines);
-  const std::size_t firstLine = source.text.find('\n');
-  source.text.erase(0, firstLine + 1);
-  source.lines.erase(source.lines.begin());
-  return source;
 }
 
 gl::Texture texture2d(GLenum format, glm::ivec2 size, GLenum filter, GLenum wrap = GL_CLAMP_TO_EDGE) {
@@ -140,9 +128,9 @@ PackRenderer::PackRenderer(const ShaderPack& pack, const ShaderPreprocessor& sha
   const std::vector<ShaderDefine> macros = packMacros();
   if (const auto text = pack.text("shaders.properties"))
     properties_ = parseShaderProperties(*text, pack.displayName("shaders.properties"), PackMacros(macros));
-  const PreprocessedShader blockReader = readerSource(shaders, "pack/block_input.glsl");
-  const PreprocessedShader skyReader = readerSource(shaders, "pack/sky_input.glsl");
-  const PreprocessedShader screenReader = readerSource(shaders, "pack/screen_input.glsl");
+  const PreprocessedShader blockReader = packVertexReader(shaders, PackInput::Block);
+  const PreprocessedShader skyReader = packVertexReader(shaders, PackInput::Sky);
+  const PreprocessedShader screenReader = packVertexReader(shaders, PackInput::Screen);
 
   const PackEvaluation atLoad{[](std::string_view) { return std::optional<PackValue>(); }, 0.0f};
   const auto enabled = [&](const std::string& name) {
@@ -545,6 +533,12 @@ void PackRenderer::render(const FrameInputs& inputs, const SectionMeshes& meshes
   }
   graph.output(target);
   graph.execute([&](const std::string& pass) { clock.lap(pass); });
+  // The picture is opaque, as a window shows it, whatever alpha the pack left (mipmapped cutout edges).
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+  glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_TRUE);
+  glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   for (const FrameGraph::Skipped& s : graph.skipped()) stats_.passesSkipped.push_back({s.pass, s.why});
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
   glEnable(GL_DEPTH_TEST);

@@ -1,0 +1,153 @@
+// Shader packs on the GL context: every program of the two real test packs (shaderLABS'
+// Shadow-Tutorial, `#version 120`, and Base-330, `330 compatibility`) rewritten, compiled and linked;
+// OptiFine's buffer flips checked by a pack written here that passes values through four composite
+// passes; a broken pack leaves Terrasol's pipeline drawing with the pack's file and line.
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "core/paths.h"
+#include "pack_render/pack_program.h"
+#include "pack_render/pack_renderer.h"
+#include "scene_render/scene_render.h"
+#include "shaderpack/pack_macros.h"
+#include "support/gl_test.h"
+#include "support/world_support.h"
+
+namespace terrasol {
+namespace {
+
+const std::filesystem::path kSource(TERRASOL_SOURCE_DIR);
+
+std::filesystem::path vendored(const std::string& name) {
+  return kSource / "tests" / "shaderpacks" / name;
+}
+
+std::filesystem::path writePack(const std::string& name,
+                                const std::vector<std::pair<std::string, std::string>>& files) {
+  const auto dir = testing::scratchDir(name);
+  std::filesystem::remove_all(dir);
+  for (const auto& [path, text] : files) {
+    std::filesystem::create_directories((dir / "shaders" / path).parent_path());
+    std::ofstream(dir / "shaders" / path) << text;
+  }
+  return dir;
+}
+
+// A small scene drawn with `pack`.
+SceneFile packScene(const std::filesystem::path& pack) {
+  SceneFile scene = loadScene(kSource / "tests" / "scenes" / "paths" / "shaderpack_base_330.json");
+  scene.shaderpack = pack;
+  scene.width = 32;
+  scene.height = 18;
+  return scene;
+}
+
+using ShaderPackRenderTest = testing::GlTest;
+
+TEST_F(ShaderPackRenderTest, EveryProgramOfTheTestPacksCompilesAndLinks) {
+  const ShaderPreprocessor shaders(shaderDir());
+  const PreprocessedShader block = packVertexReader(shaders, PackInput::Block);
+  const PreprocessedShader screen = packVertexReader(shaders, PackInput::Screen);
+  const PreprocessedShader sky = packVertexReader(shaders, PackInput::Sky);
+  int built = 0;
+  for (const char* name : {"Shadow-Tutorial", "Base-330"}) {
+    const ShaderPack pack = ShaderPack::open(vendored(name));
+    for (const std::string& program : pack.programs()) {
+      const bool onScreen = !program.starts_with("gbuffers_") && !program.starts_with("shadow");
+      const bool inSky = program.starts_with("gbuffers_sky");
+      const PackInput input = onScreen ? PackInput::Screen : inSky ? PackInput::Sky : PackInput::Block;
+      const PackProgramSource source{&pack,        *pack.program(program),
+                                     input,        !onScreen,
+                                     packMacros(), onScreen ? &screen : inSky ? &sky : &block};
+      const PackGlProgram gl(source);
+      EXPECT_NE(gl.id(), 0u) << name << " " << program;
+      ++built;
+    }
+  }
+  EXPECT_EQ(built, 13 + 18) << "Shadow-Tutorial's 13 programs and Base-330's 18";
+}
+
+TEST_F(ShaderPackRenderTest, TheTestPacksDrawTheirProgramsInOptiFinesOrder) {
+  SceneRenderer tutorial(packScene(vendored("Shadow-Tutorial")));
+  ASSERT_TRUE(tutorial.shaderPack()) << tutorial.stats().shaderpackError;
+  EXPECT_EQ(tutorial.shaderPack()->programNames(),
+            (std::vector<std::string>{"shadow", "gbuffers_skybasic", "gbuffers_skytextured",
+                                      "gbuffers_terrain", "gbuffers_water: gbuffers_terrain", "composite"}));
+  FrameRequest request;
+  request.timed = true;
+  request.checkNan = true;
+  const RenderedFrame frame = tutorial.renderFrame(0, request);
+  std::vector<std::string> passes;
+  for (const PassTiming& t : frame.timings) passes.push_back(t.pass);
+  EXPECT_EQ(passes, (std::vector<std::string>{"shadow", "sky", "terrain", "water", "composite", "final"}));
+  EXPECT_EQ(frame.nanPixels, 0u);
+  EXPECT_GT(frame.stats.sectionsDrawn, 0);
+
+  SceneRenderer base(packScene(vendored("Base-330")));
+  ASSERT_TRUE(base.shaderPack()) << base.stats().shaderpackError;
+  EXPECT_EQ(base.shaderPack()->programNames(),
+            (std::vector<std::string>{"gbuffers_skybasic", "gbuffers_skytextured", "gbuffers_terrain",
+                                      "deferred", "gbuffers_water", "composite"}));
+  context_->checkErrors("drawing the test packs");
+}
+
+// Four composite passes hand values on through colortex1 and colortex2: each pass reads what the
+// passes before wrote (the written buffers flip), a pass reading the buffer it writes sees the old
+// value, and flip.<program>.<buffer> flips a buffer the pass did not write.
+TEST_F(ShaderPackRenderTest, CompositePassesFlipTheBuffersTheyWrite) {
+  const std::string vertex =
+      "#version 120\nvarying vec2 uv;\nvoid main() { gl_Position = ftransform(); uv = gl_MultiTexCoord0.xy; "
+      "}\n";
+  const std::string samplers =
+      "#version 120\nuniform sampler2D colortex1;\nuniform sampler2D colortex2;\nvarying vec2 uv;\n";
+  std::vector<std::pair<std::string, std::string>> files = {
+      {"composite.vsh", vertex},
+      {"composite.fsh", samplers + "void main() {\n/* DRAWBUFFERS:1 */\n  gl_FragData[0] = vec4(0.25);\n}\n"},
+      {"composite1.vsh", vertex},
+      {"composite1.fsh", samplers + "void main() {\n/* DRAWBUFFERS:2 */\n"
+                                    "  gl_FragData[0] = texture2D(colortex1, uv) + vec4(0.25);\n}\n"},
+      {"composite2.vsh", vertex},
+      {"composite2.fsh", samplers +
+                             "void main() {\n/* DRAWBUFFERS:1 */\n"
+                             "  gl_FragData[0] = texture2D(colortex1, uv) + texture2D(colortex2, uv);\n}\n"},
+      {"composite3.vsh", vertex},
+      {"composite3.fsh",
+       samplers +
+           "void main() {\n/* DRAWBUFFERS:0 */\n"
+           "  gl_FragData[0] = vec4(texture2D(colortex1, uv).r, texture2D(colortex2, uv).r, 0.0, 1.0);\n}\n"},
+  };
+  const auto centre = [&](const std::filesystem::path& pack) {
+    SceneRenderer renderer(packScene(pack));
+    EXPECT_TRUE(renderer.shaderPack()) << renderer.stats().shaderpackError;
+    const Image image = renderer.renderFrame(0).image;
+    const std::uint8_t* p = image.pixel(image.width / 2, image.height / 2);
+    return glm::ivec2(p[0], p[1]);
+  };
+  const glm::ivec2 flipped = centre(writePack("flip_pack", files));
+  EXPECT_NEAR(flipped.x, 191, 1) << "0.25 + (0.25 + 0.25)";
+  EXPECT_NEAR(flipped.y, 128, 1) << "0.25 + 0.25";
+
+  files.push_back({"shaders.properties", "flip.composite2.colortex2=true\n"});
+  const glm::ivec2 forced = centre(writePack("flip_pack_forced", files));
+  EXPECT_NEAR(forced.x, 191, 1);
+  EXPECT_EQ(forced.y, 0) << "colortex2 flipped back to the buffer composite1 did not write: cleared";
+}
+
+TEST_F(ShaderPackRenderTest, ABrokenPackLeavesTerrasolsPipelineDrawingWithItsFileAndLine) {
+  const auto pack = writePack(
+      "broken_pack",
+      {{"gbuffers_terrain.vsh", "#version 120\nvoid main() { gl_Position = ftransform(); }\n"},
+       {"gbuffers_terrain.fsh", "#version 120\nvoid main() {\n  gl_FragData[0] = notDeclared;\n}\n"}});
+  SceneRenderer renderer(packScene(pack));
+  EXPECT_FALSE(renderer.shaderPack());
+  EXPECT_NE(renderer.stats().shaderpackError.find("gbuffers_terrain.fsh:3"), std::string::npos)
+      << renderer.stats().shaderpackError;
+  const RenderedFrame frame = renderer.renderFrame(0);
+  EXPECT_GT(frame.stats.sectionsDrawn, 0) << "Terrasol's pipeline drew";
+}
+
+}  // namespace
+}  // namespace terrasol
