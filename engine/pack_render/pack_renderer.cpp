@@ -9,6 +9,7 @@
 #include "core/day_cycle.h"
 #include "core/error.h"
 #include "core/lightmap.h"
+#include "core/octahedral.h"
 #include "core/srgb.h"
 #include "render/frame_graph.h"
 #include "render/frustum.h"
@@ -180,6 +181,16 @@ PackRenderer::PackRenderer(const ShaderPack& pack, const ShaderPreprocessor& sha
       if (sampler.texture == PackTexture::ColorTex)
         usedBuffers_.set(static_cast<std::size_t>(sampler.buffer));
   }
+  // Terrasol's own keys: the buffers --report reads the shadow term and the normal from.
+  const auto reportBuffer = [&](const char* key) -> std::optional<int> {
+    const ShaderProperties::Entry* e = properties_.find(key);
+    if (!e) return std::nullopt;
+    for (int b = 0; b < kPackColorBuffers; ++b)
+      if (e->value == "colortex" + std::to_string(b) && usedBuffers_[static_cast<std::size_t>(b)]) return b;
+    throw Error(e->where + ": " + key + ": '" + e->value + "' is not a colortexN the pack draws");
+  };
+  reportShadow_ = reportBuffer("terrasol.report.shadow");
+  reportNormal_ = reportBuffer("terrasol.report.normal");
   textures_ = std::make_unique<Textures>(blockTextures_, std::clamp(settings_.shadowMapResolution, 16, 8192),
                                          std::clamp(settings_.noiseTextureResolution, 1, 4096), entityIds);
 }
@@ -202,13 +213,17 @@ void PackRenderer::render(const FrameInputs& inputs, const SectionMeshes& meshes
   blockTextures_.update(inputs.ticks);
 
   // The frame's uniforms.
-  const DayState day = dayStateAt(inputs.ticks, settings_.sunPathRotation);
+  // The pack's sun path, else the world's: Terrasol tilts towards +z for positive angles, packs
+  // (vanilla's sky) towards -z.
+  const float sunPathRotation = settings_.sunPathRotation.value_or(-inputs.sunPathRotation);
+  const DayState day = dayStateAt(inputs.ticks, -sunPathRotation);
   PackView view;
   view.camera = inputs.cameraPosition;
   view.lookAt = inputs.cameraLookAt;
   view.up = inputs.cameraUp;
   view.fovDegrees = inputs.fovDegrees;
   view.ticks = inputs.ticks;
+  view.sunPathRotation = sunPathRotation;
   view.size = size;
   view.viewDistance = inputs.viewDistance;
   // Time from the world's ticks, so a frame is the same whenever it is drawn.
@@ -228,6 +243,20 @@ void PackRenderer::render(const FrameInputs& inputs, const SectionMeshes& meshes
 
   const PackCamera camera = packCamera(view);
   const PackTime time = packTimeAt(inputs.ticks);
+  lastModelView_ = camera.modelView;
+  const bool hasShadow =
+      std::any_of(stages_.begin(), stages_.end(), [](const Stage& s) { return s.kind == StageKind::Shadow; });
+  {
+    const glm::vec3 toLight = glm::inverse(glm::mat3(camera.modelView)) *
+                              std::get<glm::vec3>(*uniforms_.find("shadowLightPosition"));
+    const glm::mat4 viewProjection = camera.projection * camera.modelView;
+    geometry_ = {view.camera,
+                 viewProjection,
+                 glm::inverse(viewProjection),
+                 glm::normalize(toLight),
+                 hasShadow && reportShadow_ && reportNormal_,
+                 0.0f};  // the pack places its own map: no texel to move it by
+  }
   const glm::mat4 shadowModelView = std::get<glm::mat4>(*uniforms_.find("shadowModelView"));
   const glm::mat4 shadowProjection = std::get<glm::mat4>(*uniforms_.find("shadowProjection"));
   const glm::mat4 lightmapMatrix =
@@ -250,7 +279,7 @@ void PackRenderer::render(const FrameInputs& inputs, const SectionMeshes& meshes
     glTextureSubImage2D(textures_->lightmap.id(), 0, 0, 0, Lightmap::kSize, Lightmap::kSize, GL_RGBA,
                         GL_UNSIGNED_BYTE, texels.data());
   }
-  sky_.update(view.skyColor, packSkyRotation(time, settings_.sunPathRotation));
+  sky_.update(view.skyColor, packSkyRotation(time, sunPathRotation));
 
   // Culling: the camera's frustum, and the shadow camera's box.
   const std::vector<VisibleSection> visible = sectionsInside(
@@ -544,6 +573,37 @@ void PackRenderer::render(const FrameInputs& inputs, const SectionMeshes& meshes
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   for (int unit = 0; unit < 24; ++unit) glBindSampler(unitOf(unit), 0);
+}
+
+std::optional<GBufferPixels> PackRenderer::readReport() const {
+  if (!targets_ || !reportShadow_ || !reportNormal_) return std::nullopt;
+  const glm::ivec2 size = targets_->size();
+  const auto count = static_cast<std::size_t>(size.x) * static_cast<std::size_t>(size.y);
+  GBufferPixels out;
+  out.size = size;
+  out.depth.resize(count);
+  glGetTextureImage(targets_->depth(1), 0, GL_DEPTH_COMPONENT, GL_FLOAT,
+                    static_cast<GLsizei>(count * sizeof(float)), out.depth.data());
+  std::vector<glm::vec4> shadow(count), normal(count);
+  glGetTextureImage(targets_->main(*reportShadow_), 0, GL_RGBA, GL_FLOAT,
+                    static_cast<GLsizei>(count * sizeof(glm::vec4)), shadow.data());
+  glGetTextureImage(targets_->main(*reportNormal_), 0, GL_RGBA, GL_FLOAT,
+                    static_cast<GLsizei>(count * sizeof(glm::vec4)), normal.data());
+  const glm::mat3 toWorld = glm::inverse(glm::mat3(lastModelView_));
+  out.normals.resize(count);
+  out.scene.resize(count);
+  // The pack's light levels are its own: no sky light to count cave leaks by.
+  out.light.assign(count, glm::u8vec4(0, 255, 0, 0));
+  for (std::size_t i = 0; i < count; ++i) {
+    const glm::vec3 view = glm::vec3(normal[i]) * 2.0f - 1.0f;
+    const float length = glm::length(view);
+    const glm::dvec3 world =
+        length > 1e-6f ? glm::dvec3(toWorld * (view / length)) : glm::dvec3(0.0, 1.0, 0.0);
+    const glm::dvec2 oct = octEncode(world);
+    out.normals[i] = glm::vec4(0.0f, 0.0f, static_cast<float>(oct.x), static_cast<float>(oct.y));
+    out.scene[i] = glm::vec4(0.0f, 0.0f, 0.0f, shadow[i].r);
+  }
+  return out;
 }
 
 }  // namespace terrasol

@@ -22,6 +22,7 @@
 #include "pack_render/pack_targets.h"
 #include "render/block_textures.h"
 #include "render/frame_inputs.h"
+#include "render/gbuffer.h"
 #include "render/pass_clock.h"
 #include "render/section_meshes.h"
 #include "shaderpack/pack_frame_uniforms.h"
@@ -43,6 +44,13 @@ class PackRenderer {
               std::vector<PassTiming>* timings = nullptr);
 
   const FrameStats& lastFrame() const { return stats_; }
+  // Where the last frame looked from, for reports; shadowMapShown when the pack has a shadow program
+  // and names its shadow term for reports (shaders.properties: terrasol.report.shadow, .normal).
+  const FrameGeometry& lastGeometry() const { return geometry_; }
+  // The last frame as the shadow report reads a G-buffer: the opaque depth, the pack's normal (as the
+  // vertex normal, octahedral) and its shadow term (in scene's alpha); nothing when the pack names no
+  // buffers for them. Slow: reads them back.
+  std::optional<GBufferPixels> readReport() const;
   // Pixels holding NaN or Inf in the last frame's float buffers (slow: reads them back).
   std::size_t nonFinitePixels() const { return targets_ ? targets_->nonFinitePixels() : 0; }
   const std::string& packName() const { return packName_; }
@@ -72,6 +80,9 @@ class PackRenderer {
   std::int64_t lastTicks_ = 0;
   bool gpuTimer_;
   FrameStats stats_;
+  FrameGeometry geometry_;
+  std::optional<int> reportShadow_, reportNormal_;  // buffers named by terrasol.report.*
+  glm::mat4 lastModelView_{1.0f};
 };
 
 }  // namespace terrasol

@@ -211,6 +211,10 @@ RenderedFrame SceneRenderer::renderFrame(int frame, const FrameRequest& request)
   if (gpu_->pack) {
     out.stats = gpu_->pack->lastFrame();
     if (request.checkNan) out.nanPixels = gpu_->pack->nonFinitePixels();
+    out.geometry = gpu_->pack->lastGeometry();
+    if (request.readBack) {
+      if (auto pixels = gpu_->pack->readReport()) out.pixels = std::move(*pixels);
+    }
     return out;
   }
   out.stats = gpu_->renderer.lastFrame();

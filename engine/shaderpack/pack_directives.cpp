@@ -29,16 +29,15 @@ std::optional<Directive> lastDirective(const std::string& text, std::string_view
   return found;
 }
 
-// Comments become spaces; newlines are kept, so offsets still give lines.
-std::string withoutComments(const std::string& text) {
+// Line comments become spaces. Block comments stay: packs wrap the directives GLSL would not compile
+// in them (`/* const int colortex0Format = RGBA16F; */`), and OptiFine and Iris read them there.
+std::string withoutLineComments(const std::string& text) {
   std::string out = text;
   for (std::size_t i = 0; i < out.size();) {
     if (out.compare(i, 2, "//") == 0) {
       for (; i < out.size() && out[i] != '\n'; ++i) out[i] = ' ';
     } else if (out.compare(i, 2, "/*") == 0) {
-      const std::size_t close = std::min(out.find("*/", i + 2), out.size() - 2);
-      for (; i < close + 2; ++i)
-        if (out[i] != '\n') out[i] = ' ';
+      i = std::min(out.find("*/", i + 2), out.size());
     } else {
       ++i;
     }
@@ -112,7 +111,7 @@ ProgramDirectives parseDirectives(const PreprocessedShader& source) {
     d.drawBuffers = std::move(buffers);
   }
   static const std::regex kConst(R"(\bconst\s+(?:(?:lowp|mediump|highp)\s+)?\w+\s+(\w+)\s*=\s*([^;]+);)");
-  const std::string code = withoutComments(text);
+  const std::string code = withoutLineComments(text);
   for (auto it = std::sregex_iterator(code.begin(), code.end(), kConst); it != std::sregex_iterator(); ++it)
     d.constants[(*it)[1].str()] = std::string(trimmed((*it)[2].str()));
   return d;

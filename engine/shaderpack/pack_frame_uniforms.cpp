@@ -90,14 +90,14 @@ PackUniforms packFrameUniforms(const PackView& view, const PackSettings& setting
   u.set("gbufferPreviousModelView", history.camera.modelView);
   u.set("gbufferPreviousProjection", history.camera.projection);
 
-  const PackCelestial sky = packCelestial(time, settings.sunPathRotation, camera.modelView);
+  const PackCelestial sky = packCelestial(time, view.sunPathRotation, camera.modelView);
   u.set("sunPosition", sky.sunPosition);
   u.set("moonPosition", sky.moonPosition);
   u.set("shadowLightPosition", sky.shadowLightPosition);
   u.set("upPosition", sky.upPosition);
 
   const glm::mat4 shadowModelView =
-      packShadowModelView(time, settings.sunPathRotation, settings.shadowIntervalSize, view.camera);
+      packShadowModelView(time, view.sunPathRotation, settings.shadowIntervalSize, view.camera);
   const glm::mat4 shadowProjection = packShadowProjection(settings.shadowDistance);
   u.set("shadowModelView", shadowModelView);
   u.set("shadowModelViewInverse", glm::inverse(shadowModelView));

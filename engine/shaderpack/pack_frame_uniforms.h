@@ -48,6 +48,7 @@ struct PackView {
   glm::dvec3 up{0.0, 1.0, 0.0};
   float fovDegrees = 70.0f;
   std::int64_t ticks = 0;
+  float sunPathRotation = 0.0f;  // degrees, as packs turn it (PackSettings::sunPathRotation, or the world's)
   glm::ivec2 size{1};
   float viewDistance = 64.0f;     // blocks: `far`
   float frameTime = 0.0f;         // seconds since the last frame

@@ -106,7 +106,7 @@ PackSettings packSettings(const std::vector<ProgramDirectives>& directives, cons
     number("shadowMapResolution", s.shadowMapResolution);
     number("shadowDistance", s.shadowDistance);
     number("shadowIntervalSize", s.shadowIntervalSize);
-    number("sunPathRotation", s.sunPathRotation);
+    if (const auto v = d.number("sunPathRotation")) s.sunPathRotation = static_cast<float>(*v);
     number("noiseTextureResolution", s.noiseTextureResolution);
     number("eyeBrightnessHalflife", s.eyeBrightnessHalflife);
     number("ambientOcclusionLevel", s.ambientOcclusionLevel);

@@ -39,7 +39,8 @@ struct PackSettings {
   int shadowMapResolution = 1024;
   float shadowDistance = 160.0f;
   float shadowIntervalSize = 2.0f;
-  float sunPathRotation = 0.0f;
+  // The pack's const, degrees; without one Terrasol keeps its world's (the renderer decides).
+  std::optional<float> sunPathRotation;
   int noiseTextureResolution = 256;
   bool shadowHardwareFiltering = false;
   std::array<bool, 2> shadowtexNearest{false, false};

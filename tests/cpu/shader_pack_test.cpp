@@ -252,7 +252,8 @@ TEST(PackDirectives, TheLastListWinsRenderTargetsFirstAndBadListsNameTheirLine) 
       {{"shaders/a.fsh",
         "#version 120\n/* DRAWBUFFERS:0257 */\n/*DRAWBUFFERS: 13 */\n// const int shadowMapResolution = "
         "4096;\n"
-        "const float shadowDistance = 120.0f;\nconst vec4 colortex1ClearColor = vec4(0.0, 0.0, 0.0, 1.0);\n"},
+        "const float shadowDistance = 120.0f;\nconst vec4 colortex1ClearColor = vec4(0.0, 0.0, 0.0, 1.0);\n"
+        "/*\nconst int colortex0Format = RGBA16F;\n*/\n"},
        {"shaders/b.fsh", "#version 330\n/* RENDERTARGETS: 0, 2 ,11 */\n/* DRAWBUFFERS:01 */\n"},
        {"shaders/c.fsh", "#version 120\n#include \"lib/out.glsl\"\n"},
        {"shaders/lib/out.glsl", "\n/* DRAWBUFFERS:0a */\n"},
@@ -265,6 +266,7 @@ TEST(PackDirectives, TheLastListWinsRenderTargetsFirstAndBadListsNameTheirLine) 
   EXPECT_FALSE(a.number("shadowMapResolution")) << "a commented-out const is no directive";
   EXPECT_EQ(a.number("shadowDistance"), 120.0);
   EXPECT_EQ(a.constants.at("colortex1ClearColor"), "vec4(0.0, 0.0, 0.0, 1.0)");
+  EXPECT_EQ(a.constants.at("colortex0Format"), "RGBA16F") << "read inside a block comment, as packs write it";
   EXPECT_EQ(parseDirectives(pack.source("b.fsh", {})).drawBuffers, (std::vector<int>{0, 2, 11}));
   const std::string c = errorOf([&] { parseDirectives(pack.source("c.fsh", {})); });
   EXPECT_NE(c.find("shaders/lib/out.glsl:2"), std::string::npos) << c;

@@ -127,6 +127,12 @@ nlohmann::json shadowReport(SceneRenderer& renderer, int index, const RenderedFr
                             const FrameRequest& request) {
   const float distance = renderer.scene().shadow.distance;
   const ShadowError error = measureShadowError(renderer.world(), frame.pixels, frame.geometry, distance);
+  if (frame.geometry.shadowTexelWorld <= 0.0f) {
+    // A shader pack places its own map: there is no offset to move it by, so no flicker is measured.
+    nlohmann::json out = shadowErrorJson(error, 0.0, 0);
+    out["flicker_pct"] = nullptr;
+    return out;
+  }
   std::mt19937 random(static_cast<std::uint32_t>(index) * 2654435761u + 1u);
   std::uniform_real_distribution<double> within(-0.5, 0.5);
   FrameRequest moved = request;
@@ -244,15 +250,16 @@ int renderScene(const Options& o, const SceneFile& scene, SceneRenderer& rendere
   }
   progress.finish();
   if (!o.report.empty()) {
-    std::ofstream(o.report) << nlohmann::json{{"scene", scene.file.string()},
-                                              {"gl", gl},
-                                              {"size", {scene.width, scene.height}},
-                                              {"shader_variants", renderer.renderer().shaderVariants()},
-                                              {"gbuffer_bytes_per_pixel",
-                                               renderer.renderer().gbufferContents().bytesPerPixel()},
-                                              {"frames", frames}}
-                                   .dump(2)
-                            << "\n";
+    nlohmann::json report{{"scene", scene.file.string()}, {"gl", gl}, {"size", {scene.width, scene.height}}};
+    if (const PackRenderer* pack = renderer.shaderPack()) {
+      report["shader_pack"] = pack->packName();
+      report["pack_programs"] = pack->programNames();
+    } else {
+      report["shader_variants"] = renderer.renderer().shaderVariants();
+      report["gbuffer_bytes_per_pixel"] = renderer.renderer().gbufferContents().bytesPerPixel();
+    }
+    report["frames"] = frames;
+    std::ofstream(o.report) << report.dump(2) << "\n";
   }
   const SceneRenderStats& stats = renderer.stats();
   std::printf("terrasol-render: %s: %d frame(s), %zu sections, %zu quads, loaded in %.0f ms; wrote %s\n",

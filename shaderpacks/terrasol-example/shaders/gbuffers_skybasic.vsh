@@ -1,0 +1,3 @@
+#version 330 compatibility
+
+void main() { gl_Position = ftransform(); }
