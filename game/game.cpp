@@ -25,6 +25,7 @@ SettingsFile settingsFor(const GameOptions& options) {
     file.values.packs.clear();
     for (const auto& p : options.packs) file.values.packs.push_back({std::filesystem::absolute(p), true});
   }
+  if (!options.shaderpack.empty()) file.values.shaderpack = std::filesystem::absolute(options.shaderpack);
   return file;
 }
 
@@ -126,6 +127,7 @@ void Game::applyMenu(const MenuResult& r) {
   if (r.viewChanged) world_.streamed().setViewDistance(s.viewDistance);
   if (r.rendererChanged) renderer_.applySettings(s);
   if (r.packsChanged) reloadPacks();
+  if (r.shaderPackChanged) renderer_.setShaderPack(s.shaderpack);
   if (r.settingsChanged) {
     window_.setVsync(s.vsync);
     settings_.save();

@@ -6,11 +6,13 @@
 
 #include "benchmark.h"
 #include "core/log.h"
+#include "core/paths.h"
 #include "demo.h"
 #include "game.h"
 #include "platform/glfw/glfw_window.h"
 #include "scene_render/under_water.h"
 #include "screenshot.h"
+#include "shader_pack_list.h"
 
 // The frame loop: one frame's input, ticks, streaming, drawing and HUD, and the run of frames.
 
@@ -182,7 +184,12 @@ void Game::drawHud() {
         overlay_.right(world_, settings_.values, drawableSize(), renderScale(), interaction_.target()),
         {graph.begin(), graph.end()});
   }
-  if (input_.screen() == Screen::Menu) applyMenu(ui_.menu(renderer_.assets().packNames, world_.propFiles()));
+  if (input_.screen() == Screen::Menu) {
+    // Listed while the menu shows, so a pack dropped into the folder appears at once.
+    const ShaderPackChoices shaderPacks{findShaderPacks({kShaderPacksDir, shaderPackDir()}),
+                                        renderer_.shaderPackError()};
+    applyMenu(ui_.menu(renderer_.assets().packNames, shaderPacks, world_.propFiles()));
+  }
   if (input_.screen() == Screen::Inventory) ui_.inventory(renderer_, interaction_.hotbar());
   ui_.end();
 }

@@ -77,6 +77,7 @@ GameRenderer::GameRenderer(const BlockRegistry& blocks, const GameSettings& sett
   for (std::size_t i = 0; i < iconStates_.size(); ++i) {
     iconOfBlock_[blocks.blockIndex(iconStates_[i])] = static_cast<int>(i);
   }
+  setShaderPack(settings.shaderpack);
 }
 
 std::unique_ptr<BlockAssets> GameRenderer::loadPacks(const std::vector<PackChoice>& packs) const {
@@ -87,7 +88,8 @@ void GameRenderer::commit(std::unique_ptr<BlockAssets> assets) {
   assets_ = std::move(assets);
   icons_.reset();  // drawn with the new packs when next shown
   renderer_ = makeRenderer(*assets_, shadow_, reflections_, propNeeds_);
-  meshes_.clear();  // their tiles index the old atlas; the remeshed sections come back
+  setShaderPack(shaderPackPath_);  // over the new atlas
+  meshes_.clear();                 // their tiles index the old atlas; the remeshed sections come back
 }
 
 void GameRenderer::applySettings(const GameSettings& settings) {
@@ -119,8 +121,28 @@ std::optional<std::size_t> GameRenderer::iconOf(BlockId state) const {
   return static_cast<std::size_t>(icon);
 }
 
+void GameRenderer::setShaderPack(const std::filesystem::path& path) {
+  shaderPackPath_ = path;
+  pack_.reset();
+  shaderPackError_.clear();
+  if (path.empty()) return;
+  try {
+    pack_ = loadShaderPack(path, ShaderPreprocessor(shaderDir()), blocks_, assets_->table,
+                           assets_->atlas.atlas, assets_->atlas.tints);
+    logInfo("shader pack " + pack_->packName() + ": " + std::to_string(pack_->programNames().size()) +
+            " programs");
+  } catch (const Error& e) {
+    shaderPackError_ = e.what();
+    logError("shader pack not loaded, Terrasol's pipeline draws: " + shaderPackError_);
+  }
+}
+
 void GameRenderer::render(const FrameInputs& frame, glm::ivec2 size, std::vector<PassTiming>* timings) {
-  renderer_->render(frame, meshes_, 0, size, timings);
+  if (pack_) {
+    pack_->render(frame, meshes_, 0, size, timings);
+  } else {
+    renderer_->render(frame, meshes_, 0, size, timings);
+  }
 }
 
 }  // namespace terrasol

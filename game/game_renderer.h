@@ -1,13 +1,15 @@
 #pragma once
 // What the game draws with: the packs' atlas and the mesher's table built from it, the deferred
 // renderer (rebuilt when settings that pick its shader variants change) and the section meshes on
-// the GPU. Packs reload without a restart: new assets, then every section is meshed again.
+// the GPU. Packs reload without a restart: new assets, then every section is meshed again. A shader
+// pack, when one is chosen, draws in the deferred renderer's place; one that fails leaves it drawing.
 
 #include <memory>
 #include <optional>
 #include <vector>
 
 #include "mesh/mesher.h"
+#include "pack_render/pack_renderer.h"
 #include "render/block_icons.h"
 #include "render/deferred_renderer.h"
 #include "scene/block_atlas.h"
@@ -47,10 +49,16 @@ class GameRenderer {
   void applySettings(const GameSettings& settings);
   // The props' needs (render/props.h): new prop variants when they change.
   void setPropNeeds(const PropNeeds& needs);
+  // Draws with the shader pack at `path` from the next frame (empty: Terrasol's pipeline). One that
+  // cannot be read or built leaves Terrasol's pipeline drawing; its error is kept for the menu.
+  void setShaderPack(const std::filesystem::path& path);
+  const std::string& shaderPackError() const { return shaderPackError_; }
+  // The pack drawing now, or null.
+  const PackRenderer* shaderPack() const { return pack_.get(); }
 
   void upload(const SectionMesh& mesh) { meshes_.upload(mesh); }
   void render(const FrameInputs& frame, glm::ivec2 size, std::vector<PassTiming>* timings);
-  const FrameStats& lastFrame() const { return renderer_->lastFrame(); }
+  const FrameStats& lastFrame() const { return pack_ ? pack_->lastFrame() : renderer_->lastFrame(); }
   std::size_t sectionsOnGpu() const { return meshes_.sections().size(); }
   // The inventory's icons (drawn on first use, again after the packs change), one per block of
   // iconStates(); iconOf gives a state's block's icon, if its block has one.
@@ -62,6 +70,9 @@ class GameRenderer {
   const BlockRegistry& blocks_;
   std::unique_ptr<BlockAssets> assets_;
   std::unique_ptr<DeferredRenderer> renderer_;
+  std::filesystem::path shaderPackPath_;
+  std::unique_ptr<PackRenderer> pack_;
+  std::string shaderPackError_;
   ShadowSettings shadow_;
   ReflectionSettings reflections_;
   PropNeeds propNeeds_;

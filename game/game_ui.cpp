@@ -42,9 +42,9 @@ void GameUi::crosshairAndHotbar(GameRenderer& renderer, const Hotbar& hotbar) {
   hud_.hotbar(hotbarIcons(renderer, hotbar), hotbar.selected());
 }
 
-MenuResult GameUi::menu(const std::vector<std::string>& loadedPacks,
+MenuResult GameUi::menu(const std::vector<std::string>& loadedPacks, const ShaderPackChoices& shaderPacks,
                         const std::vector<std::string>& propFiles) {
-  const MenuResult r = menu_.draw(settings_.values, loadedPacks, propFiles, selectedProp_);
+  const MenuResult r = menu_.draw(settings_.values, loadedPacks, shaderPacks, propFiles, selectedProp_);
   if (r.prop) selectedProp_ = *r.prop;
   return r;
 }

@@ -49,7 +49,8 @@ class GameUi final : public ScreenKeys {
   void notice(double now) {
     if (!notice_.empty() && now < noticeUntil_) hud_.notice(notice_);
   }
-  MenuResult menu(const std::vector<std::string>& loadedPacks, const std::vector<std::string>& propFiles);
+  MenuResult menu(const std::vector<std::string>& loadedPacks, const ShaderPackChoices& shaderPacks,
+                  const std::vector<std::string>& propFiles);
   void inventory(GameRenderer& renderer, Hotbar& hotbar);
 
  private:

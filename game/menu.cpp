@@ -38,7 +38,8 @@ bool released() {
 }  // namespace
 
 MenuResult Menu::draw(GameSettings& settings, const std::vector<std::string>& loadedPacks,
-                      const std::vector<std::string>& propFiles, const std::string& selectedProp) {
+                      const ShaderPackChoices& shaderPacks, const std::vector<std::string>& propFiles,
+                      const std::string& selectedProp) {
   MenuResult out;
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   ImGui::SetNextWindowPos({display.x * 0.5f, display.y * 0.5f}, ImGuiCond_Always, {0.5f, 0.5f});
@@ -59,6 +60,10 @@ MenuResult Menu::draw(GameSettings& settings, const std::vector<std::string>& lo
         packsTab(settings, loadedPacks, out);
         ImGui::EndTabItem();
       }
+      if (ImGui::BeginTabItem("Shader packs")) {
+        shaderPacksTab(settings, shaderPacks, out);
+        ImGui::EndTabItem();
+      }
       if (ImGui::BeginTabItem("Controls")) {
         keysTab(settings);
         ImGui::EndTabItem();
@@ -71,7 +76,7 @@ MenuResult Menu::draw(GameSettings& settings, const std::vector<std::string>& lo
     }
   }
   ImGui::End();
-  out.settingsChanged |= out.viewChanged || out.rendererChanged || out.packsChanged;
+  out.settingsChanged |= out.viewChanged || out.rendererChanged || out.packsChanged || out.shaderPackChanged;
   return out;
 }
 
@@ -82,6 +87,27 @@ void Menu::propsTab(const std::vector<std::string>& files, const std::string& se
   if (files.empty()) ImGui::TextDisabled("The folder is empty.");
   for (const std::string& file : files) {
     if (ImGui::RadioButton(file.c_str(), file == selected)) out.prop = file;
+  }
+}
+
+void Menu::shaderPacksTab(GameSettings& s, const ShaderPackChoices& packs, MenuResult& out) {
+  ImGui::TextWrapped(
+      "OptiFine and Iris shader packs (a folder with shaders/ inside, or a .zip) from the shaderpacks "
+      "folder beside worlds. One draws the world instead of Terrasol's own pipeline, from the next frame.");
+  const auto choose = [&](const std::filesystem::path& path) {
+    if (path == s.shaderpack) return;
+    s.shaderpack = path;
+    out.shaderPackChanged = true;
+  };
+  if (ImGui::RadioButton("None: Terrasol's pipeline", s.shaderpack.empty())) choose({});
+  for (const std::filesystem::path& pack : packs.found) {
+    if (ImGui::RadioButton(pack.filename().string().c_str(), pack == s.shaderpack)) choose(pack);
+  }
+  if (packs.found.empty()) ImGui::TextDisabled("No packs found in shaderpacks/.");
+  if (!packs.error.empty()) {
+    ImGui::Separator();
+    ImGui::TextColored({1.0f, 0.45f, 0.35f, 1.0f}, "The pack failed; Terrasol's pipeline draws:");
+    ImGui::TextWrapped("%s", packs.error.c_str());
   }
 }
 

@@ -67,6 +67,8 @@ std::string gameUsage() {
          "  --pack PATH       a resource pack (folder, .zip or Minecraft's .jar) over the default one;\n"
          "                    repeat to stack, last on top (this run; the menu's list is saved in the\n"
          "                    settings)\n"
+         "  --shaderpack PATH an OptiFine/Iris shader pack (folder or .zip) drawing instead of Terrasol's\n"
+         "                    pipeline (this run; the menu's Shader packs tab saves its choice)\n"
          "  --settings FILE   the settings file (default: ~/.config/terrasol/settings.json)\n"
          "  --input-script F  replay timed key and mouse events from JSON (see game/input_script.h)\n"
          "  --benchmark [PATH.json] [S]\n"
@@ -105,6 +107,8 @@ GameOptions parseGameOptions(const std::vector<std::string>& args) {
       options.seed = parseSeed(arg, value());
     } else if (arg == "--pack") {
       options.packs.emplace_back(value());
+    } else if (arg == "--shaderpack") {
+      options.shaderpack = value();
     } else if (arg == "--settings") {
       options.settings = value();
     } else if (arg == "--input-script") {

@@ -45,7 +45,7 @@ void parseKeys(const json& value, KeyBindings& keys) {
 GameSettings parseRoot(const json& root, const path& dir) {
   checkObject(root, "",
               {"view_distance", "fov", "mouse_sensitivity", "sun_path_rotation", "shadow", "reflections",
-               "packs", "keys", "vsync", "render_scale", "target_fps", "first_run"});
+               "packs", "shaderpack", "keys", "vsync", "render_scale", "target_fps", "first_run"});
   GameSettings s;
   if (const json* v = field(root, "view_distance"))
     s.viewDistance = static_cast<int>(wholeNumber(*v, "view_distance", 2, 32));
@@ -57,6 +57,9 @@ GameSettings parseRoot(const json& root, const path& dir) {
   if (const json* v = field(root, "shadow")) parseShadow(*v, "shadow", s.shadow);
   if (const json* v = field(root, "reflections")) parseReflections(*v, "reflections", s.reflections);
   if (const json* v = field(root, "packs")) s.packs = parsePacks(*v, dir);
+  // "": Terrasol's own pipeline.
+  if (const json* v = field(root, "shaderpack"); v && !(v->is_string() && v->get<std::string>().empty()))
+    s.shaderpack = dir / nonEmptyString(*v, "shaderpack");
   if (const json* v = field(root, "keys")) parseKeys(*v, s.keys);
   if (const json* v = field(root, "vsync")) s.vsync = boolean(*v, "vsync");
   if (const json* v = field(root, "render_scale"))
@@ -106,6 +109,7 @@ void saveSettings(const std::filesystem::path& file, const GameSettings& s) {
                {"shadow", shadowJson(s.shadow)},
                {"reflections", reflectionsJson(s.reflections)},
                {"packs", packs},
+               {"shaderpack", s.shaderpack.string()},
                {"keys", keys},
                {"vsync", s.vsync},
                {"render_scale", s.renderScale},

@@ -63,4 +63,8 @@ fs::path resourcePackDir() {
   return dataRoot() / "resourcepacks";
 }
 
+fs::path shaderPackDir() {
+  return dataRoot() / "shaderpacks";
+}
+
 }  // namespace terrasol

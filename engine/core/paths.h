@@ -15,6 +15,7 @@ std::filesystem::path dataRoot();
 
 std::filesystem::path shaderDir();        // dataRoot()/shaders
 std::filesystem::path resourcePackDir();  // dataRoot()/resourcepacks
+std::filesystem::path shaderPackDir();    // dataRoot()/shaderpacks: the shader packs shipped with the game
 
 // Real third-party inputs for tests and benchmarks (packs, glTF samples), which the repository does
 // not hold: $TERRASOL_TESTDATA when set, else `shared/testdata` beside the data root when it exists.

@@ -11,10 +11,12 @@
 #include "core/lightmap.h"
 #include "core/octahedral.h"
 #include "core/srgb.h"
+#include "pack_render/pack_entities.h"
 #include "render/frame_graph.h"
 #include "render/frustum.h"
 #include "render/gl_slots.h"
 #include "render/section_draw.h"
+#include "shaderpack/block_properties.h"
 #include "shaderpack/pack_macros.h"
 #include "shaderpack/pack_uniforms.h"
 
@@ -573,6 +575,18 @@ void PackRenderer::render(const FrameInputs& inputs, const SectionMeshes& meshes
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   for (int unit = 0; unit < 24; ++unit) glBindSampler(unitOf(unit), 0);
+}
+
+std::unique_ptr<PackRenderer> loadShaderPack(const std::filesystem::path& path,
+                                             const ShaderPreprocessor& shaders, const BlockRegistry& blocks,
+                                             const BlockMeshTable& table, const Atlas& atlas,
+                                             const TintPalette& tints) {
+  const ShaderPack pack = ShaderPack::open(path);
+  BlockIdMap ids;
+  if (const auto text = pack.text("block.properties"))
+    ids = parseBlockProperties(*text, pack.displayName("block.properties"), PackMacros(packMacros()), blocks);
+  return std::make_unique<PackRenderer>(pack, shaders, atlas, tints,
+                                        packEntityIds(ids, table, atlas.textures.size()));
 }
 
 std::optional<GBufferPixels> PackRenderer::readReport() const {

@@ -10,6 +10,7 @@
 //   final        to the target (colortex0 copied there when the pack has none)
 // A program the pack lacks falls back along OptiFine's chain or leaves its node out. GL thread only.
 
+#include <filesystem>
 #include <memory>
 #include <optional>
 #include <string>
@@ -17,6 +18,7 @@
 
 #include "assets/atlas.h"
 #include "core/tint_palette.h"
+#include "mesh/block_mesh_table.h"
 #include "pack_render/pack_program.h"
 #include "pack_render/pack_sky.h"
 #include "pack_render/pack_targets.h"
@@ -84,5 +86,12 @@ class PackRenderer {
   std::optional<int> reportShadow_, reportNormal_;  // buffers named by terrasol.report.*
   glm::mat4 lastModelView_{1.0f};
 };
+
+// The pack at `path` (a folder or .zip) read, its block.properties mapped onto `blocks` through the
+// mesher's `table`, and its renderer built. Throws Error naming the pack's file and line.
+std::unique_ptr<PackRenderer> loadShaderPack(const std::filesystem::path& path,
+                                             const ShaderPreprocessor& shaders, const BlockRegistry& blocks,
+                                             const BlockMeshTable& table, const Atlas& atlas,
+                                             const TintPalette& tints);
 
 }  // namespace terrasol

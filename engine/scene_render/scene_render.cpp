@@ -7,7 +7,6 @@
 
 #include "core/error.h"
 #include "core/paths.h"
-#include "pack_render/pack_entities.h"
 #include "pack_render/pack_renderer.h"
 #include "render/gl/render_target.h"
 #include "scene/block_atlas.h"
@@ -16,8 +15,6 @@
 #include "scene/scene_world.h"
 #include "scene_render/placed_props.h"
 #include "scene_render/under_water.h"
-#include "shaderpack/block_properties.h"
-#include "shaderpack/pack_macros.h"
 
 namespace terrasol {
 namespace {
@@ -122,7 +119,8 @@ SceneRenderer::SceneRenderer(const SceneFile& scene)
   if (!scene.shaderpack.empty()) {
     // A pack that cannot be read or built leaves Terrasol's pipeline drawing, with the pack's error.
     try {
-      gpu_->pack = openShaderPack(scene.shaderpack, shaders);
+      gpu_->pack = loadShaderPack(scene.shaderpack, shaders, world_->blocks, world_->table,
+                                  world_->atlas.atlas, world_->atlas.tints);
     } catch (const Error& e) {
       stats_.shaderpackError = e.what();
     }
@@ -135,18 +133,6 @@ SceneRenderer::SceneRenderer(const SceneFile& scene)
 }
 
 SceneRenderer::~SceneRenderer() = default;
-
-std::unique_ptr<PackRenderer> SceneRenderer::openShaderPack(const std::filesystem::path& path,
-                                                            const ShaderPreprocessor& shaders) const {
-  const ShaderPack pack = ShaderPack::open(path);
-  BlockIdMap ids;
-  if (const auto text = pack.text("block.properties"))
-    ids = parseBlockProperties(*text, pack.displayName("block.properties"), PackMacros(packMacros()),
-                               world_->blocks);
-  const Atlas& atlas = world_->atlas.atlas;
-  return std::make_unique<PackRenderer>(pack, shaders, atlas, world_->atlas.tints,
-                                        packEntityIds(ids, world_->table, atlas.textures.size()));
-}
 
 DeferredRenderer& SceneRenderer::renderer() {
   return gpu_->renderer;

@@ -72,10 +72,7 @@ class SceneRenderer {
   struct Gpu;
   struct World;
   FrameInputs inputsFor(int frame) const;
-  void advanceTo(int frame);
-  std::unique_ptr<PackRenderer> openShaderPack(const std::filesystem::path& path,
-                                               const ShaderPreprocessor& shaders)
-      const;  // edits keyed to frames up to `frame`, their meshes and the props' light
+  void advanceTo(int frame);  // edits keyed to frames up to `frame`, their meshes and the props' light
 
   SceneFile scene_;
   DebugView debugView_;

@@ -2,6 +2,7 @@
 
 #include <array>
 #include <set>
+#include <system_error>
 #include <utility>
 
 #include "core/error.h"
@@ -97,6 +98,9 @@ ShaderPack::ShaderPack(std::unique_ptr<PackSource> files, std::string name)
 }
 
 ShaderPack ShaderPack::open(const std::filesystem::path& path) {
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec))
+    throw Error(path.string() + ": no such shader pack (expected a folder or a .zip file)");
   std::unique_ptr<PackSource> files = PackSource::open(path);
   if (files->list("shaders").empty())
     throw Error(path.string() + ": not a shader pack: no shaders/ folder with files in it");

@@ -15,6 +15,7 @@
 #include "input_script.h"
 #include "player.h"
 #include "settings.h"
+#include "shader_pack_list.h"
 #include "support/error_of.h"
 #include "support/game_world.h"
 #include "support/world_support.h"
@@ -462,6 +463,7 @@ TEST(SettingsTest, SaveAndLoadRoundTripAndMissingMeansDefaults) {
   s.reflections.resolutionScale = 0.5f;
   s.shadow.pcfSamples = 3;
   s.packs = {{dir / "packs" / "a", true}, {dir / "packs" / "b", false}};
+  s.shaderpack = dir / "shaderpacks" / "a.zip";
   s.keys.bind(Action::Jump, GLFW_KEY_J);
   saveSettings(file, s);
   const GameSettings back = loadSettings(file);
@@ -471,6 +473,8 @@ TEST(SettingsTest, SaveAndLoadRoundTripAndMissingMeansDefaults) {
   EXPECT_EQ(back.reflections, s.reflections);
   EXPECT_EQ(back.shadow.pcfSamples, 3);
   EXPECT_EQ(back.packs, s.packs);
+  EXPECT_EQ(back.shaderpack, s.shaderpack);
+  EXPECT_TRUE(defaults.shaderpack.empty()) << "Terrasol's own pipeline";
   EXPECT_EQ(back.keys.key(Action::Jump), GLFW_KEY_J);
   EXPECT_EQ(back.keys.key(Action::Forward), GLFW_KEY_W);
 }
@@ -486,6 +490,22 @@ TEST(SettingsTest, MalformedSettingsNameTheKey) {
   EXPECT_NE(error(R"({"keys": {"jump": "ESCAPE"}})").find("keys.jump"), std::string::npos);
   EXPECT_NE(error(R"({"packs": [{"enabled": true}]})").find("packs[0]"), std::string::npos);
   EXPECT_NE(error(R"({"fov": )").find("settings.json:1:"), std::string::npos);
+  EXPECT_NE(error(R"({"shaderpack": 3})").find("shaderpack"), std::string::npos);
+}
+
+// The Shader packs tab lists folders with shaders/ in them and .zip files, each once, by name.
+TEST(ShaderPackList, FoldersWithShadersAndZipsFromEveryFolderOnce) {
+  const auto dir = scratchDir("shaderpack_list");
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir / "mine" / "b-pack" / "shaders");
+  std::filesystem::create_directories(dir / "mine" / "not-a-pack" / "textures");
+  std::ofstream(dir / "mine" / "a.zip") << "zip";
+  std::ofstream(dir / "mine" / "notes.txt") << "text";
+  const std::vector<std::filesystem::path> found =
+      findShaderPacks({dir / "mine", dir / "missing", dir / "mine" / ".." / "mine"});
+  ASSERT_EQ(found.size(), 2u);
+  EXPECT_EQ(found[0].filename(), "a.zip");
+  EXPECT_EQ(found[1].filename(), "b-pack");
 }
 
 }  // namespace

@@ -229,5 +229,30 @@ TEST_F(GameWindowTest, AMinimisedWindowDrawsNothingWhileTheWorldGoesOnAndComesBa
       << "the restored window draws the world again";
 }
 
+// --shaderpack draws the game through a shader pack; one that does not build leaves Terrasol's
+// pipeline drawing the very picture it draws without one.
+TEST_F(GameWindowTest, AShaderPackDrawsTheGameAndABrokenOneFallsBack) {
+  const auto screenshot = [&](const std::string& name, const std::string& pack) {
+    const GameDir game(name);
+    const auto shot = game.dir / "shot.png";
+    EXPECT_EQ(runGame(game.common + " --seed 1 --frames 60 --screenshot " + shot.string() + pack), 0) << name;
+    return loadImage(shot);
+  };
+  const Image own = screenshot("game_no_shaderpack", "");
+  const Image example =
+      screenshot("game_example_shaderpack",
+                 " --shaderpack " + std::string(TERRASOL_SOURCE_DIR) + "/shaderpacks/terrasol-example");
+  const auto broken = testing::testOutputDir() / "broken_shaderpack";
+  std::filesystem::create_directories(broken / "shaders");
+  std::ofstream(broken / "shaders" / "final.vsh")
+      << "#version 120\nvoid main() { gl_Position = ftransform(); }\n";
+  std::ofstream(broken / "shaders" / "final.fsh")
+      << "#version 120\nvoid main() { gl_FragColor = nothing; }\n";
+  const Image fallback = screenshot("game_broken_shaderpack", " --shaderpack " + broken.string());
+  EXPECT_GT(compareImages(example, own, {}).failingPercent, 5.0) << "the pack drew the world its own way";
+  const ImageComparison same = compareImages(fallback, own, {});
+  EXPECT_TRUE(same.matches) << same.failingPercent << " % of pixels differ";
+}
+
 }  // namespace
 }  // namespace terrasol
