@@ -1,5 +1,6 @@
 // Shader packs on the GL context: every program of the two real test packs (shaderLABS'
-// Shadow-Tutorial, `#version 120`, and Base-330, `330 compatibility`) rewritten, compiled and linked;
+// Shadow-Tutorial, `#version 120`, and Base-330, `330 compatibility`), of a legacy OptiFine-style pack
+// and of Terrasol's example pack rewritten, compiled and linked;
 // OptiFine's buffer flips checked by a pack written here that passes values through four composite
 // passes; a broken pack leaves Terrasol's pipeline drawing with the pack's file and line.
 
@@ -55,8 +56,11 @@ TEST_F(ShaderPackRenderTest, EveryProgramOfTheTestPacksCompilesAndLinks) {
   const PreprocessedShader screen = packVertexReader(shaders, PackInput::Screen);
   const PreprocessedShader sky = packVertexReader(shaders, PackInput::Sky);
   int built = 0;
-  for (const char* name : {"Shadow-Tutorial", "Base-330"}) {
-    const ShaderPack pack = ShaderPack::open(vendored(name));
+  for (const std::filesystem::path& path :
+       {vendored("Shadow-Tutorial"), vendored("Base-330"), vendored("OptiFine-Legacy"),
+        kSource / "shaderpacks" / "terrasol-example"}) {
+    const ShaderPack pack = ShaderPack::open(path);
+    const std::string name = pack.name();
     for (const std::string& program : pack.programs()) {
       const bool onScreen = !program.starts_with("gbuffers_") && !program.starts_with("shadow");
       const bool inSky = program.starts_with("gbuffers_sky");
@@ -69,7 +73,8 @@ TEST_F(ShaderPackRenderTest, EveryProgramOfTheTestPacksCompilesAndLinks) {
       ++built;
     }
   }
-  EXPECT_EQ(built, 13 + 18) << "Shadow-Tutorial's 13 programs and Base-330's 18";
+  EXPECT_EQ(built, 13 + 18 + 4 + 7)
+      << "Shadow-Tutorial's 13 programs, Base-330's 18, OptiFine-Legacy's 4, the example's 7";
 }
 
 TEST_F(ShaderPackRenderTest, TheTestPacksDrawTheirProgramsInOptiFinesOrder) {
@@ -136,6 +141,22 @@ TEST_F(ShaderPackRenderTest, CompositePassesFlipTheBuffersTheyWrite) {
   const glm::ivec2 forced = centre(writePack("flip_pack_forced", files));
   EXPECT_NEAR(forced.x, 191, 1);
   EXPECT_EQ(forced.y, 0) << "colortex2 flipped back to the buffer composite1 did not write: cleared";
+}
+
+// The NaN count reads the pack's float buffers: a pack that writes NaN into one is caught.
+TEST_F(ShaderPackRenderTest, NanInAPacksFloatBufferIsCounted) {
+  const std::string vertex = "#version 120\nvoid main() { gl_Position = ftransform(); }\n";
+  const auto pack = writePack(
+      "nan_pack",
+      {{"composite.vsh", vertex},
+       {"composite.fsh",
+        "#version 120\n/* const int colortex1Format = RGBA16F; */\nuniform float frameTimeCounter;\n"
+        "void main() {\n/* DRAWBUFFERS:1 */\n  gl_FragData[0] = vec4(sqrt(-1.0 - frameTimeCounter));\n}\n"}});
+  SceneRenderer renderer(packScene(pack));
+  ASSERT_TRUE(renderer.shaderPack()) << renderer.stats().shaderpackError;
+  FrameRequest request;
+  request.checkNan = true;
+  EXPECT_EQ(renderer.renderFrame(0, request).nanPixels, 32u * 18u) << "every pixel of colortex1";
 }
 
 TEST_F(ShaderPackRenderTest, ABrokenPackLeavesTerrasolsPipelineDrawingWithItsFileAndLine) {
