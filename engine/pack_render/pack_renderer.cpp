@@ -16,16 +16,19 @@
 #include "render/frustum.h"
 #include "render/gl_slots.h"
 #include "render/section_draw.h"
+#include "render/shadow_receivers.h"
 #include "shaderpack/block_properties.h"
 #include "shaderpack/pack_macros.h"
 #include "shaderpack/pack_uniforms.h"
+#include "world/coords.h"
 
 namespace terrasol {
 namespace {
 
 enum class StageKind { Shadow, SkyBasic, SkyTextured, Terrain, Deferred, Water, Composite, Final };
 
-constexpr float kCutoutAlpha = 0.1f;  // OptiFine's alpha test for cutout geometry
+constexpr float kCutoutAlpha = 0.1f;        // OptiFine's alpha test for cutout geometry
+constexpr float kCullAboveHorizon = 0.02f;  // the light's height (sine) from which casters are culled
 constexpr float kTicksPerSecond = 20.0f;
 constexpr double kFrameTimeWrap = 3600.0;  // frameTimeCounter wraps every hour
 
@@ -126,8 +129,12 @@ struct PackRenderer::Textures {
 };
 
 PackRenderer::PackRenderer(const ShaderPack& pack, const ShaderPreprocessor& shaders, const Atlas& atlas,
-                           const TintPalette& tints, const std::vector<glm::vec2>& entityIds)
-    : packName_(pack.name()), blockTextures_(atlas, tints), gpuTimer_(!softwareRenderer()) {
+                           const TintPalette& tints, const std::vector<glm::vec2>& entityIds,
+                           bool shadowCasterCulling)
+    : packName_(pack.name()),
+      blockTextures_(atlas, tints),
+      gpuTimer_(!softwareRenderer()),
+      shadowCasterCulling_(shadowCasterCulling) {
   const std::vector<ShaderDefine> macros = packMacros();
   if (const auto text = pack.text("shaders.properties"))
     properties_ = parseShaderProperties(*text, pack.displayName("shaders.properties"), PackMacros(macros));
@@ -403,8 +410,27 @@ void PackRenderer::render(const FrameInputs& inputs, const SectionMeshes& meshes
   const FrameGraph::Resource target = graph.import("target");
 
   if (Stage* shadow = stageOf(StageKind::Shadow)) {
-    const std::vector<VisibleSection> casters =
+    std::vector<VisibleSection> casters =
         sectionsInside(frustumPlanes(shadowProjection * shadowModelView), view.camera, meshes);
+    // Casters whose shadow can fall on nothing in view are left out (not near the horizon, where the
+    // swept boxes grow without bound and the light may change sides).
+    if (shadowCasterCulling_ && geometry_.toLight.y > kCullAboveHorizon) {
+      ViewCone cone;
+      cone.eye = view.camera;
+      cone.forward = glm::vec3(glm::normalize(view.lookAt - view.camera));
+      cone.up = glm::vec3(view.up);
+      cone.fovDegrees = view.fovDegrees;
+      cone.aspect = static_cast<float>(size.x) / static_cast<float>(size.y);
+      cone.farPlane = packFarPlane(view);
+      cone.floorY = kMinY;
+      const ShadowReceivers receivers(cone);
+      const auto before = casters.size();
+      std::erase_if(casters, [&](const VisibleSection& v) {
+        const glm::dvec3 lo = view.camera + glm::dvec3(v.offset);
+        return !receivers.mayShade(lo, lo + glm::dvec3(16.0), geometry_.toLight);
+      });
+      stats_.shadowCastersOffView = static_cast<int>(before - casters.size());
+    }
     stats_.shadowCasters = static_cast<int>(casters.size());
     graph.add(
         "shadow", [&](FrameGraph::Builder& b) { b.write(shadowMaps); },
@@ -580,13 +606,13 @@ void PackRenderer::render(const FrameInputs& inputs, const SectionMeshes& meshes
 std::unique_ptr<PackRenderer> loadShaderPack(const std::filesystem::path& path,
                                              const ShaderPreprocessor& shaders, const BlockRegistry& blocks,
                                              const BlockMeshTable& table, const Atlas& atlas,
-                                             const TintPalette& tints) {
+                                             const TintPalette& tints, bool shadowCasterCulling) {
   const ShaderPack pack = ShaderPack::open(path);
   BlockIdMap ids;
   if (const auto text = pack.text("block.properties"))
     ids = parseBlockProperties(*text, pack.displayName("block.properties"), PackMacros(packMacros()), blocks);
-  return std::make_unique<PackRenderer>(pack, shaders, atlas, tints,
-                                        packEntityIds(ids, table, atlas.textures.size()));
+  return std::make_unique<PackRenderer>(
+      pack, shaders, atlas, tints, packEntityIds(ids, table, atlas.textures.size()), shadowCasterCulling);
 }
 
 std::optional<GBufferPixels> PackRenderer::readReport() const {

@@ -38,8 +38,11 @@ class PackRenderer {
   // Builds every program the frame runs. Throws Error naming the pack's file and line: a source that
   // does not preprocess, rewrite, compile or link, or malformed properties. `entityIds`: mc_Entity.xy
   // per atlas texture id (pack_render/pack_entities.h).
+  // `shadowCasterCulling`: leave out of the shadow pass the sections whose shadow can fall on nothing
+  // in view (render/shadow_receivers.h), as Terrasol's own shadow pass does.
   PackRenderer(const ShaderPack& pack, const ShaderPreprocessor& shaders, const Atlas& atlas,
-               const TintPalette& tints, const std::vector<glm::vec2>& entityIds);
+               const TintPalette& tints, const std::vector<glm::vec2>& entityIds,
+               bool shadowCasterCulling = true);
   ~PackRenderer();
 
   void render(const FrameInputs& frame, const SectionMeshes& meshes, GLuint framebuffer, glm::ivec2 size,
@@ -81,6 +84,7 @@ class PackRenderer {
   int frameCounter_ = 0;
   std::int64_t lastTicks_ = 0;
   bool gpuTimer_;
+  bool shadowCasterCulling_;
   FrameStats stats_;
   FrameGeometry geometry_;
   std::optional<int> reportShadow_, reportNormal_;  // buffers named by terrasol.report.*
@@ -92,6 +96,6 @@ class PackRenderer {
 std::unique_ptr<PackRenderer> loadShaderPack(const std::filesystem::path& path,
                                              const ShaderPreprocessor& shaders, const BlockRegistry& blocks,
                                              const BlockMeshTable& table, const Atlas& atlas,
-                                             const TintPalette& tints);
+                                             const TintPalette& tints, bool shadowCasterCulling = true);
 
 }  // namespace terrasol

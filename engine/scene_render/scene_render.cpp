@@ -120,7 +120,7 @@ SceneRenderer::SceneRenderer(const SceneFile& scene)
     // A pack that cannot be read or built leaves Terrasol's pipeline drawing, with the pack's error.
     try {
       gpu_->pack = loadShaderPack(scene.shaderpack, shaders, world_->blocks, world_->table,
-                                  world_->atlas.atlas, world_->atlas.tints);
+                                  world_->atlas.atlas, world_->atlas.tints, scene.shadowCasterCulling);
     } catch (const Error& e) {
       stats_.shaderpackError = e.what();
     }

@@ -53,14 +53,17 @@ std::optional<PackValue> PackUniforms::value(std::string_view name) const {
   return toValue(*u);
 }
 
+float packFarPlane(const PackView& view) {
+  return std::max(4.0f * view.viewDistance, 256.0f);
+}
+
 PackCamera packCamera(const PackView& view) {
   Camera camera;  // at the origin: packs add cameraPosition themselves
   camera.lookAt = glm::vec3(view.lookAt - view.camera);
   camera.up = glm::vec3(view.up);
   camera.fovDegrees = view.fovDegrees;
   camera.nearPlane = kPackNear;
-  // Vanilla's far plane lies well beyond the render distance (fog ends there, terrain goes on).
-  camera.farPlane = std::max(4.0f * view.viewDistance, 256.0f);
+  camera.farPlane = packFarPlane(view);
   const float aspect =
       static_cast<float>(std::max(view.size.x, 1)) / static_cast<float>(std::max(view.size.y, 1));
   return {camera.view(), camera.projection(aspect)};

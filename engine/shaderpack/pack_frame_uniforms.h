@@ -65,6 +65,8 @@ struct PackCamera {
   glm::mat4 modelView{1.0f}, projection{1.0f};
 };
 PackCamera packCamera(const PackView& view);
+// The projection's far plane: vanilla's lies well beyond the render distance (fog ends there).
+float packFarPlane(const PackView& view);
 
 // What carries from one frame to the next: the previous camera and the smoothed eye brightness.
 struct PackHistory {

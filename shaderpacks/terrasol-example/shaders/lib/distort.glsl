@@ -4,7 +4,7 @@
 
 #define SHADOW_DISTORT 0.10 // How strongly the map is warped towards the player [0.05 0.10 0.15 0.20]
 
-const int shadowMapResolution = 2048; // [1024 2048 4096]
+const int shadowMapResolution = 1024; // [1024 2048 4096]
 const float shadowDistance = 64.0;    // [48.0 64.0 96.0 128.0]
 
 // Shadow clip space (xy in -1..1) to the warped map; z is halved so far casters stay inside.
