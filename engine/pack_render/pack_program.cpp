@@ -128,6 +128,10 @@ PreprocessedShader packVertexReader(const ShaderPreprocessor& shaders, PackInput
                                                : "pack/screen_input.glsl";
   std::vector<ShaderDefine> defines = rendererDefines();
   defines.push_back({"PACK_LIGHT_SCALE", std::to_string(PackedVertex::kCellLight * 16) + ".0"});
+  std::string shade = "float[10](";
+  for (std::size_t face = 0; face < kVanillaFaceShade.size(); ++face)
+    shade += (face ? ", " : "") + std::to_string(kVanillaFaceShade[face]);
+  defines.push_back({"PACK_FACE_SHADE", shade + ")"});
   PreprocessedShader source = shaders.process(file, defines);
   // Spliced into a pack's stage after its #version: drop ours.
   source.text.erase(0, source.text.find('\n') + 1);
@@ -287,6 +291,10 @@ void PackGlProgram::setMatrices(const PackMatrices& m) const {
 
 void PackGlProgram::setAlphaTest(float ref) const {
   glProgramUniform1f(id(), alphaTest_, ref);
+}
+
+void PackGlProgram::setOldLighting(bool on) const {
+  glProgramUniform1i(id(), glGetUniformLocation(id(), "tsol_oldLighting"), on ? 1 : 0);
 }
 
 void PackGlProgram::setRenderStage(int stage) const {

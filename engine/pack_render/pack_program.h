@@ -5,6 +5,7 @@
 // looked up once so each frame's values (shaderpack/pack_frame_uniforms.h) are set by location.
 // GL thread only.
 
+#include <array>
 #include <glm/mat4x4.hpp>
 #include <optional>
 #include <string>
@@ -47,6 +48,11 @@ struct PackSampler {
   bool shadow = false;  // declared sampler2DShadow: compares depth
 };
 
+// Vanilla's shade of a face by its direction (mesh/mesh_data.h's face ids: west, east, down, up,
+// north, south, then the cross planes, unshaded), which packs get in gl_Color with oldLighting.
+inline constexpr std::array<float, 10> kVanillaFaceShade = {0.6f, 0.6f, 0.5f, 1.0f, 0.8f,
+                                                            0.8f, 1.0f, 1.0f, 1.0f, 1.0f};
+
 // The GLSL that reads `input`'s vertices into the rewrite's tsol_* inputs (shaders/pack/*_input.glsl),
 // with the renderer's defines, without its #version line.
 PreprocessedShader packVertexReader(const ShaderPreprocessor& shaders, PackInput input);
@@ -88,6 +94,7 @@ class PackGlProgram {
   void setUniforms(const PackUniforms& uniforms);
   void setMatrices(const PackMatrices& m) const;
   void setAlphaTest(float ref) const;
+  void setOldLighting(bool on) const;
   void setRenderStage(int stage) const;
 
  private:

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
+#include <map>
 #include <random>
 
 #include "core/camera.h"
@@ -18,6 +19,7 @@
 #include "render/section_draw.h"
 #include "render/shadow_receivers.h"
 #include "shaderpack/block_properties.h"
+#include "shaderpack/pack_draw_state.h"
 #include "shaderpack/pack_macros.h"
 #include "shaderpack/pack_uniforms.h"
 #include "world/coords.h"
@@ -71,29 +73,76 @@ struct PackRenderer::Stage {
   StageKind kind;
   std::string slot;  // the program's name in the frame ("composite2", "gbuffers_water")
   std::unique_ptr<PackGlProgram> program;
+  PackDrawState state;  // shaders.properties' alphaTest.<slot> and blend.<slot>
 };
+
+namespace {
+
+GLenum blendFactor(const std::string& name) {
+  static const std::map<std::string, GLenum, std::less<>> kFactors = {
+      {"ZERO", GL_ZERO},
+      {"ONE", GL_ONE},
+      {"SRC_COLOR", GL_SRC_COLOR},
+      {"ONE_MINUS_SRC_COLOR", GL_ONE_MINUS_SRC_COLOR},
+      {"DST_COLOR", GL_DST_COLOR},
+      {"ONE_MINUS_DST_COLOR", GL_ONE_MINUS_DST_COLOR},
+      {"SRC_ALPHA", GL_SRC_ALPHA},
+      {"ONE_MINUS_SRC_ALPHA", GL_ONE_MINUS_SRC_ALPHA},
+      {"DST_ALPHA", GL_DST_ALPHA},
+      {"ONE_MINUS_DST_ALPHA", GL_ONE_MINUS_DST_ALPHA},
+      {"SRC_ALPHA_SATURATE", GL_SRC_ALPHA_SATURATE},
+  };
+  return kFactors.at(name);  // packDrawState admits only these
+}
+
+// The stage's blending: the pack's blend.<program>, else `fallback` (src, dst, srcAlpha, dstAlpha), or
+// none without one.
+void applyBlend(const PackDrawState& state, const std::array<GLenum, 4>* fallback) {
+  if (state.blend && !state.blend->enabled) return glDisable(GL_BLEND);
+  if (state.blend) {
+    const auto& f = state.blend->factors;
+    glEnable(GL_BLEND);
+    glBlendFuncSeparate(blendFactor(f[0]), blendFactor(f[1]), blendFactor(f[2]), blendFactor(f[3]));
+    return;
+  }
+  if (!fallback) return glDisable(GL_BLEND);
+  glEnable(GL_BLEND);
+  glBlendFuncSeparate((*fallback)[0], (*fallback)[1], (*fallback)[2], (*fallback)[3]);
+}
+
+constexpr std::array<GLenum, 4> kTranslucentBlend = {GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE,
+                                                     GL_ONE_MINUS_SRC_ALPHA};
+constexpr std::array<GLenum, 4> kAddedBlend = {GL_SRC_ALPHA, GL_ONE, GL_ONE, GL_ZERO};  // sun and moon
+
+}  // namespace
 
 // What the pack's samplers read besides its buffers.
 struct PackRenderer::Textures {
   Textures(const BlockTextures& blocks, int shadowResolution, int noiseResolution,
-           const std::vector<glm::vec2>& entityIds)
+           const std::vector<glm::vec2>& entityIds, const std::optional<Image>& noiseImage)
       : atlas(gl::TextureView::create(GL_TEXTURE_2D, blocks.atlas().albedo(), GL_RGBA8, 0u, levelsOf(blocks),
                                       0u, 1u)),
         lightmap(texture2d(GL_RGBA8, glm::ivec2(Lightmap::kSize), GL_LINEAR)),
-        noise(texture2d(GL_RGB8, glm::ivec2(noiseResolution), GL_LINEAR, GL_REPEAT)),
+        noise(noiseImage ? texture2d(GL_RGBA8, {noiseImage->width, noiseImage->height}, GL_LINEAR, GL_REPEAT)
+                         : texture2d(GL_RGB8, glm::ivec2(noiseResolution), GL_LINEAR, GL_REPEAT)),
         entities(gl::Buffer::create()),
         shadowResolution(shadowResolution) {
     // The atlas as packs sample it: its sRGB texels as stored, not decoded.
     glTextureParameteri(atlas.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_LINEAR);
     glTextureParameteri(atlas.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    // Random RGB, the same every run (Iris fills it from a seeded generator too).
-    std::vector<std::uint8_t> texels(static_cast<std::size_t>(noiseResolution * noiseResolution * 3));
-    std::mt19937 random(0);
-    for (std::uint8_t& t : texels) t = static_cast<std::uint8_t>(random() & 0xff);
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    glTextureSubImage2D(noise.id(), 0, 0, 0, noiseResolution, noiseResolution, GL_RGB, GL_UNSIGNED_BYTE,
-                        texels.data());
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    if (noiseImage) {
+      glTextureSubImage2D(noise.id(), 0, 0, 0, noiseImage->width, noiseImage->height, GL_RGBA,
+                          GL_UNSIGNED_BYTE, noiseImage->rgba.data());
+    } else {
+      // Random RGB, the same every run (Iris fills it from a seeded generator too).
+      std::vector<std::uint8_t> texels(static_cast<std::size_t>(noiseResolution * noiseResolution * 3));
+      std::mt19937 random(0);
+      for (std::uint8_t& t : texels) t = static_cast<std::uint8_t>(random() & 0xff);
+      glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+      glTextureSubImage2D(noise.id(), 0, 0, 0, noiseResolution, noiseResolution, GL_RGB, GL_UNSIGNED_BYTE,
+                          texels.data());
+      glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    }
     std::vector<glm::vec2> ids = entityIds;
     if (ids.empty()) ids.push_back(glm::vec2(-1.0f));
     glNamedBufferStorage(entities.id(), static_cast<GLsizeiptr>(ids.size() * sizeof(glm::vec2)), ids.data(),
@@ -163,7 +212,8 @@ PackRenderer::PackRenderer(const ShaderPack& pack, const ShaderPreprocessor& sha
     PackProgramSource source{
         &pack,           *files, screen ? PackInput::Screen : sky ? PackInput::Sky : PackInput::Block,
         !screen && !sky, macros, screen ? &screenReader : sky ? &skyReader : &blockReader};
-    stages_.push_back({kind, slot, std::make_unique<PackGlProgram>(source)});
+    stages_.push_back(
+        {kind, slot, std::make_unique<PackGlProgram>(source), packDrawState(properties_, slot)});
     names_.push_back(files->name == slot ? slot : slot + ": " + files->name);
   };
   add(StageKind::Shadow, "shadow");
@@ -200,8 +250,21 @@ PackRenderer::PackRenderer(const ShaderPack& pack, const ShaderPreprocessor& sha
   };
   reportShadow_ = reportBuffer("terrasol.report.shadow");
   reportNormal_ = reportBuffer("terrasol.report.normal");
+  // texture.noise: an image in the pack in place of the random one.
+  std::optional<Image> noiseImage;
+  if (const ShaderProperties::Entry* e = properties_.find("texture.noise")) {
+    const std::string path = e->value.starts_with("/") ? e->value.substr(1) : e->value;
+    const std::optional<std::string> bytes = pack.text(path);
+    if (!bytes) throw Error(e->where + ": texture.noise: no file " + pack.displayName(path));
+    noiseImage = decodeImage(std::vector<std::uint8_t>(bytes->begin(), bytes->end()), pack.displayName(path));
+  }
+  drawSun_ = packSwitch(properties_, "sun", true);
+  drawMoon_ = packSwitch(properties_, "moon", true);
+  const bool oldLighting = packSwitch(properties_, "oldLighting", false);
+  for (const Stage& s : stages_) s.program->setOldLighting(oldLighting);
   textures_ = std::make_unique<Textures>(blockTextures_, std::clamp(settings_.shadowMapResolution, 16, 8192),
-                                         std::clamp(settings_.noiseTextureResolution, 1, 4096), entityIds);
+                                         std::clamp(settings_.noiseTextureResolution, 1, 4096), entityIds,
+                                         noiseImage);
 }
 
 PackRenderer::~PackRenderer() = default;
@@ -352,9 +415,10 @@ void PackRenderer::render(const FrameInputs& inputs, const SectionMeshes& meshes
       glBindSampler(unitOf(s.unit), sampler);
     }
   };
-  const auto drawTerrain = [&](PackGlProgram& program, const std::vector<VisibleSection>& sections,
+  const auto drawTerrain = [&](const Stage& stage, const std::vector<VisibleSection>& sections,
                                MeshLayer layer, DrawOrder order, FrameStats* stats) {
-    program.setAlphaTest(layer == MeshLayer::Cutout ? kCutoutAlpha : 0.0f);
+    PackGlProgram& program = *stage.program;
+    program.setAlphaTest(stage.state.alphaTestRef.value_or(layer == MeshLayer::Cutout ? kCutoutAlpha : 0.0f));
     program.setRenderStage(static_cast<int>(layer == MeshLayer::Opaque   ? RenderStage::TerrainSolid
                                             : layer == MeshLayer::Cutout ? RenderStage::TerrainCutout
                                                                          : RenderStage::TerrainTranslucent));
@@ -459,13 +523,13 @@ void PackRenderer::render(const FrameInputs& inputs, const SectionMeshes& meshes
                                           draw.data());
             glBindFramebuffer(GL_FRAMEBUFFER, t.shadowFramebuffers[pass].id());
             if (pass == 0) {
-              drawTerrain(program, casters, MeshLayer::Opaque, DrawOrder::NearestFirst, nullptr);
-              drawTerrain(program, casters, MeshLayer::Cutout, DrawOrder::NearestFirst, nullptr);
+              drawTerrain(*shadow, casters, MeshLayer::Opaque, DrawOrder::NearestFirst, nullptr);
+              drawTerrain(*shadow, casters, MeshLayer::Cutout, DrawOrder::NearestFirst, nullptr);
               // shadowtex1 holds the opaque; shadowtex0 starts from it and adds the translucent.
               glCopyImageSubData(t.shadowDepth[1].id(), GL_TEXTURE_2D, 0, 0, 0, 0, t.shadowDepth[0].id(),
                                  GL_TEXTURE_2D, 0, 0, 0, 0, t.shadowResolution, t.shadowResolution, 1);
             } else {
-              drawTerrain(program, casters, MeshLayer::Translucent, DrawOrder::NearestFirst, nullptr);
+              drawTerrain(*shadow, casters, MeshLayer::Translucent, DrawOrder::NearestFirst, nullptr);
             }
           }
         });
@@ -486,7 +550,7 @@ void PackRenderer::render(const FrameInputs& inputs, const SectionMeshes& meshes
           p.setMatrices(skyMatrices);
           p.setRenderStage(static_cast<int>(RenderStage::Sky));
           bindSamplers(p, 0);
-          glDisable(GL_BLEND);
+          applyBlend(basic->state, nullptr);
           sky_.drawSky();
         }
         if (Stage* textured = stageOf(StageKind::SkyTextured)) {
@@ -495,14 +559,17 @@ void PackRenderer::render(const FrameInputs& inputs, const SectionMeshes& meshes
           glUseProgram(p.id());
           p.setMatrices(skyMatrices);
           bindSamplers(p, 0);
-          // Vanilla adds the sun and moon onto the sky.
-          glEnable(GL_BLEND);
-          glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE, GL_ONE, GL_ZERO);
+          // Vanilla adds the sun and moon onto the sky; shaders.properties may leave either out.
+          applyBlend(textured->state, &kAddedBlend);
           const GLuint unit = unitOf(0);
-          p.setRenderStage(static_cast<int>(RenderStage::Sun));
-          sky_.drawSun(unit);
-          p.setRenderStage(static_cast<int>(RenderStage::Moon));
-          sky_.drawMoon(unit);
+          if (drawSun_) {
+            p.setRenderStage(static_cast<int>(RenderStage::Sun));
+            sky_.drawSun(unit);
+          }
+          if (drawMoon_) {
+            p.setRenderStage(static_cast<int>(RenderStage::Moon));
+            sky_.drawMoon(unit);
+          }
           glDisable(GL_BLEND);
         }
         glDepthMask(GL_TRUE);
@@ -525,12 +592,13 @@ void PackRenderer::render(const FrameInputs& inputs, const SectionMeshes& meshes
         glDepthMask(GL_TRUE);
         glEnable(GL_CULL_FACE);
         glCullFace(GL_BACK);
-        glDisable(GL_BLEND);
+        applyBlend(terrain->state, nullptr);
         glUseProgram(p.id());
         p.setMatrices(world);
         bindSamplers(p, textures_->atlas.id());
-        drawTerrain(p, visible, MeshLayer::Opaque, DrawOrder::NearestFirst, &stats_);
-        drawTerrain(p, visible, MeshLayer::Cutout, DrawOrder::NearestFirst, &stats_);
+        drawTerrain(*terrain, visible, MeshLayer::Opaque, DrawOrder::NearestFirst, &stats_);
+        drawTerrain(*terrain, visible, MeshLayer::Cutout, DrawOrder::NearestFirst, &stats_);
+        glDisable(GL_BLEND);
         glDisable(GL_CULL_FACE);
       });
 
@@ -562,12 +630,11 @@ void PackRenderer::render(const FrameInputs& inputs, const SectionMeshes& meshes
         glEnable(GL_DEPTH_TEST);
         glDepthMask(GL_TRUE);
         glDisable(GL_CULL_FACE);
-        glEnable(GL_BLEND);
-        glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+        applyBlend(water->state, &kTranslucentBlend);
         glUseProgram(p.id());
         p.setMatrices(world);
         bindSamplers(p, textures_->atlas.id());
-        drawTerrain(p, visible, MeshLayer::Translucent, DrawOrder::FarthestFirst, &stats_);
+        drawTerrain(*water, visible, MeshLayer::Translucent, DrawOrder::FarthestFirst, &stats_);
         glDisable(GL_BLEND);
       });
   for (Stage& s : stages_)

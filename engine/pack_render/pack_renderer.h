@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "assets/atlas.h"
+#include "assets/image.h"
 #include "core/tint_palette.h"
 #include "mesh/block_mesh_table.h"
 #include "pack_render/pack_program.h"
@@ -85,6 +86,7 @@ class PackRenderer {
   std::int64_t lastTicks_ = 0;
   bool gpuTimer_;
   bool shadowCasterCulling_;
+  bool drawSun_ = true, drawMoon_ = true;  // shaders.properties sun, moon
   FrameStats stats_;
   FrameGeometry geometry_;
   std::optional<int> reportShadow_, reportNormal_;  // buffers named by terrasol.report.*

@@ -10,6 +10,7 @@
 
 layout(location = ATTRIB_PACKED) in uvec4 tsol_packed;
 uniform vec3 u_sectionOffset;  // the section's minimum corner minus the camera (computed in double)
+uniform bool tsol_oldLighting;  // shaders.properties oldLighting: vanilla's shade by face in gl_Color
 
 layout(std430, binding = STORAGE_PACK_ENTITIES) readonly buffer tsol_EntityIds {
   vec2 tsol_entityIds[];  // mc_Entity.xy of each texture id
@@ -18,6 +19,7 @@ layout(std430, binding = STORAGE_PACK_ENTITIES) readonly buffer tsol_EntityIds {
 const vec3 tsol_faceNormals[10] = FACE_NORMALS;
 const vec3 tsol_faceTangents[10] = FACE_TANGENTS;
 const vec3 tsol_faceUps[10] = FACE_UPS;
+const float tsol_faceShade[10] = PACK_FACE_SHADE;
 
 void tsol_readVertex() {
   BlockVertex v = unpackBlockVertex(tsol_packed);
@@ -27,7 +29,8 @@ void tsol_readVertex() {
   tsol_Normal = tsol_faceNormals[v.face];
   // Vanilla's smooth lighting shades a corner by its open cells, 0.2 for each solid one of four.
   float ao = 0.4 + 0.6 * v.ao;
-  tsol_Color = vec4((v.tint == TINT_NONE ? vec3(1.0) : v.tintColour) * ao, 1.0);
+  float shade = tsol_oldLighting ? tsol_faceShade[v.face] : 1.0;
+  tsol_Color = vec4((v.tint == TINT_NONE ? vec3(1.0) : v.tintColour) * ao * shade, 1.0);
   tsol_MultiTexCoord0 = vec4(tile + v.uv * tileSize, 0.0, 1.0);
   tsol_MultiTexCoord1 = vec4(vec2(v.blockLight, v.skyLight) * PACK_LIGHT_SCALE, 0.0, 1.0);
   tsol_Entity = vec4(tsol_entityIds[v.texture], 0.0, 0.0);

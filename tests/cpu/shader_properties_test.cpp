@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include "core/error.h"
+#include "shaderpack/pack_draw_state.h"
 #include "shaderpack/pack_macros.h"
 #include "support/error_of.h"
 
@@ -144,6 +145,31 @@ TEST(ShaderProperties, KeysConditionalsCustomsAndPrograms) {
     const std::string e = errorOf([&] { parseShaderProperties(bad, "sp", PackMacros()); });
     EXPECT_NE(e.find("sp" + line), std::string::npos) << bad << ": " << e;
   }
+}
+
+TEST(PackDrawState, AlphaTestBlendAndSwitchesPerProgram) {
+  const ShaderProperties p = parseShaderProperties(
+      "alphaTest.gbuffers_terrain = GREATER 0.5\nalphaTest.shadow=off\n"
+      "blend.gbuffers_water=ONE ONE_MINUS_SRC_ALPHA\nblend.gbuffers_skytextured=off\n"
+      "blend.gbuffers_clouds=SRC_ALPHA ONE_MINUS_SRC_ALPHA ONE ZERO\nsun=false\noldLighting=true\n"
+      "alphaTest.gbuffers_hand=LESS 0.5\nblend.gbuffers_hand=ONE PLUS\nmoon=maybe\n",
+      "shaders.properties", PackMacros(packMacros()));
+  EXPECT_EQ(packDrawState(p, "gbuffers_terrain").alphaTestRef, 0.5f);
+  EXPECT_EQ(packDrawState(p, "shadow").alphaTestRef, 0.0f) << "off";
+  EXPECT_FALSE(packDrawState(p, "gbuffers_water").alphaTestRef) << "the program's default";
+  const PackDrawState water = packDrawState(p, "gbuffers_water");
+  ASSERT_TRUE(water.blend);
+  EXPECT_EQ(water.blend->factors,
+            (std::array<std::string, 4>{"ONE", "ONE_MINUS_SRC_ALPHA", "ONE", "ONE_MINUS_SRC_ALPHA"}))
+      << "two factors serve alpha too";
+  EXPECT_FALSE(packDrawState(p, "gbuffers_skytextured").blend->enabled);
+  EXPECT_EQ(packDrawState(p, "gbuffers_clouds").blend->factors[3], "ZERO");
+  EXPECT_FALSE(packSwitch(p, "sun", true));
+  EXPECT_TRUE(packSwitch(p, "oldLighting", false));
+  EXPECT_TRUE(packSwitch(p, "clouds", true)) << "absent: the default";
+  EXPECT_NE(errorOf([&] { packDrawState(p, "gbuffers_hand"); }).find("shaders.properties:8"),
+            std::string::npos);
+  EXPECT_NE(errorOf([&] { packSwitch(p, "moon", true); }).find("expected true or false"), std::string::npos);
 }
 
 }  // namespace

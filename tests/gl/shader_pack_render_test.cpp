@@ -6,10 +6,13 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 
+#include "assets/image.h"
 #include "core/paths.h"
 #include "pack_render/pack_program.h"
 #include "pack_render/pack_renderer.h"
@@ -157,6 +160,51 @@ TEST_F(ShaderPackRenderTest, NanInAPacksFloatBufferIsCounted) {
   FrameRequest request;
   request.checkNan = true;
   EXPECT_EQ(renderer.renderFrame(0, request).nanPixels, 32u * 18u) << "every pixel of colortex1";
+}
+
+// shaders.properties' switches reach the picture: texture.noise replaces the random noise with the
+// pack's image, and oldLighting shades faces by direction in gl_Color.
+TEST_F(ShaderPackRenderTest, ShadersPropertiesSwitchesChangeThePicture) {
+  const std::string vertex =
+      "#version 120\nvarying vec2 uv;\nvoid main() { gl_Position = ftransform(); uv = gl_MultiTexCoord0.xy; "
+      "}\n";
+  std::vector<std::pair<std::string, std::string>> files = {
+      {"final.vsh", vertex},
+      {"final.fsh",
+       "#version 120\nuniform sampler2D noisetex;\nvarying vec2 uv;\n"
+       "void main() { gl_FragColor = texture2D(noisetex, uv); }\n"},
+  };
+  const auto centre = [&](const std::filesystem::path& pack) {
+    SceneRenderer renderer(packScene(pack));
+    EXPECT_TRUE(renderer.shaderPack()) << renderer.stats().shaderpackError;
+    const Image image = renderer.renderFrame(0).image;
+    const std::uint8_t* p = image.pixel(image.width / 2, image.height / 2);
+    return glm::ivec3(p[0], p[1], p[2]);
+  };
+  const auto dir = writePack("noise_pack", files);
+  Image red(4, 4);
+  for (int i = 0; i < 16; ++i)
+    std::copy_n(std::array<std::uint8_t, 4>{255, 0, 0, 255}.data(), 4, &red.rgba[i * 4]);
+  std::filesystem::create_directories(dir / "shaders" / "tex");
+  saveImage(dir / "shaders" / "tex" / "noise.png", red);
+  std::ofstream(dir / "shaders" / "shaders.properties") << "texture.noise=tex/noise.png\n";
+  EXPECT_EQ(centre(dir), glm::ivec3(255, 0, 0));
+
+  // Base-330 draws gl_Color straight into the picture: with oldLighting the sides darken.
+  const auto base = testing::scratchDir("base_old_lighting");
+  std::filesystem::remove_all(base);
+  std::filesystem::copy(vendored("Base-330"), base, std::filesystem::copy_options::recursive);
+  const auto brightness = [&](const std::filesystem::path& pack) {
+    SceneRenderer renderer(packScene(pack));
+    const Image image = renderer.renderFrame(0).image;
+    long sum = 0;
+    for (std::size_t i = 0; i < image.rgba.size(); i += 4)
+      sum += image.rgba[i] + image.rgba[i + 1] + image.rgba[i + 2];
+    return sum;
+  };
+  const long plain = brightness(base);
+  std::ofstream(base / "shaders" / "shaders.properties") << "oldLighting=true\n";
+  EXPECT_LT(brightness(base), plain) << "faces turned from the sky are shaded";
 }
 
 TEST_F(ShaderPackRenderTest, ABrokenPackLeavesTerrasolsPipelineDrawingWithItsFileAndLine) {
