@@ -10,6 +10,7 @@
 #include "demo.h"
 #include "game.h"
 #include "platform/glfw/glfw_window.h"
+#include "scene_render/eye_light.h"
 #include "scene_render/under_water.h"
 #include "screenshot.h"
 #include "shader_pack_list.h"
@@ -167,6 +168,7 @@ void Game::draw(bool timed) {
   frame.reuseShadowMap = true;
   frame.props = &world_.props().placed().gpu();
   frame.underWater = underWaterAt(world_.world(), world_.light(), frame.cameraPosition);
+  frame.eyeLight = eyeLightAt(world_.light(), frame.cameraPosition);
   frame.renderScale = renderScale();
   if (!input_.screenOpen() && ui_.hudShown()) frame.outline = interaction_.outline(world_);
   overlay_.timings().clear();

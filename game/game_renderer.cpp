@@ -138,11 +138,7 @@ void GameRenderer::setShaderPack(const std::filesystem::path& path) {
 }
 
 void GameRenderer::render(const FrameInputs& frame, glm::ivec2 size, std::vector<PassTiming>* timings) {
-  if (pack_) {
-    pack_->render(frame, meshes_, 0, size, timings);
-  } else {
-    renderer_->render(frame, meshes_, 0, size, timings);
-  }
+  drawing().render(frame, meshes_, 0, size, timings);
 }
 
 }  // namespace terrasol

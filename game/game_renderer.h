@@ -58,7 +58,7 @@ class GameRenderer {
 
   void upload(const SectionMesh& mesh) { meshes_.upload(mesh); }
   void render(const FrameInputs& frame, glm::ivec2 size, std::vector<PassTiming>* timings);
-  const FrameStats& lastFrame() const { return pack_ ? pack_->lastFrame() : renderer_->lastFrame(); }
+  const FrameStats& lastFrame() const { return drawing().lastFrame(); }
   std::size_t sectionsOnGpu() const { return meshes_.sections().size(); }
   // The inventory's icons (drawn on first use, again after the packs change), one per block of
   // iconStates(); iconOf gives a state's block's icon, if its block has one.
@@ -67,6 +67,12 @@ class GameRenderer {
   std::optional<std::size_t> iconOf(BlockId state) const;
 
  private:
+  // The shader pack when one is drawing, else the deferred renderer.
+  WorldRenderer& drawing() const {
+    if (pack_) return *pack_;
+    return *renderer_;
+  }
+
   const BlockRegistry& blocks_;
   std::unique_ptr<BlockAssets> assets_;
   std::unique_ptr<DeferredRenderer> renderer_;

@@ -280,7 +280,9 @@ void PackRenderer::render(const FrameInputs& inputs, const SectionMeshes& meshes
                           glm::ivec2 targetSize, std::vector<PassTiming>* timings) {
   if (targetSize.x <= 0 || targetSize.y <= 0) return;
   stats_ = {};
-  const glm::ivec2 size = targetSize;
+  // The buffers at the render scale (dynamic resolution); the final program, or the copy out, scales
+  // the picture up to the target.
+  const glm::ivec2 size = scaledRenderSize(targetSize, inputs.renderScale);
   if (!targets_ || targets_->size() != size) targets_.emplace(size, settings_, usedBuffers_);
   blockTextures_.update(inputs.ticks);
 
@@ -306,6 +308,7 @@ void PackRenderer::render(const FrameInputs& inputs, const SectionMeshes& meshes
   view.frameCounter = frameCounter_++;
   lastTicks_ = inputs.ticks;
   view.underWater = inputs.underWater.has_value();
+  view.eyeLight = inputs.eyeLight;
   view.fogColor = srgbOf(day.fogColor);
   view.skyColor = srgbOf(day.skyZenith);
   view.atlasSize = glm::ivec2(0);
@@ -652,7 +655,7 @@ void PackRenderer::render(const FrameInputs& inputs, const SectionMeshes& meshes
           // No final program: colortex0 is the picture (OptiFine copies it).
           targets_->bindRead(0);
           glBlitNamedFramebuffer(targets_->framebuffer(), framebuffer, 0, 0, size.x, size.y, 0, 0,
-                                 targetSize.x, targetSize.y, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+                                 targetSize.x, targetSize.y, GL_COLOR_BUFFER_BIT, GL_LINEAR);
         });
   }
   graph.output(target);

@@ -28,13 +28,14 @@
 #include "render/gbuffer.h"
 #include "render/pass_clock.h"
 #include "render/section_meshes.h"
+#include "render/world_renderer.h"
 #include "shaderpack/pack_frame_uniforms.h"
 #include "shaderpack/shader_pack.h"
 #include "shaderpack/shader_properties.h"
 
 namespace terrasol {
 
-class PackRenderer {
+class PackRenderer final : public WorldRenderer {
  public:
   // Builds every program the frame runs. Throws Error naming the pack's file and line: a source that
   // does not preprocess, rewrite, compile or link, or malformed properties. `entityIds`: mc_Entity.xy
@@ -47,12 +48,12 @@ class PackRenderer {
   ~PackRenderer();
 
   void render(const FrameInputs& frame, const SectionMeshes& meshes, GLuint framebuffer, glm::ivec2 size,
-              std::vector<PassTiming>* timings = nullptr);
+              std::vector<PassTiming>* timings = nullptr) override;
 
-  const FrameStats& lastFrame() const { return stats_; }
+  const FrameStats& lastFrame() const override { return stats_; }
   // Where the last frame looked from, for reports; shadowMapShown when the pack has a shadow program
   // and names its shadow term for reports (shaders.properties: terrasol.report.shadow, .normal).
-  const FrameGeometry& lastGeometry() const { return geometry_; }
+  const FrameGeometry& lastGeometry() const override { return geometry_; }
   // The last frame as the shadow report reads a G-buffer: the opaque depth, the pack's normal (as the
   // vertex normal, octahedral) and its shadow term (in scene's alpha); nothing when the pack names no
   // buffers for them. Slow: reads them back.

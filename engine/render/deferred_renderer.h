@@ -29,10 +29,11 @@
 #include "render/passes/shadow_pass.h"
 #include "render/passes/translucent_pass.h"
 #include "render/section_meshes.h"
+#include "render/world_renderer.h"
 
 namespace terrasol {
 
-class DeferredRenderer {
+class DeferredRenderer final : public WorldRenderer {
  public:
   DeferredRenderer(const ShaderPreprocessor& shaders, const Atlas& atlas, const TintPalette& tints,
                    const RendererOptions& options = {});
@@ -41,15 +42,15 @@ class DeferredRenderer {
   // appended: from timer queries on a GPU, from glFinish and the wall clock on llvmpipe (whose timer
   // queries measure nothing useful).
   void render(const FrameInputs& frame, const SectionMeshes& meshes, GLuint framebuffer, glm::ivec2 size,
-              std::vector<PassTiming>* timings = nullptr);
+              std::vector<PassTiming>* timings = nullptr) override;
 
   // The targets of the last frame (for tests and reports), null before the first.
   const GBuffer* gbuffer() const { return gbuffer_ ? &*gbuffer_ : nullptr; }
-  const FrameStats& lastFrame() const { return stats_; }
+  const FrameStats& lastFrame() const override { return stats_; }
   // The shader variants built: each program's name with the defines that chose it ("gbuffer+CUTOUT").
   const std::vector<std::string>& shaderVariants() const { return shared_.variants; }
   const GBufferContents& gbufferContents() const { return shared_.contents; }
-  const FrameGeometry& lastGeometry() const { return lastGeometry_; }
+  const FrameGeometry& lastGeometry() const override { return lastGeometry_; }
   // The last frame's reflection march, read back (slow: for reports); none when the pass did not run.
   std::optional<ReflectionPixels> readReflections() const;
 

@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <optional>
 #include <string>
@@ -49,6 +50,8 @@ struct FrameInputs {
   const Props* props = nullptr;
   // Under water, the surface is seen from below and what lies beyond fades into the water's colour.
   std::optional<UnderWater> underWater;
+  // Block and sky light (0..15) at the camera's cell: shader packs' eyeBrightness.
+  glm::ivec2 eyeLight{0, 15};
   // The G-buffer, lighting and translucent passes draw at this fraction of the target's size (0.25..1),
   // and the final pass scales the picture up to it (render/dynamic_resolution.h moves it in the game).
   // Debug views always draw at 1.

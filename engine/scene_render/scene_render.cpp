@@ -13,6 +13,7 @@
 #include "scene/camera_path.h"
 #include "scene/pack_blocks.h"
 #include "scene/scene_world.h"
+#include "scene_render/eye_light.h"
 #include "scene_render/placed_props.h"
 #include "scene_render/under_water.h"
 
@@ -142,6 +143,11 @@ const PackRenderer* SceneRenderer::shaderPack() const {
   return gpu_->pack.get();
 }
 
+WorldRenderer& SceneRenderer::drawing() {
+  if (gpu_->pack) return *gpu_->pack;
+  return gpu_->renderer;
+}
+
 const terrasol::World& SceneRenderer::world() const {
   return world_->world.world();
 }
@@ -161,6 +167,7 @@ FrameInputs SceneRenderer::inputsFor(int frame) const {
   inputs.materialAo = scene_.materialAo;
   inputs.props = &gpu_->props.gpu();
   inputs.underWater = underWaterAt(world_->world.world(), world_->world.light(), camera.position);
+  inputs.eyeLight = eyeLightAt(world_->world.light(), camera.position);
   return inputs;
 }
 
@@ -180,13 +187,7 @@ RenderedFrame SceneRenderer::renderFrame(int frame, const FrameRequest& request)
   const GLuint fbo = gpu_->target.framebuffer();
   if (scene_.targetFps > 0) inputs.renderScale = resolution_.scale();
   const auto start = std::chrono::steady_clock::now();
-  if (gpu_->pack) {
-    gpu_->pack->render(inputs, gpu_->meshes, fbo, gpu_->target.size(),
-                       request.timed ? &out.timings : nullptr);
-  } else {
-    gpu_->renderer.render(inputs, gpu_->meshes, fbo, gpu_->target.size(),
-                          request.timed ? &out.timings : nullptr);
-  }
+  drawing().render(inputs, gpu_->meshes, fbo, gpu_->target.size(), request.timed ? &out.timings : nullptr);
   if (scene_.targetFps > 0) {
     glFinish();  // the frame's whole time, as the game measures it
     resolution_.update(
@@ -194,32 +195,27 @@ RenderedFrame SceneRenderer::renderFrame(int frame, const FrameRequest& request)
         scene_.targetFps);
   }
   out.image = gpu_->target.readPixels();
+  out.stats = drawing().lastFrame();
+  out.geometry = drawing().lastGeometry();
   if (gpu_->pack) {
-    out.stats = gpu_->pack->lastFrame();
+    // The pack's float buffers for NaN; its G-buffer, when it names one, for the shadow report.
     if (request.checkNan) out.nanPixels = gpu_->pack->nonFinitePixels();
-    out.geometry = gpu_->pack->lastGeometry();
     if (request.readBack) {
       if (auto pixels = gpu_->pack->readReport()) out.pixels = std::move(*pixels);
     }
     return out;
   }
-  out.stats = gpu_->renderer.lastFrame();
   if (request.checkNan || request.readBack) {
     out.pixels = gpu_->renderer.gbuffer()->read();
     out.nanPixels = nonFinitePixels(out.pixels);
   }
   if (request.readBack) out.reflections = gpu_->renderer.readReflections();
-  out.geometry = gpu_->renderer.lastGeometry();
   return out;
 }
 
 void SceneRenderer::draw(int frame, GLuint framebuffer, glm::ivec2 size) {
   advanceTo(frame);
-  if (gpu_->pack) {
-    gpu_->pack->render(inputsFor(frame), gpu_->meshes, framebuffer, size);
-  } else {
-    gpu_->renderer.render(inputsFor(frame), gpu_->meshes, framebuffer, size);
-  }
+  drawing().render(inputsFor(frame), gpu_->meshes, framebuffer, size);
 }
 
 Image SceneRenderer::render(std::vector<PassTiming>* timings) {

@@ -72,7 +72,9 @@ class SceneRenderer {
   struct Gpu;
   struct World;
   FrameInputs inputsFor(int frame) const;
-  void advanceTo(int frame);  // edits keyed to frames up to `frame`, their meshes and the props' light
+  void advanceTo(int frame);
+  WorldRenderer& drawing();  // the shader pack when there is one, else the deferred renderer  // edits keyed
+                             // to frames up to `frame`, their meshes and the props' light
 
   SceneFile scene_;
   DebugView debugView_;

@@ -3,16 +3,13 @@
 // draws, corners in [0,1]^2 as both position and UV, drawn as a four-vertex strip. Spliced after the
 // rewrite's declarations (engine/shaderpack/glsl_rewriter.h).
 
+#include "pack/lib/flat_inputs.glsl"
+
 void tsol_readVertex() {
   vec2 corner = vec2(gl_VertexID & 1, gl_VertexID >> 1);
   tsol_Vertex = vec4(corner, 0.0, 1.0);
   tsol_Normal = vec3(0.0, 0.0, 1.0);
   tsol_Color = vec4(1.0);
   tsol_MultiTexCoord0 = vec4(corner, 0.0, 1.0);
-  tsol_MultiTexCoord1 = vec4(vec2(PACK_LIGHT_SCALE), 0.0, 1.0);
-  tsol_Entity = vec4(-1.0);
-  tsol_MidTexCoord = vec4(0.5, 0.5, 0.0, 1.0);
-  tsol_Tangent = vec4(1.0, 0.0, 0.0, 1.0);
-  tsol_MidBlock = vec4(0.0);
-  tsol_Velocity = vec4(0.0);
+  tsol_readFlatInputs();
 }

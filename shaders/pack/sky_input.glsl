@@ -3,6 +3,8 @@
 // in player space, colour and UV from a small vertex buffer. Spliced after the rewrite's declarations
 // (engine/shaderpack/glsl_rewriter.h).
 
+#include "pack/lib/flat_inputs.glsl"
+
 layout(location = ATTRIB_POSITION) in vec3 tsol_skyPosition;
 layout(location = ATTRIB_COLOR) in vec4 tsol_skyColor;
 layout(location = ATTRIB_UV) in vec2 tsol_skyUv;
@@ -12,10 +14,5 @@ void tsol_readVertex() {
   tsol_Normal = vec3(0.0, 1.0, 0.0);
   tsol_Color = tsol_skyColor;
   tsol_MultiTexCoord0 = vec4(tsol_skyUv, 0.0, 1.0);
-  tsol_MultiTexCoord1 = vec4(vec2(PACK_LIGHT_SCALE), 0.0, 1.0);
-  tsol_Entity = vec4(-1.0);
-  tsol_MidTexCoord = vec4(0.5, 0.5, 0.0, 1.0);
-  tsol_Tangent = vec4(1.0, 0.0, 0.0, 1.0);
-  tsol_MidBlock = vec4(0.0);
-  tsol_Velocity = vec4(0.0);
+  tsol_readFlatInputs();
 }

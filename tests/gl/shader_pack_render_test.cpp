@@ -51,6 +51,17 @@ SceneFile packScene(const std::filesystem::path& pack) {
   return scene;
 }
 
+// The colour at the middle of the packScene frame drawn with `pack` (its buffers at `renderScale`).
+glm::ivec3 centre(const std::filesystem::path& pack, float renderScale = 1.0f) {
+  SceneFile scene = packScene(pack);
+  scene.renderScale = renderScale;
+  SceneRenderer renderer(scene);
+  EXPECT_TRUE(renderer.shaderPack()) << renderer.stats().shaderpackError;
+  const Image image = renderer.renderFrame(0).image;
+  const std::uint8_t* p = image.pixel(image.width / 2, image.height / 2);
+  return {p[0], p[1], p[2]};
+}
+
 using ShaderPackRenderTest = testing::GlTest;
 
 TEST_F(ShaderPackRenderTest, EveryProgramOfTheTestPacksCompilesAndLinks) {
@@ -129,19 +140,14 @@ TEST_F(ShaderPackRenderTest, CompositePassesFlipTheBuffersTheyWrite) {
            "void main() {\n/* DRAWBUFFERS:0 */\n"
            "  gl_FragData[0] = vec4(texture2D(colortex1, uv).r, texture2D(colortex2, uv).r, 0.0, 1.0);\n}\n"},
   };
-  const auto centre = [&](const std::filesystem::path& pack) {
-    SceneRenderer renderer(packScene(pack));
-    EXPECT_TRUE(renderer.shaderPack()) << renderer.stats().shaderpackError;
-    const Image image = renderer.renderFrame(0).image;
-    const std::uint8_t* p = image.pixel(image.width / 2, image.height / 2);
-    return glm::ivec2(p[0], p[1]);
-  };
-  const glm::ivec2 flipped = centre(writePack("flip_pack", files));
+  const std::filesystem::path pack = writePack("flip_pack", files);
+  const glm::ivec3 flipped = centre(pack);
   EXPECT_NEAR(flipped.x, 191, 1) << "0.25 + (0.25 + 0.25)";
   EXPECT_NEAR(flipped.y, 128, 1) << "0.25 + 0.25";
+  EXPECT_EQ(centre(pack, 0.5f), flipped) << "buffers at half the size, scaled up to the target";
 
   files.push_back({"shaders.properties", "flip.composite2.colortex2=true\n"});
-  const glm::ivec2 forced = centre(writePack("flip_pack_forced", files));
+  const glm::ivec3 forced = centre(writePack("flip_pack_forced", files));
   EXPECT_NEAR(forced.x, 191, 1);
   EXPECT_EQ(forced.y, 0) << "colortex2 flipped back to the buffer composite1 did not write: cleared";
 }
@@ -173,13 +179,6 @@ TEST_F(ShaderPackRenderTest, ShadersPropertiesSwitchesChangeThePicture) {
       {"final.fsh",
        "#version 120\nuniform sampler2D noisetex;\nvarying vec2 uv;\n"
        "void main() { gl_FragColor = texture2D(noisetex, uv); }\n"},
-  };
-  const auto centre = [&](const std::filesystem::path& pack) {
-    SceneRenderer renderer(packScene(pack));
-    EXPECT_TRUE(renderer.shaderPack()) << renderer.stats().shaderpackError;
-    const Image image = renderer.renderFrame(0).image;
-    const std::uint8_t* p = image.pixel(image.width / 2, image.height / 2);
-    return glm::ivec3(p[0], p[1], p[2]);
   };
   const auto dir = writePack("noise_pack", files);
   Image red(4, 4);
