@@ -26,6 +26,10 @@ inline constexpr int kMaxShadowCascades = 4;
 enum class SpecularModel { BlinnPhong, Ggx };
 inline constexpr EnumNames<SpecularModel, 2> kSpecularModels{{"blinn_phong", "ggx"}};
 
+// Anti-aliasing of the final image: none, or FXAA (a post pass on the display image).
+enum class Antialiasing { None, Fxaa };
+inline constexpr EnumNames<Antialiasing, 2> kAntialiasingModes{{"none", "fxaa"}};
+
 // What the debug views show, in this order ("none" = the lit image): G-buffer channels, then the
 // reflection pass's hit mask and what it added (black when the pass did not run).
 // debug_view.frag gets each value as DEBUG_VIEW_<NAME> (render/shader_defines.cpp).

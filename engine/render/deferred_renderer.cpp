@@ -23,6 +23,7 @@ DeferredRenderer::DeferredRenderer(const ShaderPreprocessor& shaders, const Atla
       translucent_(VariantBuilder(shaders, shared_), shared_),
       shadow_(VariantBuilder(shaders, shared_), shared_),
       final_(VariantBuilder(shaders, shared_), shared_),
+      fxaa_(VariantBuilder(shaders, shared_), shared_),
       debug_(VariantBuilder(shaders, shared_), shared_),
       outline_(VariantBuilder(shaders, shared_), shared_),
       gpuTimer_(!softwareRenderer()) {}
@@ -44,6 +45,10 @@ void DeferredRenderer::render(const FrameInputs& inputs, const SectionMeshes& me
   Frame frame{inputs, meshes, stats_};
   frame.view = viewFor(inputs, size);
   frame.target = framebuffer;
+  frame.finalTarget = framebuffer;
+  if (shared_.options.antialiasing == Antialiasing::Fxaa && inputs.debugView == DebugView::None) {
+    std::tie(frame.finalImage, frame.finalTarget) = fxaa_.image(targetSize);
+  }
   frame.size = size;
   frame.targetSize = targetSize;
   frame.shadow = shadow_.lookup();
@@ -57,10 +62,15 @@ void DeferredRenderer::render(const FrameInputs& inputs, const SectionMeshes& me
     if (!gbuffer_ || gbuffer_->size() != size) gbuffer_.emplace(size, shared_.contents);
     frame.gbuffer = &*gbuffer_;
   };
-  frame.resources = {graph.transient("gbuffer", realizeTargets), graph.transient("scene", realizeTargets),
-                     graph.import("shadow_map"), graph.import("target"), graph.transient("reflections")};
-  for (RenderPass* pass : std::initializer_list<RenderPass*>{&shadow_, &geometry_, &lighting_, &reflection_,
-                                                             &translucent_, &final_, &debug_, &outline_}) {
+  frame.resources = {graph.transient("gbuffer", realizeTargets),
+                     graph.transient("scene", realizeTargets),
+                     graph.import("shadow_map"),
+                     graph.import("target"),
+                     graph.transient("reflections"),
+                     graph.transient("image")};
+  for (RenderPass* pass :
+       std::initializer_list<RenderPass*>{&shadow_, &geometry_, &lighting_, &reflection_, &translucent_,
+                                          &final_, &fxaa_, &debug_, &outline_}) {
     addPass(graph, *pass, frame);
   }
   graph.output(frame.resources.target);

@@ -65,6 +65,7 @@ class DeferredRenderer final : public WorldRenderer {
   TranslucentPass translucent_;
   ShadowPass shadow_;
   FinalPass final_;
+  FxaaPass fxaa_;
   DebugViewPass debug_;
   OutlinePass outline_;
   std::optional<GBuffer> gbuffer_;

@@ -51,6 +51,7 @@ struct ShadowLookup {
 struct FrameResources {
   FrameGraph::Resource gbuffer, scene, shadowMap, target;
   FrameGraph::Resource reflections;  // the reflection pass's own targets (its debug views read them)
+  FrameGraph::Resource image;        // the final image before anti-aliasing (when it is on)
 };
 
 // The reflection pass's targets this frame: from opaque surfaces (for the debug views), and from
@@ -74,8 +75,11 @@ struct Frame {
   FrameResources resources{};
   GBuffer* gbuffer = nullptr;  // realized by the graph before the first pass that needs it
   GLuint target = 0;           // the framebuffer drawn into (0: a window)
-  glm::ivec2 size{0};          // the scene's: the G-buffer's and every pass's before the final one
-  glm::ivec2 targetSize{0};    // the target's: the final pass scales the scene up to it
+  // Where the final pass draws: the target, or with anti-aliasing on the image the FXAA pass reads.
+  GLuint finalTarget = 0;
+  GLuint finalImage = 0;     // that image's texture (0: none)
+  glm::ivec2 size{0};        // the scene's: the G-buffer's and every pass's before the final one
+  glm::ivec2 targetSize{0};  // the target's: the final pass scales the scene up to it
   ShadowLookup shadow;
   ReflectionTargets reflections;
   // The shadow pass drew or kept the map this frame. (A frame whose passes never read the map, a debug

@@ -75,6 +75,7 @@ struct RendererOptions {
   bool leaveOutAbsentMaps = true;
   ShadowSettings shadow;
   ReflectionSettings reflections;
+  Antialiasing antialiasing = Antialiasing::None;
   WaterSettings water;
   PropNeeds props;  // what the props to be drawn need: no prop variant is built for none
 };

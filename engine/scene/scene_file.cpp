@@ -231,10 +231,11 @@ nlohmann::json shadowJson(const ShadowSettings& s) {
 namespace {
 
 void parseRender(const json& render, const path& sceneDir, SceneFile& scene) {
-  checkObject(render, "render",
-              {"width", "height", "scale", "target_fps", "view_distance", "debug_view", "specular",
-               "material_ao", "cave_culling", "shadow_caster_culling", "cull_faces_away",
-               "leave_out_absent_maps", "cull_passes", "shadow", "reflections", "water", "shaderpack"});
+  checkObject(
+      render, "render",
+      {"width", "height", "scale", "target_fps", "view_distance", "debug_view", "specular", "material_ao",
+       "cave_culling", "shadow_caster_culling", "cull_faces_away", "leave_out_absent_maps", "cull_passes",
+       "shadow", "reflections", "water", "shaderpack", "antialiasing"});
   if (const json* v = field(render, "shaderpack")) {
     scene.shaderpack = resolvePath(nonEmptyString(*v, "render.shaderpack"), sceneDir, "render.shaderpack");
   }
@@ -261,6 +262,8 @@ void parseRender(const json& render, const path& sceneDir, SceneFile& scene) {
     scene.specular = enumOf(*v, "render.specular", kSpecularModels);
   if (const json* v = field(render, "material_ao")) scene.materialAo = boolean(*v, "render.material_ao");
   if (const json* v = field(render, "cave_culling")) scene.caveCulling = boolean(*v, "render.cave_culling");
+  if (const json* v = field(render, "antialiasing"))
+    scene.antialiasing = enumOf(*v, "render.antialiasing", kAntialiasingModes);
   if (const json* v = field(render, "shadow_caster_culling")) {
     scene.shadowCasterCulling = boolean(*v, "render.shadow_caster_culling");
   }

@@ -75,8 +75,9 @@ struct SceneFile {
   int targetFps = 0;              // render.target_fps: dynamic resolution below render.scale; 0: off
   DebugView debugView = DebugView::None;               // "render.debug_view": one of kDebugViews
   SpecularModel specular = SpecularModel::BlinnPhong;  // "render.specular": one of kSpecularModels
-  bool materialAo = true;           // "render.material_ao": LabPBR _n blue darkens ambient light
-  bool caveCulling = true;          // "render.cave_culling": leave out sections hidden behind solid ground
+  bool materialAo = true;   // "render.material_ao": LabPBR _n blue darkens ambient light
+  bool caveCulling = true;  // "render.cave_culling": leave out sections hidden behind solid ground
+  Antialiasing antialiasing = Antialiasing::None;  // "render.antialiasing": one of kAntialiasingModes
   bool shadowCasterCulling = true;  // "render.shadow_caster_culling": no caster shading nothing in view
   bool leaveOutAbsentMaps = true;   // "render.leave_out_absent_maps": no _n/_s sampling when no pack has them
   bool cullFacesAway = true;        // "render.cull_faces_away": face groups turned away are not drawn

@@ -115,6 +115,7 @@ SceneRenderer::SceneRenderer(const SceneFile& scene)
   options.cullPasses = scene.cullPasses;
   options.reflections = scene.reflections;
   options.water = scene.water;
+  options.antialiasing = scene.antialiasing;
   gpu_ = std::make_unique<Gpu>(shaders, world_->atlas.atlas, world_->atlas.tints, options,
                                glm::ivec2(scene.width, scene.height), scene, world_->world);
   if (!scene.shaderpack.empty()) {

@@ -4,9 +4,11 @@
 
 #include "scene_render/scene_render.h"
 
+#include <cstdio>
 #include <filesystem>
 #include <limits>
 
+#include "scene_render/aa_error.h"
 #include "support/gl_test.h"
 #include "support/golden.h"
 #include "support/test_data.h"
@@ -88,6 +90,25 @@ TEST_F(SceneRenderTest, StarsShowOnTheNightSkyAndNotByDay) {
   EXPECT_GT(stars(render(scene)), 20) << "midnight";
   scene.time = 6000;
   EXPECT_EQ(stars(render(scene)), 0) << "noon";
+}
+
+// FXAA brings a frame nearer its supersampled truth (render.antialiasing), and changes nothing when off.
+TEST_F(SceneRenderTest, FxaaBringsTheFrameNearerItsSupersampledTruth) {
+  SceneFile scene = loadScene(kScenes / "shadow_noon.json");
+  scene.width = 160;
+  scene.height = 90;
+  SceneFile big = scene;
+  big.width *= 3;
+  big.height *= 3;
+  const Image truth = downsample(render(big), 3);
+  const AaError none = measureAaError(render(scene), truth);
+  scene.antialiasing = Antialiasing::Fxaa;
+  const AaError fxaa = measureAaError(render(scene), truth);
+  EXPECT_LT(fxaa.mean, none.mean);
+  EXPECT_LT(fxaa.edgeOverPct, none.edgeOverPct);
+  EXPECT_GT(none.edgePixels, 500u) << "a scene with edges";
+  std::printf("aa_error against 3x3 supersampling: none mean %.4f edges over %.1f %%, fxaa %.4f, %.1f %%\n",
+              none.mean, none.edgeOverPct, fxaa.mean, fxaa.edgeOverPct);
 }
 
 TEST_F(SceneRenderTest, TheSameSceneRendersToIdenticalPixelsTwice) {

@@ -20,6 +20,7 @@
 #include "platform/egl/egl_context.h"
 #include "progress.h"
 #include "render/gl/program.h"
+#include "scene_render/aa_error.h"
 #include "scene_render/reflection_truth.h"
 #include "scene_render/scene_render.h"
 #include "scene_render/shadow_truth.h"
@@ -35,6 +36,7 @@ struct Options {
   std::vector<std::string> overrides;
   std::vector<Sweep> sweeps;
   bool updateGoldens = false, timings = false, noImages = false, gameShadows = false;
+  int referenceSupersample = 0;  // 0: no anti-aliasing error measured
   std::optional<float> threshold, maxFailing;
 };
 
@@ -48,6 +50,9 @@ const char* const kUsage =
     "  --report FILE.json     per-frame report: ms per pass, NaN/Inf pixels, sections drawn and culled,\n"
     "                         shadow and reflection error against the ray-traced truth; the GL renderer\n"
     "  --timings              print ms per pass (after a warm-up frame)\n"
+    "  --reference-supersample N\n"
+    "                         also draw each frame N x N times larger with no anti-aliasing, average it\n"
+    "                         down and report aa_error against it (mean, p99, edge_over_pct)\n"
     "  --shaderpack PATH      draw with an OptiFine/Iris shader pack (folder or .zip) instead of\n"
     "                         Terrasol's pipeline (the scene's render.shaderpack)\n"
     "  --game-shadows         keep and spread the shadow map as the game does (FrameInputs::reuseShadowMap)\n"
@@ -96,7 +101,11 @@ Options parseOptions(int argc, char** argv) {
       o.report = value(i, arg);
     else if (arg == "--timings")
       o.timings = true;
-    else if (arg == "--shaderpack")
+    else if (arg == "--reference-supersample") {
+      const float n = numberArgument(arg, value(i, arg));
+      if (n != std::floor(n) || n < 2 || n > 8) throw UsageError(arg + ": expected a whole number 2..8");
+      o.referenceSupersample = static_cast<int>(n);
+    } else if (arg == "--shaderpack")
       o.shaderpack = std::filesystem::absolute(value(i, arg));
     else if (arg == "--no-images")
       o.noImages = true;
@@ -223,12 +232,32 @@ int renderScene(const Options& o, const SceneFile& scene, SceneRenderer& rendere
   request.readBack = !o.report.empty();
   request.reuseShadowMap = o.gameShadows;
   if (request.timed) renderer.renderFrame(0);  // warm-up: first-use costs are not a pass's time
+  // The truth for anti-aliasing: the same scene N x N times larger, drawn without it.
+  std::optional<SceneRenderer> reference;
+  if (o.referenceSupersample > 0) {
+    SceneFile big = scene;
+    big.width *= o.referenceSupersample;
+    big.height *= o.referenceSupersample;
+    big.antialiasing = Antialiasing::None;
+    big.renderScale = 1.0f;
+    big.targetFps = 0;
+    reference.emplace(big);
+  }
   for (int i = 0; i < renderer.frames(); ++i) {
     const auto start = std::chrono::steady_clock::now();
     const RenderedFrame frame = renderer.renderFrame(i, request);
     if (!o.noImages) saveImage(o.out / frameName("frame", i), frame.image);
+    std::optional<AaError> aaError;
+    if (reference) {
+      aaError =
+          measureAaError(frame.image, downsample(reference->renderFrame(i).image, o.referenceSupersample));
+      progress.line(frameName("frame", i) + ": aa_error mean " + std::to_string(aaError->mean).substr(0, 6) +
+                    " p99 " + std::to_string(aaError->p99).substr(0, 6) + " edges over " +
+                    std::to_string(aaError->edgeOverPct).substr(0, 5) + " %");
+    }
     if (!o.report.empty()) {
       frames.push_back(frameReport(i, frame));
+      if (aaError) frames.back()["aa_error"] = aaErrorJson(*aaError, o.referenceSupersample);
       if (frame.geometry.shadowMapShown)
         frames.back()["shadow_error"] = shadowReport(renderer, i, frame, request);
       if (frame.reflections) {

@@ -19,14 +19,41 @@ void drawFullScreen(GLuint program, const PassShared& shared, GLenum mode, GLsiz
   glUseProgram(0);
 }
 
-void bindTarget(const Frame& frame) {
-  glBindFramebuffer(GL_FRAMEBUFFER, frame.target);
+void bindTarget(const Frame& frame, GLuint framebuffer) {
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
   glViewport(0, 0, frame.targetSize.x, frame.targetSize.y);
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_CULL_FACE);
 }
 
 }  // namespace
+
+FxaaPass::FxaaPass(const VariantBuilder& build, PassShared& shared)
+    : shared_(shared),
+      fxaa_(shared.options.antialiasing == Antialiasing::Fxaa ? build("fullscreen.vert", "fxaa.frag").program
+                                                              : gl::Program()) {}
+
+std::pair<GLuint, GLuint> FxaaPass::image(glm::ivec2 size) {
+  if (size_ != size) {
+    size_ = size;
+    image_ = targetTexture(GL_RGBA8, size, GL_LINEAR);
+    framebuffer_ = gl::Framebuffer::create();
+    glNamedFramebufferTexture(framebuffer_.id(), GL_COLOR_ATTACHMENT0, image_.id(), 0);
+  }
+  return {image_.id(), framebuffer_.id()};
+}
+
+void FxaaPass::setup(FrameGraph::Builder& builder, Frame& frame) {
+  if (!frame.finalImage) return builder.skip("anti-aliasing is off");
+  builder.read(frame.resources.image);
+  builder.write(frame.resources.target);
+}
+
+void FxaaPass::execute(Frame& frame) {
+  bindTarget(frame, frame.target);
+  glBindTextureUnit(0, frame.finalImage);
+  drawFullScreen(fxaa_.id(), shared_, GL_TRIANGLES, 3);
+}
 
 FinalPass::FinalPass(const VariantBuilder& build, PassShared& shared)
     : shared_(shared),
@@ -35,14 +62,14 @@ FinalPass::FinalPass(const VariantBuilder& build, PassShared& shared)
 
 void FinalPass::setup(FrameGraph::Builder& builder, Frame& frame) {
   builder.read(frame.resources.scene);
-  builder.write(frame.resources.target);
+  builder.write(frame.finalImage ? frame.resources.image : frame.resources.target);
 }
 
 void FinalPass::execute(Frame& frame) {
   glBindTextureUnit(0, frame.gbuffer->scene());
   final_.u.exposure.set(kExposure);
   if (frame.size == frame.targetSize) {
-    bindTarget(frame);
+    bindTarget(frame, frame.finalTarget);
     drawFullScreen(final_.id(), shared_, GL_TRIANGLES, 3);
     return;
   }
@@ -58,7 +85,7 @@ void FinalPass::execute(Frame& frame) {
   glDisable(GL_CULL_FACE);
   drawFullScreen(final_.id(), shared_, GL_TRIANGLES, 3);
 
-  bindTarget(frame);
+  bindTarget(frame, frame.finalTarget);
   glBindTextureUnit(0, image_.id());
   const glm::vec2 scale = glm::vec2(frame.size) / glm::vec2(frame.targetSize);
   upscale_.u.sceneScale.set(scale);
@@ -81,7 +108,7 @@ void DebugViewPass::setup(FrameGraph::Builder& builder, Frame& frame) {
 void DebugViewPass::execute(Frame& frame) {
   const Debug& u = debug_.u;
   u.view.set(static_cast<int>(frame.inputs.debugView));
-  bindTarget(frame);
+  bindTarget(frame, frame.target);
   frame.gbuffer->bindForReading();
   glBindTextureUnit(slots::kUnitReflection, frame.reflections.added);
   glBindTextureUnit(slots::kUnitReflectionHits, frame.reflections.hits);
@@ -106,7 +133,7 @@ void OutlinePass::setup(FrameGraph::Builder& builder, Frame& frame) {
 void OutlinePass::execute(Frame& frame) {
   constexpr double kGrow = 0.002;  // Minecraft's: keeps the edges off the block's faces
   const WorldBox& box = *frame.inputs.outline;
-  bindTarget(frame);
+  bindTarget(frame, frame.target);
   glEnable(GL_BLEND);
   glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
   glBindTextureUnit(0, frame.gbuffer->depth());

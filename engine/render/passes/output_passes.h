@@ -36,6 +36,24 @@ class FinalPass final : public RenderPass {
   gl::Framebuffer imageTarget_;
 };
 
+// FXAA over the final image, into the target (render.antialiasing "fxaa").
+class FxaaPass final : public RenderPass {
+ public:
+  FxaaPass(const VariantBuilder& build, PassShared& shared);
+  const char* name() const override { return "fxaa"; }
+  void setup(FrameGraph::Builder& builder, Frame& frame) override;
+  void execute(Frame& frame) override;
+  // The final image's texture and framebuffer at `size` (made on first use or a new size).
+  std::pair<GLuint, GLuint> image(glm::ivec2 size);
+
+ private:
+  PassShared& shared_;
+  gl::Program fxaa_;
+  glm::ivec2 size_{0};
+  gl::Texture image_;
+  gl::Framebuffer framebuffer_;
+};
+
 // Writes the target without reading the lit scene, so the graph leaves out what only the final image needs.
 class DebugViewPass final : public RenderPass {
  public:
