@@ -24,15 +24,19 @@ PackStack openPacks(const std::vector<PackChoice>& packs, std::vector<std::strin
   return stack;
 }
 
-std::unique_ptr<DeferredRenderer> makeRenderer(const BlockAssets& assets, const ShadowSettings& shadow,
-                                               const ReflectionSettings& reflections,
-                                               const PropNeeds& props) {
-  RendererOptions options;
-  options.shadow = shadow;
-  options.reflections = reflections;
-  options.props = props;
+std::unique_ptr<DeferredRenderer> makeRenderer(const BlockAssets& assets, const RendererOptions& options) {
   return std::make_unique<DeferredRenderer>(ShaderPreprocessor(shaderDir()), assets.atlas.atlas,
                                             assets.atlas.tints, options);
+}
+
+// The settings that pick the renderer's variants.
+RendererOptions optionsOf(const GameSettings& settings, const PropNeeds& props) {
+  RendererOptions options;
+  options.shadow = settings.shadow;
+  options.reflections = settings.reflections;
+  options.antialiasing = settings.antialiasing;
+  options.props = props;
+  return options;
 }
 
 }  // namespace
@@ -69,9 +73,8 @@ GameRenderer::GameRenderer(const BlockRegistry& blocks, const GameSettings& sett
                            const BlockModelBake* defaultBake)
     : blocks_(blocks),
       assets_(BlockAssets::load(blocks, settings.packs, defaultBake)),
-      renderer_(makeRenderer(*assets_, settings.shadow, settings.reflections, {})),
-      shadow_(settings.shadow),
-      reflections_(settings.reflections),
+      options_(optionsOf(settings, {})),
+      renderer_(makeRenderer(*assets_, options_)),
       iconStates_(terrasol::iconStates(blocks, assets_->atlas.placeholders)),
       iconOfBlock_(blocks.blockCount(), -1) {
   for (std::size_t i = 0; i < iconStates_.size(); ++i) {
@@ -87,22 +90,25 @@ std::unique_ptr<BlockAssets> GameRenderer::loadPacks(const std::vector<PackChoic
 void GameRenderer::commit(std::unique_ptr<BlockAssets> assets) {
   assets_ = std::move(assets);
   icons_.reset();  // drawn with the new packs when next shown
-  renderer_ = makeRenderer(*assets_, shadow_, reflections_, propNeeds_);
+  renderer_ = makeRenderer(*assets_, options_);
   setShaderPack(shaderPackPath_);  // over the new atlas
   meshes_.clear();                 // their tiles index the old atlas; the remeshed sections come back
 }
 
 void GameRenderer::applySettings(const GameSettings& settings) {
-  if (settings.shadow == shadow_ && settings.reflections == reflections_) return;
-  shadow_ = settings.shadow;
-  reflections_ = settings.reflections;
-  renderer_ = makeRenderer(*assets_, shadow_, reflections_, propNeeds_);
+  const RendererOptions options = optionsOf(settings, options_.props);
+  if (options.shadow == options_.shadow && options.reflections == options_.reflections &&
+      options.antialiasing == options_.antialiasing) {
+    return;
+  }
+  options_ = options;
+  renderer_ = makeRenderer(*assets_, options_);
 }
 
 void GameRenderer::setPropNeeds(const PropNeeds& needs) {
-  if (needs == propNeeds_) return;
-  propNeeds_ = needs;
-  renderer_ = makeRenderer(*assets_, shadow_, reflections_, propNeeds_);
+  if (needs == options_.props) return;
+  options_.props = needs;
+  renderer_ = makeRenderer(*assets_, options_);
 }
 
 const BlockIcons& GameRenderer::icons() {

@@ -75,13 +75,12 @@ class GameRenderer {
 
   const BlockRegistry& blocks_;
   std::unique_ptr<BlockAssets> assets_;
+  RendererOptions options_;  // before the renderer, which is built with them
   std::unique_ptr<DeferredRenderer> renderer_;
   std::filesystem::path shaderPackPath_;
   std::unique_ptr<PackRenderer> pack_;
   std::string shaderPackError_;
-  ShadowSettings shadow_;
-  ReflectionSettings reflections_;
-  PropNeeds propNeeds_;
+
   SectionMeshes meshes_;
   std::vector<BlockId> iconStates_;
   std::vector<int> iconOfBlock_;  // per block type: its icon, or -1

@@ -162,6 +162,7 @@ void Menu::settingsTab(GameSettings& s, MenuResult& out) {
   out.rendererChanged |= released();
   ImGui::Separator();
   ImGui::TextUnformatted("Reflections (smooth blocks, water, glass)");
+  out.rendererChanged |= comboOf("Anti-aliasing", s.antialiasing, kAntialiasingModes);
   ReflectionSettings& r = s.reflections;
   out.rendererChanged |= ImGui::Checkbox("Reflections", &r.enabled);
   ImGui::SliderFloat("Resolution scale", &r.resolutionScale, kMinRenderScale, kMaxRenderScale, "%.2f");

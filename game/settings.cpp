@@ -43,9 +43,10 @@ void parseKeys(const json& value, KeyBindings& keys) {
 }
 
 GameSettings parseRoot(const json& root, const path& dir) {
-  checkObject(root, "",
-              {"view_distance", "fov", "mouse_sensitivity", "sun_path_rotation", "shadow", "reflections",
-               "packs", "shaderpack", "keys", "vsync", "render_scale", "target_fps", "first_run"});
+  checkObject(
+      root, "",
+      {"view_distance", "fov", "mouse_sensitivity", "sun_path_rotation", "shadow", "reflections",
+       "antialiasing", "packs", "shaderpack", "keys", "vsync", "render_scale", "target_fps", "first_run"});
   GameSettings s;
   if (const json* v = field(root, "view_distance"))
     s.viewDistance = static_cast<int>(wholeNumber(*v, "view_distance", 2, 32));
@@ -56,6 +57,8 @@ GameSettings parseRoot(const json& root, const path& dir) {
     s.sunPathRotation = numberIn(*v, "sun_path_rotation", -90.0, 90.0, false);
   if (const json* v = field(root, "shadow")) parseShadow(*v, "shadow", s.shadow);
   if (const json* v = field(root, "reflections")) parseReflections(*v, "reflections", s.reflections);
+  if (const json* v = field(root, "antialiasing"))
+    s.antialiasing = enumOf(*v, "antialiasing", kAntialiasingModes);
   if (const json* v = field(root, "packs")) s.packs = parsePacks(*v, dir);
   // "": Terrasol's own pipeline.
   if (const json* v = field(root, "shaderpack"); v && !(v->is_string() && v->get<std::string>().empty()))
@@ -108,6 +111,7 @@ void saveSettings(const std::filesystem::path& file, const GameSettings& s) {
                {"sun_path_rotation", s.sunPathRotation},
                {"shadow", shadowJson(s.shadow)},
                {"reflections", reflectionsJson(s.reflections)},
+               {"antialiasing", std::string(kAntialiasingModes.nameOf(s.antialiasing))},
                {"packs", packs},
                {"shaderpack", s.shaderpack.string()},
                {"keys", keys},

@@ -34,8 +34,9 @@ struct GameSettings {
   float mouseSensitivity = 0.15f;  // degrees per pixel, 0.01..2
   float sunPathRotation = -25.0f;  // degrees, -90..90
   ShadowSettings shadow = defaultShadow();
-  ReflectionSettings reflections;    // as in scenes
-  std::vector<PackChoice> packs;     // stacked bottom to top over the default pack
+  ReflectionSettings reflections;                  // as in scenes
+  Antialiasing antialiasing = Antialiasing::None;  // "antialiasing": as render.antialiasing in scenes
+  std::vector<PackChoice> packs;                   // stacked bottom to top over the default pack
   std::filesystem::path shaderpack;  // an OptiFine/Iris shader pack drawing instead of Terrasol's pipeline
   KeyBindings keys;
   bool vsync = true;

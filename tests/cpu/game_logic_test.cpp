@@ -464,6 +464,7 @@ TEST(SettingsTest, SaveAndLoadRoundTripAndMissingMeansDefaults) {
   s.shadow.pcfSamples = 3;
   s.packs = {{dir / "packs" / "a", true}, {dir / "packs" / "b", false}};
   s.shaderpack = dir / "shaderpacks" / "a.zip";
+  s.antialiasing = Antialiasing::Fxaa;
   s.keys.bind(Action::Jump, GLFW_KEY_J);
   saveSettings(file, s);
   const GameSettings back = loadSettings(file);
@@ -474,6 +475,7 @@ TEST(SettingsTest, SaveAndLoadRoundTripAndMissingMeansDefaults) {
   EXPECT_EQ(back.shadow.pcfSamples, 3);
   EXPECT_EQ(back.packs, s.packs);
   EXPECT_EQ(back.shaderpack, s.shaderpack);
+  EXPECT_EQ(back.antialiasing, Antialiasing::Fxaa);
   EXPECT_TRUE(defaults.shaderpack.empty()) << "Terrasol's own pipeline";
   EXPECT_EQ(back.keys.key(Action::Jump), GLFW_KEY_J);
   EXPECT_EQ(back.keys.key(Action::Forward), GLFW_KEY_W);
