@@ -46,8 +46,9 @@ int Game::run() {
   save();
   settings_.save();
   if (!options_.report.empty())
-    writeReport(options_.report, world_, options_.probes, frames_.counts, input_.screen(),
-                interaction_.hotbar());
+    writeReport(
+        options_.report, world_, options_.probes, frames_.counts, input_.screen(), interaction_.hotbar(),
+        {renderer_.shaderPack() ? renderer_.shaderPack()->packName() : "", renderer_.shaderPackError()});
   return 0;
 }
 

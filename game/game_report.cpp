@@ -15,7 +15,7 @@ constexpr auto kProbeBudget = std::chrono::milliseconds(4);  // light work betwe
 }  // namespace
 
 void writeReport(const std::filesystem::path& file, PlayWorld& world, const std::vector<BlockPos>& probes,
-                 FrameCounts frames, Screen screen, const Hotbar& hotbar) {
+                 FrameCounts frames, Screen screen, const Hotbar& hotbar, const PipelineReport& pipeline) {
   const BlockRegistry& blocks = world.world().blocks();
   StreamedWorld& streamed = world.streamed();
   // Probes need their chunks: stream around each until it is loaded and lit (at most 30 s).
@@ -61,6 +61,8 @@ void writeReport(const std::filesystem::path& file, PlayWorld& world, const std:
                                             : screen == Screen::Inventory ? "inventory"
                                                                           : "none"},
                                  {"hotbar", slots},
+                                 {"shader_pack", pipeline.shaderPack},
+                                 {"shader_pack_error", pipeline.shaderPackError},
                                  {"edits", edits},
                                  {"props", props},
                                  {"probes", probed}};
