@@ -18,15 +18,19 @@
 
 #include "assets/atlas.h"
 #include "assets/image.h"
+#include "core/day_cycle.h"
 #include "core/tint_palette.h"
 #include "mesh/block_mesh_table.h"
 #include "pack_render/pack_program.h"
+#include "pack_render/pack_shadow_maps.h"
 #include "pack_render/pack_sky.h"
 #include "pack_render/pack_targets.h"
+#include "pack_render/pack_textures.h"
 #include "render/block_textures.h"
 #include "render/frame_inputs.h"
 #include "render/gbuffer.h"
 #include "render/pass_clock.h"
+#include "render/section_draw.h"
 #include "render/section_meshes.h"
 #include "render/world_renderer.h"
 #include "shaderpack/pack_frame_uniforms.h"
@@ -67,15 +71,26 @@ class PackRenderer final : public WorldRenderer {
   std::vector<std::string> unknownUniforms() const;
 
  private:
+  enum class StageKind { Shadow, SkyBasic, SkyTextured, Terrain, Deferred, Water, Composite, Final };
   struct Stage;
-  struct Textures;
-  void setUpFrame(const FrameInputs& inputs, glm::ivec2 size);
+  struct FrameState;
+  const Stage* stageOf(StageKind kind) const;
+  PackView viewFor(const FrameInputs& inputs, glm::ivec2 size, float sunPathRotation, const DayState& day);
+  std::vector<VisibleSection> shadowCasters(const FrameState& frame);
+  void drawBlocks(const Stage& stage, const FrameState& frame, const std::vector<VisibleSection>& sections,
+                  MeshLayer layer, DrawOrder order, FrameStats* stats);
+  void drawShadow(const Stage& shadow, const FrameState& frame, const std::vector<VisibleSection>& casters);
+  void drawSky(const FrameState& frame);
+  void drawTerrain(const Stage& terrain, const FrameState& frame);
+  void drawWater(const Stage* water, const FrameState& frame);
+  void drawScreen(const Stage& stage, const FrameState& frame);
 
   std::string packName_;
   ShaderProperties properties_;
   PackSettings settings_;
   BlockTextures blockTextures_;
-  std::unique_ptr<Textures> textures_;
+  std::unique_ptr<PackTextures> textures_;
+  std::unique_ptr<PackShadowMaps> shadowMaps_;
   std::vector<Stage> stages_;
   std::vector<std::string> names_;
   std::optional<PackTargets> targets_;

@@ -44,18 +44,18 @@ constexpr NamedFormat kGlFormats[] = {
 };
 #undef TERRASOL_FORMAT
 
-gl::Texture bufferTexture(GLenum format, glm::ivec2 size, int levels, GLenum filter) {
+}  // namespace
+
+gl::Texture packTexture(GLenum format, glm::ivec2 size, int levels, GLenum filter, GLenum wrap) {
   gl::Texture t = gl::Texture::create(GL_TEXTURE_2D);
   glTextureStorage2D(t.id(), levels, format, size.x, size.y);
   glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER,
                       static_cast<GLint>(levels > 1 ? GL_LINEAR_MIPMAP_LINEAR : filter));
   glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, static_cast<GLint>(filter));
-  glTextureParameteri(t.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  glTextureParameteri(t.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  glTextureParameteri(t.id(), GL_TEXTURE_WRAP_S, static_cast<GLint>(wrap));
+  glTextureParameteri(t.id(), GL_TEXTURE_WRAP_T, static_cast<GLint>(wrap));
   return t;
 }
-
-}  // namespace
 
 GLenum packInternalFormat(const PackFormat& format) {
   for (const NamedFormat& f : kGlFormats)
@@ -66,8 +66,8 @@ GLenum packInternalFormat(const PackFormat& format) {
 PackTargets::PackTargets(glm::ivec2 size, const PackSettings& settings, std::bitset<kPackColorBuffers> used)
     : size_(size),
       settings_(settings),
-      depth0_(bufferTexture(GL_DEPTH_COMPONENT32F, size, 1, GL_NEAREST)),
-      depth1_(bufferTexture(GL_DEPTH_COMPONENT32F, size, 1, GL_NEAREST)),
+      depth0_(packTexture(GL_DEPTH_COMPONENT32F, size, 1, GL_NEAREST)),
+      depth1_(packTexture(GL_DEPTH_COMPONENT32F, size, 1, GL_NEAREST)),
       framebuffer_(gl::Framebuffer::create()) {
   for (int b = 0; b < kPackColorBuffers; ++b) {
     if (!used[b]) continue;
@@ -78,7 +78,7 @@ PackTargets::PackTargets(glm::ivec2 size, const PackSettings& settings, std::bit
     // Integer formats cannot be filtered.
     const bool integer = p.format.kind == PackFormat::Kind::Int || p.format.kind == PackFormat::Kind::Uint;
     for (gl::Texture& t : buffer.textures)
-      t = bufferTexture(format, size, buffer.levels, integer ? GL_NEAREST : GL_LINEAR);
+      t = packTexture(format, size, buffer.levels, integer ? GL_NEAREST : GL_LINEAR);
   }
 }
 

@@ -16,6 +16,10 @@
 
 namespace terrasol {
 
+// A 2D texture of `levels` levels (trilinear when more than one), clamped or wrapped at its edges.
+gl::Texture packTexture(GLenum format, glm::ivec2 size, int levels, GLenum filter,
+                        GLenum wrap = GL_CLAMP_TO_EDGE);
+
 // The GL format of one of OptiFine's buffer formats.
 GLenum packInternalFormat(const PackFormat& format);
 
