@@ -35,6 +35,7 @@ RendererOptions optionsOf(const GameSettings& settings, const PropNeeds& props) 
   options.shadow = settings.shadow;
   options.reflections = settings.reflections;
   options.antialiasing = settings.antialiasing;
+  options.bloom = settings.bloom;
   options.props = props;
   return options;
 }
@@ -98,7 +99,7 @@ void GameRenderer::commit(std::unique_ptr<BlockAssets> assets) {
 void GameRenderer::applySettings(const GameSettings& settings) {
   const RendererOptions options = optionsOf(settings, options_.props);
   if (options.shadow == options_.shadow && options.reflections == options_.reflections &&
-      options.antialiasing == options_.antialiasing) {
+      options.antialiasing == options_.antialiasing && options.bloom == options_.bloom) {
     return;
   }
   options_ = options;

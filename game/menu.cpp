@@ -161,8 +161,13 @@ void Menu::settingsTab(GameSettings& s, MenuResult& out) {
   ImGui::SliderInt("Update over frames", &sh.updateFrames, 1, 16);
   out.rendererChanged |= released();
   ImGui::Separator();
-  ImGui::TextUnformatted("Reflections (smooth blocks, water, glass)");
+  ImGui::TextUnformatted("Image");
   out.rendererChanged |= comboOf("Anti-aliasing", s.antialiasing, kAntialiasingModes);
+  out.rendererChanged |= ImGui::Checkbox("Bloom", &s.bloom.enabled);
+  ImGui::SliderFloat("Bloom strength", &s.bloom.strength, 0.0f, 0.2f, "%.2f");
+  out.rendererChanged |= released();
+  ImGui::Separator();
+  ImGui::TextUnformatted("Reflections (smooth blocks, water, glass)");
   ReflectionSettings& r = s.reflections;
   out.rendererChanged |= ImGui::Checkbox("Reflections", &r.enabled);
   ImGui::SliderFloat("Resolution scale", &r.resolutionScale, kMinRenderScale, kMaxRenderScale, "%.2f");

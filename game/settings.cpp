@@ -43,10 +43,10 @@ void parseKeys(const json& value, KeyBindings& keys) {
 }
 
 GameSettings parseRoot(const json& root, const path& dir) {
-  checkObject(
-      root, "",
-      {"view_distance", "fov", "mouse_sensitivity", "sun_path_rotation", "shadow", "reflections",
-       "antialiasing", "packs", "shaderpack", "keys", "vsync", "render_scale", "target_fps", "first_run"});
+  checkObject(root, "",
+              {"view_distance", "fov", "mouse_sensitivity", "sun_path_rotation", "shadow", "reflections",
+               "antialiasing", "bloom", "packs", "shaderpack", "keys", "vsync", "render_scale", "target_fps",
+               "first_run"});
   GameSettings s;
   if (const json* v = field(root, "view_distance"))
     s.viewDistance = static_cast<int>(wholeNumber(*v, "view_distance", 2, 32));
@@ -57,6 +57,7 @@ GameSettings parseRoot(const json& root, const path& dir) {
     s.sunPathRotation = numberIn(*v, "sun_path_rotation", -90.0, 90.0, false);
   if (const json* v = field(root, "shadow")) parseShadow(*v, "shadow", s.shadow);
   if (const json* v = field(root, "reflections")) parseReflections(*v, "reflections", s.reflections);
+  if (const json* v = field(root, "bloom")) parseBloom(*v, "bloom", s.bloom);
   if (const json* v = field(root, "antialiasing"))
     s.antialiasing = enumOf(*v, "antialiasing", kAntialiasingModes);
   if (const json* v = field(root, "packs")) s.packs = parsePacks(*v, dir);
@@ -112,6 +113,7 @@ void saveSettings(const std::filesystem::path& file, const GameSettings& s) {
                {"shadow", shadowJson(s.shadow)},
                {"reflections", reflectionsJson(s.reflections)},
                {"antialiasing", std::string(kAntialiasingModes.nameOf(s.antialiasing))},
+               {"bloom", bloomJson(s.bloom)},
                {"packs", packs},
                {"shaderpack", s.shaderpack.string()},
                {"keys", keys},

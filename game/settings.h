@@ -36,6 +36,7 @@ struct GameSettings {
   ShadowSettings shadow = defaultShadow();
   ReflectionSettings reflections;                  // as in scenes
   Antialiasing antialiasing = Antialiasing::None;  // "antialiasing": as render.antialiasing in scenes
+  BloomSettings bloom;                             // "bloom": as render.bloom
   std::vector<PackChoice> packs;                   // stacked bottom to top over the default pack
   std::filesystem::path shaderpack;  // an OptiFine/Iris shader pack drawing instead of Terrasol's pipeline
   KeyBindings keys;

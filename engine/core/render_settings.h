@@ -26,9 +26,11 @@ inline constexpr int kMaxShadowCascades = 4;
 enum class SpecularModel { BlinnPhong, Ggx };
 inline constexpr EnumNames<SpecularModel, 2> kSpecularModels{{"blinn_phong", "ggx"}};
 
-// Anti-aliasing of the final image: none, or FXAA (a post pass on the display image).
-enum class Antialiasing { None, Fxaa };
-inline constexpr EnumNames<Antialiasing, 2> kAntialiasingModes{{"none", "fxaa"}};
+// Anti-aliasing: none, FXAA (a post pass on the display image) or TAA (a jittered projection
+// resolved against the reprojected history, which also reconstructs the target's size from a smaller
+// scene at a render scale).
+enum class Antialiasing { None, Fxaa, Taa };
+inline constexpr EnumNames<Antialiasing, 3> kAntialiasingModes{{"none", "fxaa", "taa"}};
 
 // What the debug views show, in this order ("none" = the lit image): G-buffer channels, then the
 // reflection pass's hit mask and what it added (black when the pass did not run).
@@ -94,6 +96,15 @@ struct WaterSettings {
   bool waves = true;  // the surface moves with summed waves, deterministic in world time
 
   bool operator==(const WaterSettings&) const = default;
+};
+
+// "render.bloom": light spread from bright pixels, energy-conserving: the frame becomes
+// (1 - strength) x itself + strength x its blur, so nothing is added and nothing pops at a threshold.
+struct BloomSettings {
+  bool enabled = false;
+  float strength = 0.04f;  // 0..1: the blur's share of the frame
+
+  bool operator==(const BloomSettings&) const = default;
 };
 
 // The layers the settings ask for: one (warped), or the cascades, smallest first (distance / 2^k).

@@ -55,6 +55,7 @@ void BlockTextures::bind(const AtlasUniforms& uniforms) const {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, slots::kStorageTiles, tiles_.id());
   uniforms.grid.set(grid_);
   uniforms.size.set(size_);
+  uniforms.detail.set(detail_);
 }
 
 }  // namespace terrasol

@@ -7,6 +7,7 @@
 #include "core/camera.h"
 #include "core/luma.h"
 #include "core/render_scale.h"
+#include "core/temporal_jitter.h"
 #include "render/cave_culling.h"
 #include "render/frame_graph.h"
 #include "render/prop_draw.h"
@@ -22,6 +23,8 @@ DeferredRenderer::DeferredRenderer(const ShaderPreprocessor& shaders, const Atla
       reflection_(VariantBuilder(shaders, shared_), shared_),
       translucent_(VariantBuilder(shaders, shared_), shared_),
       shadow_(VariantBuilder(shaders, shared_), shared_),
+      bloom_(VariantBuilder(shaders, shared_), shared_),
+      taa_(VariantBuilder(shaders, shared_), shared_),
       final_(VariantBuilder(shaders, shared_), shared_),
       fxaa_(VariantBuilder(shaders, shared_), shared_),
       debug_(VariantBuilder(shaders, shared_), shared_),
@@ -43,16 +46,23 @@ void DeferredRenderer::render(const FrameInputs& inputs, const SectionMeshes& me
   const glm::ivec2 size =
       inputs.debugView == DebugView::None ? scaledRenderSize(targetSize, inputs.renderScale) : targetSize;
   Frame frame{inputs, meshes, stats_};
-  frame.view = viewFor(inputs, size);
+  const Antialiasing aa =
+      inputs.debugView == DebugView::None ? shared_.options.antialiasing : Antialiasing::None;
+  frame.temporal = aa == Antialiasing::Taa && !inputs.aside;
+  if (aa != Antialiasing::Taa) taa_.forgetHistory();  // a debug view in between: the history is stale
+  const int jitterFrame = inputs.aside ? taa_.lastJitterFrame() : taa_.nextJitterFrame();
+  const glm::vec2 jitter =
+      aa == Antialiasing::Taa ? jitterAt(jitterFrame, jitterPhases(inputs.renderScale)) : glm::vec2(0.0f);
+  frame.view = viewFor(inputs, size, jitter);
   frame.target = framebuffer;
   frame.finalTarget = framebuffer;
-  if (shared_.options.antialiasing == Antialiasing::Fxaa && inputs.debugView == DebugView::None) {
-    std::tie(frame.finalImage, frame.finalTarget) = fxaa_.image(targetSize);
-  }
+  if (aa == Antialiasing::Fxaa) std::tie(frame.finalImage, frame.finalTarget) = fxaa_.image(targetSize);
   frame.size = size;
   frame.targetSize = targetSize;
   frame.shadow = shadow_.lookup();
   shared_.textures.update(inputs.ticks);
+  shared_.textures.setDetail(frame.temporal ? static_cast<float>(size.x) / static_cast<float>(targetSize.x)
+                                            : 1.0f);
 
   FrameGraph graph;
   PassClock clock(timings, gpuTimer_);
@@ -67,10 +77,11 @@ void DeferredRenderer::render(const FrameInputs& inputs, const SectionMeshes& me
                      graph.import("shadow_map"),
                      graph.import("target"),
                      graph.transient("reflections"),
-                     graph.transient("image")};
+                     graph.transient("image"),
+                     graph.transient("resolved")};
   for (RenderPass* pass :
        std::initializer_list<RenderPass*>{&shadow_, &geometry_, &lighting_, &reflection_, &translucent_,
-                                          &final_, &fxaa_, &debug_, &outline_}) {
+                                          &bloom_, &taa_, &final_, &fxaa_, &debug_, &outline_}) {
     addPass(graph, *pass, frame);
   }
   graph.output(frame.resources.target);
@@ -89,7 +100,7 @@ void DeferredRenderer::render(const FrameInputs& inputs, const SectionMeshes& me
                    shown ? (*frame.shadow.views)[0].texelWorld : 0.0f};
 }
 
-FrameView DeferredRenderer::viewFor(const FrameInputs& inputs, glm::ivec2 size) const {
+FrameView DeferredRenderer::viewFor(const FrameInputs& inputs, glm::ivec2 size, glm::vec2 jitter) const {
   FrameView view;
   view.camera = inputs.cameraPosition;
   Camera camera;  // at the origin: everything is drawn relative to the camera
@@ -99,9 +110,14 @@ FrameView DeferredRenderer::viewFor(const FrameInputs& inputs, glm::ivec2 size) 
   camera.fovDegrees = inputs.fovDegrees;
   camera.farPlane = std::max(2.0f * inputs.viewDistance, 256.0f);
   const float aspect = static_cast<float>(size.x) / static_cast<float>(size.y);
-  view.viewProjection = camera.projection(aspect) * camera.view();
+  view.unjittered = camera.projection(aspect) * camera.view();
+  // The jitter moves the image by a fraction of a scene pixel: a shift in clip space after projection.
+  glm::mat4 shift(1.0f);
+  shift[3] = glm::vec4(2.0f * jitter / glm::vec2(size), 0.0f, 1.0f);
+  view.jitter = jitter;
+  view.viewProjection = shift * view.unjittered;
   view.inverseViewProjection = glm::inverse(view.viewProjection);
-  view.frustum = frustumPlanes(view.viewProjection);
+  view.frustum = frustumPlanes(view.unjittered);
   view.nearFar = {camera.nearPlane, camera.farPlane};
   view.fogRange = {0.8f * inputs.viewDistance, inputs.viewDistance};
   view.day = dayStateAt(inputs.ticks, inputs.sunPathRotation);

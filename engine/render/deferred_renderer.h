@@ -5,7 +5,10 @@
 //   lighting     LabPBR direct + ambient + block light + emission where something was drawn, sky elsewhere
 //   reflection   screen-space reflections of smooth surfaces, with the sky where a ray finds nothing
 //   translucent  water, glass, blended props: lit forward, blended over the lit scene
-//   final        exposure, tone map, sRGB -> the target framebuffer
+//   bloom        light spread from the scene into itself, energy-conserving
+//   taa          the jittered scene resolved with its reprojected history at the target's size
+//   final        exposure, tone map, sRGB -> the target framebuffer (or FXAA's image)
+//   fxaa         the final image anti-aliased -> the target framebuffer
 //   debug_view   a G-buffer channel -> the target instead of the final image
 //   outline      the targeted block's edges over the target
 // Each pass says when it has nothing to do; the graph leaves out what no pass that runs reads (a debug
@@ -22,11 +25,13 @@
 #include "render/gbuffer.h"
 #include "render/pass_clock.h"
 #include "render/pass_shared.h"
+#include "render/passes/bloom_pass.h"
 #include "render/passes/geometry_pass.h"
 #include "render/passes/lighting_pass.h"
 #include "render/passes/output_passes.h"
 #include "render/passes/reflection_pass.h"
 #include "render/passes/shadow_pass.h"
+#include "render/passes/taa_pass.h"
 #include "render/passes/translucent_pass.h"
 #include "render/section_meshes.h"
 #include "render/world_renderer.h"
@@ -51,11 +56,13 @@ class DeferredRenderer final : public WorldRenderer {
   const std::vector<std::string>& shaderVariants() const { return shared_.variants; }
   const GBufferContents& gbufferContents() const { return shared_.contents; }
   const FrameGeometry& lastGeometry() const override { return lastGeometry_; }
+  // TAA's next frame starts afresh, from the jitter sequence's first offset (a camera path's start).
+  void forgetHistory() override { taa_.forgetHistory(); }
   // The last frame's reflection march, read back (slow: for reports); none when the pass did not run.
   std::optional<ReflectionPixels> readReflections() const;
 
  private:
-  FrameView viewFor(const FrameInputs& inputs, glm::ivec2 size) const;
+  FrameView viewFor(const FrameInputs& inputs, glm::ivec2 size, glm::vec2 jitter) const;
   void cull(Frame& frame) const;
 
   PassShared shared_;  // before the passes: they build their programs into it
@@ -64,6 +71,8 @@ class DeferredRenderer final : public WorldRenderer {
   ReflectionPass reflection_;
   TranslucentPass translucent_;
   ShadowPass shadow_;
+  BloomPass bloom_;
+  TaaPass taa_;
   FinalPass final_;
   FxaaPass fxaa_;
   DebugViewPass debug_;

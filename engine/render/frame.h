@@ -23,9 +23,11 @@ namespace terrasol {
 
 struct FrameView {
   glm::dvec3 camera{0.0};
-  glm::mat4 viewProjection{1.0f};  // camera-relative
+  glm::mat4 viewProjection{1.0f};  // camera-relative, jittered with TAA on
   glm::mat4 inverseViewProjection{1.0f};
-  FrustumPlanes frustum{};  // camera-relative
+  glm::mat4 unjittered{1.0f};  // viewProjection without the jitter (TAA's reprojection, the outline)
+  glm::vec2 jitter{0.0f};      // TAA's offset this frame, in scene pixels
+  FrustumPlanes frustum{};     // camera-relative
   glm::vec2 nearFar{0.0f};
   glm::vec2 fogRange{0.0f};
   DayState day;
@@ -51,7 +53,8 @@ struct ShadowLookup {
 struct FrameResources {
   FrameGraph::Resource gbuffer, scene, shadowMap, target;
   FrameGraph::Resource reflections;  // the reflection pass's own targets (its debug views read them)
-  FrameGraph::Resource image;        // the final image before anti-aliasing (when it is on)
+  FrameGraph::Resource image;        // the final image before FXAA (when it is on)
+  FrameGraph::Resource resolved;     // TAA's output: the scene at the target's size
 };
 
 // The reflection pass's targets this frame: from opaque surfaces (for the debug views), and from
@@ -78,6 +81,8 @@ struct Frame {
   // Where the final pass draws: the target, or with anti-aliasing on the image the FXAA pass reads.
   GLuint finalTarget = 0;
   GLuint finalImage = 0;     // that image's texture (0: none)
+  bool temporal = false;     // TAA resolves the scene: the final pass reads `resolved`
+  GLuint resolved = 0;       // TAA's output (linear HDR at the target's size), once it has run
   glm::ivec2 size{0};        // the scene's: the G-buffer's and every pass's before the final one
   glm::ivec2 targetSize{0};  // the target's: the final pass scales the scene up to it
   ShadowLookup shadow;

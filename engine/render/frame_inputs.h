@@ -44,6 +44,9 @@ struct FrameInputs {
   // Keep last frame's shadow map while its centre, the meshes and (within 0.05 degrees) the light's
   // direction are unchanged: the game standing still pays no shadow pass. Off for measured renders.
   bool reuseShadowMap = false;
+  // A second draw of a frame for a measure (the shadow report's moved map): TAA neither reads nor
+  // moves on its history, so the frames after it are those of play.
+  bool aside = false;
   // The targeted block: its edges are drawn over the image where nothing nearer hides them.
   std::optional<WorldBox> outline;
   // glTF props drawn beside the blocks (null: none); the renderer was built for their PropNeeds.
@@ -77,6 +80,7 @@ struct RendererOptions {
   ReflectionSettings reflections;
   Antialiasing antialiasing = Antialiasing::None;
   WaterSettings water;
+  BloomSettings bloom;
   PropNeeds props;  // what the props to be drawn need: no prop variant is built for none
 };
 

@@ -25,6 +25,9 @@ class WorldRenderer {
   virtual const FrameStats& lastFrame() const = 0;
   // Where the last frame looked from, for reports that check it against the world.
   virtual const FrameGeometry& lastGeometry() const = 0;
+  // The next frame does not follow on from the last (a camera path's start, a cut): what is carried
+  // from frame to frame (TAA's history) starts afresh.
+  virtual void forgetHistory() {}
 };
 
 }  // namespace terrasol

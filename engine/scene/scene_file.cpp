@@ -202,6 +202,17 @@ void parseReflections(const nlohmann::json& value, const std::string& key, Refle
     r.maxDistance = numberIn(*v, member(key, "max_distance"), 1.0, 1024.0, false);
 }
 
+void parseBloom(const json& value, const std::string& key, BloomSettings& bloom) {
+  checkObject(value, key, {"enabled", "strength"});
+  if (const json* v = field(value, "enabled")) bloom.enabled = boolean(*v, member(key, "enabled"));
+  if (const json* v = field(value, "strength"))
+    bloom.strength = numberIn(*v, member(key, "strength"), 0.0, 1.0, false);
+}
+
+nlohmann::json bloomJson(const BloomSettings& bloom) {
+  return {{"enabled", bloom.enabled}, {"strength", bloom.strength}};
+}
+
 nlohmann::json reflectionsJson(const ReflectionSettings& r) {
   return {{"enabled", r.enabled},
           {"max_steps", r.maxSteps},
@@ -235,7 +246,7 @@ void parseRender(const json& render, const path& sceneDir, SceneFile& scene) {
       render, "render",
       {"width", "height", "scale", "target_fps", "view_distance", "debug_view", "specular", "material_ao",
        "cave_culling", "shadow_caster_culling", "cull_faces_away", "leave_out_absent_maps", "cull_passes",
-       "shadow", "reflections", "water", "shaderpack", "antialiasing"});
+       "shadow", "reflections", "water", "shaderpack", "antialiasing", "bloom"});
   if (const json* v = field(render, "shaderpack")) {
     scene.shaderpack = resolvePath(nonEmptyString(*v, "render.shaderpack"), sceneDir, "render.shaderpack");
   }
@@ -276,6 +287,7 @@ void parseRender(const json& render, const path& sceneDir, SceneFile& scene) {
     checkObject(*v, "render.water", {"waves"});
     if (const json* w = field(*v, "waves")) scene.water.waves = boolean(*w, "render.water.waves");
   }
+  if (const json* v = field(render, "bloom")) parseBloom(*v, "render.bloom", scene.bloom);
   if (const json* v = field(render, "leave_out_absent_maps")) {
     scene.leaveOutAbsentMaps = boolean(*v, "render.leave_out_absent_maps");
   }

@@ -86,6 +86,7 @@ struct SceneFile {
   ShadowSettings shadow;  // "render.shadow"
   ReflectionSettings reflections;  // "render.reflections"
   WaterSettings water;             // "render.water"
+  BloomSettings bloom;             // "render.bloom"
   glm::dvec3 cameraPosition{0.0, 80.0, 0.0};
   glm::dvec3 cameraLookAt{0.0, 80.0, -1.0};
   float fov = 70.0f;                     // vertical degrees, in (0, 180)
@@ -109,6 +110,8 @@ nlohmann::json shadowJson(const ShadowSettings& shadow);
 // A "render.reflections" object at key path `key`, over `reflections`' values.
 void parseReflections(const nlohmann::json& value, const std::string& key, ReflectionSettings& reflections);
 nlohmann::json reflectionsJson(const ReflectionSettings& reflections);
+void parseBloom(const nlohmann::json& value, const std::string& key, BloomSettings& bloom);
+nlohmann::json bloomJson(const BloomSettings& bloom);
 
 std::string sceneError(const SceneFile& scene, std::string_view key, std::string_view what);
 

@@ -86,6 +86,46 @@ AaError measureAaError(const Image& frame, const Image& truth) {
   return e;
 }
 
+GhostError measureGhosting(const Image& frame, const Image& truth, const Image& changed,
+                           const Image& before) {
+  GhostError g;
+  const int w = std::min({frame.width, truth.width, changed.width, before.width});
+  const int h = std::min({frame.height, truth.height, changed.height, before.height});
+  std::vector<double> kept;
+  std::size_t over = 0;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const std::uint8_t* f = frame.pixel(x, y);
+      const std::uint8_t* t = truth.pixel(x, y);
+      const std::uint8_t* b = before.pixel(x, y);
+      const std::uint8_t* n = changed.pixel(x, y);
+      double dot = 0.0, length2 = 0.0;
+      int change = 0, changedThen = 0;
+      for (int c = 0; c < 3; ++c) {
+        const double old = (int(b[c]) - int(t[c])) / 255.0;
+        dot += (int(f[c]) - int(t[c])) / 255.0 * old;
+        length2 += old * old;
+        change = std::max(change, std::abs(int(b[c]) - int(t[c])));
+        changedThen = std::max(changedThen, std::abs(int(b[c]) - int(n[c])));
+      }
+      if (change / 255.0 <= kGhostChange || changedThen / 255.0 <= kGhostChange) continue;
+      const double share = std::clamp(dot / length2, 0.0, 1.0);
+      kept.push_back(share);
+      over += share > kGhostKept;
+    }
+  g.changedPixels = kept.size();
+  if (kept.empty()) return g;
+  g.overPct = 100.0 * static_cast<double>(over) / static_cast<double>(kept.size());
+  const std::size_t at = std::min(kept.size() - 1, kept.size() * 99 / 100);
+  std::nth_element(kept.begin(), kept.begin() + static_cast<std::ptrdiff_t>(at), kept.end());
+  g.p99 = kept[at];
+  return g;
+}
+
+nlohmann::json ghostJson(const GhostError& ghost) {
+  return {{"over_pct", ghost.overPct}, {"p99", ghost.p99}, {"changed_pixels", ghost.changedPixels}};
+}
+
 nlohmann::json aaErrorJson(const AaError& error, int supersample) {
   return {{"mean", error.mean},
           {"p99", error.p99},

@@ -7,6 +7,7 @@
 
 #include "core/error.h"
 #include "core/paths.h"
+#include "core/temporal_jitter.h"
 #include "pack_render/pack_renderer.h"
 #include "render/gl/render_target.h"
 #include "scene/block_atlas.h"
@@ -116,6 +117,7 @@ SceneRenderer::SceneRenderer(const SceneFile& scene)
   options.reflections = scene.reflections;
   options.water = scene.water;
   options.antialiasing = scene.antialiasing;
+  options.bloom = scene.bloom;
   gpu_ = std::make_unique<Gpu>(shaders, world_->atlas.atlas, world_->atlas.tints, options,
                                glm::ivec2(scene.width, scene.height), scene, world_->world);
   if (!scene.shaderpack.empty()) {
@@ -184,9 +186,11 @@ RenderedFrame SceneRenderer::renderFrame(int frame, const FrameRequest& request)
   if (request.debugView) inputs.debugView = *request.debugView;
   inputs.shadowCentreOffset = request.shadowCentreOffset;
   inputs.reuseShadowMap = request.reuseShadowMap;
+  inputs.aside = request.aside;
   RenderedFrame out;
   const GLuint fbo = gpu_->target.framebuffer();
   if (scene_.targetFps > 0) inputs.renderScale = resolution_.scale();
+  if (frame == 0 && !request.aside) warmHistory(inputs);
   const auto start = std::chrono::steady_clock::now();
   drawing().render(inputs, gpu_->meshes, fbo, gpu_->target.size(), request.timed ? &out.timings : nullptr);
   if (scene_.targetFps > 0) {
@@ -212,6 +216,14 @@ RenderedFrame SceneRenderer::renderFrame(int frame, const FrameRequest& request)
   }
   if (request.readBack) out.reflections = gpu_->renderer.readReflections();
   return out;
+}
+
+void SceneRenderer::warmHistory(const FrameInputs& inputs) {
+  drawing().forgetHistory();
+  if (scene_.antialiasing != Antialiasing::Taa || inputs.debugView != DebugView::None || gpu_->pack) return;
+  const int frames = std::min(jitterPhases(inputs.renderScale), kTaaWarmFrames);
+  for (int i = 1; i < frames; ++i)
+    drawing().render(inputs, gpu_->meshes, gpu_->target.framebuffer(), gpu_->target.size());
 }
 
 void SceneRenderer::draw(int frame, GLuint framebuffer, glm::ivec2 size) {

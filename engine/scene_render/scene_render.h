@@ -17,6 +17,8 @@ namespace terrasol {
 
 class PackRenderer;
 
+inline constexpr int kTaaWarmFrames = 16;
+
 struct SceneRenderStats {
   std::size_t sections = 0, quads = 0;
   double loadMs = 0.0, worldMs = 0.0;  // packs and atlas; world generation, light and meshing
@@ -41,6 +43,7 @@ struct FrameRequest {
   glm::dvec3 shadowCentreOffset{0.0};  // moves the shadow map as if the camera had moved (flicker)
   std::optional<DebugView> debugView;  // overrides the scene's
   bool reuseShadowMap = false;         // FrameInputs::reuseShadowMap
+  bool aside = false;                  // FrameInputs::aside
 };
 
 class SceneRenderer {
@@ -51,7 +54,9 @@ class SceneRenderer {
 
   int frames() const { return scene_.frameCount(); }
   // Frames must come in order (0, 1, ...; repeating the last one is fine): edits keyed to frames
-  // change the world as the path passes them.
+  // change the world as the path passes them. Frame 0 starts the path afresh: with TAA, its history is
+  // first warmed by drawing frame 0 over the jitter sequence (up to kTaaWarmFrames), so every run of a
+  // scene gives the same pixels; later frames carry the history on, as in play.
   RenderedFrame renderFrame(int frame, const FrameRequest& request = {});
 
   // Draws frame `frame` straight into `framebuffer` (0: a window's back buffer) of `size`.
@@ -72,9 +77,9 @@ class SceneRenderer {
   struct Gpu;
   struct World;
   FrameInputs inputsFor(int frame) const;
-  void advanceTo(int frame);
-  WorldRenderer& drawing();  // the shader pack when there is one, else the deferred renderer  // edits keyed
-                             // to frames up to `frame`, their meshes and the props' light
+  void advanceTo(int frame);  // edits keyed to frames up to `frame`, their meshes and the props' light
+  WorldRenderer& drawing();   // the shader pack when there is one, else the deferred renderer
+  void warmHistory(const FrameInputs& inputs);
 
   SceneFile scene_;
   DebugView debugView_;

@@ -464,7 +464,8 @@ TEST(SettingsTest, SaveAndLoadRoundTripAndMissingMeansDefaults) {
   s.shadow.pcfSamples = 3;
   s.packs = {{dir / "packs" / "a", true}, {dir / "packs" / "b", false}};
   s.shaderpack = dir / "shaderpacks" / "a.zip";
-  s.antialiasing = Antialiasing::Fxaa;
+  s.antialiasing = Antialiasing::Taa;
+  s.bloom = {true, 0.08f};
   s.keys.bind(Action::Jump, GLFW_KEY_J);
   saveSettings(file, s);
   const GameSettings back = loadSettings(file);
@@ -475,7 +476,8 @@ TEST(SettingsTest, SaveAndLoadRoundTripAndMissingMeansDefaults) {
   EXPECT_EQ(back.shadow.pcfSamples, 3);
   EXPECT_EQ(back.packs, s.packs);
   EXPECT_EQ(back.shaderpack, s.shaderpack);
-  EXPECT_EQ(back.antialiasing, Antialiasing::Fxaa);
+  EXPECT_EQ(back.antialiasing, Antialiasing::Taa);
+  EXPECT_EQ(back.bloom, s.bloom);
   EXPECT_TRUE(defaults.shaderpack.empty()) << "Terrasol's own pipeline";
   EXPECT_EQ(back.keys.key(Action::Jump), GLFW_KEY_J);
   EXPECT_EQ(back.keys.key(Action::Forward), GLFW_KEY_W);

@@ -46,7 +46,8 @@ INSTANTIATE_TEST_SUITE_P(Scenes, SceneGoldenTest,
                                            "pack_pixel_perfection", "shadow_noon", "shadow_low_sun",
                                            "shadow_moon", "shadow_forest", "shadow_cave_mouth",
                                            "props_beside_blocks", "props_night_torch", "mirror_floor",
-                                           "lake_pillar", "lake_sunset", "flooded_cave", "shapes"));
+                                           "lake_pillar", "lake_sunset", "flooded_cave", "shapes",
+                                           "bloom_glowstone"));
 
 TEST_F(SceneRenderTest, EveryDebugViewMatchesItsGolden) {
   SceneRenderer renderer(loadScene(kScenes / "metal_emissive.json"));

@@ -8,6 +8,7 @@
 // missing, or rendering failed; 2 bad arguments or a bad scene (nothing is written then).
 
 #include <cstdio>
+#include <deque>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -147,6 +148,7 @@ nlohmann::json shadowReport(SceneRenderer& renderer, int index, const RenderedFr
   FrameRequest moved = request;
   moved.timed = false;
   moved.readBack = true;
+  moved.aside = true;
   const double texel = frame.geometry.shadowTexelWorld;
   moved.shadowCentreOffset =
       glm::dvec3(within(random) * texel, within(random) * texel, within(random) * texel);
@@ -243,21 +245,32 @@ int renderScene(const Options& o, const SceneFile& scene, SceneRenderer& rendere
     big.targetFps = 0;
     reference.emplace(big);
   }
+  std::deque<Image> truths;  // the last kGhostFrames + 1, for ghosting
   for (int i = 0; i < renderer.frames(); ++i) {
     const auto start = std::chrono::steady_clock::now();
     const RenderedFrame frame = renderer.renderFrame(i, request);
     if (!o.noImages) saveImage(o.out / frameName("frame", i), frame.image);
     std::optional<AaError> aaError;
+    std::optional<GhostError> ghost;
     if (reference) {
-      aaError =
-          measureAaError(frame.image, downsample(reference->renderFrame(i).image, o.referenceSupersample));
-      progress.line(frameName("frame", i) + ": aa_error mean " + std::to_string(aaError->mean).substr(0, 6) +
-                    " p99 " + std::to_string(aaError->p99).substr(0, 6) + " edges over " +
-                    std::to_string(aaError->edgeOverPct).substr(0, 5) + " %");
+      truths.push_back(downsample(reference->renderFrame(i).image, o.referenceSupersample));
+      aaError = measureAaError(frame.image, truths.back());
+      std::string line = frameName("frame", i) + ": aa_error mean " +
+                         std::to_string(aaError->mean).substr(0, 6) + " p99 " +
+                         std::to_string(aaError->p99).substr(0, 6) + " edges over " +
+                         std::to_string(aaError->edgeOverPct).substr(0, 5) + " %";
+      if (truths.size() > kGhostFrames) {
+        ghost = measureGhosting(frame.image, truths.back(), truths[1], truths.front());
+        truths.pop_front();
+        line += ", ghost over " + std::to_string(ghost->overPct).substr(0, 5) + " % of " +
+                std::to_string(ghost->changedPixels) + " changed";
+      }
+      progress.line(line);
     }
     if (!o.report.empty()) {
       frames.push_back(frameReport(i, frame));
       if (aaError) frames.back()["aa_error"] = aaErrorJson(*aaError, o.referenceSupersample);
+      if (ghost) frames.back()["aa_error"]["ghost"] = ghostJson(*ghost);
       if (frame.geometry.shadowMapShown)
         frames.back()["shadow_error"] = shadowReport(renderer, i, frame, request);
       if (frame.reflections) {

@@ -58,14 +58,24 @@ void FxaaPass::execute(Frame& frame) {
 FinalPass::FinalPass(const VariantBuilder& build, PassShared& shared)
     : shared_(shared),
       final_(build("fullscreen.vert", "final.frag")),
+      sharpened_(shared.options.antialiasing == Antialiasing::Taa
+                     ? build("fullscreen.vert", "final.frag", {{"SHARPEN", ""}})
+                     : LinkedProgram()),
       upscale_(build("fullscreen.vert", "upscale.frag")) {}
 
 void FinalPass::setup(FrameGraph::Builder& builder, Frame& frame) {
-  builder.read(frame.resources.scene);
+  builder.read(frame.temporal ? frame.resources.resolved : frame.resources.scene);
   builder.write(frame.finalImage ? frame.resources.image : frame.resources.target);
 }
 
 void FinalPass::execute(Frame& frame) {
+  if (frame.temporal) {  // TAA resolved the scene at the target's size
+    glBindTextureUnit(0, frame.resolved);
+    sharpened_.u.exposure.set(kExposure);
+    bindTarget(frame, frame.finalTarget);
+    drawFullScreen(sharpened_.id(), shared_, GL_TRIANGLES, 3);
+    return;
+  }
   glBindTextureUnit(0, frame.gbuffer->scene());
   final_.u.exposure.set(kExposure);
   if (frame.size == frame.targetSize) {
@@ -141,7 +151,7 @@ void OutlinePass::execute(Frame& frame) {
   outline_.u.depthScale.set(scale);
   outline_.u.min.set(glm::vec3(box.min - kGrow - frame.view.camera));
   outline_.u.max.set(glm::vec3(box.max + kGrow - frame.view.camera));
-  outline_.u.viewProjection.set(frame.view.viewProjection);
+  outline_.u.viewProjection.set(frame.view.unjittered);
   drawFullScreen(outline_.id(), shared_, GL_LINES, 24);
   glDisable(GL_BLEND);
 }

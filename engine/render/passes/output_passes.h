@@ -29,6 +29,7 @@ class FinalPass final : public RenderPass {
     gl::Uniform<glm::vec2> sceneScale;
   };
   gl::ProgramWith<Final> final_;
+  gl::ProgramWith<Final> sharpened_;  // after TAA
   gl::ProgramWith<Upscale> upscale_;
   // At a render scale: the final image at the scene's size, then scaled up to the target.
   glm::ivec2 imageSize_{0};
