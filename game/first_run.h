@@ -18,9 +18,8 @@ struct MachineProbe {
 bool softwareRenderer(const std::string& glRenderer);
 
 // The defaults adjusted for the machine, with what was chosen and why in `firstRun`. Software
-// rendering: view distance 4 (3 when even an empty frame is slow), shadows 1024² over 64 blocks,
-// reflections off, dynamic resolution for 30 fps; a GPU: view distance 12, shadows 2048² over 128
-// blocks, reflections on, dynamic resolution for 60 fps.
+// rendering: the medium preset (low when even an empty frame is slow), dynamic resolution for 30 fps;
+// a GPU: the ultra preset, dynamic resolution for 60 fps (core/render_preset.h).
 GameSettings firstRunSettings(const MachineProbe& probe, GameSettings settings = {});
 
 }  // namespace terrasol

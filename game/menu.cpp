@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <span>
 
+#include "core/render_preset.h"
 #include "core/render_scale.h"
 
 namespace terrasol {
@@ -111,7 +112,26 @@ void Menu::shaderPacksTab(GameSettings& s, const ShaderPackChoices& packs, MenuR
   }
 }
 
+// The preset the settings match ("custom" when none); choosing one sets what it decides.
+static void presetCombo(GameSettings& s, MenuResult& out) {
+  const std::optional<RenderPreset> current =
+      presetOf(s.viewDistance, s.shadow, s.reflections, s.antialiasing, s.bloom);
+  const std::string shown = current ? std::string(kRenderPresets.nameOf(*current)) : "custom";
+  if (!ImGui::BeginCombo("Preset", shown.c_str())) return;
+  for (std::size_t i = 0; i < kRenderPresets.names.size(); ++i) {
+    const auto preset = static_cast<RenderPreset>(i);
+    if (ImGui::Selectable(std::string(kRenderPresets.names[i]).c_str(), current == preset) &&
+        current != preset) {
+      applyPreset(preset, s.viewDistance, s.shadow, s.reflections, s.antialiasing, s.bloom);
+      out.rendererChanged = true;
+      out.viewChanged = true;
+    }
+  }
+  ImGui::EndCombo();
+}
+
 void Menu::settingsTab(GameSettings& s, MenuResult& out) {
+  presetCombo(s, out);
   ImGui::SliderInt("View distance (chunks)", &s.viewDistance, 2, 32);
   out.viewChanged |= released();
   ImGui::SliderFloat("FOV", &s.fov, 30.0f, 110.0f, "%.0f");

@@ -13,6 +13,7 @@
 #include "core/error.h"
 #include "core/json_check.h"
 #include "core/paths.h"
+#include "core/render_preset.h"
 #include "core/render_scale.h"
 
 namespace terrasol {
@@ -242,11 +243,21 @@ nlohmann::json shadowJson(const ShadowSettings& s) {
 namespace {
 
 void parseRender(const json& render, const path& sceneDir, SceneFile& scene) {
-  checkObject(
-      render, "render",
-      {"width", "height", "scale", "target_fps", "view_distance", "debug_view", "specular", "material_ao",
-       "cave_culling", "shadow_caster_culling", "cull_faces_away", "leave_out_absent_maps", "cull_passes",
-       "shadow", "reflections", "water", "shaderpack", "antialiasing", "bloom"});
+  checkObject(render, "render", {"width",           "height",
+                                 "scale",           "target_fps",
+                                 "view_distance",   "debug_view",
+                                 "specular",        "material_ao",
+                                 "cave_culling",    "shadow_caster_culling",
+                                 "cull_faces_away", "leave_out_absent_maps",
+                                 "cull_passes",     "shadow",
+                                 "reflections",     "water",
+                                 "shaderpack",      "antialiasing",
+                                 "bloom",           "preset"});
+  // First: the scene's own keys change what the preset set.
+  if (const json* v = field(render, "preset")) {
+    applyPreset(enumOf(*v, "render.preset", kRenderPresets), scene.viewDistance, scene.shadow,
+                scene.reflections, scene.antialiasing, scene.bloom);
+  }
   if (const json* v = field(render, "shaderpack")) {
     scene.shaderpack = resolvePath(nonEmptyString(*v, "render.shaderpack"), sceneDir, "render.shaderpack");
   }
