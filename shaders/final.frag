@@ -4,6 +4,7 @@
 // the target's. With SHARPEN (after TAA, whose history blurs a little) it first sharpens the image.
 
 #include "lib/color.glsl"
+#include "lib/compressed_range.glsl"
 
 layout(binding = 0) uniform sampler2D u_scene;  // linear HDR
 uniform float u_exposure;
@@ -19,8 +20,6 @@ vec3 tonemapAces(vec3 x) {
 #ifdef SHARPEN
 const float kSharpen = 0.1;
 
-vec3 compress(vec3 c) { return c / (1.0 + dot(c, LUMA_WEIGHTS)); }
-vec3 expand(vec3 c) { return c / max(1.0 - dot(c, LUMA_WEIGHTS), 1e-3); }
 
 // An unsharp mask over the four neighbours in a compressed range, kept within their span so an edge
 // gains no halo.

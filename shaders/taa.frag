@@ -9,6 +9,7 @@
 // seen now (the distance it stored disagrees: a disocclusion) or it falls off the screen. Whole-texel
 // fetches only: filtered lookups cost far more on llvmpipe.
 
+#include "lib/compressed_range.glsl"
 #include "lib/unproject.glsl"
 
 layout(binding = 0) uniform sampler2D u_scene;    // linear HDR at the scene's size, jittered
@@ -31,8 +32,6 @@ const float kFastMotion = 8.0;
 const float kSkyDistance = 60000.0;   // stored for the sky (within half-float range)
 const float kDistanceTolerance = 0.1; // relative: a stored distance further off is another surface
 
-vec3 compress(vec3 c) { return c / (1.0 + dot(c, LUMA_WEIGHTS)); }
-vec3 expand(vec3 c) { return c / max(1.0 - dot(c, LUMA_WEIGHTS), 1e-3); }
 vec3 toYCoCg(vec3 c) {
   return vec3(dot(c, vec3(0.25, 0.5, 0.25)), dot(c, vec3(0.5, 0.0, -0.5)), dot(c, vec3(-0.25, 0.5, -0.25)));
 }
