@@ -26,7 +26,7 @@ PackStack openPacks(const std::vector<PackChoice>& packs, std::vector<std::strin
 
 std::unique_ptr<DeferredRenderer> makeRenderer(const BlockAssets& assets, const RendererOptions& options) {
   return std::make_unique<DeferredRenderer>(ShaderPreprocessor(shaderDir()), assets.atlas.atlas,
-                                            assets.atlas.tints, options);
+                                            assets.atlas.tints, assets.atlas.clouds, options);
 }
 
 // The settings that pick the renderer's variants.
@@ -36,6 +36,7 @@ RendererOptions optionsOf(const GameSettings& settings, const PropNeeds& props) 
   options.reflections = settings.reflections;
   options.antialiasing = settings.antialiasing;
   options.bloom = settings.bloom;
+  options.clouds = settings.clouds;
   options.props = props;
   return options;
 }

@@ -115,14 +115,14 @@ void Menu::shaderPacksTab(GameSettings& s, const ShaderPackChoices& packs, MenuR
 // The preset the settings match ("custom" when none); choosing one sets what it decides.
 static void presetCombo(GameSettings& s, MenuResult& out) {
   const std::optional<RenderPreset> current =
-      presetOf(s.viewDistance, s.shadow, s.reflections, s.antialiasing, s.bloom);
+      presetOf(s.viewDistance, s.shadow, s.reflections, s.antialiasing, s.bloom, s.clouds);
   const std::string shown = current ? std::string(kRenderPresets.nameOf(*current)) : "custom";
   if (!ImGui::BeginCombo("Preset", shown.c_str())) return;
   for (std::size_t i = 0; i < kRenderPresets.names.size(); ++i) {
     const auto preset = static_cast<RenderPreset>(i);
     if (ImGui::Selectable(std::string(kRenderPresets.names[i]).c_str(), current == preset) &&
         current != preset) {
-      applyPreset(preset, s.viewDistance, s.shadow, s.reflections, s.antialiasing, s.bloom);
+      applyPreset(preset, s.viewDistance, s.shadow, s.reflections, s.antialiasing, s.bloom, s.clouds);
       out.rendererChanged = true;
       out.viewChanged = true;
     }
@@ -186,6 +186,8 @@ void Menu::settingsTab(GameSettings& s, MenuResult& out) {
   out.rendererChanged |= ImGui::Checkbox("Bloom", &s.bloom.enabled);
   ImGui::SliderFloat("Bloom strength", &s.bloom.strength, 0.0f, 0.2f, "%.2f");
   out.rendererChanged |= released();
+  out.rendererChanged |= comboOf("Clouds", s.clouds.mode, kCloudModes);
+  out.rendererChanged |= ImGui::Checkbox("Cloud shadows", &s.clouds.shadows);
   ImGui::Separator();
   ImGui::TextUnformatted("Reflections (smooth blocks, water, glass)");
   ReflectionSettings& r = s.reflections;

@@ -37,6 +37,7 @@ struct GameSettings {
   ReflectionSettings reflections;                  // as in scenes
   Antialiasing antialiasing = Antialiasing::None;  // "antialiasing": as render.antialiasing in scenes
   BloomSettings bloom;                             // "bloom": as render.bloom
+  CloudSettings clouds{CloudMode::Fancy};          // "clouds": as render.clouds
   std::vector<PackChoice> packs;                   // stacked bottom to top over the default pack
   std::filesystem::path shaderpack;  // an OptiFine/Iris shader pack drawing instead of Terrasol's pipeline
   KeyBindings keys;

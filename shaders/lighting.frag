@@ -55,6 +55,8 @@ void main() {
     transmittance = shadowTransmittance(lookup);
   }
 #endif
-  vec3 color = shade(s, -viewDir, visibility, transmittance);
-  o_color = vec4(fogged(color, position, sky), shadowTerm(s, visibility));
+  visibility *= cloudShadow(position);
+  vec3 color = fogged(shade(s, -viewDir, visibility, transmittance), position, sky);
+  // Clouds between the camera and the surface: seen from above them, or on a peak beyond them.
+  o_color = vec4(behindClouds(color, vec3(0.0), viewDir, length(position)), shadowTerm(s, visibility));
 }

@@ -32,7 +32,9 @@ void main() {
     transmittance = shadowTransmittance(lookup);
   }
 #endif
+  visibility *= cloudShadow(v_position);
   float alpha = clamp(p.baseColor.a, 0.0, 1.0);
   vec3 lit = fogged(shade(s, toViewer, visibility, transmittance), v_position, skyColor(-toViewer));
+  lit = behindClouds(lit, vec3(0.0), -toViewer, length(v_position));
   o_color = vec4(lit * alpha, alpha);
 }

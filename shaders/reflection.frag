@@ -49,7 +49,7 @@ void main() {
 
   vec2 hitUv;
   bool hit = march(position + vertexNormal * 0.02, dir, hitUv);
-  vec3 reflected = reflectedLight(reflectedSky(dir, skyLight), hit, hitUv);
+  vec3 reflected = reflectedLight(reflectedSky(position, dir, skyLight), hit, hitUv);
 
   // What the lighting pass reflected instead: sky light as a uniform environment.
   vec3 ambient = kSkyAmbient * lightmapAt(0.0, skyLight) * u_ambientTint;

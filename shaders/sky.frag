@@ -6,8 +6,10 @@
 
 layout(location = OUT_COLOR) out vec4 o_color;
 
-// Under water, the sky beyond the surface is seen through the water above the camera.
+// The clouds lie in front of it; under water, the sky beyond the surface is seen through the water
+// above the camera.
 void main() {
   vec3 dir = viewDirection();
-  o_color = vec4(mix(skyWithStars(dir), u_waterFog, waterFog(dir * 1e4)), 1.0);
+  vec3 sky = behindClouds(skyWithStars(dir), vec3(0.0), dir, 1e9);  // stars, unlike skyAlong's
+  o_color = vec4(mix(sky, u_waterFog, waterFog(dir * 1e4)), 1.0);
 }

@@ -51,7 +51,7 @@ void main() {
   dir = normalize(dir - vertexNormal * min(dot(dir, vertexNormal) - 0.01, 0.0));
   vec2 hitUv;
   bool hit = march(v_position + vertexNormal * 0.02, dir, hitUv);
-  vec3 missed = behind ? u_waterFog : reflectedSky(dir, v_light.y);
+  vec3 missed = behind ? u_waterFog : reflectedSky(v_position, dir, v_light.y);
   o_reflected = vec4(reflectedLight(missed, hit, hitUv), hit ? 1.0 : 0.0);
   o_hit = vec4(hit ? hitUv : vec2(0.0), hit ? 1.0 : 0.0, 1.0 / gl_FragCoord.w);
 }

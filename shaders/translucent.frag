@@ -37,7 +37,7 @@ vec3 reflection(Surface s, vec3 toViewer, float alpha) {
   float weight = smoothstep(u_minSmoothness, 1.0, m.smoothness);
   vec3 dir = reflect(-toViewer, s.normal);
   dir = normalize(dir - s.vertexNormal * min(dot(dir, s.vertexNormal) - 0.01, 0.0));
-  vec3 reflected = marchedOr(skyColor(dir) * levelBrightness(s.skyLight));
+  vec3 reflected = marchedOr(skyAlong(v_position, dir) * levelBrightness(s.skyLight));
   vec3 ambient = kSkyAmbient * lightmapAt(0.0, s.skyLight) * u_ambientTint;
   float NdotV = max(dot(s.normal, toViewer), 1e-4);
   return weight * fresnelAmbient(m.f0, NdotV, m.roughness) * (reflected - alpha * ambient);
@@ -111,7 +111,11 @@ void main() {
     transmittance = shadowTransmittance(lookup);
   }
 #endif
+  visibility *= cloudShadow(v_position);
   vec3 lit = fogged(shade(s, toViewer, visibility, transmittance), v_position, skyColor(-toViewer));
+  // Clouds between the camera and the surface (seen from above them) cover it and what it lets through.
+  vec4 clouds = cloudsAlong(vec3(0.0), -toViewer, length(v_position));
+  lit = lit * (1.0 - clouds.a) + clouds.rgb;
   o_color = vec4(lit * albedo.a, albedo.a);
 #ifdef REFLECTIONS
   if (v_water > 0.5 && behind) {
@@ -120,6 +124,6 @@ void main() {
   }
   // Water draws what it lets through itself, refracted, and so covers what lay behind it whole.
   if (v_water > 0.5) o_color = vec4(o_color.rgb + refracted(s.normal) * (1.0 - albedo.a), 1.0);
-  o_color.rgb += foggedLight(reflection(s, toViewer, albedo.a), v_position);
+  o_color.rgb += foggedLight(reflection(s, toViewer, albedo.a), v_position) * (1.0 - clouds.a);
 #endif
 }

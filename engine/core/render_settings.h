@@ -107,6 +107,17 @@ struct BloomSettings {
   bool operator==(const BloomSettings&) const = default;
 };
 
+// "render.clouds": Minecraft's cloud layer (core/cloud_layer.h) from the packs' clouds.png, flat texels
+// on a plane or fancy 4-block boxes, with their shadows on the ground.
+enum class CloudMode { Off, Flat, Fancy };
+inline constexpr EnumNames<CloudMode, 3> kCloudModes{{"off", "flat", "fancy"}};
+struct CloudSettings {
+  CloudMode mode = CloudMode::Off;
+  bool shadows = true;  // the sun dims under a cloud (the direct light's shadow term)
+
+  bool operator==(const CloudSettings&) const = default;
+};
+
 // The layers the settings ask for: one (warped), or the cascades, smallest first (distance / 2^k).
 inline int shadowLayers(const ShadowSettings& settings) {
   return settings.mode == ShadowMode::Cascaded ? std::clamp(settings.cascades, 2, kMaxShadowCascades) : 1;

@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <glm/common.hpp>
 #include <glm/gtc/matrix_inverse.hpp>
 
 #include "core/camera.h"
+#include "core/cloud_layer.h"
 #include "core/luma.h"
 #include "core/render_scale.h"
 #include "core/temporal_jitter.h"
@@ -16,8 +18,9 @@
 namespace terrasol {
 
 DeferredRenderer::DeferredRenderer(const ShaderPreprocessor& shaders, const Atlas& atlas,
-                                   const TintPalette& tints, const RendererOptions& options)
-    : shared_(atlas, tints, options),
+                                   const TintPalette& tints, const CloudMap& clouds,
+                                   const RendererOptions& options)
+    : shared_(atlas, tints, clouds, options),
       geometry_(VariantBuilder(shaders, shared_), shared_),
       lighting_(VariantBuilder(shaders, shared_), shared_),
       reflection_(VariantBuilder(shaders, shared_), shared_),
@@ -146,6 +149,14 @@ FrameView DeferredRenderer::viewFor(const FrameInputs& inputs, glm::ivec2 size, 
   view.cone.aspect = aspect;
   view.cone.farPlane = camera.farPlane;
   view.cone.floorY = kMinY;
+  if (shared_.clouds) {
+    // Wrapped in double, so the layer stays exact however far the camera or the world's time goes.
+    const glm::dvec2 period = glm::dvec2(shared_.clouds->size()) * kCloudCellBlocks;
+    const double x = inputs.cameraPosition.x + cloudDrift(inputs.ticks, shared_.clouds->size().x);
+    view.clouds = shared_.clouds->id();
+    view.cloudOrigin = glm::vec3(glm::mod(x, period.x), inputs.cameraPosition.y - kCloudBottom,
+                                 glm::mod(inputs.cameraPosition.z, period.y));
+  }
   return view;
 }
 

@@ -41,7 +41,7 @@ namespace terrasol {
 class DeferredRenderer final : public WorldRenderer {
  public:
   DeferredRenderer(const ShaderPreprocessor& shaders, const Atlas& atlas, const TintPalette& tints,
-                   const RendererOptions& options = {});
+                   const CloudMap& clouds, const RendererOptions& options = {});
 
   // Draws a frame into `framebuffer` (0 for a window) of `size`. With `timings`, each pass's time is
   // appended: from timer queries on a GPU, from glFinish and the wall clock on llvmpipe (whose timer

@@ -37,9 +37,11 @@ struct FrameView {
   glm::dvec3 shadowCentreOffset{0.0};
   glm::dvec3 forward{0.0, 0.0, -1.0};  // unit view direction
   bool underWater = false;
-  float waterTop = 0.0f;     // under water: the surface's height above the camera
-  glm::vec3 waterFog{0.0f};  // under water: the colour the depths fade to (linear)
-  ViewCone cone;             // the view's receivers, for the shadow pass
+  float waterTop = 0.0f;        // under water: the surface's height above the camera
+  glm::vec3 waterFog{0.0f};     // under water: the colour the depths fade to (linear)
+  ViewCone cone;                // the view's receivers, for the shadow pass
+  GLuint clouds = 0;            // the cloud layer's map (0: no clouds)
+  glm::vec3 cloudOrigin{0.0f};  // the camera in the layer's space (lib/clouds.glsl)
 };
 
 // What the lighting and translucent passes read of the shadow map (the shadow pass's).

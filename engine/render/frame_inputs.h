@@ -81,6 +81,7 @@ struct RendererOptions {
   Antialiasing antialiasing = Antialiasing::None;
   WaterSettings water;
   BloomSettings bloom;
+  CloudSettings clouds;
   PropNeeds props;  // what the props to be drawn need: no prop variant is built for none
 };
 

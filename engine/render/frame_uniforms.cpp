@@ -100,7 +100,10 @@ SkyUniforms::SkyUniforms(const LinkedProgram& p)
       fogRange(p, "u_fogRange"),
       underWater(p, "u_underWater"),
       waterTop(p, "u_waterTop"),
-      waterFog(p, "u_waterFog") {}
+      waterFog(p, "u_waterFog"),
+      cloudOrigin(p, "u_cloudOrigin"),
+      cloudLight(p, "u_cloudLight"),
+      cloudToLight(p, "u_cloudToLight") {}
 
 void SkyUniforms::set(const FrameView& view) const {
   const DayState& day = view.day;
@@ -115,6 +118,12 @@ void SkyUniforms::set(const FrameView& view) const {
   underWater.set(view.underWater);
   waterTop.set(view.waterTop);
   waterFog.set(view.waterFog);
+  if (view.clouds) {
+    cloudOrigin.set(view.cloudOrigin);
+    cloudLight.set(day.lightColor);
+    cloudToLight.set(day.toShadowLight);
+    glBindTextureUnit(slots::kUnitClouds, view.clouds);
+  }
 }
 
 SsrUniforms::SsrUniforms(const LinkedProgram& p)

@@ -56,6 +56,7 @@ struct SkyUniforms {
   gl::Uniform<bool> underWater;
   gl::Uniform<float> waterTop;
   gl::Uniform<glm::vec3> waterFog;
+  gl::Uniform<glm::vec3> cloudOrigin, cloudLight, cloudToLight;  // lib/clouds.glsl
 };
 
 // The reflected rays' march and the smoothness they fade in from.

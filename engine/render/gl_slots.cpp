@@ -33,6 +33,7 @@ std::vector<ShaderDefine> slotDefines() {
       define("UNIT_SSR_DEPTH", slots::kUnitSsrDepth),
       define("UNIT_SURFACE_REFLECTION", slots::kUnitSurfaceReflection),
       define("UNIT_SURFACE_REFLECTION_HITS", slots::kUnitSurfaceReflectionHits),
+      define("UNIT_CLOUDS", slots::kUnitClouds),
       define("STORAGE_TILES", slots::kStorageTiles),
       define("STORAGE_PACK_ENTITIES", slots::kStoragePackEntities),
   };

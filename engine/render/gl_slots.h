@@ -48,6 +48,8 @@ inline constexpr int kUnitSsrDepth = 17;  // the depth a reflected ray is marche
 // The march from water and glass, for the debug views.
 inline constexpr int kUnitSurfaceReflection = 18;
 inline constexpr int kUnitSurfaceReflectionHits = 19;
+// The cloud layer's map (the sky, lighting, reflection and translucent passes).
+inline constexpr int kUnitClouds = 20;
 
 // A shader pack's samplers: OptiFine's units (0 the atlas, 1 the lightmap, ...) from here on.
 inline constexpr int kUnitPackBase = 24;

@@ -15,13 +15,24 @@ GBufferContents contentsFor(const Atlas& atlas, const RendererOptions& options) 
 
 }  // namespace
 
-PassShared::PassShared(const Atlas& atlas, const TintPalette& tints, const RendererOptions& options)
+PassShared::PassShared(const Atlas& atlas, const TintPalette& tints, const CloudMap& cloudMap,
+                       const RendererOptions& options)
     : options(options),
       contents(contentsFor(atlas, options)),
       smoothness(contents.specular ? textureSmoothness(atlas) : std::vector<float>{}),
       maxSmoothness(smoothness.empty() ? 0.0f : *std::max_element(smoothness.begin(), smoothness.end())),
       textures(atlas, tints),
-      empty(gl::VertexArray::create()) {}
+      empty(gl::VertexArray::create()) {
+  if (options.clouds.mode != CloudMode::Off && !cloudMap.empty()) clouds.emplace(cloudMap);
+}
+
+std::vector<ShaderDefine> PassShared::cloudDefines() const {
+  if (!clouds) return {};
+  std::vector<ShaderDefine> defines{{"CLOUDS", "1"}};
+  if (options.clouds.mode == CloudMode::Fancy) defines.push_back({"CLOUDS_FANCY", "1"});
+  if (options.clouds.shadows) defines.push_back({"CLOUD_SHADOWS", "1"});
+  return defines;
+}
 
 LinkedProgram VariantBuilder::operator()(const char* vertex, const char* fragment,
                                          std::vector<ShaderDefine> extra) const {

@@ -2,11 +2,13 @@
 // What the renderer's passes share for the renderer's life: its options, the G-buffer's contents,
 // the block textures, an empty vertex array, and the names of the shader variants built.
 
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "assets/shader_source.h"
 #include "render/block_textures.h"
+#include "render/cloud_texture.h"
 #include "render/frame_inputs.h"
 #include "render/gbuffer.h"
 #include "render/gl/program.h"
@@ -15,15 +17,21 @@
 namespace terrasol {
 
 struct PassShared {
-  PassShared(const Atlas& atlas, const TintPalette& tints, const RendererOptions& options);
+  PassShared(const Atlas& atlas, const TintPalette& tints, const CloudMap& clouds,
+             const RendererOptions& options);
+
+  // The cloud layer's variant of the programs that draw or light what lies under the sky: none with
+  // clouds off or no map in any pack.
+  std::vector<ShaderDefine> cloudDefines() const;
 
   RendererOptions options;
   GBufferContents contents;       // the programs are built for it
   std::vector<float> smoothness;  // each atlas texture's highest _s smoothness (none without specular maps)
   float maxSmoothness;            // of them all
   BlockTextures textures;
-  gl::VertexArray empty;              // full-screen passes make their vertices from gl_VertexID
-  std::vector<std::string> variants;  // each program's name with the defines that chose it
+  std::optional<CloudTexture> clouds;  // with clouds on and a map
+  gl::VertexArray empty;               // full-screen passes make their vertices from gl_VertexID
+  std::vector<std::string> variants;   // each program's name with the defines that chose it
 };
 
 // Builds programs and names each variant in `names`: the fragment stage and its defines ("gbuffer+CUTOUT").

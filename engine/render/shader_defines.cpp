@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "assets/labpbr.h"
+#include "core/cloud_layer.h"
 #include "core/day_cycle.h"
 #include "core/luma.h"
 #include "core/render_settings.h"
@@ -100,6 +101,14 @@ std::vector<ShaderDefine> debugViewDefines() {
   return defines;
 }
 
+// The cloud layer's shape and look (core/cloud_layer.h) for lib/clouds.glsl.
+std::vector<ShaderDefine> cloudLayerDefines() {
+  auto literal = [](double v) { return floatLiteral(static_cast<float>(v)); };
+  return {{"CLOUD_THICKNESS", literal(kCloudThickness)}, {"CLOUD_CELL", literal(kCloudCellBlocks)},
+          {"CLOUD_ALPHA", literal(kCloudAlpha)},         {"CLOUD_ALBEDO", literal(kCloudAlbedo)},
+          {"CLOUD_SHADOW", literal(kCloudShadow)},       {"CLOUD_RANGE", literal(kCloudRange)}};
+}
+
 }  // namespace
 
 std::vector<ShaderDefine> gbufferDefines() {
@@ -145,6 +154,7 @@ std::vector<ShaderDefine> rendererDefines() {
   for (auto& d : vertexDefines()) defines.push_back(std::move(d));
   for (auto& d : debugViewDefines()) defines.push_back(std::move(d));
   defines.push_back({"SKY_RADIANCE", floatLiteral(kSkyRadiance)});
+  for (auto& d : cloudLayerDefines()) defines.push_back(std::move(d));
   const glm::vec3 w = kLumaWeights;
   defines.push_back({"LUMA_WEIGHTS", "vec3(" + floatLiteral(w.r) + ", " + floatLiteral(w.g) + ", " +
                                          floatLiteral(w.b) + ")"});

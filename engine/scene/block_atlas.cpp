@@ -10,6 +10,7 @@
 
 #include "assets/block_model.h"
 #include "assets/block_states.h"
+#include "assets/cloud_map.h"
 #include "assets/model_bake.h"
 #include "assets/tints.h"
 #include "core/error.h"
@@ -245,6 +246,7 @@ BlockAtlas buildBlockAtlas(const BlockRegistry& blocks, const PackStack& packs, 
   if (textures.empty()) textures.push_back(loadBlockTexture(packs, {"missing"}, result.problems));
   result.atlas = buildAtlas(textures);
   result.tints = loadColormaps(packs, result.problems);
+  result.clouds = loadCloudMap(packs, result.problems);
   result.faceTextures.resize(blocks.size());
   result.modelQuads.resize(blocks.size());
   result.modelChoices.resize(blocks.size());

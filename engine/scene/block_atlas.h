@@ -11,6 +11,7 @@
 #include "assets/atlas.h"
 #include "assets/model_bake.h"
 #include "assets/resource_pack.h"
+#include "core/cloud_layer.h"
 #include "core/enum_names.h"
 #include "core/tint_palette.h"
 #include "mesh/mesher.h"
@@ -30,6 +31,7 @@ struct BlockAtlas {
   // Per state: the earlier state of its block drawn just as it (BlockModelBake::sameAs), or itself.
   std::vector<BlockId> sameAs;
   TintPalette tints;  // the packs' colormaps
+  CloudMap clouds;    // and cloud layer (drawn with the blocks, read from the same stack)
   std::uint16_t textureOf(BlockId id, int face) const {
     return faceTextures[id][static_cast<std::size_t>(face)];
   }

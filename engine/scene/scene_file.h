@@ -15,6 +15,7 @@
 
 #include "core/day_cycle.h"
 #include "core/render_settings.h"
+#include "scene/render_settings_json.h"
 
 namespace terrasol {
 
@@ -87,6 +88,7 @@ struct SceneFile {
   ReflectionSettings reflections;  // "render.reflections"
   WaterSettings water;             // "render.water"
   BloomSettings bloom;             // "render.bloom"
+  CloudSettings clouds;            // "render.clouds"
   glm::dvec3 cameraPosition{0.0, 80.0, 0.0};
   glm::dvec3 cameraLookAt{0.0, 80.0, -1.0};
   float fov = 70.0f;                     // vertical degrees, in (0, 180)
@@ -104,15 +106,6 @@ SceneFile parseScene(std::string_view json, const std::filesystem::path& file);
 
 // "<file>: <key>: <what>", the form of every error about a scene's content, also for problems found
 // after parsing (an unknown block name, a pack that cannot be opened).
-// A "render.shadow" object (also the game's settings) at key path `key`, over `shadow`'s values; and back.
-void parseShadow(const nlohmann::json& value, const std::string& key, ShadowSettings& shadow);
-nlohmann::json shadowJson(const ShadowSettings& shadow);
-// A "render.reflections" object at key path `key`, over `reflections`' values.
-void parseReflections(const nlohmann::json& value, const std::string& key, ReflectionSettings& reflections);
-nlohmann::json reflectionsJson(const ReflectionSettings& reflections);
-void parseBloom(const nlohmann::json& value, const std::string& key, BloomSettings& bloom);
-nlohmann::json bloomJson(const BloomSettings& bloom);
-
 std::string sceneError(const SceneFile& scene, std::string_view key, std::string_view what);
 
 // Reads the file (Error naming it if missing or unreadable), then parseScene. `overrides` are

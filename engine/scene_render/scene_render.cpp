@@ -84,10 +84,10 @@ RendererOptions withProps(RendererOptions options, const PlacedProps& props) {
 }  // namespace
 
 struct SceneRenderer::Gpu {
-  Gpu(const ShaderPreprocessor& shaders, const Atlas& atlas, const TintPalette& tints,
-      const RendererOptions& options, glm::ivec2 size, const SceneFile& scene, const SceneWorld& world)
+  Gpu(const ShaderPreprocessor& shaders, const BlockAtlas& atlas, const RendererOptions& options,
+      glm::ivec2 size, const SceneFile& scene, const SceneWorld& world)
       : props(placeProps(scene, world)),
-        renderer(shaders, atlas, tints, withProps(options, props)),
+        renderer(shaders, atlas.atlas, atlas.tints, atlas.clouds, withProps(options, props)),
         target(size) {}
   PlacedProps props;  // before the renderer, which is built for what they need
   DeferredRenderer renderer;
@@ -118,8 +118,9 @@ SceneRenderer::SceneRenderer(const SceneFile& scene)
   options.water = scene.water;
   options.antialiasing = scene.antialiasing;
   options.bloom = scene.bloom;
-  gpu_ = std::make_unique<Gpu>(shaders, world_->atlas.atlas, world_->atlas.tints, options,
-                               glm::ivec2(scene.width, scene.height), scene, world_->world);
+  options.clouds = scene.clouds;
+  gpu_ = std::make_unique<Gpu>(shaders, world_->atlas, options, glm::ivec2(scene.width, scene.height), scene,
+                               world_->world);
   if (!scene.shaderpack.empty()) {
     // A pack that cannot be read or built leaves Terrasol's pipeline drawing, with the pack's error.
     try {

@@ -73,3 +73,5 @@ vec3 foggedLight(vec3 light, vec3 position) {
   float fog = smoothstep(u_fogRange.x, u_fogRange.y, length(position.xz));
   return light * ((1.0 - fog) * (1.0 - waterFog(position)));
 }
+
+#include "lib/clouds.glsl"

@@ -103,8 +103,11 @@ float edgeFade(vec2 uv) {
   return smoothstep(0.0, 0.05, min(d.x, d.y));
 }
 
-// The sky a ray in `dir` reflects where it hits nothing, dimmed by the surface's sky light.
-vec3 reflectedSky(vec3 dir, float skyLight) { return skyColor(dir) * levelBrightness(skyLight); }
+// The sky a ray from `from` (camera-relative) in `dir` reflects where it hits nothing, with the clouds
+// it passes, dimmed by the surface's sky light.
+vec3 reflectedSky(vec3 from, vec3 dir, float skyLight) {
+  return skyAlong(from, dir) * levelBrightness(skyLight);
+}
 
 // What a ray reflects: the hit's lit colour, else `missed` (the reflected sky, or under water the
 // water's colour).

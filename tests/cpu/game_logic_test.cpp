@@ -466,6 +466,7 @@ TEST(SettingsTest, SaveAndLoadRoundTripAndMissingMeansDefaults) {
   s.shaderpack = dir / "shaderpacks" / "a.zip";
   s.antialiasing = Antialiasing::Taa;
   s.bloom = {true, 0.08f};
+  s.clouds = {CloudMode::Flat, false};
   s.keys.bind(Action::Jump, GLFW_KEY_J);
   saveSettings(file, s);
   const GameSettings back = loadSettings(file);
@@ -478,6 +479,8 @@ TEST(SettingsTest, SaveAndLoadRoundTripAndMissingMeansDefaults) {
   EXPECT_EQ(back.shaderpack, s.shaderpack);
   EXPECT_EQ(back.antialiasing, Antialiasing::Taa);
   EXPECT_EQ(back.bloom, s.bloom);
+  EXPECT_EQ(back.clouds, s.clouds);
+  EXPECT_EQ(defaults.clouds.mode, CloudMode::Fancy) << "the game has clouds unless told otherwise";
   EXPECT_TRUE(defaults.shaderpack.empty()) << "Terrasol's own pipeline";
   EXPECT_EQ(back.keys.key(Action::Jump), GLFW_KEY_J);
   EXPECT_EQ(back.keys.key(Action::Forward), GLFW_KEY_W);

@@ -22,6 +22,7 @@ TEST(RenderPreset, EachAsksNoLessThanTheOneBelow) {
     EXPECT_GE(p.reflections, lower.reflections) << i;
     EXPECT_GE(static_cast<int>(p.antialiasing), static_cast<int>(lower.antialiasing)) << i;
     EXPECT_GE(p.bloom, lower.bloom) << i;
+    EXPECT_GE(static_cast<int>(p.clouds), static_cast<int>(lower.clouds)) << i;
   }
 }
 
@@ -34,6 +35,7 @@ TEST(RenderPreset, ASceneKeyChangesWhatThePresetSet) {
   EXPECT_EQ(scene.shadow.resolution, 2048);
   EXPECT_EQ(scene.antialiasing, Antialiasing::Taa);
   EXPECT_FALSE(scene.bloom.enabled);
+  EXPECT_EQ(scene.clouds.mode, CloudMode::Fancy);
   EXPECT_THROW(parseScene(R"({"world": {"generator": "flat"}, "render": {"preset": "potato"}})", "p.json"),
                Error);
 }
@@ -46,10 +48,15 @@ TEST(RenderPreset, SettingsAreKnownByThePresetTheyMatch) {
     ReflectionSettings reflections;
     Antialiasing aa = Antialiasing::None;
     BloomSettings bloom;
-    applyPreset(preset, view, shadow, reflections, aa, bloom);
-    EXPECT_EQ(presetOf(view, shadow, reflections, aa, bloom), preset) << kRenderPresets.nameOf(preset);
+    CloudSettings clouds;
+    applyPreset(preset, view, shadow, reflections, aa, bloom, clouds);
+    EXPECT_EQ(presetOf(view, shadow, reflections, aa, bloom, clouds), preset)
+        << kRenderPresets.nameOf(preset);
+    clouds.mode = CloudMode::Off;
+    EXPECT_EQ(presetOf(view, shadow, reflections, aa, bloom, clouds), std::nullopt) << "custom";
+    applyPreset(preset, view, shadow, reflections, aa, bloom, clouds);
     ++view;
-    EXPECT_EQ(presetOf(view, shadow, reflections, aa, bloom), std::nullopt) << "custom";
+    EXPECT_EQ(presetOf(view, shadow, reflections, aa, bloom, clouds), std::nullopt) << "custom";
   }
 }
 

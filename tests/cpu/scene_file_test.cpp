@@ -252,6 +252,21 @@ TEST(SceneFile, ReflectionSettings) {
       failsWith(R"({"render": {"water": {"waves": 1}}})", "render.water.waves: expected true or false"));
 }
 
+TEST(SceneFile, CloudSettings) {
+  EXPECT_EQ(parseScene("{}", "a.json").clouds, CloudSettings{}) << "absent: the defaults";
+  EXPECT_EQ(CloudSettings{}.mode, CloudMode::Off) << "a scene draws no clouds unless it asks";
+  for (std::size_t i = 0; i < kCloudModes.size(); ++i) {
+    const std::string json = R"({"render": {"clouds": {"mode": ")" + std::string(kCloudModes[i]) + R"("}}})";
+    EXPECT_EQ(parseScene(json, "a.json").clouds.mode, static_cast<CloudMode>(i)) << kCloudModes[i];
+  }
+  EXPECT_FALSE(parseScene(R"({"render": {"clouds": {"shadows": false}}})", "a.json").clouds.shadows);
+  EXPECT_TRUE(failsWith(R"({"render": {"clouds": {"mode": "volumetric"}}})", "render.clouds.mode: expected"));
+  EXPECT_TRUE(failsWith(R"({"render": {"clouds": {"height": 128}}})", "render.clouds.height: unknown key"));
+  CloudSettings back;
+  parseClouds(cloudsJson({CloudMode::Flat, false}), "clouds", back);
+  EXPECT_EQ(back, (CloudSettings{CloudMode::Flat, false}));
+}
+
 // Every name a file may give parses to the enum value of the same index.
 TEST(SceneFile, EveryEnumNameParsesToItsValue) {
   for (std::size_t i = 0; i < kDebugViews.size(); ++i) {

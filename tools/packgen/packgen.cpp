@@ -166,6 +166,9 @@ void writeDefaultPack(const std::filesystem::path& dir) {
   const auto colormapDir = dir / "assets" / "minecraft" / "textures" / "colormap";
   std::filesystem::create_directories(colormapDir);
   for (const auto& c : generateColormaps()) saveImage(colormapDir / (c.name + ".png"), c.map);
+  const auto environmentDir = dir / "assets" / "minecraft" / "textures" / "environment";
+  std::filesystem::create_directories(environmentDir);
+  saveImage(environmentDir / "clouds.png", generateClouds());
   for (const GeneratedFile& f : generateShapedBlockFiles()) {
     std::filesystem::create_directories((dir / f.path).parent_path());
     std::ofstream(dir / f.path, std::ios::binary) << f.text;

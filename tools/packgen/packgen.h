@@ -25,6 +25,8 @@ struct GeneratedColormap {
   Image map;         // 256 x 256
 };
 std::vector<GeneratedColormap> generateColormaps();
+// The cloud layer's map (textures/environment/clouds.png), 256 x 256, repeating.
+Image generateClouds();
 
 // A text file of the pack: its path under the pack's root and its contents.
 struct GeneratedFile {
@@ -38,7 +40,8 @@ std::vector<GeneratedFile> generateShapedBlockFiles();
 std::vector<std::string> shapedBlockNames();
 
 // Writes every texture (and _n, _s, .png.mcmeta) into DIR/assets/minecraft/textures/block/, the
-// colormaps into DIR/assets/minecraft/textures/colormap/, and the shaped blocks' blockstates and models.
+// colormaps into DIR/assets/minecraft/textures/colormap/, the cloud layer into .../environment/, and the
+// shaped blocks' blockstates and models.
 void writeDefaultPack(const std::filesystem::path& dir);
 
 }  // namespace terrasol::packgen

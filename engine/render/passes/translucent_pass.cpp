@@ -8,10 +8,12 @@ namespace terrasol {
 TranslucentPass::TranslucentPass(const VariantBuilder& build, PassShared& shared)
     : shared_(shared),
       blocks_(build("gbuffer.vert", "translucent.frag",
-                    with(with(lightingDefines(shared.options), shared.contents.defines()),
-                         surfaceDefines(shared.options)))) {
+                    with(with(with(lightingDefines(shared.options), shared.contents.defines()),
+                              surfaceDefines(shared.options)),
+                         shared.cloudDefines()))) {
   if (!shared.options.props.blend) return;
-  const auto defines = with(lightingDefines(shared.options), shared.contents.defines());
+  const auto defines =
+      with(with(lightingDefines(shared.options), shared.contents.defines()), shared.cloudDefines());
   props_ = gl::ProgramWith<Prop>(build("prop.vert", "prop_translucent.frag", defines));
 }
 
