@@ -37,6 +37,8 @@ RendererOptions optionsOf(const GameSettings& settings, const PropNeeds& props) 
   options.antialiasing = settings.antialiasing;
   options.bloom = settings.bloom;
   options.clouds = settings.clouds;
+  options.fog = settings.fog;
+  options.shafts = settings.shafts;
   options.props = props;
   return options;
 }

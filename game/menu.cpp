@@ -188,6 +188,9 @@ void Menu::settingsTab(GameSettings& s, MenuResult& out) {
   out.rendererChanged |= released();
   out.rendererChanged |= comboOf("Clouds", s.clouds.mode, kCloudModes);
   out.rendererChanged |= ImGui::Checkbox("Cloud shadows", &s.clouds.shadows);
+  ImGui::SliderFloat("Height fog density", &s.fog.density, 0.0f, 0.05f, "%.3f");
+  out.rendererChanged |= released();
+  out.rendererChanged |= ImGui::Checkbox("Light shafts (need shadows and fog)", &s.shafts.enabled);
   ImGui::Separator();
   ImGui::TextUnformatted("Reflections (smooth blocks, water, glass)");
   ReflectionSettings& r = s.reflections;

@@ -38,6 +38,8 @@ struct GameSettings {
   Antialiasing antialiasing = Antialiasing::None;  // "antialiasing": as render.antialiasing in scenes
   BloomSettings bloom;                             // "bloom": as render.bloom
   CloudSettings clouds{CloudMode::Fancy};          // "clouds": as render.clouds
+  FogSettings fog;                                 // "fog": as render.fog
+  ShaftSettings shafts;                            // "shafts": as render.shafts
   std::vector<PackChoice> packs;                   // stacked bottom to top over the default pack
   std::filesystem::path shaderpack;  // an OptiFine/Iris shader pack drawing instead of Terrasol's pipeline
   KeyBindings keys;

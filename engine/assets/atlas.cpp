@@ -51,7 +51,9 @@ glm::vec4 Atlas::tileRect(int tile) const {
   return {x / w, y / h, (x + static_cast<float>(tileSize)) / w, (y + static_cast<float>(tileSize)) / h};
 }
 
-std::vector<float> textureSmoothness(const Atlas& atlas) {
+// Per texture, the largest of `value(texel)` over its _s texels in every frame, scaled to 0..1.
+template <class Value>
+std::vector<float> largestSpecular(const Atlas& atlas, Value value) {
   std::vector<float> out(atlas.textures.size(), 0.0f);
   if (atlas.specular.empty()) return out;
   const Image& level = atlas.specular.front();
@@ -63,11 +65,20 @@ std::vector<float> textureSmoothness(const Atlas& atlas) {
       const int x0 = (tile % atlas.columns) * atlas.slotSize + pad,
                 y0 = (tile / atlas.columns) * atlas.slotSize + pad;
       for (int y = y0; y < y0 + atlas.tileSize; ++y)
-        for (int x = x0; x < x0 + atlas.tileSize; ++x) most = std::max(most, level.pixel(x, y)[0]);
+        for (int x = x0; x < x0 + atlas.tileSize; ++x) most = std::max(most, value(level.pixel(x, y)));
     }
     out[t] = static_cast<float>(most) / 255.0f;
   }
   return out;
+}
+
+std::vector<float> textureSmoothness(const Atlas& atlas) {
+  return largestSpecular(atlas, [](const std::uint8_t* s) { return s[0]; });
+}
+
+std::vector<float> textureEmission(const Atlas& atlas) {
+  // LabPBR: alpha 255 is no emission, below it alpha / 254 (lib/labpbr.glsl).
+  return largestSpecular(atlas, [](const std::uint8_t* s) { return s[3] == 255 ? std::uint8_t{0} : s[3]; });
 }
 
 int Atlas::find(const std::string& name) const {

@@ -44,6 +44,8 @@ struct Atlas {
 
 // Each texture's highest LabPBR smoothness (_s red, 0..1) over all its frames, by texture index.
 std::vector<float> textureSmoothness(const Atlas& atlas);
+// Each texture's highest LabPBR emission (_s alpha below 255, 0..1) over all its frames.
+std::vector<float> textureEmission(const Atlas& atlas);
 
 // Lays out and builds the atlases. The tile size is the largest frame width, rounded up to a power
 // of two (at most 512); smaller textures are scaled up without filtering (pixel art stays crisp).

@@ -118,6 +118,26 @@ struct CloudSettings {
   bool operator==(const CloudSettings&) const = default;
 };
 
+// "render.fog": height fog, a medium whose density falls off exponentially above a base height; the
+// distance fog at the world's edge is separate and always on.
+struct FogSettings {
+  float density = 0.0f;   // extinction per block at `base` (0..1); 0: no height fog
+  float base = 64.0f;     // y of that density (-4096..4096)
+  float falloff = 24.0f;  // blocks over which it falls by a factor e (1..1024)
+
+  bool operator==(const FogSettings&) const = default;
+};
+
+// "render.shafts": sunlight scattered towards the camera by the height fog's medium wherever the shadow
+// map sees the sun: shafts through foliage and cave mouths. Needs shadows and fog.
+struct ShaftSettings {
+  bool enabled = false;
+  int samples = 8;      // along each ray (1..64)
+  float scale = 0.25f;  // the march runs at this fraction of the frame's size (0.125..1)
+
+  bool operator==(const ShaftSettings&) const = default;
+};
+
 // The layers the settings ask for: one (warped), or the cascades, smallest first (distance / 2^k).
 inline int shadowLayers(const ShadowSettings& settings) {
   return settings.mode == ShadowMode::Cascaded ? std::clamp(settings.cascades, 2, kMaxShadowCascades) : 1;

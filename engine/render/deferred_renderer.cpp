@@ -26,6 +26,7 @@ DeferredRenderer::DeferredRenderer(const ShaderPreprocessor& shaders, const Atla
       reflection_(VariantBuilder(shaders, shared_), shared_),
       translucent_(VariantBuilder(shaders, shared_), shared_),
       shadow_(VariantBuilder(shaders, shared_), shared_),
+      shafts_(VariantBuilder(shaders, shared_), shared_),
       bloom_(VariantBuilder(shaders, shared_), shared_),
       taa_(VariantBuilder(shaders, shared_), shared_),
       final_(VariantBuilder(shaders, shared_), shared_),
@@ -84,7 +85,7 @@ void DeferredRenderer::render(const FrameInputs& inputs, const SectionMeshes& me
                      graph.transient("resolved")};
   for (RenderPass* pass :
        std::initializer_list<RenderPass*>{&shadow_, &geometry_, &lighting_, &reflection_, &translucent_,
-                                          &bloom_, &taa_, &final_, &fxaa_, &debug_, &outline_}) {
+                                          &shafts_, &bloom_, &taa_, &final_, &fxaa_, &debug_, &outline_}) {
     addPass(graph, *pass, frame);
   }
   graph.output(frame.resources.target);
@@ -149,6 +150,15 @@ FrameView DeferredRenderer::viewFor(const FrameInputs& inputs, glm::ivec2 size, 
   view.cone.aspect = aspect;
   view.cone.farPlane = camera.farPlane;
   view.cone.floorY = kMinY;
+  if (const FogSettings& fog = shared_.options.fog; fog.density > 0.0f) {
+    // Capped where the camera lies far below the base: the fog there is opaque anyway.
+    const double above = (inputs.cameraPosition.y - fog.base) / std::max(fog.falloff, 1.0f);
+    view.heightFog = {static_cast<float>(fog.density * std::exp(-std::clamp(above, -20.0, 80.0))),
+                      std::max(fog.falloff, 1.0f)};
+    // The horizon's light, dimmed by the sky light where the camera is: haze in a cave is dark.
+    const float sky = std::clamp(static_cast<float>(inputs.eyeLight.y) / 15.0f, 0.0f, 1.0f);
+    view.heightFogColour = view.day.skyHorizon * (kSkyRadiance * sky * sky);
+  }
   if (shared_.clouds) {
     // Wrapped in double, so the layer stays exact however far the camera or the world's time goes.
     const glm::dvec2 period = glm::dvec2(shared_.clouds->size()) * kCloudCellBlocks;

@@ -5,6 +5,7 @@
 //   lighting     LabPBR direct + ambient + block light + emission where something was drawn, sky elsewhere
 //   reflection   screen-space reflections of smooth surfaces, with the sky where a ray finds nothing
 //   translucent  water, glass, blended props: lit forward, blended over the lit scene
+//   shafts       sunlight scattered by the height fog where the shadow map sees the sun
 //   bloom        light spread from the scene into itself, energy-conserving
 //   taa          the jittered scene resolved with its reprojected history at the target's size
 //   final        exposure, tone map, sRGB -> the target framebuffer (or FXAA's image)
@@ -31,6 +32,7 @@
 #include "render/passes/output_passes.h"
 #include "render/passes/reflection_pass.h"
 #include "render/passes/shadow_pass.h"
+#include "render/passes/shafts_pass.h"
 #include "render/passes/taa_pass.h"
 #include "render/passes/translucent_pass.h"
 #include "render/section_meshes.h"
@@ -60,6 +62,8 @@ class DeferredRenderer final : public WorldRenderer {
   void forgetHistory() override { taa_.forgetHistory(); }
   // The last frame's reflection march, read back (slow: for reports); none when the pass did not run.
   std::optional<ReflectionPixels> readReflections() const;
+  // Pixels of TAA's last resolved frame holding NaN or Inf (read back: slow; 0 without TAA).
+  std::size_t nonFiniteResolved() const { return taa_.nonFinitePixels(); }
 
  private:
   FrameView viewFor(const FrameInputs& inputs, glm::ivec2 size, glm::vec2 jitter) const;
@@ -71,6 +75,7 @@ class DeferredRenderer final : public WorldRenderer {
   ReflectionPass reflection_;
   TranslucentPass translucent_;
   ShadowPass shadow_;
+  ShaftsPass shafts_;
   BloomPass bloom_;
   TaaPass taa_;
   FinalPass final_;

@@ -42,6 +42,8 @@ struct FrameView {
   ViewCone cone;                // the view's receivers, for the shadow pass
   GLuint clouds = 0;            // the cloud layer's map (0: no clouds)
   glm::vec3 cloudOrigin{0.0f};  // the camera in the layer's space (lib/clouds.glsl)
+  glm::vec2 heightFog{0.0f};    // the height fog's extinction per block at the camera, its falloff (blocks)
+  glm::vec3 heightFogColour{0.0f};  // the sky's light it scatters, as much as reaches the camera
 };
 
 // What the lighting and translucent passes read of the shadow map (the shadow pass's).

@@ -82,6 +82,8 @@ struct RendererOptions {
   WaterSettings water;
   BloomSettings bloom;
   CloudSettings clouds;
+  FogSettings fog;
+  ShaftSettings shafts;
   PropNeeds props;  // what the props to be drawn need: no prop variant is built for none
 };
 

@@ -103,7 +103,9 @@ SkyUniforms::SkyUniforms(const LinkedProgram& p)
       waterFog(p, "u_waterFog"),
       cloudOrigin(p, "u_cloudOrigin"),
       cloudLight(p, "u_cloudLight"),
-      cloudToLight(p, "u_cloudToLight") {}
+      cloudToLight(p, "u_cloudToLight"),
+      heightFog(p, "u_heightFog"),
+      heightFogColour(p, "u_heightFogColour") {}
 
 void SkyUniforms::set(const FrameView& view) const {
   const DayState& day = view.day;
@@ -118,6 +120,8 @@ void SkyUniforms::set(const FrameView& view) const {
   underWater.set(view.underWater);
   waterTop.set(view.waterTop);
   waterFog.set(view.waterFog);
+  heightFog.set(view.heightFog);
+  heightFogColour.set(view.heightFogColour);
   if (view.clouds) {
     cloudOrigin.set(view.cloudOrigin);
     cloudLight.set(day.lightColor);

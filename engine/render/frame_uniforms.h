@@ -57,6 +57,8 @@ struct SkyUniforms {
   gl::Uniform<float> waterTop;
   gl::Uniform<glm::vec3> waterFog;
   gl::Uniform<glm::vec3> cloudOrigin, cloudLight, cloudToLight;  // lib/clouds.glsl
+  gl::Uniform<glm::vec2> heightFog;
+  gl::Uniform<glm::vec3> heightFogColour;
 };
 
 // The reflected rays' march and the smoothness they fade in from.

@@ -21,16 +21,20 @@ PassShared::PassShared(const Atlas& atlas, const TintPalette& tints, const Cloud
       contents(contentsFor(atlas, options)),
       smoothness(contents.specular ? textureSmoothness(atlas) : std::vector<float>{}),
       maxSmoothness(smoothness.empty() ? 0.0f : *std::max_element(smoothness.begin(), smoothness.end())),
+      emission(contents.specular ? textureEmission(atlas) : std::vector<float>{}),
       textures(atlas, tints),
       empty(gl::VertexArray::create()) {
   if (options.clouds.mode != CloudMode::Off && !cloudMap.empty()) clouds.emplace(cloudMap);
 }
 
-std::vector<ShaderDefine> PassShared::cloudDefines() const {
-  if (!clouds) return {};
-  std::vector<ShaderDefine> defines{{"CLOUDS", "1"}};
-  if (options.clouds.mode == CloudMode::Fancy) defines.push_back({"CLOUDS_FANCY", "1"});
-  if (options.clouds.shadows) defines.push_back({"CLOUD_SHADOWS", "1"});
+std::vector<ShaderDefine> PassShared::skyDefines() const {
+  std::vector<ShaderDefine> defines;
+  if (clouds) {
+    defines.push_back({"CLOUDS", "1"});
+    if (options.clouds.mode == CloudMode::Fancy) defines.push_back({"CLOUDS_FANCY", "1"});
+    if (options.clouds.shadows) defines.push_back({"CLOUD_SHADOWS", "1"});
+  }
+  if (options.fog.density > 0.0f) defines.push_back({"HEIGHT_FOG", "1"});
   return defines;
 }
 

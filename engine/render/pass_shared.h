@@ -20,14 +20,15 @@ struct PassShared {
   PassShared(const Atlas& atlas, const TintPalette& tints, const CloudMap& clouds,
              const RendererOptions& options);
 
-  // The cloud layer's variant of the programs that draw or light what lies under the sky: none with
-  // clouds off or no map in any pack.
-  std::vector<ShaderDefine> cloudDefines() const;
+  // The sky library's variant (lib/sky.glsl) of the programs that draw the sky or fog what lies under
+  // it: the cloud layer (none with clouds off or no map in any pack) and the height fog.
+  std::vector<ShaderDefine> skyDefines() const;
 
   RendererOptions options;
   GBufferContents contents;       // the programs are built for it
   std::vector<float> smoothness;  // each atlas texture's highest _s smoothness (none without specular maps)
   float maxSmoothness;            // of them all
+  std::vector<float> emission;    // each atlas texture's highest _s emission (none without specular maps)
   BlockTextures textures;
   std::optional<CloudTexture> clouds;  // with clouds on and a map
   gl::VertexArray empty;               // full-screen passes make their vertices from gl_VertexID

@@ -121,4 +121,31 @@ nlohmann::json cloudsJson(const CloudSettings& clouds) {
   return {{"mode", nameOf(clouds.mode, kCloudModes)}, {"shadows", clouds.shadows}};
 }
 
+void parseFog(const json& value, const std::string& key, FogSettings& fog) {
+  checkObject(value, key, {"density", "base", "falloff"});
+  if (const json* v = field(value, "density"))
+    fog.density = numberIn(*v, member(key, "density"), 0.0, 1.0, false);
+  if (const json* v = field(value, "base"))
+    fog.base = numberIn(*v, member(key, "base"), -4096.0, 4096.0, false);
+  if (const json* v = field(value, "falloff"))
+    fog.falloff = numberIn(*v, member(key, "falloff"), 1.0, 1024.0, false);
+}
+
+nlohmann::json fogJson(const FogSettings& fog) {
+  return {{"density", fog.density}, {"base", fog.base}, {"falloff", fog.falloff}};
+}
+
+void parseShafts(const json& value, const std::string& key, ShaftSettings& shafts) {
+  checkObject(value, key, {"enabled", "samples", "scale"});
+  if (const json* v = field(value, "enabled")) shafts.enabled = boolean(*v, member(key, "enabled"));
+  if (const json* v = field(value, "samples"))
+    shafts.samples = static_cast<int>(wholeNumber(*v, member(key, "samples"), 1, 64));
+  if (const json* v = field(value, "scale"))
+    shafts.scale = numberIn(*v, member(key, "scale"), 0.125, 1.0, false);
+}
+
+nlohmann::json shaftsJson(const ShaftSettings& shafts) {
+  return {{"enabled", shafts.enabled}, {"samples", shafts.samples}, {"scale", shafts.scale}};
+}
+
 }  // namespace terrasol

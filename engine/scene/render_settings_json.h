@@ -16,10 +16,14 @@ nlohmann::json shadowJson(const ShadowSettings& shadow);
 // A "render.reflections" object at key path `key`, over `reflections`' values.
 void parseReflections(const nlohmann::json& value, const std::string& key, ReflectionSettings& reflections);
 nlohmann::json reflectionsJson(const ReflectionSettings& reflections);
-// "render.bloom" and "render.clouds", the same way.
+// "render.bloom", "render.clouds", "render.fog" and "render.shafts", the same way.
 void parseBloom(const nlohmann::json& value, const std::string& key, BloomSettings& bloom);
 nlohmann::json bloomJson(const BloomSettings& bloom);
 void parseClouds(const nlohmann::json& value, const std::string& key, CloudSettings& clouds);
 nlohmann::json cloudsJson(const CloudSettings& clouds);
+void parseFog(const nlohmann::json& value, const std::string& key, FogSettings& fog);
+nlohmann::json fogJson(const FogSettings& fog);
+void parseShafts(const nlohmann::json& value, const std::string& key, ShaftSettings& shafts);
+nlohmann::json shaftsJson(const ShaftSettings& shafts);
 
 }  // namespace terrasol

@@ -141,17 +141,30 @@ std::vector<SceneProp> parseProps(const json& value, const path& sceneDir) {
 }
 
 void parseRender(const json& render, const path& sceneDir, SceneFile& scene) {
-  checkObject(render, "render", {"width",           "height",
-                                 "scale",           "target_fps",
-                                 "view_distance",   "debug_view",
-                                 "specular",        "material_ao",
-                                 "cave_culling",    "shadow_caster_culling",
-                                 "cull_faces_away", "leave_out_absent_maps",
-                                 "cull_passes",     "shadow",
-                                 "reflections",     "water",
-                                 "shaderpack",      "antialiasing",
-                                 "bloom",           "clouds",
-                                 "preset"});
+  checkObject(render, "render",
+              {"width",
+               "height",
+               "scale",
+               "target_fps",
+               "view_distance",
+               "debug_view",
+               "specular",
+               "material_ao",
+               "cave_culling",
+               "shadow_caster_culling",
+               "cull_faces_away",
+               "leave_out_absent_maps",
+               "cull_passes",
+               "shadow",
+               "reflections",
+               "water",
+               "shaderpack",
+               "antialiasing",
+               "bloom",
+               "clouds",
+               "fog",
+               "shafts",
+               "preset"});
   // First: the scene's own keys change what the preset set.
   if (const json* v = field(render, "preset")) {
     applyPreset(enumOf(*v, "render.preset", kRenderPresets), scene.viewDistance, scene.shadow,
@@ -199,6 +212,8 @@ void parseRender(const json& render, const path& sceneDir, SceneFile& scene) {
   }
   if (const json* v = field(render, "bloom")) parseBloom(*v, "render.bloom", scene.bloom);
   if (const json* v = field(render, "clouds")) parseClouds(*v, "render.clouds", scene.clouds);
+  if (const json* v = field(render, "fog")) parseFog(*v, "render.fog", scene.fog);
+  if (const json* v = field(render, "shafts")) parseShafts(*v, "render.shafts", scene.shafts);
   if (const json* v = field(render, "leave_out_absent_maps")) {
     scene.leaveOutAbsentMaps = boolean(*v, "render.leave_out_absent_maps");
   }

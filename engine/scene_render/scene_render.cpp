@@ -119,6 +119,8 @@ SceneRenderer::SceneRenderer(const SceneFile& scene)
   options.antialiasing = scene.antialiasing;
   options.bloom = scene.bloom;
   options.clouds = scene.clouds;
+  options.fog = scene.fog;
+  options.shafts = scene.shafts;
   gpu_ = std::make_unique<Gpu>(shaders, world_->atlas, options, glm::ivec2(scene.width, scene.height), scene,
                                world_->world);
   if (!scene.shaderpack.empty()) {
@@ -213,7 +215,7 @@ RenderedFrame SceneRenderer::renderFrame(int frame, const FrameRequest& request)
   }
   if (request.checkNan || request.readBack) {
     out.pixels = gpu_->renderer.gbuffer()->read();
-    out.nanPixels = nonFinitePixels(out.pixels);
+    out.nanPixels = nonFinitePixels(out.pixels) + gpu_->renderer.nonFiniteResolved();
   }
   if (request.readBack) out.reflections = gpu_->renderer.readReflections();
   return out;

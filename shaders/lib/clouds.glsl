@@ -11,11 +11,14 @@ uniform vec3 u_cloudToLight;  // unit, towards it
 #ifdef CLOUDS
 const int kCloudMaxSteps = int(CLOUD_RANGE / CLOUD_CELL) * 2 + 2;  // cells a ray crosses within range
 
-bool cloudCell(ivec2 cell) {
+// A cell's cover (0..1), the map repeating.
+float cloudCover(ivec2 cell) {
   ivec2 size = textureSize(u_clouds, 0);
   ivec2 wrapped = cell - size * ivec2(floor(vec2(cell) / vec2(size)));  // % is undefined below 0
-  return texelFetch(u_clouds, wrapped, 0).r >= 0.5;
+  return texelFetch(u_clouds, wrapped, 0).r;
 }
+
+bool cloudCell(ivec2 cell) { return cloudCover(cell) >= 0.5; }
 
 // A face of the layer facing `normal`, lit by the light wrapped round (light scatters into a cloud)
 // and by the sky's mean radiance, faded into the sky along `dir` with `distance` (horizontal blocks).
@@ -105,8 +108,14 @@ float cloudShadow(vec3 position) {
   vec3 p = u_cloudOrigin + position;
   float below = 0.5 * CLOUD_THICKNESS - p.y;
   if (below <= 0.0 || u_cloudToLight.y <= 0.0) return 1.0;
-  vec2 at = p.xz + u_cloudToLight.xz * (below / max(u_cloudToLight.y, 0.05));
-  float cover = smoothstep(0.3, 0.7, texture(u_clouds, at / (CLOUD_CELL * vec2(textureSize(u_clouds, 0)))).r);
+  // Bilinear from whole-texel fetches (a filtered lookup costs far more on llvmpipe), texel centres
+  // at the cells' centres.
+  vec2 at = (p.xz + u_cloudToLight.xz * (below / max(u_cloudToLight.y, 0.05))) / CLOUD_CELL - 0.5;
+  ivec2 i = ivec2(floor(at));
+  vec2 f = at - vec2(i);
+  float cover = mix(mix(cloudCover(i), cloudCover(i + ivec2(1, 0)), f.x),
+                    mix(cloudCover(i + ivec2(0, 1)), cloudCover(i + ivec2(1, 1)), f.x), f.y);
+  cover = smoothstep(0.3, 0.7, cover);
   return 1.0 - CLOUD_SHADOW * cover * smoothstep(0.0, 0.1, u_cloudToLight.y);
 #else
   return 1.0;

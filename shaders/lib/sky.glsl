@@ -61,17 +61,48 @@ float waterFog(vec3 position) {
   return 1.0 - exp(-path / 10.0);
 }
 
+// Height fog (render.fog, with HEIGHT_FOG): a medium whose extinction falls off exponentially with
+// height, scattering the sky's light (dimmed as the camera's sky light is; the sun's is the shafts').
+uniform vec2 u_heightFog;         // extinction per block at the camera's height; blocks per e-fold
+uniform vec3 u_heightFogColour;   // the light it scatters towards the camera (linear)
+
+// Its extinction per block at `position` (camera-relative); the exponent capped, as on the CPU.
+float heightFogDensity(vec3 position) {
+  return u_heightFog.x * exp(-clamp(position.y / u_heightFog.y, -20.0, 80.0));
+}
+
+// Its optical depth from the camera to `position`: the density integrated along the straight path,
+// L x (1 - e^-k) / k for a rise of k e-folds (its series near k = 0, where the quotient is 0 / 0).
+float heightFogDepth(vec3 position) {
+  float k = clamp(position.y / u_heightFog.y, -20.0, 80.0);
+  float integral = abs(k) < 1e-3 ? 1.0 - 0.5 * k : (1.0 - exp(-k)) / k;
+  return u_heightFog.x * length(position) * integral;
+}
+
+// `color` seen through the height fog from the camera to `position` (unchanged without HEIGHT_FOG).
+vec3 heightFogged(vec3 color, vec3 position) {
+#ifdef HEIGHT_FOG
+  return mix(u_heightFogColour, color, exp(-heightFogDepth(position)));
+#else
+  return color;
+#endif
+}
+
 // Distant surfaces fade into the sky behind them (`sky`: skyColor(viewDir)), so the world's edge
-// never shows; under water, into the water's colour.
+// never shows; the height fog lies over them; under water, they fade into the water's colour.
 vec3 fogged(vec3 color, vec3 position, vec3 sky) {
   float fog = smoothstep(u_fogRange.x, u_fogRange.y, length(position.xz));
-  return mix(mix(color, sky, fog), u_waterFog, waterFog(position));
+  return mix(heightFogged(mix(color, sky, fog), position), u_waterFog, waterFog(position));
 }
 
 // Light added on top of a surface's (a reflection), faded as the surface is.
 vec3 foggedLight(vec3 light, vec3 position) {
   float fog = smoothstep(u_fogRange.x, u_fogRange.y, length(position.xz));
-  return light * ((1.0 - fog) * (1.0 - waterFog(position)));
+  float through = (1.0 - fog) * (1.0 - waterFog(position));
+#ifdef HEIGHT_FOG
+  through *= exp(-heightFogDepth(position));
+#endif
+  return light * through;
 }
 
 #include "lib/clouds.glsl"

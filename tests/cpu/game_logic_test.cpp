@@ -467,6 +467,8 @@ TEST(SettingsTest, SaveAndLoadRoundTripAndMissingMeansDefaults) {
   s.antialiasing = Antialiasing::Taa;
   s.bloom = {true, 0.08f};
   s.clouds = {CloudMode::Flat, false};
+  s.fog = {0.01f, 70.0f, 12.0f};
+  s.shafts = {true, 12, 0.5f};
   s.keys.bind(Action::Jump, GLFW_KEY_J);
   saveSettings(file, s);
   const GameSettings back = loadSettings(file);
@@ -480,6 +482,8 @@ TEST(SettingsTest, SaveAndLoadRoundTripAndMissingMeansDefaults) {
   EXPECT_EQ(back.antialiasing, Antialiasing::Taa);
   EXPECT_EQ(back.bloom, s.bloom);
   EXPECT_EQ(back.clouds, s.clouds);
+  EXPECT_EQ(back.fog, s.fog);
+  EXPECT_EQ(back.shafts, s.shafts);
   EXPECT_EQ(defaults.clouds.mode, CloudMode::Fancy) << "the game has clouds unless told otherwise";
   EXPECT_TRUE(defaults.shaderpack.empty()) << "Terrasol's own pipeline";
   EXPECT_EQ(back.keys.key(Action::Jump), GLFW_KEY_J);

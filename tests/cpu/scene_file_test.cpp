@@ -267,6 +267,24 @@ TEST(SceneFile, CloudSettings) {
   EXPECT_EQ(back, (CloudSettings{CloudMode::Flat, false}));
 }
 
+TEST(SceneFile, FogAndShaftSettings) {
+  const SceneFile scene = parseScene(R"({"render": {"fog": {"density": 0.02, "base": 70, "falloff": 8},
+      "shafts": {"enabled": true, "samples": 16, "scale": 0.5}}})",
+                                     "a.json");
+  EXPECT_EQ(scene.fog, (FogSettings{0.02f, 70.0f, 8.0f}));
+  EXPECT_EQ(scene.shafts, (ShaftSettings{true, 16, 0.5f}));
+  EXPECT_EQ(parseScene("{}", "a.json").fog.density, 0.0f) << "no height fog unless asked";
+  EXPECT_FALSE(parseScene("{}", "a.json").shafts.enabled);
+  EXPECT_TRUE(failsWith(R"({"render": {"fog": {"falloff": 0}}})", "render.fog.falloff: expected"));
+  EXPECT_TRUE(failsWith(R"({"render": {"shafts": {"samples": 0}}})", "render.shafts.samples: expected"));
+  FogSettings fog;
+  parseFog(fogJson({0.5f, -3.0f, 100.0f}), "fog", fog);
+  EXPECT_EQ(fog, (FogSettings{0.5f, -3.0f, 100.0f}));
+  ShaftSettings shafts;
+  parseShafts(shaftsJson({true, 3, 0.125f}), "shafts", shafts);
+  EXPECT_EQ(shafts, (ShaftSettings{true, 3, 0.125f}));
+}
+
 // Every name a file may give parses to the enum value of the same index.
 TEST(SceneFile, EveryEnumNameParsesToItsValue) {
   for (std::size_t i = 0; i < kDebugViews.size(); ++i) {

@@ -93,5 +93,25 @@ TEST_F(BloomTest, LeftOutWithNoPixelChangedWhenOff) {
   EXPECT_TRUE(none.renderFrame(0).image.rgba == frame.image.rgba);
 }
 
+// With nothing bright in view (daylight hills with the sun behind the camera, no emissive texture,
+// no water or smooth block) bloom is left out; glowstone in view, or the sun, brings it back.
+TEST_F(BloomTest, LeftOutWhenNothingInViewIsBright) {
+  auto skippedBecause = [](const RenderedFrame& frame) {
+    for (const auto& s : frame.stats.passesSkipped)
+      if (s.pass == "bloom") return s.why;
+    return std::string();
+  };
+  SceneFile hills = loadScene(kScenes / "noon_terrain.json");
+  hills.bloom.enabled = true;
+  hills.time = 3000;  // the sun high in the east, the camera looking steeply down at the hills
+  hills.cameraLookAt = glm::dvec3(0.0, 40.0, 0.0);
+  EXPECT_EQ(skippedBecause(SceneRenderer(hills).renderFrame(0)), "nothing in view is bright");
+  hills.time = 500;                                                        // just risen, low in the east
+  hills.cameraLookAt = hills.cameraPosition + glm::dvec3(40.0, 5.0, 0.0);  // east, at the sun
+  EXPECT_EQ(skippedBecause(SceneRenderer(hills).renderFrame(0)), "") << "the sun's glow in view";
+  EXPECT_EQ(skippedBecause(SceneRenderer(loadScene(kScenes / "bloom_glowstone.json")).renderFrame(0)), "")
+      << "glowstone in view";
+}
+
 }  // namespace
 }  // namespace terrasol

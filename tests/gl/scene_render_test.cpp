@@ -47,7 +47,7 @@ INSTANTIATE_TEST_SUITE_P(Scenes, SceneGoldenTest,
                                            "shadow_moon", "shadow_forest", "shadow_cave_mouth",
                                            "props_beside_blocks", "props_night_torch", "mirror_floor",
                                            "lake_pillar", "lake_sunset", "flooded_cave", "shapes",
-                                           "bloom_glowstone", "clouds_fancy"));
+                                           "bloom_glowstone", "clouds_fancy", "shafts_roof_hole"));
 
 TEST_F(SceneRenderTest, EveryDebugViewMatchesItsGolden) {
   SceneRenderer renderer(loadScene(kScenes / "metal_emissive.json"));

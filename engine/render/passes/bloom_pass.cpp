@@ -2,8 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
 
 #include "render/gl/render_target.h"
+#include "render/section_draw.h"
 
 namespace terrasol {
 
@@ -14,6 +17,8 @@ namespace {
 constexpr int kMaxLevels = 6;
 constexpr int kSmallestSide = 8;
 constexpr float kSpread = 0.6f;
+constexpr float kGlowDegrees = 25.0f;
+constexpr float kBelowHorizon = -0.1f;  // sine of the elevation below which the ground hides a disc
 
 }  // namespace
 
@@ -44,8 +49,34 @@ void BloomPass::setup(FrameGraph::Builder& builder, Frame& frame) {
   if (!shared_.options.bloom.enabled || shared_.options.bloom.strength <= 0.0f)
     return builder.skip("bloom is off");
   if (frame.inputs.debugView != DebugView::None) return builder.skip("a debug view is shown");
+  if (shared_.options.cullPasses && !brightInView(frame)) return builder.skip("nothing in view is bright");
   builder.read(frame.resources.scene);
   builder.write(frame.resources.scene);
+}
+
+// Whether anything in view can be brighter than its surroundings by far: an emissive texture, a prop
+// (its emission is not known here), the sun's or the moon's disc and glow, or while the light is up a
+// glint off water, glass or a smooth block. Without any, bloom would only blur the frame a little.
+bool BloomPass::brightInView(const Frame& frame) const {
+  const FrameView& view = frame.view;
+  for (const VisibleSection& v : frame.visible) {
+    for (const std::uint16_t t : v.section->textures) {
+      if (t < shared_.emission.size() && shared_.emission[t] > 0.0f) return true;
+      if (view.lightUp && t < shared_.smoothness.size() &&
+          shared_.smoothness[t] >= shared_.options.reflections.minSmoothness)
+        return true;
+    }
+  }
+  if (!frame.visibleProps.empty()) return true;
+  if (view.lightUp && quadsIn(frame.visible, MeshLayer::Translucent) > 0) return true;
+  // The discs' glow (lib/sky.glsl) is still bright some 25 degrees out: within that of the view's cone,
+  // unless the body is well below the horizon (the ground hides it).
+  const float halfDiagonal = glm::degrees(std::atan(std::tan(glm::radians(view.cone.fovDegrees * 0.5f)) *
+                                                    std::sqrt(1.0f + view.cone.aspect * view.cone.aspect)));
+  const float reach = std::cos(glm::radians(std::min(halfDiagonal + kGlowDegrees, 180.0f)));
+  const glm::vec3 forward(view.forward);
+  const auto inView = [&](glm::vec3 to) { return to.y > kBelowHorizon && glm::dot(forward, to) >= reach; };
+  return inView(view.day.toSun) || inView(view.day.toMoon);
 }
 
 void BloomPass::draw(GLuint program, GLuint framebuffer, glm::ivec2 size) const {

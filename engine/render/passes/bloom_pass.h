@@ -32,6 +32,7 @@ class BloomPass final : public RenderPass {
     gl::Uniform<float> strength, weights;
   };
   void realize(glm::ivec2 sceneSize);
+  bool brightInView(const Frame& frame) const;
   void draw(GLuint program, GLuint framebuffer, glm::ivec2 size) const;
 
   PassShared& shared_;

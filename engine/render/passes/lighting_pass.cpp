@@ -4,10 +4,10 @@ namespace terrasol {
 
 LightingPass::LightingPass(const VariantBuilder& build, PassShared& shared)
     : shared_(shared),
-      lighting_(build(
-          "fullscreen.vert", "lighting.frag",
-          with(with(lightingDefines(shared.options), shared.contents.defines()), shared.cloudDefines()))),
-      sky_(build("fullscreen.vert", "sky.frag", shared.cloudDefines())) {}
+      lighting_(
+          build("fullscreen.vert", "lighting.frag",
+                with(with(lightingDefines(shared.options), shared.contents.defines()), shared.skyDefines()))),
+      sky_(build("fullscreen.vert", "sky.frag", shared.skyDefines())) {}
 
 void LightingPass::setup(FrameGraph::Builder& builder, Frame& frame) {
   builder.read(frame.resources.gbuffer);

@@ -38,13 +38,13 @@ ReflectionPass::ReflectionPass(const VariantBuilder& build, PassShared& shared) 
   if (!shared.options.reflections.enabled) return;
   mask_ = gl::ProgramWith<Mask>(build("fullscreen.vert", "reflection_mask.frag"));
   march_ = gl::ProgramWith<March>(
-      build("fullscreen.vert", "reflection.frag", with(shared.contents.defines(), shared.cloudDefines())));
+      build("fullscreen.vert", "reflection.frag", with(shared.contents.defines(), shared.skyDefines())));
   composite_ = gl::ProgramWith<Composite>(build("fullscreen.vert", "reflection_composite.frag"));
   depthCopy_ = build("fullscreen.vert", "reflection_depth.frag");
   const std::vector<ShaderDefine> surface = with(shared.contents.defines(), surfaceDefines(shared.options));
   surfaceDepth_ = gl::ProgramWith<SurfaceDepth>(build("gbuffer.vert", "depth_only.frag", surface));
   surfaceMarch_ = gl::ProgramWith<SurfaceMarch>(
-      build("gbuffer.vert", "surface_reflection.frag", with(surface, shared.cloudDefines())));
+      build("gbuffer.vert", "surface_reflection.frag", with(surface, shared.skyDefines())));
 }
 
 void ReflectionPass::setup(FrameGraph::Builder& builder, Frame& frame) {

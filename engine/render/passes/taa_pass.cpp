@@ -1,5 +1,8 @@
 #include "render/passes/taa_pass.h"
 
+#include <cmath>
+#include <vector>
+
 #include "render/gl/render_target.h"
 
 namespace terrasol {
@@ -58,6 +61,19 @@ void TaaPass::execute(Frame& frame) {
   historyValid_ = true;
   lastViewProjection_ = view.unjittered;
   lastCamera_ = view.camera;
+}
+
+std::size_t TaaPass::nonFinitePixels() const {
+  if (!historyValid_) return 0;
+  std::vector<float> pixels(static_cast<std::size_t>(size_.x) * static_cast<std::size_t>(size_.y) * 4);
+  glGetTextureImage(history_[current_].id(), 0, GL_RGBA, GL_FLOAT,
+                    static_cast<GLsizei>(pixels.size() * sizeof(float)), pixels.data());
+  std::size_t bad = 0;
+  for (std::size_t p = 0; p < pixels.size(); p += 4) {
+    bad += !(std::isfinite(pixels[p]) && std::isfinite(pixels[p + 1]) && std::isfinite(pixels[p + 2]) &&
+             std::isfinite(pixels[p + 3]));
+  }
+  return bad;
 }
 
 }  // namespace terrasol

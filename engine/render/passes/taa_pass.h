@@ -4,6 +4,7 @@
 // result, reprojected by depth and the camera's motion, clipped to the neighbourhood of this frame's
 // samples and rejected where it was hidden. Keeps its history across frames.
 
+#include <cstddef>
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
 
@@ -26,6 +27,8 @@ class TaaPass final : public RenderPass {
   int nextJitterFrame() const { return historyValid_ ? jitterFrame_ : 0; }
   // The last frame's (an aside draws with it, so its pixels are that frame's).
   int lastJitterFrame() const { return historyValid_ ? jitterFrame_ - 1 : 0; }
+  // Pixels of the last resolved frame holding NaN or Inf (read back: slow; 0 without history).
+  std::size_t nonFinitePixels() const;
 
  private:
   struct Resolve {

@@ -10,10 +10,10 @@ TranslucentPass::TranslucentPass(const VariantBuilder& build, PassShared& shared
       blocks_(build("gbuffer.vert", "translucent.frag",
                     with(with(with(lightingDefines(shared.options), shared.contents.defines()),
                               surfaceDefines(shared.options)),
-                         shared.cloudDefines()))) {
+                         shared.skyDefines()))) {
   if (!shared.options.props.blend) return;
   const auto defines =
-      with(with(lightingDefines(shared.options), shared.contents.defines()), shared.cloudDefines());
+      with(with(lightingDefines(shared.options), shared.contents.defines()), shared.skyDefines());
   props_ = gl::ProgramWith<Prop>(build("prop.vert", "prop_translucent.frag", defines));
 }
 
