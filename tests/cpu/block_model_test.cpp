@@ -50,12 +50,6 @@ PackBuilder vanillaParents(const std::string& name) {
   return pack;
 }
 
-PackStack stackOf(std::initializer_list<std::filesystem::path> dirs) {
-  PackStack packs;
-  for (const auto& d : dirs) packs.push(ResourcePack::open(d));
-  return packs;
-}
-
 std::string errorOf(const std::function<void()>& f) {
   try {
     f();
@@ -71,7 +65,7 @@ bool contains(const std::string& text, const std::string& part) {
 
 TEST(BlockModel, ParentChainsAndTextureReferencesResolve) {
   PackBuilder pack = vanillaParents("models_chain");
-  const PackStack libraryPacks = stackOf({pack.dir()});
+  const PackStack libraryPacks = testing::stackOf({pack.dir()});
   ModelLibrary library(libraryPacks);
   const BlockModel& stone = library.model("minecraft:block/stone");
   EXPECT_EQ(stone.name, "block/stone");
@@ -98,7 +92,7 @@ TEST(BlockModel, ChildrenOverrideTexturesElementsAndAmbientOcclusion) {
       .asset("models/block/post.json",
              R"({"parent": "block/stone", "elements": [{"from": [6, 0, 6], "to": [10, 16, 10],
           "shade": false, "faces": {"up": {"texture": "#all", "tintindex": 0, "rotation": 90}}}]})");
-  const PackStack libraryPacks = stackOf({pack.dir()});
+  const PackStack libraryPacks = testing::stackOf({pack.dir()});
   ModelLibrary library(libraryPacks);
   const BlockModel& glowing = library.model("block/glowing");
   EXPECT_FALSE(glowing.ambientOcclusion);
@@ -121,10 +115,10 @@ TEST(BlockModel, AHigherPackOverridesAModel) {
   thin.asset("models/block/slab.json",
              R"({"parent": "block/block", "elements": [{"from": [0, 0, 0], "to": [16, 2, 16],
       "faces": {"up": {"texture": "#top"}}}]})");
-  const PackStack libraryPacks = stackOf({base.dir(), thin.dir()});
+  const PackStack libraryPacks = testing::stackOf({base.dir(), thin.dir()});
   ModelLibrary library(libraryPacks);
   EXPECT_EQ(library.model("block/stone_slab").elements[0].to.y, 2.0f);
-  const PackStack alonePacks = stackOf({base.dir()});
+  const PackStack alonePacks = testing::stackOf({base.dir()});
   ModelLibrary alone(alonePacks);
   EXPECT_EQ(alone.model("block/stone_slab").elements[0].to.y, 8.0f);
 }
@@ -134,7 +128,7 @@ TEST(BlockModel, AnUndefinedTextureIsMissingWithOneWarning) {
   pack.asset("models/block/half.json", R"({"parent": "block/cube_all"})")
       .asset("models/block/loop.json",
              R"({"parent": "block/cube_all", "textures": {"all": "#other", "other": "#all"}})");
-  const PackStack libraryPacks = stackOf({pack.dir()});
+  const PackStack libraryPacks = testing::stackOf({pack.dir()});
   ModelLibrary library(libraryPacks);
   for (const auto& face : library.model("block/half").elements[0].faces)
     EXPECT_EQ(face->texture, kMissingTexture);
@@ -166,7 +160,7 @@ TEST(BlockModel, BadModelsNameTheFileTheKeyOrTheChain) {
       .asset("models/block/notexture.json", R"({"elements": [{"from": [0, 0, 0], "to": [16, 16, 16],
           "faces": {"up": {"uv": [0, 0, 16]}}}]})")
       .asset("models/block/array.json", "[1, 2]");
-  const PackStack libraryPacks = stackOf({pack.dir()});
+  const PackStack libraryPacks = testing::stackOf({pack.dir()});
   ModelLibrary library(libraryPacks);
   const auto error = [&](const std::string& name) { return errorOf([&] { library.model(name); }); };
   EXPECT_TRUE(contains(error("block/syntax"), "syntax.json:2:")) << error("block/syntax");
@@ -299,7 +293,7 @@ void expectFrontFacing(const std::vector<BakedQuad>& quads) {
 
 TEST(ModelBake, ACubeIsSixFacesOfTheUnitBox) {
   PackBuilder pack = vanillaParents("bake_cube");
-  const PackStack libraryPacks = stackOf({pack.dir()});
+  const PackStack libraryPacks = testing::stackOf({pack.dir()});
   ModelLibrary library(libraryPacks);
   const std::vector<BakedQuad> quads = bakeModel(library.model("block/stone"), {});
   ASSERT_EQ(quads.size(), 6u);
@@ -326,7 +320,7 @@ TEST(ModelBake, PlacementTurnsGeometryCullfacesAndLocksUvs) {
              R"({"parent": "block/block", "elements": [{"from": [0, 0, 0], "to": [16, 16, 4],
       "faces": {"north": {"texture": "#f", "cullface": "north"}, "up": {"texture": "#f", "cullface": "up"}}}],
       "textures": {"f": "block/furnace_front"}})");
-  const PackStack libraryPacks = stackOf({pack.dir()});
+  const PackStack libraryPacks = testing::stackOf({pack.dir()});
   ModelLibrary library(libraryPacks);
   const BlockModel& front = library.model("block/front");
   // y = 90 takes north to east (Minecraft turns clockwise seen from above).
@@ -366,7 +360,7 @@ TEST(ModelBake, FaceRotationAndTurnedElements) {
                     "faces": {"north": {"uv": [0, 0, 16, 16], "texture": "#cross"}}}]})")
       .asset("models/block/spun.json", R"({"textures": {"t": "block/stone"}, "elements": [{"from": [0, 0, 0],
           "to": [16, 16, 16], "faces": {"up": {"texture": "#t", "rotation": 90}}}]})");
-  const PackStack libraryPacks = stackOf({pack.dir()});
+  const PackStack libraryPacks = testing::stackOf({pack.dir()});
   ModelLibrary library(libraryPacks);
   const std::vector<BakedQuad> cross = bakeModel(library.model("block/cross"), {});
   ASSERT_EQ(cross.size(), 1u);
@@ -431,7 +425,7 @@ TEST(BlockModel, TheDefaultPackShipsTheParentsShapedBlocksNeed) {
     children.asset("models/block/" + child + ".json",
                    R"({"parent": "block/)" + parent.first + R"(", )" + everyReference + "}");
   }
-  const PackStack packs = stackOf({resourcePackDir() / "default", children.dir()});
+  const PackStack packs = testing::stackOf({resourcePackDir() / "default", children.dir()});
   ModelLibrary library(packs);
   for (const auto& [child, parent] : kChildren) {
     const std::vector<BakedQuad> quads = bakeModel(library.model("block/" + child), {});

@@ -12,12 +12,6 @@
 namespace terrasol {
 namespace {
 
-PackStack stackOf(std::initializer_list<std::filesystem::path> dirs) {
-  PackStack stack;
-  for (const auto& d : dirs) stack.push(ResourcePack::open(d));
-  return stack;
-}
-
 TEST(CloudLayer, DriftsThreeBlocksWestEveryHundredTicksExactlyForAnyTick) {
   EXPECT_EQ(cloudDrift(0, 256), 0.0);
   EXPECT_EQ(cloudDrift(100, 256), 3.0);
@@ -41,7 +35,7 @@ TEST(CloudLayer, DriftsThreeBlocksWestEveryHundredTicksExactlyForAnyTick) {
 TEST(CloudLayer, MapComesFromTheTopmostPackAndAnUnreadableOneIsReported) {
   std::vector<PackProblem> problems;
   const auto defaultPack = resourcePackDir() / "default";
-  const CloudMap standard = loadCloudMap(stackOf({defaultPack}), problems);
+  const CloudMap standard = loadCloudMap(testing::stackOf({defaultPack}), problems);
   EXPECT_TRUE(problems.empty());
   ASSERT_EQ(standard.width, 256);
   ASSERT_EQ(standard.height, 256);
@@ -50,20 +44,20 @@ TEST(CloudLayer, MapComesFromTheTopmostPackAndAnUnreadableOneIsReported) {
   EXPECT_NEAR(static_cast<double>(covered) / static_cast<double>(standard.cover.size()), 0.35, 0.01);
 
   testing::PackBuilder pack("pack_clouds");
-  EXPECT_EQ(loadCloudMap(stackOf({defaultPack, pack.dir()}), problems).cover, standard.cover)
+  EXPECT_EQ(loadCloudMap(testing::stackOf({defaultPack, pack.dir()}), problems).cover, standard.cover)
       << "a pack without clouds.png leaves the one below";
   Image own(2, 1);
   own.pixel(1, 0)[3] = 255;
   const auto environment = pack.dir() / "assets" / "minecraft" / "textures" / "environment";
   std::filesystem::create_directories(environment);
   saveImage(environment / "clouds.png", own);
-  const CloudMap replaced = loadCloudMap(stackOf({defaultPack, pack.dir()}), problems);
+  const CloudMap replaced = loadCloudMap(testing::stackOf({defaultPack, pack.dir()}), problems);
   EXPECT_EQ(replaced.width, 2);
   EXPECT_EQ(replaced.cover, (std::vector<std::uint8_t>{0, 255})) << "alpha is the coverage";
   EXPECT_TRUE(problems.empty());
 
   pack.asset("textures/environment/clouds.png", "not a png");
-  EXPECT_TRUE(loadCloudMap(stackOf({defaultPack, pack.dir()}), problems).empty());
+  EXPECT_TRUE(loadCloudMap(testing::stackOf({defaultPack, pack.dir()}), problems).empty());
   ASSERT_EQ(problems.size(), 1u);
   EXPECT_NE(problems[0].message.find("clouds.png"), std::string::npos) << problems[0].message;
 }

@@ -30,12 +30,6 @@ std::filesystem::path pixelPerfection() {
   return testing::testData() / "packs" / "pixel_perfection_ce";
 }
 
-PackStack stackOf(std::initializer_list<std::filesystem::path> dirs) {
-  PackStack stack;
-  for (const auto& d : dirs) stack.push(ResourcePack::open(d));
-  return stack;
-}
-
 std::string problemsText(const std::vector<PackProblem>& problems) {
   std::string text;
   for (const auto& p : problems) text += p.message + "\n";
@@ -54,7 +48,7 @@ TEST(ResourcePack, LaterPacksOverrideEarlierOnesAndCompanionsComeFromTheSamePack
   low.image("dirt.png", solidImage(16, 16, 120, 80, 40));
   PackBuilder high("pack_high", "blocks");  // the pre-1.13 folder name
   high.image("stone.png", solidImage(16, 16, 50, 50, 50));
-  const PackStack stack = stackOf({low.dir(), high.dir()});
+  const PackStack stack = testing::stackOf({low.dir(), high.dir()});
   std::vector<PackProblem> problems;
   const auto stone = load(stack, {"stone"}, problems);
   EXPECT_EQ(stone.albedo[0].pixel(0, 0)[0], 50);
@@ -68,7 +62,7 @@ TEST(ResourcePack, LaterPacksOverrideEarlierOnesAndCompanionsComeFromTheSamePack
 
 TEST(ResourcePack, AMissingTextureIsTheCheckerboardWithOneWarningNamingIt) {
   PackBuilder pack("pack_missing");
-  const PackStack stack = stackOf({pack.dir()});
+  const PackStack stack = testing::stackOf({pack.dir()});
   std::vector<PackProblem> problems;
   const auto t = load(stack, {"short_grass", "grass"}, problems);
   EXPECT_TRUE(t.missing);
@@ -80,7 +74,7 @@ TEST(ResourcePack, AMissingTextureIsTheCheckerboardWithOneWarningNamingIt) {
   // The fallback name is used when the first is absent.
   pack.image("grass.png", solidImage(16, 16, 1, 2, 3));
   problems.clear();
-  EXPECT_FALSE(load(stackOf({pack.dir()}), {"short_grass", "grass"}, problems).missing);
+  EXPECT_FALSE(load(testing::stackOf({pack.dir()}), {"short_grass", "grass"}, problems).missing);
 }
 
 TEST(ResourcePack, CompanionsAreResampledToTheBaseSize) {
@@ -89,7 +83,7 @@ TEST(ResourcePack, CompanionsAreResampledToTheBaseSize) {
   pack.image("iron_block_n.png", solidImage(32, 32, 127, 127, 255, 255));
   pack.image("iron_block_s.png", solidImage(8, 8, 220, 230, 0, 0));
   std::vector<PackProblem> problems;
-  const auto t = load(stackOf({pack.dir()}), {"iron_block"}, problems);
+  const auto t = load(testing::stackOf({pack.dir()}), {"iron_block"}, problems);
   EXPECT_TRUE(problems.empty()) << problemsText(problems);
   EXPECT_EQ(t.normal[0].width, 16);
   EXPECT_EQ(t.specular[0].width, 16);
@@ -111,7 +105,7 @@ TEST(ResourcePack, AnimationsSplitIntoFramesWithTheirTiming) {
       R"({"animation": {"frametime": 3, "interpolate": true, "frames": [0, 2, {"index": 3, "time": 7}]}})");
   pack.image("lava_still_n.png", solidImage(16, 16, 127, 127, 255));  // one frame for all
   std::vector<PackProblem> problems;
-  const auto t = load(stackOf({pack.dir()}), {"lava_still"}, problems);
+  const auto t = load(testing::stackOf({pack.dir()}), {"lava_still"}, problems);
   EXPECT_TRUE(problems.empty()) << problemsText(problems);
   ASSERT_TRUE(t.animation);
   EXPECT_EQ(t.albedo.size(), 4u);
@@ -134,14 +128,14 @@ TEST(ResourcePack, AnimationsSplitIntoFramesWithTheirTiming) {
   pack.image("lava_still_n.png", normals);
   pack.text("lava_still_n.png.mcmeta", R"({"animation": {}})");
   problems.clear();
-  const auto withOwn = load(stackOf({pack.dir()}), {"lava_still"}, problems);
+  const auto withOwn = load(testing::stackOf({pack.dir()}), {"lava_still"}, problems);
   EXPECT_TRUE(problems.empty()) << problemsText(problems);
   ASSERT_EQ(withOwn.normal.size(), 4u);
   EXPECT_EQ(withOwn.normal[0].width, 16) << "resampled to the texture's frame size";
   EXPECT_EQ(withOwn.normal[2].pixel(5, 5)[0], 102);
   pack.text("lava_still_n.png.mcmeta", R"({"animation": {"height": 5}})");
   problems.clear();
-  load(stackOf({pack.dir()}), {"lava_still"}, problems);
+  load(testing::stackOf({pack.dir()}), {"lava_still"}, problems);
   ASSERT_EQ(problems.size(), 1u);
   EXPECT_NE(problems[0].message.find("lava_still_n.png.mcmeta"), std::string::npos) << problems[0].message;
 }
@@ -190,7 +184,7 @@ TEST(ResourcePack, BadInputGivesClearErrorsNamingTheFile) {
   const std::string bytes((std::istreambuf_iterator<char>(in)), {});
   pack.text("truncated.png", bytes.substr(0, bytes.size() / 2));
 
-  const PackStack stack = stackOf({pack.dir()});
+  const PackStack stack = testing::stackOf({pack.dir()});
   const std::pair<const char*, const char*> cases[] = {
       {"empty", "empty file"},
       {"garbage", "garbage.png"},
@@ -220,7 +214,7 @@ TEST(ResourcePack, SixteenBitGreyAndPaletteImagesAreConverted) {
     testing::writeRawPng(pack.file("deep.png"), 16, 16, 16, testing::PngColour::GreyAlpha, samples);
   }
   std::vector<PackProblem> deepProblems;
-  const auto deep = load(stackOf({pack.dir()}), {"deep"}, deepProblems);
+  const auto deep = load(testing::stackOf({pack.dir()}), {"deep"}, deepProblems);
   EXPECT_TRUE(deepProblems.empty()) << problemsText(deepProblems);
   EXPECT_EQ(deep.albedo[0].pixel(0, 0)[0], 128);
   EXPECT_EQ(deep.albedo[0].pixel(0, 0)[2], 128) << "grey fills all three colour channels";
@@ -229,7 +223,7 @@ TEST(ResourcePack, SixteenBitGreyAndPaletteImagesAreConverted) {
   for (auto& v : grey.rgba) v = 77;
   saveImage(pack.file("grey.png"), grey);
   std::vector<PackProblem> problems;
-  EXPECT_FALSE(load(stackOf({pack.dir()}), {"grey"}, problems).missing);
+  EXPECT_FALSE(load(testing::stackOf({pack.dir()}), {"grey"}, problems).missing);
   // Palette PNGs (8-, 4-, 2-bit with tRNS) come from the real pack below.
   EXPECT_TRUE(problems.empty()) << problemsText(problems);
 }
@@ -250,7 +244,7 @@ TEST(ResourcePack, ZipPacksLoadAndUnsafeEntriesAreRefused) {
            {{"MyPack/pack.mcmeta", mcmeta},
             {"MyPack/assets/minecraft/textures/block/stone.png", pngBytes(solidImage(16, 16, 42, 42, 42))}});
   std::vector<PackProblem> problems;
-  const auto stone = load(stackOf({dir / "good.zip"}), {"stone"}, problems);
+  const auto stone = load(testing::stackOf({dir / "good.zip"}), {"stone"}, problems);
   EXPECT_FALSE(stone.missing) << problemsText(problems);
   EXPECT_EQ(stone.albedo[0].pixel(0, 0)[0], 42);
   EXPECT_NE(stone.source.find("good.zip!MyPack/assets"), std::string::npos) << stone.source;
@@ -310,7 +304,7 @@ TEST(ResourcePack, MinecraftsJarAndAssetsFolderArePacks) {
     EXPECT_EQ(alone.packs().back()->info().description, "Minecraft's assets") << minecraft;
     EXPECT_EQ(drawingsOf(alone)[amethyst], BlockDrawing::Model) << minecraft;
     // Over the default pack its textures win.
-    const PackStack stack = stackOf({resourcePackDir() / "default", minecraft});
+    const PackStack stack = testing::stackOf({resourcePackDir() / "default", minecraft});
     std::vector<PackProblem> problems;
     const auto stone = load(stack, {"stone"}, problems);
     EXPECT_EQ(stone.albedo[0].pixel(0, 0)[0], 7) << stone.source;
@@ -363,7 +357,7 @@ TEST(ResourcePack, MinecraftsOtherKeysLoad) {
   EXPECT_EQ(opened.info().packFormat, 34);
   EXPECT_TRUE(opened.info().openGlNormals);
   std::vector<PackProblem> problems;
-  const auto t = load(stackOf({pack.dir()}), {"anim"}, problems);
+  const auto t = load(testing::stackOf({pack.dir()}), {"anim"}, problems);
   EXPECT_TRUE(problems.empty()) << problemsText(problems);
   ASSERT_TRUE(t.animation);
   ASSERT_EQ(t.animation->sequence.size(), 2u);
@@ -372,7 +366,7 @@ TEST(ResourcePack, MinecraftsOtherKeysLoad) {
 
 TEST(ResourcePack, PixelPerfectionLoadsWithoutErrorsOverTheDefaultPack) {
   TERRASOL_SKIP_WITHOUT_TEST_DATA();
-  const PackStack stack = stackOf({resourcePackDir() / "default", pixelPerfection()});
+  const PackStack stack = testing::stackOf({resourcePackDir() / "default", pixelPerfection()});
   std::vector<PackProblem> problems;
   int animated = 0, loaded = 0;
   for (const auto& pack : stack.packs())
@@ -401,7 +395,7 @@ TEST(TextureCoverage, OlderTextureNamesStillCoverTheDefaultPack) {
   const Image red = testing::solidImage(16, 16, 200, 20, 20);
   PackBuilder old("old_names");
   old.image("grass_path_top.png", red).image("reeds.png", red).image("chain.png", red);
-  const PackStack stack = stackOf({resourcePackDir() / "default", old.dir()});
+  const PackStack stack = testing::stackOf({resourcePackDir() / "default", old.dir()});
   const TextureCoverage c = textureCoverage(testing::defaultBlocks(), stack);
   EXPECT_EQ(c.used, (std::vector<std::string>{"chain", "grass_path_top", "reeds"}));
   std::vector<PackProblem> problems;
@@ -409,8 +403,8 @@ TEST(TextureCoverage, OlderTextureNamesStillCoverTheDefaultPack) {
             std::string::npos);
   PackBuilder both("both_names");
   both.image("reeds.png", red).image("sugar_cane.png", red);
-  const TextureCoverage b =
-      textureCoverage(testing::defaultBlocks(), stackOf({resourcePackDir() / "default", both.dir()}));
+  const TextureCoverage b = textureCoverage(testing::defaultBlocks(),
+                                            testing::stackOf({resourcePackDir() / "default", both.dir()}));
   EXPECT_EQ(b.used, (std::vector<std::string>{"sugar_cane"}));
 }
 
@@ -422,14 +416,14 @@ TEST(TextureCoverage, CountsTheTopPacksTexturesTheBlocksDraw) {
       .image("birch_door_top.png", red)
       .image("oak_planks.png", red);
   pack.image("not_a_block.png", red).text("stone.png.mcmeta", R"({"animation": {}})");
-  const PackStack stack = stackOf({resourcePackDir() / "default", pack.dir()});
+  const PackStack stack = testing::stackOf({resourcePackDir() / "default", pack.dir()});
   const TextureCoverage c = textureCoverage(testing::defaultBlocks(), stack);
   EXPECT_EQ(c.used, (std::vector<std::string>{"birch_door_top", "oak_planks", "stone"}));
   EXPECT_EQ(c.unused, (std::vector<std::string>{"not_a_block"}));
   EXPECT_EQ(c.otherUnused(), 1u);
   // The default pack is all used.
   const TextureCoverage own =
-      textureCoverage(testing::defaultBlocks(), stackOf({resourcePackDir() / "default"}));
+      textureCoverage(testing::defaultBlocks(), testing::stackOf({resourcePackDir() / "default"}));
   EXPECT_TRUE(own.unused.empty()) << own.unused.front();
   EXPECT_GT(own.used.size(), 180u);
 }
@@ -442,8 +436,8 @@ TEST(TextureCoverage, SortsTheUnusedByWhyNoModelNamesThem) {
   for (const char* name : {"stone", "stone7", "wheat_stage7", "wheat_stage7-1", "torch", "torch_e",
                            "sugar_cane", "reeds", "fire_1", "vine_e", "stone_e"})
     pack.image(std::string(name) + ".png", red);
-  const TextureCoverage c =
-      textureCoverage(testing::defaultBlocks(), stackOf({resourcePackDir() / "default", pack.dir()}));
+  const TextureCoverage c = textureCoverage(testing::defaultBlocks(),
+                                            testing::stackOf({resourcePackDir() / "default", pack.dir()}));
   EXPECT_EQ(c.variants, (std::vector<std::string>{"stone7", "wheat_stage7-1"}));
   EXPECT_EQ(c.emissiveLayers, (std::vector<std::string>{"stone_e", "torch_e"}));
   EXPECT_EQ(c.superseded, (std::vector<std::string>{"reeds"}));
@@ -454,8 +448,8 @@ TEST(TextureCoverage, SortsTheUnusedByWhyNoModelNamesThem) {
 
 TEST(TextureCoverage, PixelPerfectionIsPartlyDrawn) {
   TERRASOL_SKIP_WITHOUT_TEST_DATA();
-  const TextureCoverage c =
-      textureCoverage(testing::defaultBlocks(), stackOf({resourcePackDir() / "default", pixelPerfection()}));
+  const TextureCoverage c = textureCoverage(
+      testing::defaultBlocks(), testing::stackOf({resourcePackDir() / "default", pixelPerfection()}));
   std::printf(
       "pixel_perfection_ce: used %zu of %zu block textures (%zu variants, %zu emissive layers, %zu older)\n",
       c.used.size(), c.used.size() + c.unused.size(), c.variants.size(), c.emissiveLayers.size(),
@@ -492,7 +486,7 @@ TEST(DefaultPack, ShapedBlocksAreTheGeneratorsAndDraw) {
         for (const auto& v : e[corner]) EXPECT_TRUE(v >= 0 && v <= 16) << f.path << " " << corner << " " << v;
   }
   const BlockRegistry& blocks = testing::defaultBlocks();
-  const BlockAtlas atlas = buildBlockAtlas(blocks, stackOf({root}));
+  const BlockAtlas atlas = buildBlockAtlas(blocks, testing::stackOf({root}));
   EXPECT_TRUE(atlas.problems.empty()) << problemsText(atlas.problems);
   const std::vector<BlockDrawing> drawings = blockDrawings(blocks, atlas);
   for (const std::string& name : packgen::shapedBlockNames())
@@ -500,7 +494,7 @@ TEST(DefaultPack, ShapedBlocksAreTheGeneratorsAndDraw) {
 }
 
 TEST(DefaultPack, CoversEveryBlockWithNormalAndSpecularMaps) {
-  const PackStack stack = stackOf({resourcePackDir() / "default"});
+  const PackStack stack = testing::stackOf({resourcePackDir() / "default"});
   const BlockRegistry& blocks = testing::defaultBlocks();
   std::vector<PackProblem> problems;
   for (BlockId id = 1; id < blocks.size(); ++id)

@@ -21,15 +21,9 @@
 namespace terrasol {
 namespace {
 
-PackStack stackOf(std::initializer_list<std::filesystem::path> dirs) {
-  PackStack stack;
-  for (const auto& d : dirs) stack.push(ResourcePack::open(d));
-  return stack;
-}
-
 TintPalette defaultPalette() {
   std::vector<PackProblem> problems;
-  TintPalette palette = loadColormaps(stackOf({resourcePackDir() / "default"}), problems);
+  TintPalette palette = loadColormaps(testing::stackOf({resourcePackDir() / "default"}), problems);
   EXPECT_TRUE(problems.empty());
   return palette;
 }
@@ -69,20 +63,20 @@ TEST(Tints, ColormapsAreSampledLikeMinecraftAndDefaultsFillIn) {
 
   testing::PackBuilder pack("pack_tints");
   std::vector<PackProblem> problems;
-  const TintPalette none = loadColormaps(stackOf({pack.dir()}), problems);
+  const TintPalette none = loadColormaps(testing::stackOf({pack.dir()}), problems);
   EXPECT_LT(largestChannelStep(none.colour(Tint::Grass), kDefaultGrass), 0.5f / 255.0f);
   EXPECT_LT(
       largestChannelStep(none.colour(Tint::Foliage, climateOnly(tintClimate(2.0f, 0.0f))), kDefaultFoliage),
       0.5f / 255.0f)
       << "without a colormap every climate gets Minecraft's default";
   pack.asset("textures/colormap/grass.png", "not a png");
-  loadColormaps(stackOf({pack.dir()}), problems);
+  loadColormaps(testing::stackOf({pack.dir()}), problems);
   ASSERT_EQ(problems.size(), 1u);
   EXPECT_NE(problems[0].message.find("grass.png"), std::string::npos) << problems[0].message;
   problems.clear();
   TERRASOL_SKIP_WITHOUT_TEST_DATA();
   const TintPalette real =
-      loadColormaps(stackOf({testing::testData() / "packs" / "pixel_perfection_ce"}), problems);
+      loadColormaps(testing::stackOf({testing::testData() / "packs" / "pixel_perfection_ce"}), problems);
   EXPECT_TRUE(problems.empty());
   const glm::vec3 grass = real.colour(Tint::Grass);
   EXPECT_GT(largestChannelStep(grass, kDefaultGrass), 1.0f / 255.0f)

@@ -12,7 +12,9 @@
 #include "core/luma.h"
 #include "core/paths.h"
 #include "scene_render/scene_render.h"
+#include "support/frame_probe.h"
 #include "support/gl_test.h"
+#include "support/pack_builder.h"
 
 namespace terrasol {
 namespace {
@@ -20,23 +22,12 @@ namespace {
 const std::filesystem::path kScenes = std::filesystem::path(TERRASOL_SOURCE_DIR) / "tests" / "scenes";
 
 CloudMap defaultClouds() {
-  PackStack stack;
-  stack.push(ResourcePack::open(resourcePackDir() / "default"));
   std::vector<PackProblem> problems;
-  return loadCloudMap(stack, problems);
+  return loadCloudMap(testing::stackOf({resourcePackDir() / "default"}), problems);
 }
 
 float difference(const glm::vec4& a, const glm::vec4& b) {
   return std::abs(a.r - b.r) + std::abs(a.g - b.g) + std::abs(a.b - b.b);
-}
-
-// Pixel (x, y) (row 0 at the bottom) as a camera-relative point at `depth` (1: the far plane).
-glm::dvec3 pointAt(const RenderedFrame& f, int x, int y, float depth) {
-  const glm::ivec2 size = f.pixels.size;
-  const glm::vec4 ndc((x + 0.5f) / size.x * 2.0f - 1.0f, (y + 0.5f) / size.y * 2.0f - 1.0f,
-                      depth * 2.0f - 1.0f, 1.0f);
-  const glm::vec4 p = f.geometry.inverseViewProjection * ndc;
-  return glm::dvec3(p) / static_cast<double>(p.w);
 }
 
 // The map's coverage (0..1) read bilinearly at a world point, texel centres at the cells' centres, as
@@ -65,11 +56,7 @@ struct Agreement {
 class CloudsTest : public testing::GlTest {
  protected:
   RenderedFrame draw(const SceneFile& scene) {
-    SceneRenderer renderer(scene);
-    FrameRequest request;
-    request.readBack = true;
-    request.checkNan = true;
-    RenderedFrame frame = renderer.renderFrame(0, request);
+    RenderedFrame frame = testing::measuredFrame(scene);
     context_->checkErrors("rendering clouds");
     return frame;
   }
@@ -84,7 +71,7 @@ class CloudsTest : public testing::GlTest {
       for (int x = 0; x < size.x; ++x) {
         const std::size_t i = static_cast<std::size_t>(y * size.x + x);
         if (off.pixels.depth[i] < 1.0f) continue;
-        const glm::dvec3 dir = glm::normalize(pointAt(on, x, y, 1.0f));
+        const glm::dvec3 dir = glm::normalize(testing::pixelPoint(on, x, y, 1.0f));
         if (dir.y <= 0.05) continue;
         const double t = (kCloudBottom - scene.cameraPosition.y) / dir.y;
         if (t * glm::length(glm::dvec2(dir.x, dir.z)) > 0.5 * kCloudRange) continue;
@@ -151,7 +138,7 @@ TEST_F(CloudsTest, GroundDarkensWhereTheLayerHidesTheSun) {
     for (int x = 0; x < size.x; ++x) {
       const std::size_t i = static_cast<std::size_t>(y * size.x + x);
       if (lit.pixels.depth[i] >= 1.0f) continue;
-      const glm::dvec3 relative = pointAt(lit, x, y, lit.pixels.depth[i]);
+      const glm::dvec3 relative = testing::pixelPoint(lit, x, y, lit.pixels.depth[i]);
       if (glm::length(glm::dvec2(relative.x, relative.z)) > 0.75 * scene.viewDistance * 16.0)
         continue;  // fog
       const glm::dvec3 ground = scene.cameraPosition + relative;

@@ -9,6 +9,7 @@
 #include <glm/geometric.hpp>
 
 #include "scene_render/scene_render.h"
+#include "support/frame_probe.h"
 #include "support/gl_test.h"
 
 namespace terrasol {
@@ -40,11 +41,7 @@ bool crosses(glm::dvec3 a, glm::dvec3 b, glm::dvec3 lo, glm::dvec3 hi) {
 class ShaftsTest : public testing::GlTest {
  protected:
   RenderedFrame draw(const SceneFile& scene) {
-    SceneRenderer renderer(scene);
-    FrameRequest request;
-    request.readBack = true;
-    request.checkNan = true;
-    RenderedFrame frame = renderer.renderFrame(0, request);
+    RenderedFrame frame = testing::measuredFrame(scene);
     context_->checkErrors("rendering shafts");
     return frame;
   }
@@ -66,10 +63,7 @@ TEST_F(ShaftsTest, TheShaftLightsTheHazeWhereTheViewCrossesTheSunlitColumn) {
       const std::size_t i = static_cast<std::size_t>(y * size.x + x);
       const float depth = off.pixels.depth[i];
       if (depth >= 1.0f) continue;
-      const glm::vec4 ndc((x + 0.5f) / size.x * 2.0f - 1.0f, (y + 0.5f) / size.y * 2.0f - 1.0f,
-                          depth * 2.0f - 1.0f, 1.0f);
-      const glm::vec4 p = off.geometry.inverseViewProjection * ndc;
-      const glm::dvec3 surface = scene.cameraPosition + glm::dvec3(p) / static_cast<double>(p.w);
+      const glm::dvec3 surface = scene.cameraPosition + testing::pixelPoint(off, x, y, depth);
       const double added = sum(on.pixels.scene[i]) - sum(off.pixels.scene[i]);
       taken = std::min(taken, added);
       // Rays that graze the column's widened box go either way: left out.

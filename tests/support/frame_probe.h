@@ -30,4 +30,24 @@ inline float brightness(glm::vec3 c) {
   return c.r + c.g + c.b;
 }
 
+// Frame 0 of `scene`, its float targets read back and checked for NaN and Inf.
+inline RenderedFrame measuredFrame(const SceneFile& scene) {
+  SceneRenderer renderer(scene);
+  FrameRequest request;
+  request.readBack = true;
+  request.checkNan = true;
+  return renderer.renderFrame(0, request);
+}
+
+// Pixel (x, y) of the read-back targets (row 0 at the bottom) as a camera-relative point at `depth`
+// (1: on the far plane).
+inline glm::dvec3 pixelPoint(const RenderedFrame& f, int x, int y, float depth) {
+  const glm::ivec2 size = f.pixels.size;
+  const glm::vec4 ndc((static_cast<float>(x) + 0.5f) / static_cast<float>(size.x) * 2.0f - 1.0f,
+                      (static_cast<float>(y) + 0.5f) / static_cast<float>(size.y) * 2.0f - 1.0f,
+                      depth * 2.0f - 1.0f, 1.0f);
+  const glm::vec4 p = f.geometry.inverseViewProjection * ndc;
+  return glm::dvec3(p) / static_cast<double>(p.w);
+}
+
 }  // namespace terrasol::testing

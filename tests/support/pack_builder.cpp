@@ -37,4 +37,10 @@ Image solidImage(int w, int h, std::uint8_t r, std::uint8_t g, std::uint8_t b, s
   return image;
 }
 
+PackStack stackOf(std::initializer_list<std::filesystem::path> dirs) {
+  PackStack stack;
+  for (const auto& d : dirs) stack.push(ResourcePack::open(d));
+  return stack;
+}
+
 }  // namespace terrasol::testing

@@ -2,9 +2,11 @@
 // Builds small resource packs on disk for tests: pack.mcmeta plus chosen block textures.
 
 #include <filesystem>
+#include <initializer_list>
 #include <string>
 
 #include "assets/image.h"
+#include "assets/resource_pack.h"
 
 namespace terrasol::testing {
 
@@ -25,6 +27,9 @@ class PackBuilder {
  private:
   std::filesystem::path dir_, blockDir_;
 };
+
+// The packs in these folders (or zips), bottom to top.
+PackStack stackOf(std::initializer_list<std::filesystem::path> dirs);
 
 // An image filled with one colour.
 Image solidImage(int w, int h, std::uint8_t r, std::uint8_t g, std::uint8_t b, std::uint8_t a = 255);

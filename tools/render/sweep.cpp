@@ -5,6 +5,7 @@
 #include <fstream>
 
 #include "core/error.h"
+#include "scene_render/aa_error.h"
 #include "scene_render/reflection_truth.h"
 #include "scene_render/scene_render.h"
 #include "scene_render/shadow_truth.h"
@@ -13,9 +14,12 @@
 namespace terrasol {
 namespace {
 
-// What a sweep measures: the shadows' error against shadow + lighting ms, or (when it sweeps a
-// render.reflections key) the reflections' against the reflection pass's ms.
-enum class Measure { Shadows, Reflections };
+// What a sweep measures: the shadows' error against shadow + lighting ms, (when it sweeps a
+// render.reflections key) the reflections' against the reflection pass's ms, or (when it sweeps
+// render.antialiasing or render.scale) the frame's error against its 3 x 3 supersampled truth against
+// the frame's ms but the shadow map's.
+enum class Measure { Shadows, Reflections, Antialiasing };
+constexpr int kTruthSupersample = 3;
 
 struct Row {
   std::vector<std::string> values;  // one per sweep
@@ -26,6 +30,7 @@ struct Row {
 };
 
 std::vector<const char*> columnNames(Measure m) {
+  if (m == Measure::Antialiasing) return {"aa_mean", "aa_p99", "edge_over_pct", "error_pct"};
   if (m == Measure::Reflections) {
     return {"evaluated_pixels",      "agree_pct",     "wrong_hit_pct",   "missed_on_screen_pct",
             "missed_off_screen_pct", "false_hit_pct", "sky_leak_pixels", "error_pct",
@@ -89,11 +94,34 @@ void measureReflections(SceneRenderer& renderer, const RenderedFrame& frame, Row
                  msOf(frame, "lighting")};
 }
 
+void measureAntialiasing(const RenderedFrame& frame, const Image& truth, Row& row) {
+  const AaError e = measureAaError(frame.image, truth);
+  row.evaluated = static_cast<std::size_t>(truth.width) * static_cast<std::size_t>(truth.height);
+  row.errorPct = 100.0 * e.mean;
+  row.columns = {e.mean, e.p99, e.edgeOverPct, row.errorPct};
+}
+
 Measure measureOf(const std::vector<Sweep>& sweeps) {
   for (const Sweep& s : sweeps) {
     if (s.key.starts_with("render.reflections.")) return Measure::Reflections;
   }
+  for (const Sweep& s : sweeps) {
+    if (s.key == "render.antialiasing" || s.key == "render.scale") return Measure::Antialiasing;
+  }
   return Measure::Shadows;
+}
+
+// The anti-aliasing truth: frame 0 of the scene (without the swept values) drawn kTruthSupersample
+// times larger each way with no anti-aliasing, averaged down.
+Image supersampledTruth(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
+  SceneFile big = loadScene(file, overrides);
+  big.width *= kTruthSupersample;
+  big.height *= kTruthSupersample;
+  big.antialiasing = Antialiasing::None;
+  big.renderScale = 1.0f;
+  big.targetFps = 0;
+  SceneRenderer renderer(big);
+  return downsample(renderer.renderFrame(0).image, kTruthSupersample);
 }
 
 // Every combination, the last sweep varying fastest.
@@ -112,7 +140,8 @@ std::vector<std::vector<std::string>> combinations(const std::vector<Sweep>& swe
 }
 
 Row measure(const std::filesystem::path& file, std::vector<std::string> settings,
-            const std::vector<Sweep>& sweeps, const std::vector<std::string>& values, Measure what) {
+            const std::vector<Sweep>& sweeps, const std::vector<std::string>& values, Measure what,
+            const Image& truth) {
   for (std::size_t i = 0; i < sweeps.size(); ++i) settings.push_back(sweeps[i].key + "=" + values[i]);
   const SceneFile scene = loadScene(file, settings);
   SceneRenderer renderer(scene);
@@ -123,12 +152,16 @@ Row measure(const std::filesystem::path& file, std::vector<std::string> settings
   const RenderedFrame frame = renderer.renderFrame(0, request);
   Row row;
   row.values = values;
+  for (const PassTiming& t : frame.timings) row.totalMs += t.ms;
   if (what == Measure::Reflections) {
     measureReflections(renderer, frame, row);
+  } else if (what == Measure::Antialiasing) {
+    measureAntialiasing(frame, truth, row);
+    // The scale changes every pass's cost but the shadow map's, which would only hide the rest.
+    row.costMs = row.totalMs - msOf(frame, "shadow");
   } else {
     measureShadows(renderer, frame, row);
   }
-  for (const PassTiming& t : frame.timings) row.totalMs += t.ms;
   return row;
 }
 
@@ -156,11 +189,12 @@ void writeCsv(const std::filesystem::path& file, const std::vector<Sweep>& sweep
   }
 }
 
-// Points coloured by the shadow mode or else the warp when swept (else by the first sweep's value).
+// Points coloured by the anti-aliasing, the shadow mode or else the warp when swept (else by the first
+// sweep's value).
 void writePlot(const std::filesystem::path& file, const std::vector<Sweep>& sweeps,
                const std::vector<Row>& rows, Measure what) {
   std::size_t by = 0;
-  for (const char* key : {"render.shadow.warp", "render.shadow.mode"})
+  for (const char* key : {"render.shadow.warp", "render.shadow.mode", "render.antialiasing"})
     for (std::size_t i = 0; i < sweeps.size(); ++i) {
       if (sweeps[i].key == key) by = i;
     }
@@ -170,10 +204,13 @@ void writePlot(const std::filesystem::path& file, const std::vector<Sweep>& swee
     const int group = static_cast<int>(std::find(names.begin(), names.end(), r.values[by]) - names.begin());
     points.push_back({r.costMs, r.errorPct, group, r.pareto});
   }
-  const bool reflections = what == Measure::Reflections;
-  saveImage(file,
-            scatterPlot(points, reflections ? "reflection ms" : "shadow + lighting ms",
-                        reflections ? "disagreeing with the truth %" : "misclassified %", sweeps[by].values));
+  const char* x = what == Measure::Reflections    ? "reflection ms"
+                  : what == Measure::Antialiasing ? "frame ms without the shadow map"
+                                                  : "shadow + lighting ms";
+  const char* y = what == Measure::Reflections    ? "disagreeing with the truth %"
+                  : what == Measure::Antialiasing ? "mean error against 3x3 supersampling %"
+                                                  : "misclassified %";
+  saveImage(file, scatterPlot(points, x, y, sweeps[by].values));
 }
 
 }  // namespace
@@ -197,14 +234,17 @@ Sweep parseSweep(const std::string& text) {
 int runSweep(const std::filesystem::path& scene, const std::vector<std::string>& overrides,
              const std::vector<Sweep>& sweeps, const std::filesystem::path& out) {
   const Measure what = measureOf(sweeps);
+  const Image truth = what == Measure::Antialiasing ? supersampledTruth(scene, overrides) : Image();
   std::vector<Row> rows;
   for (const auto& values : combinations(sweeps)) {
-    rows.push_back(measure(scene, overrides, sweeps, values, what));
+    rows.push_back(measure(scene, overrides, sweeps, values, what, truth));
     const Row& r = rows.back();
     std::string name;
     for (std::size_t i = 0; i < sweeps.size(); ++i) name += (i ? " " : "") + sweeps[i].key + "=" + values[i];
-    std::printf("%s: %s %.3f %% of %zu px, %.1f ms\n", name.c_str(),
-                what == Measure::Reflections ? "disagreeing" : "misclassified", r.errorPct, r.evaluated,
+    const char* error = what == Measure::Reflections    ? "disagreeing"
+                        : what == Measure::Antialiasing ? "mean error"
+                                                        : "misclassified";
+    std::printf("%s: %s %.3f %% of %zu px, %.1f ms\n", name.c_str(), error, r.errorPct, r.evaluated,
                 r.costMs);
     std::fflush(stdout);
   }

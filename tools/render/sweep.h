@@ -1,8 +1,10 @@
 #pragma once
 // terrasol-render --sweep: every combination of the swept scene values rendered and measured against
 // ray-traced truth, written as DIR/sweep.csv and plotted as DIR/sweep.png with the Pareto front marked:
-// shadow error against shadow + lighting ms, or, when a render.reflections key is swept, the share of
-// reflections disagreeing with the truth against the reflection pass's ms.
+// shadow error against shadow + lighting ms; when a render.reflections key is swept, the share of
+// reflections disagreeing with the truth against the reflection pass's ms; when render.antialiasing or
+// render.scale is, the frame's mean error against its 3 x 3 supersampled truth against the frame's ms
+// (but the shadow map's).
 
 #include <filesystem>
 #include <string>
