@@ -19,7 +19,7 @@ GameSettings firstRunSettings(const MachineProbe& probe, GameSettings s) {
   const bool slow = software && probe.frameMs > 11.0;
   const RenderPreset preset =
       software ? (slow ? RenderPreset::Low : RenderPreset::Medium) : RenderPreset::Ultra;
-  applyPreset(preset, s.viewDistance, s.shadow, s.reflections, s.antialiasing, s.bloom, s.clouds);
+  applyPreset(preset, s);
   s.targetFps = software ? 30 : 60;
   s.renderScale = 1.0f;
   char why[160];

@@ -114,15 +114,14 @@ void Menu::shaderPacksTab(GameSettings& s, const ShaderPackChoices& packs, MenuR
 
 // The preset the settings match ("custom" when none); choosing one sets what it decides.
 static void presetCombo(GameSettings& s, MenuResult& out) {
-  const std::optional<RenderPreset> current =
-      presetOf(s.viewDistance, s.shadow, s.reflections, s.antialiasing, s.bloom, s.clouds);
+  const std::optional<RenderPreset> current = presetOf(s);
   const std::string shown = current ? std::string(kRenderPresets.nameOf(*current)) : "custom";
   if (!ImGui::BeginCombo("Preset", shown.c_str())) return;
   for (std::size_t i = 0; i < kRenderPresets.names.size(); ++i) {
     const auto preset = static_cast<RenderPreset>(i);
     if (ImGui::Selectable(std::string(kRenderPresets.names[i]).c_str(), current == preset) &&
         current != preset) {
-      applyPreset(preset, s.viewDistance, s.shadow, s.reflections, s.antialiasing, s.bloom, s.clouds);
+      applyPreset(preset, s);
       out.rendererChanged = true;
       out.viewChanged = true;
     }

@@ -25,53 +25,62 @@ struct PresetSettings {
   Antialiasing antialiasing;
   bool bloom;
   CloudMode clouds;
+  float fogDensity;  // height fog at its base (0: none)
+  bool shafts;
 };
 
 // Low keeps shadows (they are the look) and flat clouds, and leaves out the rest: a slow llvmpipe
-// machine's; medium adds view distance, FXAA and fancy clouds; high and ultra are a GPU's.
+// machine's; medium adds view distance, FXAA and fancy clouds; high and ultra are a GPU's, with a
+// light haze the sun's shafts show in.
+inline constexpr float kPresetHaze = 0.004f;
 inline constexpr std::array<PresetSettings, 4> kPresetSettings{{
-    {3, 1024, 64.0f, 1, false, 0.25f, 12, Antialiasing::None, false, CloudMode::Flat},
-    {4, 1024, 64.0f, 1, false, 0.25f, 12, Antialiasing::Fxaa, false, CloudMode::Fancy},
-    {8, 2048, 96.0f, 1, true, 0.25f, 12, Antialiasing::Taa, true, CloudMode::Fancy},
-    {12, 4096, 128.0f, 2, true, 0.5f, 24, Antialiasing::Taa, true, CloudMode::Fancy},
+    {3, 1024, 64.0f, 1, false, 0.25f, 12, Antialiasing::None, false, CloudMode::Flat, 0.0f, false},
+    {4, 1024, 64.0f, 1, false, 0.25f, 12, Antialiasing::Fxaa, false, CloudMode::Fancy, 0.0f, false},
+    {8, 2048, 96.0f, 1, true, 0.25f, 12, Antialiasing::Taa, true, CloudMode::Fancy, kPresetHaze, true},
+    {12, 4096, 128.0f, 2, true, 0.5f, 24, Antialiasing::Taa, true, CloudMode::Fancy, kPresetHaze, true},
 }};
 
 inline const PresetSettings& presetSettings(RenderPreset preset) {
   return kPresetSettings[static_cast<std::size_t>(preset)];
 }
 
+// `Settings`: anything with the members a preset decides (a scene, the game's settings): viewDistance,
+// shadow, reflections, antialiasing, bloom, clouds, fog and shafts.
+
 // The preset the settings match, if any (the menu shows "custom" otherwise).
-inline std::optional<RenderPreset> presetOf(int viewDistance, const ShadowSettings& shadow,
-                                            const ReflectionSettings& reflections, Antialiasing antialiasing,
-                                            const BloomSettings& bloom, const CloudSettings& clouds) {
+template <class Settings>
+std::optional<RenderPreset> presetOf(const Settings& s) {
   for (std::size_t i = 0; i < kPresetSettings.size(); ++i) {
     const PresetSettings& p = kPresetSettings[i];
-    if (viewDistance == p.viewDistance && shadow.enabled && shadow.resolution == p.shadowResolution &&
-        shadow.distance == p.shadowDistance && shadow.pcfSamples == p.pcfSamples &&
-        reflections.enabled == p.reflections && reflections.resolutionScale == p.reflectionScale &&
-        reflections.maxSteps == p.reflectionSteps && antialiasing == p.antialiasing &&
-        bloom.enabled == p.bloom && clouds.mode == p.clouds)
+    if (s.viewDistance == p.viewDistance && s.shadow.enabled && s.shadow.resolution == p.shadowResolution &&
+        s.shadow.distance == p.shadowDistance && s.shadow.pcfSamples == p.pcfSamples &&
+        s.reflections.enabled == p.reflections && s.reflections.resolutionScale == p.reflectionScale &&
+        s.reflections.maxSteps == p.reflectionSteps && s.antialiasing == p.antialiasing &&
+        s.bloom.enabled == p.bloom && s.clouds.mode == p.clouds && s.fog.density == p.fogDensity &&
+        s.shafts.enabled == p.shafts)
       return static_cast<RenderPreset>(i);
   }
   return std::nullopt;
 }
 
-// Sets what the preset decides; everything else (the shadow map's warp, its update frames, ...) stays.
-inline void applyPreset(RenderPreset preset, int& viewDistance, ShadowSettings& shadow,
-                        ReflectionSettings& reflections, Antialiasing& antialiasing, BloomSettings& bloom,
-                        CloudSettings& clouds) {
+// Sets what the preset decides; everything else (the shadow map's warp, its update frames, the fog's
+// base ...) stays.
+template <class Settings>
+void applyPreset(RenderPreset preset, Settings& s) {
   const PresetSettings& p = presetSettings(preset);
-  viewDistance = p.viewDistance;
-  shadow.enabled = true;
-  shadow.resolution = p.shadowResolution;
-  shadow.distance = p.shadowDistance;
-  shadow.pcfSamples = p.pcfSamples;
-  reflections.enabled = p.reflections;
-  reflections.resolutionScale = p.reflectionScale;
-  reflections.maxSteps = p.reflectionSteps;
-  antialiasing = p.antialiasing;
-  bloom.enabled = p.bloom;
-  clouds.mode = p.clouds;
+  s.viewDistance = p.viewDistance;
+  s.shadow.enabled = true;
+  s.shadow.resolution = p.shadowResolution;
+  s.shadow.distance = p.shadowDistance;
+  s.shadow.pcfSamples = p.pcfSamples;
+  s.reflections.enabled = p.reflections;
+  s.reflections.resolutionScale = p.reflectionScale;
+  s.reflections.maxSteps = p.reflectionSteps;
+  s.antialiasing = p.antialiasing;
+  s.bloom.enabled = p.bloom;
+  s.clouds.mode = p.clouds;
+  s.fog.density = p.fogDensity;
+  s.shafts.enabled = p.shafts;
 }
 
 }  // namespace terrasol

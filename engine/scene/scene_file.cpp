@@ -167,8 +167,7 @@ void parseRender(const json& render, const path& sceneDir, SceneFile& scene) {
                "preset"});
   // First: the scene's own keys change what the preset set.
   if (const json* v = field(render, "preset")) {
-    applyPreset(enumOf(*v, "render.preset", kRenderPresets), scene.viewDistance, scene.shadow,
-                scene.reflections, scene.antialiasing, scene.bloom, scene.clouds);
+    applyPreset(enumOf(*v, "render.preset", kRenderPresets), scene);
   }
   if (const json* v = field(render, "shaderpack")) {
     scene.shaderpack = resolvePath(nonEmptyString(*v, "render.shaderpack"), sceneDir, "render.shaderpack");

@@ -23,6 +23,8 @@ TEST(RenderPreset, EachAsksNoLessThanTheOneBelow) {
     EXPECT_GE(static_cast<int>(p.antialiasing), static_cast<int>(lower.antialiasing)) << i;
     EXPECT_GE(p.bloom, lower.bloom) << i;
     EXPECT_GE(static_cast<int>(p.clouds), static_cast<int>(lower.clouds)) << i;
+    EXPECT_GE(p.fogDensity, lower.fogDensity) << i;
+    EXPECT_GE(p.shafts, lower.shafts) << i;
   }
 }
 
@@ -36,6 +38,8 @@ TEST(RenderPreset, ASceneKeyChangesWhatThePresetSet) {
   EXPECT_EQ(scene.antialiasing, Antialiasing::Taa);
   EXPECT_FALSE(scene.bloom.enabled);
   EXPECT_EQ(scene.clouds.mode, CloudMode::Fancy);
+  EXPECT_TRUE(scene.shafts.enabled);
+  EXPECT_GT(scene.fog.density, 0.0f);
   EXPECT_THROW(parseScene(R"({"world": {"generator": "flat"}, "render": {"preset": "potato"}})", "p.json"),
                Error);
 }
@@ -43,20 +47,17 @@ TEST(RenderPreset, ASceneKeyChangesWhatThePresetSet) {
 TEST(RenderPreset, SettingsAreKnownByThePresetTheyMatch) {
   for (const RenderPreset preset :
        {RenderPreset::Low, RenderPreset::Medium, RenderPreset::High, RenderPreset::Ultra}) {
-    int view = 0;
-    ShadowSettings shadow;
-    ReflectionSettings reflections;
-    Antialiasing aa = Antialiasing::None;
-    BloomSettings bloom;
-    CloudSettings clouds;
-    applyPreset(preset, view, shadow, reflections, aa, bloom, clouds);
-    EXPECT_EQ(presetOf(view, shadow, reflections, aa, bloom, clouds), preset)
-        << kRenderPresets.nameOf(preset);
-    clouds.mode = CloudMode::Off;
-    EXPECT_EQ(presetOf(view, shadow, reflections, aa, bloom, clouds), std::nullopt) << "custom";
-    applyPreset(preset, view, shadow, reflections, aa, bloom, clouds);
-    ++view;
-    EXPECT_EQ(presetOf(view, shadow, reflections, aa, bloom, clouds), std::nullopt) << "custom";
+    SceneFile s;
+    applyPreset(preset, s);
+    EXPECT_EQ(presetOf(s), preset) << kRenderPresets.nameOf(preset);
+    s.clouds.mode = CloudMode::Off;
+    EXPECT_EQ(presetOf(s), std::nullopt) << "custom";
+    applyPreset(preset, s);
+    s.shafts.enabled = !s.shafts.enabled;
+    EXPECT_EQ(presetOf(s), std::nullopt) << "custom";
+    applyPreset(preset, s);
+    ++s.viewDistance;
+    EXPECT_EQ(presetOf(s), std::nullopt) << "custom";
   }
 }
 
