@@ -50,7 +50,7 @@ TEST(RenderPreset, SettingsAreKnownByThePresetTheyMatch) {
     SceneFile s;
     applyPreset(preset, s);
     EXPECT_EQ(presetOf(s), preset) << kRenderPresets.nameOf(preset);
-    s.clouds.mode = CloudMode::Off;
+    s.clouds.mode = s.clouds.mode == CloudMode::Fancy ? CloudMode::Off : CloudMode::Fancy;
     EXPECT_EQ(presetOf(s), std::nullopt) << "custom";
     applyPreset(preset, s);
     s.shafts.enabled = !s.shafts.enabled;
