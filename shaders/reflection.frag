@@ -20,14 +20,14 @@ layout(binding = GB_LIGHT) uniform sampler2D g_light;
 layout(binding = GB_DEPTH_UNIT) uniform sampler2D g_depth;
 
 uniform float u_minSmoothness;
+uniform ivec2 u_targetSize;  // this pass's
 
 layout(location = OUT_COLOR) out vec4 o_reflection;  // rgb: added to the lit scene; a: 1 hit, 0 sky
 layout(location = OUT_REFLECTION_HIT) out vec4 o_hit;  // xy: hit screen uv; z: 1 hit, 0 none; w: depth
 
 void main() {
   ivec2 size = textureSize(g_depth, 0);
-  vec2 uv = v_ndc * 0.5 + 0.5;
-  ivec2 pixel = clamp(ivec2(uv * vec2(size)), ivec2(0), size - 1);
+  ivec2 pixel = pixelUnder(size, u_targetSize);
   vec2 ndc = (vec2(pixel) + 0.5) / vec2(size) * 2.0 - 1.0;  // the G-buffer pixel's own centre
   float depth = texelFetch(g_depth, pixel, 0).r;
   vec3 position = unproject(ndc, depth);

@@ -7,12 +7,12 @@ layout(binding = GB_SPECULAR) uniform sampler2D g_specular;
 layout(binding = GB_DEPTH_UNIT) uniform sampler2D g_depth;
 
 uniform float u_minSmoothness;
+uniform ivec2 u_targetSize;  // this pass's
 
-in vec2 v_ndc;
+#include "lib/screen_position.glsl"
 
 void main() {
-  ivec2 size = textureSize(g_depth, 0);
-  ivec2 pixel = clamp(ivec2((v_ndc * 0.5 + 0.5) * vec2(size)), ivec2(0), size - 1);
+  ivec2 pixel = pixelUnder(textureSize(g_depth, 0), u_targetSize);
   bool drawn = texelFetch(g_depth, pixel, 0).r < 1.0;
   bool smoothEnough = texelFetch(g_specular, pixel, 0).r >= u_minSmoothness;
   gl_FragDepth = drawn && smoothEnough ? 0.0 : 1.0;

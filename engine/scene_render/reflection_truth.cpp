@@ -81,14 +81,19 @@ std::optional<glm::ivec3> blockAt(const GBufferPixels& f, const FrameGeometry& g
   return glm::ivec3(glm::floor(point));
 }
 
+// Where the truth's hit point lies on screen; nothing behind the camera.
+std::optional<glm::dvec2> screenOf(const FrameGeometry& g, const Truth& truth) {
+  const glm::vec4 clip = g.viewProjection * glm::vec4(glm::vec3(truth.point - g.camera), 1.0f);
+  if (clip.w <= 1e-4f) return std::nullopt;
+  return glm::dvec2(clip.x, clip.y) / static_cast<double>(clip.w) * 0.5 + 0.5;
+}
+
 // Whether the truth's hit point is what the screen shows there.
 bool visibleOnScreen(const GBufferPixels& f, const FrameGeometry& g, const Truth& truth,
                      bool surfaceNormals) {
-  const glm::vec4 clip = g.viewProjection * glm::vec4(glm::vec3(truth.point - g.camera), 1.0f);
-  if (clip.w <= 1e-4f) return false;
-  const glm::dvec2 uv = glm::dvec2(clip.x, clip.y) / static_cast<double>(clip.w) * 0.5 + 0.5;
-  if (uv.x < 0.0 || uv.y < 0.0 || uv.x >= 1.0 || uv.y >= 1.0) return false;
-  const auto shown = blockAt(f, g, uv, surfaceNormals);
+  const std::optional<glm::dvec2> uv = screenOf(g, truth);
+  if (!uv || uv->x < 0.0 || uv->y < 0.0 || uv->x >= 1.0 || uv->y >= 1.0) return false;
+  const auto shown = blockAt(f, g, *uv, surfaceNormals);
   return shown && *shown == truth.block;
 }
 
@@ -96,16 +101,23 @@ int bucketOf(double distance) {
   return distance < 8.0 ? 0 : distance < 32.0 ? 1 : distance < 64.0 ? 2 : 3;
 }
 
-void count(ReflectionCounts& c, const Truth& truth, const std::optional<glm::ivec3>& marched, bool visible) {
+// What the march found against the truth: its block, and whether it lies within a G-buffer pixel of
+// the truth's point on screen.
+struct Marched {
+  std::optional<glm::ivec3> block;
+  bool besideTruth = false;
+};
+
+void count(ReflectionCounts& c, const Truth& truth, const Marched& marched, bool visible) {
   if (truth.kind == Truth::Kind::Ambiguous) {
     ++c.ambiguous;
     return;
   }
   ++c.evaluated;
   const bool truthHit = truth.kind == Truth::Kind::Block;
-  if (truthHit && marched) {
-    ++(*marched == truth.block ? c.agree : c.wrongHit);
-  } else if (!truthHit && !marched) {
+  if (truthHit && marched.block) {
+    ++(*marched.block == truth.block ? c.agree : marched.besideTruth ? c.borderHit : c.wrongHit);
+  } else if (!truthHit && !marched.block) {
     ++c.agree;
   } else if (!truthHit) {
     ++c.falseHit;
@@ -127,10 +139,15 @@ void evaluate(ReflectionError& e, ReflectionCounts& part, const World& world, co
   glm::dvec3 dir = glm::reflect(-toViewer, ray.normal);
   dir = glm::normalize(dir - ray.vertexNormal * std::min(glm::dot(dir, ray.vertexNormal) - 0.01, 0.0));
   const Truth truth = trace(world, g.camera + ray.position + ray.vertexNormal * 0.02, dir, maxDistance);
-  const std::optional<glm::ivec3> marched =
-      ray.hit.z > 0.5f ? blockAt(f, g, glm::dvec2(ray.hit.x, ray.hit.y), surfaceNormals) : std::nullopt;
+  Marched marched;
+  if (ray.hit.z > 0.5f) {
+    const glm::dvec2 hitUv{ray.hit.x, ray.hit.y};
+    marched.block = blockAt(f, g, hitUv, surfaceNormals);
+    const std::optional<glm::dvec2> truthUv = screenOf(g, truth);
+    marched.besideTruth = truthUv && glm::length((*truthUv - hitUv) * glm::dvec2(f.size)) <= 1.0;
+  }
   const bool visible =
-      truth.kind == Truth::Kind::Block && !marched && visibleOnScreen(f, g, truth, surfaceNormals);
+      truth.kind == Truth::Kind::Block && !marched.block && visibleOnScreen(f, g, truth, surfaceNormals);
   count(e.total, truth, marched, visible);
   count(part, truth, marched, visible);
   count(e.byDistance[static_cast<std::size_t>(bucketOf(glm::length(ray.position)))], truth, marched, visible);
@@ -160,7 +177,9 @@ ReflectionError measureReflectionError(const World& world, const GBufferPixels& 
       // the G-buffer pixel the march from opaque surfaces read.
       const glm::dvec2 uv = (glm::dvec2(x, y) + 0.5) / glm::dvec2(r.size);
       if (const glm::vec4 hit = r.hits[ri]; hit.z >= 0.0f) {
-        const glm::ivec2 gp = pixelAt(uv, f.size);
+        // The G-buffer pixel the march read: lib/screen_position.glsl's pixelUnder, in the same
+        // integer arithmetic (a float product lands on pixel borders at even scales).
+        const glm::ivec2 gp = glm::min((2 * glm::ivec2(x, y) + 1) * f.size / (2 * r.size), f.size - 1);
         const std::size_t gi = indexOf(gp, f.size);
         if (f.depth[gi] < 1.0f) {
           const glm::dvec2 ndc = (glm::dvec2(gp) + 0.5) / glm::dvec2(f.size) * 2.0 - 1.0;
@@ -201,6 +220,7 @@ nlohmann::json reflectionErrorJson(const ReflectionError& error) {
                           {"agree_pct", pct(c.agree, c.evaluated)},
                           {"agree_of_reachable_pct", pct(c.agree, c.evaluated - c.missedOffScreen)},
                           {"wrong_hit_pct", pct(c.wrongHit, c.evaluated)},
+                          {"border_hit_pct", pct(c.borderHit, c.evaluated)},
                           {"missed_on_screen_pct", pct(c.missedOnScreen, c.evaluated)},
                           {"missed_off_screen_pct", pct(c.missedOffScreen, c.evaluated)},
                           {"false_hit_pct", pct(c.falseHit, c.evaluated)},

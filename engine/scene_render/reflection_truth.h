@@ -18,7 +18,9 @@ namespace terrasol {
 struct ReflectionCounts {
   std::size_t evaluated = 0;       // marched pixels whose truth is decided
   std::size_t agree = 0;           // the march and the truth hit the same block, or both nothing
-  std::size_t wrongHit = 0;        // both hit, different blocks
+  std::size_t wrongHit = 0;        // both hit, different blocks, the truth's more than a pixel away
+  std::size_t borderHit = 0;       // both hit, the truth's neighbour across a border within a pixel of
+                                   // the hit on screen: the screen cannot tell the two apart there
   std::size_t missedOnScreen = 0;  // the truth's block is visible on screen; the march found nothing
   std::size_t missedOffScreen =
       0;                      // the truth's block is off screen or hidden: no screen-space method sees it

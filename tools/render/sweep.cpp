@@ -32,9 +32,17 @@ struct Row {
 std::vector<const char*> columnNames(Measure m) {
   if (m == Measure::Antialiasing) return {"aa_mean", "aa_p99", "edge_over_pct", "error_pct"};
   if (m == Measure::Reflections) {
-    return {"evaluated_pixels",      "agree_pct",     "wrong_hit_pct",   "missed_on_screen_pct",
-            "missed_off_screen_pct", "false_hit_pct", "sky_leak_pixels", "error_pct",
-            "reflection_ms",         "lighting_ms"};
+    return {"evaluated_pixels",
+            "agree_pct",
+            "wrong_hit_pct",
+            "border_hit_pct",
+            "missed_on_screen_pct",
+            "missed_off_screen_pct",
+            "false_hit_pct",
+            "sky_leak_pixels",
+            "error_pct",
+            "reflection_ms",
+            "lighting_ms"};
   }
   return {"evaluated_pixels", "false_shadow_pct", "false_lit_pct", "error_pct",
           "ambiguous_pct",    "shadow_ms",        "lighting_ms"};
@@ -85,6 +93,7 @@ void measureReflections(SceneRenderer& renderer, const RenderedFrame& frame, Row
   row.columns = {static_cast<double>(c.evaluated),
                  pct(c.agree, c.evaluated),
                  pct(c.wrongHit, c.evaluated),
+                 pct(c.borderHit, c.evaluated),
                  pct(c.missedOnScreen, c.evaluated),
                  pct(c.missedOffScreen, c.evaluated),
                  pct(c.falseHit, c.evaluated),

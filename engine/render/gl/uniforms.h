@@ -36,6 +36,9 @@ inline void write(GLuint p, GLint at, const glm::vec3* v, GLsizei n) {
 inline void write(GLuint p, GLint at, const glm::vec4* v, GLsizei n) {
   glProgramUniform4fv(p, at, n, glm::value_ptr(*v));
 }
+inline void write(GLuint p, GLint at, const glm::ivec2* v, GLsizei n) {
+  glProgramUniform2iv(p, at, n, glm::value_ptr(*v));
+}
 inline void write(GLuint p, GLint at, const glm::ivec3* v, GLsizei n) {
   glProgramUniform3iv(p, at, n, glm::value_ptr(*v));
 }

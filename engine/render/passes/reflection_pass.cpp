@@ -37,7 +37,7 @@ constexpr float kFarDepth = 1.0f;
 ReflectionPass::ReflectionPass(const VariantBuilder& build, PassShared& shared) : shared_(shared) {
   if (!shared.options.reflections.enabled) return;
   mask_ = gl::ProgramWith<Mask>(build("fullscreen.vert", "reflection_mask.frag"));
-  march_ = gl::ProgramWith<March>(
+  march_ = gl::ProgramWith<OpaqueMarch>(
       build("fullscreen.vert", "reflection.frag", with(shared.contents.defines(), shared.skyDefines())));
   composite_ = gl::ProgramWith<Composite>(build("fullscreen.vert", "reflection_composite.frag"));
   depthCopy_ = build("fullscreen.vert", "reflection_depth.frag");
@@ -96,7 +96,7 @@ void ReflectionPass::ensureTargets(glm::ivec2 size) {
 void ReflectionPass::setUniforms(const Frame& frame) const {
   const ReflectionSettings& settings = shared_.options.reflections;
   const FrameView& view = frame.view;
-  for (const March* u : {&march_.u, &surfaceMarch_.u.march}) {
+  for (const March* u : {&march_.u.march, &surfaceMarch_.u.march}) {
     u->lighting.set(view);
     u->sky.set(view);
     u->ssr.set(view, settings);
@@ -115,6 +115,8 @@ void ReflectionPass::execute(Frame& frame) {
   const glm::ivec2 size = glm::max(glm::ivec2(glm::round(glm::vec2(gbuffer.size()) * scale)), glm::ivec2(1));
   ensureTargets(size);
   setUniforms(frame);
+  mask_.u.targetSize.set(size);
+  march_.u.targetSize.set(size);
   frame.reflections = {};
   glViewport(0, 0, size.x, size.y);
   glEnable(GL_DEPTH_TEST);

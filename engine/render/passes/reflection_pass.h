@@ -49,8 +49,10 @@ class ReflectionPass final : public RenderPass {
 
   struct Mask {
     Mask() = default;
-    explicit Mask(const LinkedProgram& p) : minSmoothness(p, "u_minSmoothness") {}
+    explicit Mask(const LinkedProgram& p)
+        : minSmoothness(p, "u_minSmoothness"), targetSize(p, "u_targetSize") {}
     gl::Uniform<float> minSmoothness;
+    gl::Uniform<glm::ivec2> targetSize;  // the reflection target's, which samples the G-buffer
   };
   struct March {
     March() = default;
@@ -58,6 +60,12 @@ class ReflectionPass final : public RenderPass {
     LightingUniforms lighting;
     SkyUniforms sky;
     SsrUniforms ssr;
+  };
+  struct OpaqueMarch {
+    OpaqueMarch() = default;
+    explicit OpaqueMarch(const LinkedProgram& p) : march(p), targetSize(p, "u_targetSize") {}
+    March march;
+    gl::Uniform<glm::ivec2> targetSize;
   };
   struct Composite {
     Composite() = default;
@@ -83,7 +91,7 @@ class ReflectionPass final : public RenderPass {
   PassShared& shared_;
   // Only when reflections are on.
   gl::ProgramWith<Mask> mask_;  // opaque surfaces
-  gl::ProgramWith<March> march_;
+  gl::ProgramWith<OpaqueMarch> march_;
   gl::ProgramWith<Composite> composite_;
   LinkedProgram depthCopy_;  // water and glass
   gl::ProgramWith<SurfaceDepth> surfaceDepth_;
