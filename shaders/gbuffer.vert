@@ -42,9 +42,7 @@ out vec3 v_light;     // block, sky, ao
 flat out vec3 v_normal;
 flat out vec3 v_tangent;
 flat out vec3 v_up;
-#if defined(WAVES) || defined(REFLECTIONS)
 flat out float v_water;  // 1 on water's quads (tinted as water)
-#endif
 
 void main() {
   BlockVertex v = unpackBlockVertex(a_packed);
@@ -56,9 +54,7 @@ void main() {
   v_normal = kFaceNormals[v.face];
   v_tangent = kFaceTangents[v.face];
   v_up = kFaceUps[v.face];
-#if defined(WAVES) || defined(REFLECTIONS)
   v_water = v.tint == TINT_WATER ? 1.0 : 0.0;
-#endif
   gl_Position = u_viewProjection * vec4(v_position, 1.0);
   if (u_sealMergedEdges && v.merged) gl_Position = sealed(gl_Position, v_position, v);
 }

@@ -10,6 +10,7 @@
 #endif
 
 layout(location = OUT_COLOR) out vec4 o_color;
+layout(location = OUT_REACTIVE) out float o_reactive;  // a prop keeps still (TAA's reactive mask)
 
 void main() {
   PropSurface p = propSurface();
@@ -37,4 +38,5 @@ void main() {
   vec3 lit = fogged(shade(s, toViewer, visibility, transmittance), v_position, skyColor(-toViewer));
   lit = behindClouds(lit, vec3(0.0), -toViewer, length(v_position));
   o_color = vec4(lit * alpha, alpha);
+  o_reactive = 0.0;
 }

@@ -6,8 +6,10 @@
 // with the foreground) carried through the camera's motion into the last frame's view. The history is
 // clipped to the spread of this frame's samples in YCoCg, in a compressed (perceptual) range, so a
 // colour the scene no longer shows cannot linger, and dropped where the surface it saw is not the one
-// seen now (the distance it stored disagrees: a disocclusion) or it falls off the screen. Whole-texel
-// fetches only: filtered lookups cost far more on llvmpipe.
+// seen now (the distance it stored disagrees: a disocclusion) or it falls off the screen. Where the
+// translucent pass marked water (the reactive mask: it changes by itself, so its history is a blur in
+// time), this frame counts for half at least. Whole-texel fetches only: filtered lookups cost far
+// more on llvmpipe.
 
 #include "lib/compressed_range.glsl"
 #include "lib/unproject.glsl"
@@ -15,6 +17,8 @@
 layout(binding = 0) uniform sampler2D u_scene;    // linear HDR at the scene's size, jittered
 layout(binding = 1) uniform sampler2D u_depth;    // the scene's depth
 layout(binding = 2) uniform sampler2D u_history;  // last frame's output: rgb colour, a distance
+layout(binding = 3) uniform sampler2D u_reactiveMask;  // the scene's: 1 where it changes by itself
+uniform bool u_reactive;       // the translucent pass drew the mask this frame
 uniform mat4 u_reprojection;  // the last frame's camera-relative view-projection, unjittered
 uniform vec3 u_cameraMotion;  // this frame's camera minus the last frame's
 uniform vec2 u_jitter;        // this frame's offset, in scene pixels
@@ -29,6 +33,7 @@ const float kClipSigma = 1.25;        // the box's half-size in standard deviati
 const float kClipSigmaMoving = 0.75;  // and at kFastMotion target pixels a frame or more,
 const float kBlendMoving = 0.3;       // where this frame's share is
 const float kFastMotion = 8.0;
+const float kBlendReactive = 0.5;    // this frame's share at least, on water (the reactive mask)
 const float kSkyDistance = 60000.0;   // stored for the sky (within half-float range)
 const float kDistanceTolerance = 0.1; // relative: a stored distance further off is another surface
 
@@ -132,6 +137,7 @@ void main() {
       vec2 nearest = offset / u_sceneScale;
       float blend = max(kBlend * exp(-2.0 * dot(nearest, nearest)), kMinBlend);
       blend = mix(blend, kBlendMoving, moving);
+      if (u_reactive) blend = max(blend, kBlendReactive * texelFetch(u_reactiveMask, clamp(centre, ivec2(0), g_lastTexel), 0).r);
       resolved = mix(kept, current, blend);
     }
   }

@@ -66,16 +66,16 @@ vec3 fromBelow(Surface s, vec3 toViewer) {
 }
 #endif
 
-#if defined(WAVES) || defined(REFLECTIONS)
-flat in float v_water;
-#endif
+flat in float v_water;  // 1 on water's quads
 #ifdef WAVES
 #include "lib/waves.glsl"
 #endif
 
 layout(location = OUT_COLOR) out vec4 o_color;
+layout(location = OUT_REACTIVE) out float o_reactive;  // water changes by itself (TAA's reactive mask)
 
 void main() {
+  o_reactive = v_water;
   AtlasCoord at = atlasCoord();
   vec4 albedo = atlasTexel(u_atlasAlbedo, at);
   vec4 normalTexel = normalTexelAt(at);

@@ -87,6 +87,7 @@ struct Frame {
   GLuint finalImage = 0;     // that image's texture (0: none)
   bool temporal = false;     // TAA resolves the scene: the final pass reads `resolved`
   GLuint resolved = 0;       // TAA's output (linear HDR at the target's size), once it has run
+  GLuint reactive = 0;       // where the translucent pass drew what changes by itself (water), for TAA
   glm::ivec2 size{0};        // the scene's: the G-buffer's and every pass's before the final one
   glm::ivec2 targetSize{0};  // the target's: the final pass scales the scene up to it
   ShadowLookup shadow;

@@ -4,6 +4,7 @@
 
 #include "core/error.h"
 #include "render/gl/render_target.h"
+#include "render/gl_slots.h"
 
 namespace terrasol {
 namespace {
@@ -52,6 +53,8 @@ GBuffer::GBuffer(glm::ivec2 size, GBufferContents contents)
   glNamedFramebufferTexture(lighting_.id(), GL_DEPTH_ATTACHMENT, lightingDepth_.id(), 0);
   glNamedFramebufferTexture(translucent_.id(), GL_COLOR_ATTACHMENT0, scene_.id(), 0);
   glNamedFramebufferTexture(translucent_.id(), GL_DEPTH_ATTACHMENT, depth_.id(), 0);
+  reactive_ = makeTarget(GL_R8, size);
+  glNamedFramebufferTexture(translucent_.id(), GL_COLOR_ATTACHMENT0 + slots::kOutReactive, reactive_.id(), 0);
   checkComplete(geometry_.id(), "G-buffer");
   checkComplete(lighting_.id(), "lighting");
   checkComplete(translucent_.id(), "translucent");

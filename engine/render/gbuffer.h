@@ -41,7 +41,10 @@ class GBuffer {
   // against: each runs only on its own pixels. The lighting shader samples the original, so no texture
   // it reads is attached.
   GLuint lightingFramebuffer() const { return lighting_.id(); }
-  GLuint translucentFramebuffer() const { return translucent_.id(); }  // scene + depth, tested not written
+  // The scene + depth, tested not written; and at slots::kOutReactive the reactive mask, drawn only
+  // when the translucent pass selects its draw buffer.
+  GLuint translucentFramebuffer() const { return translucent_.id(); }
+  GLuint reactive() const { return reactive_.id(); }  // R8: 1 where TAA's history should count less
 
   // The depth the geometry pass wrote, into the lighting framebuffer's copy.
   void copyDepthForLighting() const;
@@ -54,7 +57,7 @@ class GBuffer {
   glm::ivec2 size_;
   GBufferContents contents_;
   std::array<gl::Texture, gbuffer::kTargets> targets_;
-  gl::Texture depth_, lightingDepth_, scene_;
+  gl::Texture depth_, lightingDepth_, scene_, reactive_;
   gl::Framebuffer geometry_, lighting_, translucent_;
 };
 

@@ -17,6 +17,7 @@ std::vector<ShaderDefine> slotDefines() {
       define("OUT_COLOR", slots::kOutColor),
       define("OUT_REFLECTION_HIT", slots::kOutReflectionHit),
       define("OUT_REFLECTION_SURFACE", slots::kOutReflectionSurface),
+      define("OUT_REACTIVE", slots::kOutReactive),
       define("UNIT_ATLAS_ALBEDO", slots::kUnitAtlasAlbedo),
       define("UNIT_ATLAS_NORMAL", slots::kUnitAtlasNormal),
       define("UNIT_ATLAS_SPECULAR", slots::kUnitAtlasSpecular),

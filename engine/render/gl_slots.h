@@ -25,6 +25,7 @@ inline constexpr int kAttribLight = 6;
 inline constexpr int kOutColor = 0;
 inline constexpr int kOutReflectionHit = 1;      // the reflection march's second target (hit or not, where)
 inline constexpr int kOutReflectionSurface = 2;  // the march from water and glass: the normal it used
+inline constexpr int kOutReactive = 1;  // the translucent pass's second target: what TAA's history lags
 
 // Texture units of the block passes (the G-buffer targets use units 0..4 in the passes that read them).
 inline constexpr int kUnitAtlasAlbedo = 0;

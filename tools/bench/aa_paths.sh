@@ -10,7 +10,7 @@ build=${1:-build}
 here=$(dirname "$0")
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
-for scene in aa_walk_terrain aa_showcase_turn; do
+for scene in ${TERRASOL_AA_SCENES:-aa_walk_terrain aa_showcase_turn aa_lake_walk}; do
   for run in none:1 fxaa:1 taa:1 none:0.67 taa:0.67; do
     aa=${run%:*}
     scale=${run#*:}

@@ -42,6 +42,7 @@ void TaaPass::execute(Frame& frame) {
   glBindTextureUnit(0, frame.gbuffer->scene());
   glBindTextureUnit(1, frame.gbuffer->depth());
   glBindTextureUnit(2, history_[last].id());
+  glBindTextureUnit(3, frame.reactive);
   const Resolve& u = resolve_.u;
   u.inverseViewProjection.set(view.inverseViewProjection);
   u.reprojection.set(lastViewProjection_);
@@ -50,6 +51,7 @@ void TaaPass::execute(Frame& frame) {
   u.jitter.set(view.jitter);
   u.sceneScale.set(glm::vec2(frame.size) / glm::vec2(frame.targetSize));
   u.historyValid.set(historyValid_);
+  u.reactive.set(frame.reactive != 0);
   glUseProgram(resolve_.id());
   glBindVertexArray(shared_.empty.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);

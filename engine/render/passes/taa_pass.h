@@ -39,11 +39,12 @@ class TaaPass final : public RenderPass {
           cameraMotion(p, "u_cameraMotion"),
           jitter(p, "u_jitter"),
           sceneScale(p, "u_sceneScale"),
-          historyValid(p, "u_historyValid") {}
+          historyValid(p, "u_historyValid"),
+          reactive(p, "u_reactive") {}
     gl::Uniform<glm::mat4> inverseViewProjection, reprojection;
     gl::Uniform<glm::vec3> cameraMotion;
     gl::Uniform<glm::vec2> jitter, sceneScale;
-    gl::Uniform<bool> historyValid;
+    gl::Uniform<bool> historyValid, reactive;
   };
   void realize(glm::ivec2 size);
 

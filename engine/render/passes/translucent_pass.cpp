@@ -4,6 +4,11 @@
 #include "render/gl_slots.h"
 
 namespace terrasol {
+namespace {
+
+constexpr float kNothingReactive[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+
+}  // namespace
 
 TranslucentPass::TranslucentPass(const VariantBuilder& build, PassShared& shared)
     : shared_(shared),
@@ -34,8 +39,10 @@ void TranslucentPass::execute(Frame& frame) {
   blocks_.u.lit.set(view, frame.shadow);
   if (shared_.options.reflections.enabled) prepareReflections(frame);
   if (shared_.options.water.waves) blocks_.u.waves.set(frame.inputs);
-  glBindFramebuffer(GL_FRAMEBUFFER, frame.gbuffer->translucentFramebuffer());
+  const GLuint target = frame.gbuffer->translucentFramebuffer();
+  glBindFramebuffer(GL_FRAMEBUFFER, target);
   glViewport(0, 0, frame.gbuffer->size().x, frame.gbuffer->size().y);
+  if (frame.temporal) markReactive(frame);
   glEnable(GL_DEPTH_TEST);
   glDepthMask(GL_FALSE);  // tested against the opaque scene, never hiding each other
   glEnable(GL_CULL_FACE);
@@ -57,6 +64,23 @@ void TranslucentPass::execute(Frame& frame) {
   glCullFace(GL_BACK);
   glDepthMask(GL_TRUE);
   glDisable(GL_DEPTH_TEST);
+  if (frame.temporal) {
+    glBlendEquationi(slots::kOutReactive, GL_FUNC_ADD);
+    glNamedFramebufferDrawBuffer(target, GL_COLOR_ATTACHMENT0);
+  }
+}
+
+// With TAA, the reactive mask too: water changes by itself (its animated texture, its waves, what it
+// refracts and reflects), and a history a dozen frames deep shows it blurred in time. The nearest
+// water's mark wins (max), whatever lies over it.
+void TranslucentPass::markReactive(Frame& frame) const {
+  const GLuint target = frame.gbuffer->translucentFramebuffer();
+  const GLenum buffers[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT0 + slots::kOutReactive};
+  static_assert(slots::kOutColor == 0 && slots::kOutReactive == 1);
+  glNamedFramebufferDrawBuffers(target, 2, buffers);
+  glClearNamedFramebufferfv(target, GL_COLOR, slots::kOutReactive, kNothingReactive);
+  glBlendEquationi(slots::kOutReactive, GL_MAX);
+  frame.reactive = frame.gbuffer->reactive();
 }
 
 // The lit opaque scene as it is now and its depth, for water to refract; and the reflection pass's

@@ -21,6 +21,7 @@ class TranslucentPass final : public RenderPass {
 
  private:
   void prepareReflections(const Frame& frame);
+  void markReactive(Frame& frame) const;
   struct Blocks {
     Blocks() = default;
     explicit Blocks(const LinkedProgram& p)
