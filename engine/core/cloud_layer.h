@@ -11,8 +11,15 @@
 
 namespace terrasol {
 
-inline constexpr double kCloudBottom = 192.0;     // blocks
-inline constexpr double kCloudThickness = 4.0;    // fancy clouds' boxes
+inline constexpr double kCloudBottom = 192.0;   // blocks
+inline constexpr double kCloudThickness = 4.0;  // fancy clouds' boxes
+// Volumetric clouds: the slab their density fills (from the same bottom), how much light a block of
+// the densest cloud lets through (exp(-extinction)), and the steps a view ray and a ray towards the
+// light take through them.
+inline constexpr double kCloudVolumeThickness = 24.0;
+inline constexpr float kCloudExtinction = 0.35f;  // per block at full density
+inline constexpr int kCloudVolumeSteps = 16, kCloudLightSteps = 3;
+inline constexpr double kCloudVolumeSpan = 96.0;  // blocks of a ray marched at most
 inline constexpr double kCloudCellBlocks = 12.0;  // one texel's side
 // Drift per tick as a fraction 3/100, so a whole cycle over the map is an exact number of ticks.
 inline constexpr std::int64_t kCloudDriftNumerator = 3, kCloudDriftDenominator = 100;

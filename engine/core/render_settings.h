@@ -108,9 +108,10 @@ struct BloomSettings {
 };
 
 // "render.clouds": Minecraft's cloud layer (core/cloud_layer.h) from the packs' clouds.png, flat texels
-// on a plane or fancy 4-block boxes, with their shadows on the ground.
-enum class CloudMode { Off, Flat, Fancy };
-inline constexpr EnumNames<CloudMode, 3> kCloudModes{{"off", "flat", "fancy"}};
+// on a plane, fancy 4-block boxes, or volumetric (a thicker slab of density marched and lit by the
+// light through it), with their shadows on the ground.
+enum class CloudMode { Off, Flat, Fancy, Volumetric };
+inline constexpr EnumNames<CloudMode, 4> kCloudModes{{"off", "flat", "fancy", "volumetric"}};
 struct CloudSettings {
   CloudMode mode = CloudMode::Off;
   bool shadows = true;  // the sun dims under a cloud (the direct light's shadow term)

@@ -104,6 +104,7 @@ SkyUniforms::SkyUniforms(const LinkedProgram& p)
       cloudOrigin(p, "u_cloudOrigin"),
       cloudLight(p, "u_cloudLight"),
       cloudToLight(p, "u_cloudToLight"),
+      cloudNoise(p, "u_cloudNoise"),
       heightFog(p, "u_heightFog"),
       heightFogColour(p, "u_heightFogColour") {}
 
@@ -126,6 +127,9 @@ void SkyUniforms::set(const FrameView& view) const {
     cloudOrigin.set(view.cloudOrigin);
     cloudLight.set(day.lightColor);
     cloudToLight.set(day.toShadowLight);
+    // The volumetric march's per-pixel start moves with TAA's jitter (0 without), whose history
+    // averages it; a fixed sequence, so a scene's pixels stay the same on every run.
+    cloudNoise.set(view.jitter * 37.0f);
     glBindTextureUnit(slots::kUnitClouds, view.clouds);
   }
 }

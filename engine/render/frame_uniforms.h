@@ -57,6 +57,7 @@ struct SkyUniforms {
   gl::Uniform<float> waterTop;
   gl::Uniform<glm::vec3> waterFog;
   gl::Uniform<glm::vec3> cloudOrigin, cloudLight, cloudToLight;  // lib/clouds.glsl
+  gl::Uniform<glm::vec2> cloudNoise;
   gl::Uniform<glm::vec2> heightFog;
   gl::Uniform<glm::vec3> heightFogColour;
 };

@@ -32,6 +32,7 @@ std::vector<ShaderDefine> PassShared::skyDefines() const {
   if (clouds) {
     defines.push_back({"CLOUDS", "1"});
     if (options.clouds.mode == CloudMode::Fancy) defines.push_back({"CLOUDS_FANCY", "1"});
+    if (options.clouds.mode == CloudMode::Volumetric) defines.push_back({"CLOUDS_VOLUMETRIC", "1"});
     if (options.clouds.shadows) defines.push_back({"CLOUD_SHADOWS", "1"});
   }
   if (options.fog.density > 0.0f) defines.push_back({"HEIGHT_FOG", "1"});

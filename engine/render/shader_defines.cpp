@@ -3,6 +3,7 @@
 #include <cctype>
 #include <charconv>
 #include <sstream>
+#include <string>
 #include <utility>
 
 #include "assets/labpbr.h"
@@ -104,9 +105,17 @@ std::vector<ShaderDefine> debugViewDefines() {
 // The cloud layer's shape and look (core/cloud_layer.h) for lib/clouds.glsl.
 std::vector<ShaderDefine> cloudLayerDefines() {
   auto literal = [](double v) { return floatLiteral(static_cast<float>(v)); };
-  return {{"CLOUD_THICKNESS", literal(kCloudThickness)}, {"CLOUD_CELL", literal(kCloudCellBlocks)},
-          {"CLOUD_ALPHA", literal(kCloudAlpha)},         {"CLOUD_ALBEDO", literal(kCloudAlbedo)},
-          {"CLOUD_SHADOW", literal(kCloudShadow)},       {"CLOUD_RANGE", literal(kCloudRange)}};
+  return {{"CLOUD_THICKNESS", literal(kCloudThickness)},
+          {"CLOUD_CELL", literal(kCloudCellBlocks)},
+          {"CLOUD_ALPHA", literal(kCloudAlpha)},
+          {"CLOUD_ALBEDO", literal(kCloudAlbedo)},
+          {"CLOUD_SHADOW", literal(kCloudShadow)},
+          {"CLOUD_RANGE", literal(kCloudRange)},
+          {"CLOUD_VOLUME_THICKNESS", literal(kCloudVolumeThickness)},
+          {"CLOUD_EXTINCTION", literal(kCloudExtinction)},
+          {"CLOUD_VOLUME_SPAN", literal(kCloudVolumeSpan)},
+          {"CLOUD_VOLUME_STEPS", std::to_string(kCloudVolumeSteps)},
+          {"CLOUD_LIGHT_STEPS", std::to_string(kCloudLightSteps)}};
 }
 
 }  // namespace

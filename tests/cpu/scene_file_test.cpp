@@ -260,7 +260,7 @@ TEST(SceneFile, CloudSettings) {
     EXPECT_EQ(parseScene(json, "a.json").clouds.mode, static_cast<CloudMode>(i)) << kCloudModes[i];
   }
   EXPECT_FALSE(parseScene(R"({"render": {"clouds": {"shadows": false}}})", "a.json").clouds.shadows);
-  EXPECT_TRUE(failsWith(R"({"render": {"clouds": {"mode": "volumetric"}}})", "render.clouds.mode: expected"));
+  EXPECT_TRUE(failsWith(R"({"render": {"clouds": {"mode": "cumulus"}}})", "render.clouds.mode: expected"));
   EXPECT_TRUE(failsWith(R"({"render": {"clouds": {"height": 128}}})", "render.clouds.height: unknown key"));
   CloudSettings back;
   parseClouds(cloudsJson({CloudMode::Flat, false}), "clouds", back);

@@ -6,7 +6,9 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <glm/geometric.hpp>
+#include <optional>
 
 #include "assets/cloud_map.h"
 #include "core/luma.h"
@@ -61,28 +63,37 @@ class CloudsTest : public testing::GlTest {
     return frame;
   }
 
-  // Sky pixels whose ray meets the flat layer within half its range: which show a cloud (differ from
-  // the clear sky `off`), against the map at `ticks`.
-  static Agreement skyAgainstMap(const RenderedFrame& on, const RenderedFrame& off, const SceneFile& scene,
-                                 const CloudMap& map, std::int64_t ticks) {
+  // Sky pixels (none drawn in the clear frame `off`) whose view direction `expected` decides: which
+  // show a cloud (differ from the clear sky) against whether it says they should.
+  static Agreement skyAgreement(const RenderedFrame& on, const RenderedFrame& off,
+                                const std::function<std::optional<bool>(glm::dvec3)>& expected) {
     Agreement a;
     const glm::ivec2 size = on.pixels.size;
     for (int y = 0; y < size.y; ++y)
       for (int x = 0; x < size.x; ++x) {
         const std::size_t i = static_cast<std::size_t>(y * size.x + x);
         if (off.pixels.depth[i] < 1.0f) continue;
-        const glm::dvec3 dir = glm::normalize(testing::pixelPoint(on, x, y, 1.0f));
-        if (dir.y <= 0.05) continue;
-        const double t = (kCloudBottom - scene.cameraPosition.y) / dir.y;
-        if (t * glm::length(glm::dvec2(dir.x, dir.z)) > 0.5 * kCloudRange) continue;
-        const glm::dvec3 hit = scene.cameraPosition + dir * t;
-        if (nearCellEdge(map, hit, ticks, 0.01 * t / kCloudCellBlocks + 0.02)) continue;
+        const std::optional<bool> cloud = expected(glm::normalize(testing::pixelPoint(on, x, y, 1.0f)));
+        if (!cloud) continue;
         const bool shown = difference(on.pixels.scene[i], off.pixels.scene[i]) > 0.3f;
         ++a.compared;
-        a.agreeing += shown == cloudCovers(map, hit.x, hit.z, ticks) ? 1 : 0;
+        a.agreeing += shown == *cloud ? 1 : 0;
         a.clouds += shown ? 1 : 0;
       }
     return a;
+  }
+
+  // Sky pixels whose ray meets the flat layer within half its range, against the map at `ticks`.
+  static Agreement skyAgainstMap(const RenderedFrame& on, const RenderedFrame& off, const SceneFile& scene,
+                                 const CloudMap& map, std::int64_t ticks) {
+    return skyAgreement(on, off, [&](glm::dvec3 dir) -> std::optional<bool> {
+      if (dir.y <= 0.05) return std::nullopt;
+      const double t = (kCloudBottom - scene.cameraPosition.y) / dir.y;
+      if (t * glm::length(glm::dvec2(dir.x, dir.z)) > 0.5 * kCloudRange) return std::nullopt;
+      const glm::dvec3 hit = scene.cameraPosition + dir * t;
+      if (nearCellEdge(map, hit, ticks, 0.01 * t / kCloudCellBlocks + 0.02)) return std::nullopt;
+      return cloudCovers(map, hit.x, hit.z, ticks);
+    });
   }
 };
 
@@ -117,6 +128,51 @@ TEST_F(CloudsTest, SkyShowsTheMapsCloudsTheSameAtATickAndMovedAHundredTicksLater
   EXPECT_GE(then.share(), 0.99);
   EXPECT_GE(staleMissed, 20) << "3 blocks of drift moves the clouds' edges across the view";
   EXPECT_GT(staleMissed, 4 * missed);
+}
+
+// Volumetric clouds fill a thicker slab with a density shaped by noise, so only the sky pixels whose
+// ray crosses it where the map's cover is decided (at its bottom, middle and top alike) are compared:
+// well inside a cloud they show one, well outside it the clear sky; the same at a tick, moved later.
+TEST_F(CloudsTest, VolumetricCloudsStandWhereTheMapHasThem) {
+  SceneFile scene = loadScene(kScenes / "clouds_overhead.json");
+  const CloudMap map = defaultClouds();
+  const auto against = [&](const RenderedFrame& on, const RenderedFrame& off, std::int64_t ticks) {
+    return skyAgreement(on, off, [&](glm::dvec3 dir) -> std::optional<bool> {
+      if (dir.y <= 0.1) return std::nullopt;
+      double least = 1.0, most = 0.0;
+      for (const double h : {0.0, 0.5, 1.0}) {
+        const double t = (kCloudBottom + h * kCloudVolumeThickness - scene.cameraPosition.y) / dir.y;
+        const double cover = filteredCover(map, scene.cameraPosition + dir * t, ticks);
+        least = std::min(least, cover);
+        most = std::max(most, cover);
+      }
+      if (least < 0.9 && most > 0.1) return std::nullopt;  // an edge: the noise decides
+      return least >= 0.9;
+    });
+  };
+  const auto drawWith = [&](CloudMode mode) {
+    scene.clouds.mode = mode;
+    return draw(scene);
+  };
+  const RenderedFrame on = drawWith(CloudMode::Volumetric), off = drawWith(CloudMode::Off);
+  EXPECT_EQ(on.nanPixels, 0u);
+  EXPECT_TRUE(drawWith(CloudMode::Volumetric).image.rgba == on.image.rgba) << "the same tick, the same sky";
+  const Agreement now = against(on, off, scene.time);
+  std::printf("volumetric clouds: %d of %d decided sky pixels agree with the map (%d show a cloud)\n",
+              now.agreeing, now.compared, now.clouds);
+  ASSERT_GT(now.compared, 1000);
+  EXPECT_GT(now.clouds, now.compared / 10);
+  EXPECT_LT(now.clouds, now.compared * 9 / 10);
+  EXPECT_LE(now.compared - now.agreeing, now.compared / 1000);  // the map read 9 blocks off: 30
+
+  scene.time += 1000;  // 30 blocks of drift
+  const RenderedFrame clear = drawWith(CloudMode::Off);
+  const Agreement then = against(drawWith(CloudMode::Volumetric), clear, scene.time),
+                  stale = against(on, clear, scene.time);
+  std::printf("1000 ticks later: %d of %d agree with the moved map, the earlier sky %d of %d\n",
+              then.agreeing, then.compared, stale.agreeing, stale.compared);
+  EXPECT_LE(then.compared - then.agreeing, then.compared / 1000);
+  EXPECT_GE(stale.compared - stale.agreeing, 10 * (then.compared - then.agreeing) + 100) << "they moved";
 }
 
 TEST_F(CloudsTest, GroundDarkensWhereTheLayerHidesTheSun) {

@@ -4,6 +4,7 @@
 // left out, changing no pixel, where it has nothing to do.
 
 #include <filesystem>
+#include <stdexcept>
 
 #include "scene_render/reflection_truth.h"
 #include "scene_render/scene_render.h"
@@ -23,6 +24,18 @@ class ReflectionTest : public testing::GlTest {};
 
 bool identical(const Image& a, const Image& b) {
   return compareImages(a, b, {0.0f, 0.0f}).matches;
+}
+
+// The scene's first frame against the ray-traced truth (scene_render/reflection_truth.h).
+ReflectionError reflectionErrorOf(const SceneFile& scene) {
+  SceneRenderer renderer(scene);
+  FrameRequest request;
+  request.readBack = true;
+  const RenderedFrame frame = renderer.renderFrame(0, request);
+  if (!frame.reflections) throw std::runtime_error("the reflection pass did not run");
+  return measureReflectionError(renderer.world(), frame.pixels, *frame.reflections, frame.geometry,
+                                scene.reflections.maxDistance,
+                                renderer.renderer().gbufferContents().surfaceNormals);
 }
 
 RenderedFrame renderWith(SceneFile scene, bool reflections) {
@@ -113,15 +126,7 @@ TEST_F(ReflectionTest, WavesMoveWithWorldTimeAndOnlyWithIt) {
 // voxel grid. On the mirror floor most of them agree (a march on the wrong side of the depth test agrees
 // on 3 %) and no sky leaks.
 TEST_F(ReflectionTest, TheMarchAgreesWithTheRayTracedTruth) {
-  const SceneFile scene = loadScene(kScenes / "mirror_floor.json");
-  SceneRenderer renderer(scene);
-  FrameRequest request;
-  request.readBack = true;
-  const RenderedFrame frame = renderer.renderFrame(0, request);
-  ASSERT_TRUE(frame.reflections);
-  const ReflectionError error = measureReflectionError(renderer.world(), frame.pixels, *frame.reflections,
-                                                       frame.geometry, scene.reflections.maxDistance,
-                                                       renderer.renderer().gbufferContents().surfaceNormals);
+  const ReflectionError error = reflectionErrorOf(loadScene(kScenes / "mirror_floor.json"));
   const ReflectionCounts& c = error.total;
   EXPECT_GT(c.evaluated, 5000u);
   EXPECT_GT(100.0 * static_cast<double>(c.agree) / static_cast<double>(c.evaluated),
@@ -136,15 +141,7 @@ TEST_F(ReflectionTest, TheMarchAgreesWithTheRayTracedTruth) {
 // cave, where half the rays leave the screen behind the camera. Of the rest, under 2 % hit a surface
 // other than the truth's (0.5 %, and 1.1 % the block beside it within a pixel), and 97.5 % agree.
 TEST_F(ReflectionTest, AFloodedCavesIronWallAgreesWithTheTruthWhereTheScreenCanSee) {
-  const SceneFile scene = loadScene(kScenes / "flooded_iron_wall.json");
-  SceneRenderer renderer(scene);
-  FrameRequest request;
-  request.readBack = true;
-  const RenderedFrame frame = renderer.renderFrame(0, request);
-  ASSERT_TRUE(frame.reflections);
-  const ReflectionError error = measureReflectionError(renderer.world(), frame.pixels, *frame.reflections,
-                                                       frame.geometry, scene.reflections.maxDistance,
-                                                       renderer.renderer().gbufferContents().surfaceNormals);
+  const ReflectionError error = reflectionErrorOf(loadScene(kScenes / "flooded_iron_wall.json"));
   const auto pct = [](std::size_t n, std::size_t of) {
     return 100.0 * static_cast<double>(n) / static_cast<double>(of);
   };
