@@ -14,6 +14,16 @@ ColumnSamples sampleColumns(ChunkPos pos, const TerrainContext& t) {
   return columns;
 }
 
+BlockId surfaceBlockOf(int h, Biome biome, std::uint64_t r, const TerrainBlocks& b) {
+  constexpr int kSeaLevel = TerrainShape::kSeaLevel;
+  const bool beach = h >= kSeaLevel - 3 && h <= kSeaLevel + 1;
+  return h >= TerrainShape::kSnowyPeakFrom ? b.snow
+         : h >= TerrainShape::kRockyFrom   ? b.stone
+         : h < kSeaLevel - 3               ? ((r >> 40) % 4 == 0 ? b.gravel : b.sand)
+         : beach || biome == Biome::Desert ? b.sand
+                                           : b.grass;
+}
+
 void fillGround(ColumnBlocks& blocks, const ColumnSamples& columns, ChunkPos pos, const TerrainContext& t) {
   constexpr int kSeaLevel = TerrainShape::kSeaLevel;
   const TerrainBlocks& b = t.blocks;
@@ -23,7 +33,6 @@ void fillGround(ColumnBlocks& blocks, const ColumnSamples& columns, ChunkPos pos
       const auto [h, biome] = columns[static_cast<std::size_t>(columnIndex(x, z))];
       const bool beach = h >= kSeaLevel - 3 && h <= kSeaLevel + 1;
       const bool underwater = h < kSeaLevel - 3;
-      const bool peak = h >= TerrainShape::kSnowyPeakFrom;
       const bool rocky = h >= TerrainShape::kRockyFrom;
       const bool desert = biome == Biome::Desert, snowy = biome == Biome::SnowyPlains;
       const std::uint64_t r = hashCoords(t.seed, x0 + x, 1, z0 + z);
@@ -39,11 +48,7 @@ void fillGround(ColumnBlocks& blocks, const ColumnSamples& columns, ChunkPos pos
             (y == kMinY || ((r >> (16 + y - kMinY)) & 1))) {  // r from bit 16: a bit a layer
           id = b.bedrock;
         } else if (y == h) {
-          id = peak              ? b.snow
-               : rocky           ? b.stone
-               : underwater      ? ((r >> 40) % 4 == 0 ? b.gravel : b.sand)
-               : beach || desert ? b.sand
-                                 : b.grass;
+          id = surfaceBlockOf(h, biome, r, b);
         } else if (y > h - depthOfDirt && !rocky) {
           id = (beach || underwater || desert) ? b.sand : b.dirt;
         } else if (desert && y > h - depthOfDirt - 4) {

@@ -28,6 +28,10 @@ struct TerrainContext {
 
 // Each column's surface height and biome.
 ColumnSamples sampleColumns(ChunkPos pos, const TerrainContext& t);
+// The block on top of a column of surface height `h` (before caves, snow and plants): snow on peaks,
+// bare stone high up, sand or gravel under water, sand on beaches and in deserts, else grass. `r` is
+// the column's hash (hashCoords(seed, x, 1, z)).
+BlockId surfaceBlockOf(int h, Biome biome, std::uint64_t r, const TerrainBlocks& b);
 inline constexpr int kDeepslateTop = 8;  // stone from here up; below y = 0 deepslate; a blend between
 // Rock (deepslate below y = 0, blending into stone up to kDeepslateTop), bedrock, soil and sand,
 // and water up to the sea level with ice on it in the snow.

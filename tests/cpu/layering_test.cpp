@@ -22,6 +22,7 @@ const std::map<std::string, std::set<std::string>> kAllowed = {
     {"world", {"core", "world"}},
     {"minecraft", {"core", "world", "minecraft"}},
     {"light", {"core", "world", "light"}},
+    {"lod", {"core", "world", "lod"}},
     {"mesh", {"core", "world", "mesh"}},
     {"assets", {"core", "assets"}},
     {"shaderpack", {"core", "world", "assets", "shaderpack"}},

@@ -1,0 +1,124 @@
+// Far terrain's tiles (lod/): a cell's summary of hand-built columns, and the generator sampled
+// coarsely against the chunks it makes.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <vector>
+
+#include "lod/generator_tiles.h"
+#include "lod/lod_summary.h"
+#include "support/world_support.h"
+#include "world/chunk.h"
+
+namespace terrasol {
+namespace {
+
+using testing::defaultBlocks;
+
+TEST(LodSummary, TheHighestColumnGivesTheTopAndWaterNeedsMostColumns) {
+  const BlockRegistry& b = defaultBlocks();
+  const BlockId grass = b.id("grass_block"), stone = b.id("stone"), sand = b.id("sand"),
+                water = b.id("water");
+  // A ridge of stone beside grass: the cell keeps the ridge's height and block.
+  const std::vector<LodColumn> ridge = {{70, grass}, {75, stone}, {71, grass}, {69, grass}};
+  const LodCell top = summarizeColumns(ridge);
+  EXPECT_EQ(top.top, 75);
+  EXPECT_EQ(top.surface, stone);
+  EXPECT_EQ(top.water, kNoLodHeight);
+  // A coast: three of four columns under the sea, the fourth a beach above it.
+  const std::vector<LodColumn> coast = {
+      {55, sand, 62, water}, {58, sand, 62, water}, {60, sand, 62, water}, {63, sand}};
+  const LodCell sea = summarizeColumns(coast);
+  EXPECT_EQ(sea.top, 63);
+  EXPECT_EQ(sea.water, 62);
+  EXPECT_EQ(sea.waterBlock, water);
+  // A pond in one column of four does not flood the cell.
+  const std::vector<LodColumn> pond = {{64, grass}, {64, grass}, {60, sand, 63, water}, {64, grass}};
+  EXPECT_EQ(summarizeColumns(pond).water, kNoLodHeight);
+  EXPECT_EQ(summarizeColumns({}), LodCell{}) << "no columns: an empty cell";
+}
+
+// The highest block of a column that is ground: not air, water, ice, a plant, a tree or snow on it.
+int groundTop(const Chunk& chunk, int x, int z, const BlockRegistry& b) {
+  for (int y = kMaxY - 1; y >= kMinY; --y) {
+    const BlockId id = chunk.get(x, y, z);
+    if (id == kAir) continue;
+    const std::string& name = b[id].name;
+    const bool ground = b[id].isOpaqueCube() && name.find("log") == std::string::npos &&
+                        name.find("leaves") == std::string::npos && name != "ice";
+    if (ground) return y;
+  }
+  return kNoLodHeight;
+}
+
+// Cells of 8 blocks sampled at 16 of their 64 columns, against the ground of the chunks the generator
+// makes there (caves and trees included): every cell's top within one cell of the highest ground. Seed
+// 24's first tile holds a coast and hills, seed 3's mountains to y 208.
+int cellsUnderWater(std::uint64_t seed) {
+  const BlockRegistry& b = defaultBlocks();
+  const TerrainGenerator generator(seed, b);
+  const LodTileKey key{3, 0, 0};
+  const LodTile tile = tileFromGenerator(generator, key);
+  const int cell = key.cellBlocks(), chunks = 6;  // the tile's first 96 x 96 blocks
+  const int cellsPerSide = chunks * kChunkSize / cell;
+  std::vector<int> highest(static_cast<std::size_t>(cellsPerSide * cellsPerSide), kNoLodHeight);
+  for (int cz = 0; cz < chunks; ++cz)
+    for (int cx = 0; cx < chunks; ++cx) {
+      Chunk chunk({cx, cz});
+      generator.generate(chunk);
+      for (int z = 0; z < kChunkSize; ++z)
+        for (int x = 0; x < kChunkSize; ++x) {
+          const int bx = cx * kChunkSize + x, bz = cz * kChunkSize + z;
+          int& h = highest[static_cast<std::size_t>((bz / cell) * cellsPerSide + bx / cell)];
+          h = std::max(h, groundTop(chunk, x, z, b));
+        }
+    }
+  int within = 0, exact = 0, wet = 0;
+  for (int cz = 0; cz < cellsPerSide; ++cz)
+    for (int cx = 0; cx < cellsPerSide; ++cx) {
+      const LodCell& c = tile.at(cx, cz);
+      const int truth = highest[static_cast<std::size_t>(cz * cellsPerSide + cx)];
+      within += std::abs(c.top - truth) <= cell ? 1 : 0;
+      exact += c.top == truth ? 1 : 0;
+      wet += c.water > c.top ? 1 : 0;
+    }
+  const int cells = cellsPerSide * cellsPerSide;
+  std::printf("seed %llu: %d of %d cells within a cell of the chunks' ground, %d exact, %d under water\n",
+              static_cast<unsigned long long>(seed), within, cells, exact, wet);
+  EXPECT_EQ(within, cells) << "seed " << seed;
+  return wet;
+}
+
+TEST(GeneratorTiles, CoarseSamplesAgreeWithTheChunksWithinACell) {
+  EXPECT_GT(cellsUnderWater(24), 10) << "a coast";
+  cellsUnderWater(3);
+}
+
+// The column rule is generate()'s own: where no cave or plant took it, the generator's chunk holds the
+// column's top block at its height, and water over it up to the sea.
+TEST(GeneratorTiles, TheColumnRuleIsTheGenerators) {
+  const BlockRegistry& b = defaultBlocks();
+  const TerrainGenerator generator(1, b);
+  int same = 0, columns = 0;
+  for (int cz = -2; cz < 2; ++cz)
+    for (int cx = -2; cx < 2; ++cx) {
+      Chunk chunk({cx, cz});
+      generator.generate(chunk);
+      for (int z = 0; z < kChunkSize; ++z)
+        for (int x = 0; x < kChunkSize; ++x) {
+          const SurfaceColumn c = generator.surfaceColumn(cx * kChunkSize + x, cz * kChunkSize + z);
+          ++columns;
+          same += chunk.get(x, c.height, z) == c.top &&
+                          (c.water == kNoLodHeight || chunk.get(x, c.water, z) == c.waterBlock)
+                      ? 1
+                      : 0;
+        }
+    }
+  std::printf("%d of %d columns hold the rule's top block\n", same, columns);
+  EXPECT_GE(same, columns * 97 / 100);
+}
+
+}  // namespace
+}  // namespace terrasol
