@@ -1,6 +1,9 @@
 #pragma once
-// A cell's summary of the columns it covers, whatever their source (the generator, loaded chunks).
+// A cell's summary of the columns it covers, whatever their source (the generator, loaded chunks), and
+// the sampling of a tile's columns that every source shares.
 
+#include <functional>
+#include <optional>
 #include <span>
 
 #include "lod/lod_tile.h"
@@ -15,5 +18,16 @@ using LodColumn = LodCell;
 // over more than half the columns, at the highest such surface, so a coast stays where it is and a
 // puddle does not flood its cell. No columns, or none with ground: an empty cell.
 LodCell summarizeColumns(std::span<const LodColumn> columns);
+
+// Columns sampled per cell on each axis at most: every column up to cells of 4 blocks, then a
+// stratified 4 x 4 of them, each stratum's middle (the highest of 16 keeps most ridges).
+inline constexpr int kLodSamplesPerAxis = 4;
+
+// A column (world x, z) from a source; nothing where the source has none (a chunk not loaded).
+using LodColumnSource = std::function<std::optional<LodColumn>(int x, int z)>;
+
+// Every cell of the tile from its sampled columns; a cell none of whose columns the source has stays
+// empty (top kNoLodHeight), for another source to fill.
+LodTile sampleTile(LodTileKey key, const LodColumnSource& columnAt);
 
 }  // namespace terrasol

@@ -5,8 +5,12 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <map>
+#include <memory>
+#include <utility>
 #include <vector>
 
+#include "lod/chunk_tiles.h"
 #include "lod/generator_tiles.h"
 #include "lod/lod_summary.h"
 #include "support/world_support.h"
@@ -118,6 +122,37 @@ TEST(GeneratorTiles, TheColumnRuleIsTheGenerators) {
     }
   std::printf("%d of %d columns hold the rule's top block\n", same, columns);
   EXPECT_GE(same, columns * 97 / 100);
+}
+
+// Hand-built chunks, one column a cell (level 0): a pool, a tree's leaves, a flower, and a chunk that is
+// not there.
+TEST(ChunkTiles, ColumnsKeepTheirGroundWaterAndLeavesAndMissingChunksLeaveCellsEmpty) {
+  const BlockRegistry& b = defaultBlocks();
+  const auto flat = makeGenerator({"flat", 0, {}}, b);
+  std::map<std::pair<int, int>, std::unique_ptr<Chunk>> chunks;
+  for (const auto& [x, z] : {std::pair{0, 0}, std::pair{0, 1}, std::pair{1, 1}}) {
+    auto chunk = std::make_unique<Chunk>(ChunkPos{x, z});
+    flat->generate(*chunk);
+    chunks[{x, z}] = std::move(chunk);
+  }
+  Chunk& home = *chunks[{0, 0}];
+  home.set(2, 63, 3, b.id("water"));
+  home.set(2, 62, 3, b.id("sand"));
+  home.set(5, 70, 5, b.id("oak_leaves"));
+  home.set(7, 64, 7, b.id("poppy"));
+  const LodTile tile = tileFromChunks(
+      {0, 0, 0},
+      [&](ChunkPos p) -> const Chunk* {
+        const auto found = chunks.find({p.x, p.z});
+        return found == chunks.end() ? nullptr : found->second.get();
+      },
+      b);
+  EXPECT_EQ(tile.at(0, 0), (LodCell{63, b.id("grass_block")}));
+  EXPECT_EQ(tile.at(2, 3), (LodCell{62, b.id("sand"), 63, b.id("water")}));
+  EXPECT_EQ(tile.at(5, 5), (LodCell{70, b.id("oak_leaves")}));
+  EXPECT_EQ(tile.at(7, 7).top, 63) << "a flower is too small to show from afar";
+  EXPECT_EQ(tile.at(20, 4), LodCell{}) << "chunk (1, 0) is not there";
+  EXPECT_EQ(tile.at(20, 20).top, 63);
 }
 
 }  // namespace
