@@ -13,6 +13,8 @@
 #include "lod/chunk_tiles.h"
 #include "lod/generator_tiles.h"
 #include "lod/lod_summary.h"
+#include "minecraft/minecraft_save.h"
+#include "support/test_data.h"
 #include "support/world_support.h"
 #include "world/chunk.h"
 
@@ -153,6 +155,68 @@ TEST(ChunkTiles, ColumnsKeepTheirGroundWaterAndLeavesAndMissingChunksLeaveCellsE
   EXPECT_EQ(tile.at(7, 7).top, 63) << "a flower is too small to show from afar";
   EXPECT_EQ(tile.at(20, 4), LodCell{}) << "chunk (1, 0) is not there";
   EXPECT_EQ(tile.at(20, 20).top, 63);
+}
+
+// A real Minecraft save (go-mc 1.18.1, 593 chunks): every cell of 4 blocks over its chunks has ground,
+// never above the highest block the save's columns hold, and its top or water no lower than that
+// block by more than a cell (what lies above the ground and water is plants, snow and torches).
+TEST(ChunkTiles, AMinecraftSavesTilesFollowItsSurface) {
+  TERRASOL_SKIP_WITHOUT_TEST_DATA();
+  const BlockRegistry& b = defaultBlocks();
+  const MinecraftSave save(testing::testData() / "worlds" / "go-mc-1.18.1");
+  BlockStateMapper mapper(b, kAir);
+  std::map<std::pair<int, int>, std::unique_ptr<Chunk>> chunks;
+  for (const ChunkPos pos : save.chunks()) {
+    if (auto c = save.load(pos, mapper)) chunks[{pos.x, pos.z}] = std::move(c->chunk);
+  }
+  ASSERT_EQ(chunks.size(), 593u);
+  const ChunkLookup lookup = [&](ChunkPos p) -> const Chunk* {
+    const auto found = chunks.find({p.x, p.z});
+    return found == chunks.end() ? nullptr : found->second.get();
+  };
+  // The highest block of any kind over a cell's columns.
+  const auto highestBlock = [&](int x0, int z0, int cell) {
+    int highest = kNoLodHeight;
+    for (int z = z0; z < z0 + cell; ++z)
+      for (int x = x0; x < x0 + cell; ++x) {
+        const ChunkPos pos = ChunkPos::of(BlockPos{x, 0, z});
+        const Chunk& c = *lookup(pos);
+        for (int y = kMaxY - 1; y > highest; --y)
+          if (c.get(x - pos.minBlockX(), y, z - pos.minBlockZ()) != kAir) highest = y;
+      }
+    return highest;
+  };
+  const LodTileKey probe{2, 0, 0};
+  int cells = 0, near = 0, wet = 0;
+  std::map<std::pair<int, int>, bool> tiles;
+  const auto tileOf = [&](int chunk) {  // floor division
+    const int blocks = chunk * kChunkSize, span = probe.spanBlocks();
+    return blocks >= 0 ? blocks / span : -((-blocks + span - 1) / span);
+  };
+  for (const auto& [at, chunk] : chunks) tiles[{tileOf(at.first), tileOf(at.second)}] = true;
+  for (const auto& [t, unused] : tiles) {
+    const LodTileKey key{2, t.first, t.second};
+    const LodTile tile = tileFromChunks(key, lookup, b);
+    for (int cz = 0; cz < kLodTileCells; ++cz)
+      for (int cx = 0; cx < kLodTileCells; ++cx) {
+        const int x0 = key.minBlockX() + cx * key.cellBlocks(), z0 = key.minBlockZ() + cz * key.cellBlocks();
+        if (!lookup(ChunkPos::of(BlockPos{x0, 0, z0}))) {
+          EXPECT_EQ(tile.at(cx, cz), LodCell{});
+          continue;
+        }
+        const LodCell& c = tile.at(cx, cz);
+        const int highest = highestBlock(x0, z0, key.cellBlocks());
+        ++cells;
+        ASSERT_NE(c.top, kNoLodHeight);
+        ASSERT_LE(std::max(c.top, c.water), highest);
+        near += std::max(c.top, c.water) >= highest - key.cellBlocks() ? 1 : 0;
+        wet += c.water > c.top ? 1 : 0;
+      }
+  }
+  std::printf("%d cells of 4 blocks: %d within a cell of the save's highest block, %d under water\n", cells,
+              near, wet);
+  EXPECT_EQ(cells, 593 * 16);
+  EXPECT_GE(near, cells * 98 / 100);
 }
 
 }  // namespace
