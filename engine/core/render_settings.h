@@ -139,6 +139,16 @@ struct ShaftSettings {
   bool operator==(const ShaftSettings&) const = default;
 };
 
+// "render.lod": far terrain beyond the view distance (lod/): tiles of cells that summarise the columns
+// they cover, coarser with distance, out to `distance` chunks from the camera.
+struct LodSettings {
+  int distance = 0;     // chunks to the far edge (0: off; 0..1024); beyond the view distance to matter
+  float detail = 2.0f;  // a tile splits while nearer than detail x its width (0.5..8): more, finer tiles
+  int minLevel = 1;     // the finest cells, 2^min_level blocks (0..4)
+
+  bool operator==(const LodSettings&) const = default;
+};
+
 // The layers the settings ask for: one (warped), or the cascades, smallest first (distance / 2^k).
 inline int shadowLayers(const ShadowSettings& settings) {
   return settings.mode == ShadowMode::Cascaded ? std::clamp(settings.cascades, 2, kMaxShadowCascades) : 1;

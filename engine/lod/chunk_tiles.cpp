@@ -7,6 +7,7 @@ namespace {
 
 LodColumn columnOf(const Chunk& chunk, int x, int z, const BlockRegistry& blocks) {
   LodColumn column;
+  column.tint = chunk.tint(x, z);
   for (int y = kMaxY - 1; y >= kMinY; --y) {
     const BlockId id = chunk.get(x, y, z);
     if (id == kAir) continue;

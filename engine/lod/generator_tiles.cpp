@@ -4,10 +4,11 @@
 
 namespace terrasol {
 
-LodTile tileFromGenerator(const TerrainGenerator& generator, LodTileKey key) {
+LodTile tileFromGenerator(const ChunkGenerator& generator, LodTileKey key) {
   return sampleTile(key, [&](int x, int z) -> std::optional<LodColumn> {
-    const SurfaceColumn c = generator.surfaceColumn(x, z);
-    return LodColumn{c.height, c.top, c.water, c.waterBlock};
+    const std::optional<SurfaceColumn> c = generator.surfaceColumn(x, z);
+    if (!c) return std::nullopt;
+    return LodColumn{c->height, c->top, c->water, c->waterBlock, climateOnly(c->climate)};
   });
 }
 

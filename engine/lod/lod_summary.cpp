@@ -14,6 +14,7 @@ LodCell summarizeColumns(std::span<const LodColumn> columns) {
     if (c.top > cell.top) {
       cell.top = c.top;
       cell.surface = c.surface;
+      cell.tint = c.tint;
     }
     if (c.water > c.top) {
       ++wet;

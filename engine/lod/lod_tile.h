@@ -1,12 +1,13 @@
 #pragma once
 // Far terrain's tiles. A tile is a square of kLodTileCells x kLodTileCells cells at a level whose cells
 // are 2^level blocks wide; each cell summarises the columns it covers: the height of its top, the
-// block on it and the water over it. Plain C++: sources fill tiles (the generator sampled coarsely,
-// lod/generator_tiles.h), a mesher draws them.
+// block on it, the water over it and the biome's tint there. Plain C++: sources fill tiles (the generator
+// sampled coarsely, lod/generator_tiles.h), a mesher draws them.
 
 #include <array>
 #include <cstddef>
 
+#include "core/tint.h"
 #include "world/block.h"
 #include "world/coords.h"
 
@@ -20,6 +21,7 @@ struct LodCell {
   BlockId surface = kAir;    // the block there
   int water = kNoLodHeight;  // y of the water's surface over the ground, if any
   BlockId waterBlock = kAir;
+  ColumnTint tint{};  // the top column's biome colours: its grass, leaves and water
 
   bool operator==(const LodCell&) const = default;
 };

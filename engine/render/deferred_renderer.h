@@ -29,6 +29,7 @@
 #include "render/passes/bloom_pass.h"
 #include "render/passes/geometry_pass.h"
 #include "render/passes/lighting_pass.h"
+#include "render/passes/lod_pass.h"
 #include "render/passes/output_passes.h"
 #include "render/passes/reflection_pass.h"
 #include "render/passes/shadow_pass.h"
@@ -71,6 +72,7 @@ class DeferredRenderer final : public WorldRenderer {
 
   PassShared shared_;  // before the passes: they build their programs into it
   GeometryPass geometry_;
+  LodPass lod_;
   LightingPass lighting_;
   ReflectionPass reflection_;
   TranslucentPass translucent_;

@@ -16,6 +16,8 @@
 
 namespace terrasol {
 
+class LodMeshes;
+
 // A box in world coordinates (blocks).
 struct WorldBox {
   glm::dvec3 min{0.0}, max{0.0};
@@ -51,6 +53,8 @@ struct FrameInputs {
   std::optional<WorldBox> outline;
   // glTF props drawn beside the blocks (null: none); the renderer was built for their PropNeeds.
   const Props* props = nullptr;
+  // Far terrain beyond the sections (null: none); viewDistance then reaches its far edge.
+  const LodMeshes* lod = nullptr;
   // Under water, the surface is seen from below and what lies beyond fades into the water's colour.
   std::optional<UnderWater> underWater;
   // Block and sky light (0..15) at the camera's cell: shader packs' eyeBrightness.
@@ -109,6 +113,8 @@ struct FrameStats {
   std::int64_t quadsFacingAway = 0;           // opaque and cutout quads left out: their face group faced away
   int propsDrawn = 0, propsCulled = 0;        // placed props inside / outside the frustum
   int propShadowCasters = 0;                  // props drawn into the shadow map (per layer)
+  int lodTilesDrawn = 0, lodTilesCulled = 0;  // far terrain's tiles inside / outside the frustum
+  std::int64_t lodQuadsDrawn = 0;
   struct Skipped {
     std::string pass, why;
   };

@@ -14,6 +14,9 @@ std::vector<ShaderDefine> slotDefines() {
       define("ATTRIB_TANGENT", slots::kAttribTangent),
       define("ATTRIB_UV", slots::kAttribUv),
       define("ATTRIB_LIGHT", slots::kAttribLight),
+      define("ATTRIB_LOD_CORNER", slots::kAttribLodCorner),
+      define("ATTRIB_LOD_CELL", slots::kAttribLodCell),
+      define("ATTRIB_LOD_MATERIAL", slots::kAttribLodMaterial),
       define("OUT_COLOR", slots::kOutColor),
       define("OUT_REFLECTION_HIT", slots::kOutReflectionHit),
       define("OUT_REFLECTION_SURFACE", slots::kOutReflectionSurface),
@@ -35,6 +38,7 @@ std::vector<ShaderDefine> slotDefines() {
       define("UNIT_SURFACE_REFLECTION", slots::kUnitSurfaceReflection),
       define("UNIT_SURFACE_REFLECTION_HITS", slots::kUnitSurfaceReflectionHits),
       define("UNIT_CLOUDS", slots::kUnitClouds),
+      define("UNIT_LOD_MASK", slots::kUnitLodMask),
       define("STORAGE_TILES", slots::kStorageTiles),
       define("STORAGE_PACK_ENTITIES", slots::kStoragePackEntities),
   };

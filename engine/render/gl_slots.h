@@ -21,6 +21,11 @@ inline constexpr int kAttribTangent = 4;
 inline constexpr int kAttribUv = 5;
 inline constexpr int kAttribLight = 6;
 
+// Far terrain's vertex (lod/lod_vertex.h): corner and height, the cell it follows, colour and face.
+inline constexpr int kAttribLodCorner = 0;
+inline constexpr int kAttribLodCell = 1;
+inline constexpr int kAttribLodMaterial = 2;
+
 // Fragment outputs of the forward passes.
 inline constexpr int kOutColor = 0;
 inline constexpr int kOutReflectionHit = 1;      // the reflection march's second target (hit or not, where)
@@ -51,6 +56,7 @@ inline constexpr int kUnitSurfaceReflection = 18;
 inline constexpr int kUnitSurfaceReflectionHits = 19;
 // The cloud layer's map (the sky, lighting, reflection and translucent passes).
 inline constexpr int kUnitClouds = 20;
+inline constexpr int kUnitLodMask = 21;  // the chunks full detail covers (render/lod_meshes.h)
 
 // A shader pack's samplers: OptiFine's units (0 the atlas, 1 the lightmap, ...) from here on.
 inline constexpr int kUnitPackBase = 24;

@@ -12,6 +12,8 @@
 #include "core/luma.h"
 #include "core/render_settings.h"
 #include "core/tint.h"
+#include "lod/lod_tile.h"
+#include "lod/lod_vertex.h"
 #include "mesh/mesh_data.h"
 #include "render/gbuffer_layout.h"
 #include "render/gl_slots.h"
@@ -118,6 +120,14 @@ std::vector<ShaderDefine> cloudLayerDefines() {
           {"CLOUD_LIGHT_STEPS", std::to_string(kCloudLightSteps)}};
 }
 
+// Far terrain's vertex (lod/lod_vertex.h) for lod.vert.
+std::vector<ShaderDefine> lodDefines() {
+  return {{"LOD_Y_STEPS", std::to_string(kLodYSteps)},
+          {"LOD_FLOOR_Y", std::to_string(kMinY)},
+          {"LOD_FACE_SHIFT", std::to_string(kLodFaceShift)},
+          {"LOD_WATER_SHIFT", std::to_string(kLodWaterShift)}};
+}
+
 }  // namespace
 
 std::vector<ShaderDefine> gbufferDefines() {
@@ -164,6 +174,7 @@ std::vector<ShaderDefine> rendererDefines() {
   for (auto& d : debugViewDefines()) defines.push_back(std::move(d));
   defines.push_back({"SKY_RADIANCE", floatLiteral(kSkyRadiance)});
   for (auto& d : cloudLayerDefines()) defines.push_back(std::move(d));
+  for (auto& d : lodDefines()) defines.push_back(std::move(d));
   const glm::vec3 w = kLumaWeights;
   defines.push_back({"LUMA_WEIGHTS", "vec3(" + floatLiteral(w.r) + ", " + floatLiteral(w.g) + ", " +
                                          floatLiteral(w.b) + ")"});

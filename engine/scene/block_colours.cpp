@@ -4,6 +4,7 @@ namespace terrasol {
 namespace {
 
 constexpr int kUp = static_cast<int>(Direction::Up);
+constexpr int kNorth = static_cast<int>(Direction::North);
 
 // A texture's mean colour over its opaque texels, and how many of them are opaque.
 glm::vec4 meanOf(const Atlas& atlas, int texture) {
@@ -64,6 +65,23 @@ std::vector<TopColour> blockTopColours(const BlockRegistry& blocks, const BlockA
     colours[id] = {c, tinted ? type.tint : Tint::None};
   }
   return colours;
+}
+
+LodPalette lodPaletteOf(const BlockRegistry& blocks, const BlockAtlas& atlas) {
+  const std::vector<TopColour> tops = blockTopColours(blocks, atlas);
+  LodPalette palette;
+  palette.tints = atlas.tints;
+  palette.blocks.resize(blocks.size());
+  for (BlockId id = 1; id < blocks.size(); ++id) {
+    const BlockType& type = blocks[id];
+    LodBlockColour& c = palette.blocks[id];
+    c.top = c.side = glm::vec3(tops[id].texture);
+    c.topTint = c.sideTint = tops[id].tint;
+    if (type.shape != BlockShape::Cube) continue;
+    c.side = glm::vec3(meanOf(atlas.atlas, atlas.textureOf(id, kNorth)));
+    c.sideTint = type.tint == Tint::Grass ? Tint::None : type.tint;
+  }
+  return palette;
 }
 
 }  // namespace terrasol

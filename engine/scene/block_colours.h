@@ -7,6 +7,7 @@
 #include <glm/vec4.hpp>
 #include <vector>
 
+#include "lod/lod_mesh.h"
 #include "scene/block_atlas.h"
 
 namespace terrasol {
@@ -21,5 +22,9 @@ struct TopColour {
 };
 
 std::vector<TopColour> blockTopColours(const BlockRegistry& blocks, const BlockAtlas& atlas);
+
+// Far terrain's colours: each block's top as above, its side the mean of its north face (a model
+// block's: its top again), tinted as the mesher tints them (a grass block's sides are not).
+LodPalette lodPaletteOf(const BlockRegistry& blocks, const BlockAtlas& atlas);
 
 }  // namespace terrasol

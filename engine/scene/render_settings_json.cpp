@@ -148,4 +148,18 @@ nlohmann::json shaftsJson(const ShaftSettings& shafts) {
   return {{"enabled", shafts.enabled}, {"samples", shafts.samples}, {"scale", shafts.scale}};
 }
 
+void parseLod(const json& value, const std::string& key, LodSettings& lod) {
+  checkObject(value, key, {"distance", "detail", "min_level"});
+  if (const json* v = field(value, "distance"))
+    lod.distance = static_cast<int>(wholeNumber(*v, member(key, "distance"), 0, 1024));
+  if (const json* v = field(value, "detail"))
+    lod.detail = numberIn(*v, member(key, "detail"), 0.5, 8.0, false);
+  if (const json* v = field(value, "min_level"))
+    lod.minLevel = static_cast<int>(wholeNumber(*v, member(key, "min_level"), 0, 4));
+}
+
+nlohmann::json lodJson(const LodSettings& lod) {
+  return {{"distance", lod.distance}, {"detail", lod.detail}, {"min_level", lod.minLevel}};
+}
+
 }  // namespace terrasol

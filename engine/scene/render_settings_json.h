@@ -21,6 +21,8 @@ void parseBloom(const nlohmann::json& value, const std::string& key, BloomSettin
 nlohmann::json bloomJson(const BloomSettings& bloom);
 void parseClouds(const nlohmann::json& value, const std::string& key, CloudSettings& clouds);
 nlohmann::json cloudsJson(const CloudSettings& clouds);
+void parseLod(const nlohmann::json& value, const std::string& key, LodSettings& lod);
+nlohmann::json lodJson(const LodSettings& lod);
 void parseFog(const nlohmann::json& value, const std::string& key, FogSettings& fog);
 nlohmann::json fogJson(const FogSettings& fog);
 void parseShafts(const nlohmann::json& value, const std::string& key, ShaftSettings& shafts);

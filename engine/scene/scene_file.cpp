@@ -164,6 +164,7 @@ void parseRender(const json& render, const path& sceneDir, SceneFile& scene) {
                "clouds",
                "fog",
                "shafts",
+               "lod",
                "preset"});
   // First: the scene's own keys change what the preset set.
   if (const json* v = field(render, "preset")) {
@@ -213,6 +214,7 @@ void parseRender(const json& render, const path& sceneDir, SceneFile& scene) {
   if (const json* v = field(render, "clouds")) parseClouds(*v, "render.clouds", scene.clouds);
   if (const json* v = field(render, "fog")) parseFog(*v, "render.fog", scene.fog);
   if (const json* v = field(render, "shafts")) parseShafts(*v, "render.shafts", scene.shafts);
+  if (const json* v = field(render, "lod")) parseLod(*v, "render.lod", scene.lod);
   if (const json* v = field(render, "leave_out_absent_maps")) {
     scene.leaveOutAbsentMaps = boolean(*v, "render.leave_out_absent_maps");
   }

@@ -91,6 +91,7 @@ struct SceneFile {
   CloudSettings clouds;            // "render.clouds"
   FogSettings fog;                 // "render.fog"
   ShaftSettings shafts;            // "render.shafts"
+  LodSettings lod;                 // "render.lod"
   glm::dvec3 cameraPosition{0.0, 80.0, 0.0};
   glm::dvec3 cameraLookAt{0.0, 80.0, -1.0};
   float fov = 70.0f;                     // vertical degrees, in (0, 180)

@@ -31,6 +31,11 @@ class SceneWorld {
   // their new meshes (within the view distance; an empty one means the section's mesh goes).
   std::vector<SectionMesh> advanceTo(int frame, const BlockMeshTable& table);
 
+  // The chunks drawn in full detail: within the view distance of a frame's camera.
+  bool shown(ChunkPos chunk) const { return withinView(SectionPos{chunk.x, 0, chunk.z}); }
+  const ChunkGenerator& generator() const { return *generator_; }
+  int viewDistance() const { return viewDistance_; }
+
   World& world() { return world_; }
   const World& world() const { return world_; }
   LightEngine& light() { return light_; }

@@ -11,11 +11,13 @@
 #include "pack_render/pack_renderer.h"
 #include "render/gl/render_target.h"
 #include "scene/block_atlas.h"
+#include "scene/block_colours.h"
 #include "scene/camera_path.h"
 #include "scene/pack_blocks.h"
 #include "scene/scene_world.h"
 #include "scene_render/eye_light.h"
 #include "scene_render/placed_props.h"
+#include "scene_render/scene_lod.h"
 #include "scene_render/under_water.h"
 
 namespace terrasol {
@@ -49,7 +51,8 @@ struct SceneRenderer::World {
         table(meshTableOf(blocks, atlas)),
         // Shapes are the default pack's: from this bake where that is all there is.
         world(scene, blocks,
-              isDefaultPackAlone(packs) ? blockShapesOf(blocks, *bake) : defaultPackShapes(blocks)) {
+              isDefaultPackAlone(packs) ? blockShapesOf(blocks, *bake) : defaultPackShapes(blocks)),
+        lod(SceneLod::create(scene.lod, world, lodPaletteOf(blocks, atlas))) {
     bake.reset();
     atlas.problems.insert(atlas.problems.end(), packBlockProblems.begin(), packBlockProblems.end());
   }
@@ -59,6 +62,7 @@ struct SceneRenderer::World {
   BlockAtlas atlas;
   BlockMeshTable table;
   SceneWorld world;
+  std::unique_ptr<SceneLod> lod;  // render.lod, when the generator can be sampled
 };
 
 namespace {
@@ -93,6 +97,7 @@ struct SceneRenderer::Gpu {
   DeferredRenderer renderer;
   std::unique_ptr<PackRenderer> pack;  // render.shaderpack: drawn in the renderer's place
   SectionMeshes meshes;
+  LodMeshes lod;
   RenderTarget target;
 };
 
@@ -145,6 +150,14 @@ DeferredRenderer& SceneRenderer::renderer() {
   return gpu_->renderer;
 }
 
+std::optional<SceneLodStats> SceneRenderer::lodStats() const {
+  if (!world_->lod) return std::nullopt;
+  const LodTerrainStats t = world_->lod->stats();
+  SceneLodStats s{t.tiles, t.levels, 0, t.cachedBytes, gpu_->lod.gpuBytes(), world_->lod->lastUpdateMs()};
+  for (const LodMeshes::Tile& tile : gpu_->lod.tiles()) s.quads += static_cast<std::size_t>(tile.quads);
+  return s;
+}
+
 const PackRenderer* SceneRenderer::shaderPack() const {
   return gpu_->pack.get();
 }
@@ -168,6 +181,10 @@ FrameInputs SceneRenderer::inputsFor(int frame) const {
   inputs.ticks = camera.time;
   inputs.sunPathRotation = scene_.sunPathRotation;
   inputs.viewDistance = static_cast<float>(scene_.viewDistance * kChunkSize);  // chunks to blocks
+  if (world_->lod) {
+    inputs.lod = &gpu_->lod;
+    inputs.viewDistance = static_cast<float>(std::max(scene_.viewDistance, scene_.lod.distance) * kChunkSize);
+  }
   inputs.renderScale = scene_.renderScale;  // with render.target_fps, the most renderFrame uses
   inputs.debugView = debugView_;
   inputs.materialAo = scene_.materialAo;
@@ -181,6 +198,7 @@ void SceneRenderer::advanceTo(int frame) {
   const std::vector<SectionMesh> changed = world_->world.advanceTo(frame, world_->table);
   for (const SectionMesh& mesh : changed) gpu_->meshes.upload(mesh);
   if (!changed.empty()) gpu_->props.relightAll(world_->world.world(), world_->world.light());
+  if (world_->lod) world_->lod->update(cameraAtFrame(scene_, frame).position, gpu_->lod);
 }
 
 RenderedFrame SceneRenderer::renderFrame(int frame, const FrameRequest& request) {

@@ -26,6 +26,13 @@ struct SceneRenderStats {
   std::string shaderpackError;         // render.shaderpack failed to load: Terrasol's pipeline draws
 };
 
+// Far terrain as the last frame drew it (render.lod).
+struct SceneLodStats {
+  int tiles = 0, levels = 0;
+  std::size_t quads = 0, cpuBytes = 0, gpuBytes = 0;
+  double buildMs = 0.0;  // the last frame's wait for its tiles
+};
+
 struct RenderedFrame {
   Image image;
   std::vector<PassTiming> timings;  // when asked for: glFinish after each pass
@@ -67,6 +74,8 @@ class SceneRenderer {
   Image render(DebugView debugView);
 
   const SceneRenderStats& stats() const { return stats_; }
+  // With render.lod on: its tiles and their memory.
+  std::optional<SceneLodStats> lodStats() const;
   const SceneFile& scene() const { return scene_; }
   const terrasol::World& world() const;
   DeferredRenderer& renderer();

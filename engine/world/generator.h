@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -12,6 +13,16 @@
 #include "world/chunk.h"
 
 namespace terrasol {
+
+// A column's ground as the generator lays it before caves, trees and plants: for far terrain, which
+// samples the land without making chunks.
+struct SurfaceColumn {
+  int height = 0;         // y of the top ground block
+  BlockId top = kAir;     // the block there
+  int water = kMinY - 1;  // y of the water's surface over it (ice in the snow), kMinY - 1 for none
+  BlockId waterBlock = kAir;
+  TintClimate climate = kPlainsTint;  // its biome's grass, leaves and water
+};
 
 class ChunkGenerator {
  public:
@@ -24,6 +35,8 @@ class ChunkGenerator {
   // Sets the chunk's column tints (Chunk::tint); generate() does it too, and a chunk loaded from a
   // save gets them here. Worlds without biomes keep the plains tint.
   virtual void fillTints(Chunk& /*chunk*/) const {}
+  // A column's ground without making its chunk, where the generator can say (far terrain).
+  virtual std::optional<SurfaceColumn> surfaceColumn(int /*x*/, int /*z*/) const { return std::nullopt; }
 };
 
 struct FlatLayer {

@@ -22,10 +22,11 @@ void TerrainGenerator::generate(Chunk& chunk) const {
   chunk.compact();
 }
 
-SurfaceColumn TerrainGenerator::surfaceColumn(int x, int z) const {
+std::optional<SurfaceColumn> TerrainGenerator::surfaceColumn(int x, int z) const {
   const int h = shape_.surfaceHeight(x, z);
   const Biome biome = biomes_.biomeAt(x, z, h);
   SurfaceColumn c{h, surfaceBlockOf(h, biome, hashCoords(seed_, x, 1, z), blocks_)};
+  c.climate = biomeTint(biome);
   if (h < kSeaLevel) {
     c.water = kSeaLevel;
     c.waterBlock = biome == Biome::SnowyPlains ? blocks_.ice : blocks_.water;

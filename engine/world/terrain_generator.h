@@ -18,15 +18,6 @@
 
 namespace terrasol {
 
-// A column's ground as generate() lays it before caves, trees and plants: for far terrain, which
-// samples the land without making chunks.
-struct SurfaceColumn {
-  int height = 0;         // y of the top ground block
-  BlockId top = kAir;     // the block there
-  int water = kMinY - 1;  // y of the water's surface over it (ice in the snow), kMinY - 1 for none
-  BlockId waterBlock = kAir;
-};
-
 // Runs the stages of world/terrain_*.h in order; holds what they share.
 class TerrainGenerator final : public ChunkGenerator {
  public:
@@ -45,7 +36,7 @@ class TerrainGenerator final : public ChunkGenerator {
   // The biome of a column.
   Biome biomeAt(int x, int z) const { return context().biomeAt(x, z); }
   // A column's ground and water, from the same rules generate() uses.
-  SurfaceColumn surfaceColumn(int x, int z) const;
+  std::optional<SurfaceColumn> surfaceColumn(int x, int z) const override;
   const BiomeSource& biomes() const { return biomes_; }
 
  private:

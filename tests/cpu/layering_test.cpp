@@ -26,14 +26,14 @@ const std::map<std::string, std::set<std::string>> kAllowed = {
     {"mesh", {"core", "world", "mesh"}},
     {"assets", {"core", "assets"}},
     {"shaderpack", {"core", "world", "assets", "shaderpack"}},
-    {"render", {"core", "assets", "mesh", "render"}},
-    {"pack_render", {"core", "world", "assets", "mesh", "render", "shaderpack", "pack_render"}},
+    {"render", {"core", "assets", "mesh", "lod", "render"}},
+    {"pack_render", {"core", "world", "assets", "mesh", "lod", "render", "shaderpack", "pack_render"}},
     {"platform", {"core", "platform"}},
-    {"scene", {"core", "world", "minecraft", "light", "mesh", "assets", "scene"}},
+    {"scene", {"core", "world", "minecraft", "light", "lod", "mesh", "assets", "scene"}},
     {"pipeline", {"core", "world", "minecraft", "light", "mesh", "pipeline"}},
     {"scene_render",
-     {"core", "world", "minecraft", "light", "mesh", "assets", "render", "shaderpack", "pack_render", "scene",
-      "scene_render"}},
+     {"core", "world", "minecraft", "light", "lod", "mesh", "assets", "render", "shaderpack", "pack_render",
+      "scene", "scene_render"}},
 };
 
 const std::set<std::string> kEngine = [] {

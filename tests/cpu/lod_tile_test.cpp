@@ -17,6 +17,7 @@
 #include "support/test_data.h"
 #include "support/world_support.h"
 #include "world/chunk.h"
+#include "world/terrain_generator.h"
 
 namespace terrasol {
 namespace {
@@ -114,7 +115,7 @@ TEST(GeneratorTiles, TheColumnRuleIsTheGenerators) {
       generator.generate(chunk);
       for (int z = 0; z < kChunkSize; ++z)
         for (int x = 0; x < kChunkSize; ++x) {
-          const SurfaceColumn c = generator.surfaceColumn(cx * kChunkSize + x, cz * kChunkSize + z);
+          const SurfaceColumn c = *generator.surfaceColumn(cx * kChunkSize + x, cz * kChunkSize + z);
           ++columns;
           same += chunk.get(x, c.height, z) == c.top &&
                           (c.water == kNoLodHeight || chunk.get(x, c.water, z) == c.waterBlock)

@@ -1,0 +1,153 @@
+#include "lod/lod_mesh.h"
+
+#include <algorithm>
+#include <array>
+#include <glm/common.hpp>
+
+namespace terrasol {
+namespace {
+
+constexpr int kFloorY = kMinY * kLodYSteps;
+
+glm::vec3 tinted(glm::vec3 texture, Tint tint, const TintPalette& tints, const ColumnTint& column) {
+  return texture * tints.colour(tint, column);
+}
+
+std::uint32_t materialOf(glm::vec3 srgb, Direction face, bool water) {
+  const glm::uvec3 c(glm::clamp(srgb, 0.0f, 1.0f) * 255.0f + 0.5f);
+  return c.r | c.g << 8 | c.b << 16 | static_cast<std::uint32_t>(face) << kLodFaceShift |
+         static_cast<std::uint32_t>(water) << kLodWaterShift;
+}
+
+// A corner as the quad builder sees it: place (cells, 1/kLodYSteps block) and the cell it follows.
+struct Corner {
+  int x, y, z;
+  int cellX, cellZ;  // -1..kLodTileCells
+};
+
+class QuadWriter {
+ public:
+  explicit QuadWriter(LodMesh& mesh) : mesh_(mesh) {}
+
+  // Four corners counter-clockwise seen from outside.
+  void quad(const std::array<Corner, 4>& c, std::uint32_t material) {
+    for (const Corner& k : c) {
+      mesh_.vertices.push_back({static_cast<std::int16_t>(k.x), static_cast<std::int16_t>(k.z),
+                                static_cast<std::int16_t>(k.y), static_cast<std::uint8_t>(k.cellX + 1),
+                                static_cast<std::uint8_t>(k.cellZ + 1), material});
+    }
+  }
+
+ private:
+  LodMesh& mesh_;
+};
+
+struct Top {
+  int y = kFloorY;
+  std::uint32_t material = 0;  // 0: no top (an empty cell, or one drawn already)
+  bool operator==(const Top&) const = default;
+};
+
+// Greedy rectangles: a run along x, grown along z while every cell of the next row matches it.
+void mergeTops(std::vector<Top>& tops, QuadWriter& out) {
+  const auto at = [&](int x, int z) -> Top& { return tops[static_cast<std::size_t>(z * kLodTileCells + x)]; };
+  for (int z0 = 0; z0 < kLodTileCells; ++z0)
+    for (int x0 = 0; x0 < kLodTileCells; ++x0) {
+      const Top t = at(x0, z0);
+      if (t.material == 0) continue;
+      int x1 = x0 + 1;
+      while (x1 < kLodTileCells && at(x1, z0) == t) ++x1;
+      int z1 = z0 + 1;
+      for (; z1 < kLodTileCells; ++z1) {
+        bool same = true;
+        for (int x = x0; x < x1 && same; ++x) same = at(x, z1) == t;
+        if (!same) break;
+      }
+      for (int z = z0; z < z1; ++z)
+        for (int x = x0; x < x1; ++x) at(x, z).material = 0;
+      out.quad({Corner{x0, t.y, z0, x0, z0},
+                {x0, t.y, z1, x0, z1 - 1},
+                {x1, t.y, z1, x1 - 1, z1 - 1},
+                {x1, t.y, z0, x1 - 1, z0}},
+               t.material);
+    }
+}
+
+}  // namespace
+
+glm::vec3 LodPalette::top(BlockId block, const ColumnTint& column) const {
+  if (block >= blocks.size()) return glm::vec3(0.5f);
+  const LodBlockColour& c = blocks[block];
+  return tinted(c.top, c.topTint, tints, column);
+}
+
+glm::vec3 LodPalette::side(BlockId block, const ColumnTint& column) const {
+  if (block >= blocks.size()) return glm::vec3(0.5f);
+  const LodBlockColour& c = blocks[block];
+  return tinted(c.side, c.sideTint, tints, column);
+}
+
+int lodSurfaceY(const LodCell& cell) {
+  if (cell.water != kNoLodHeight) return (cell.water + 1) * kLodYSteps - 1;
+  if (cell.top == kNoLodHeight) return kFloorY;
+  return (cell.top + 1) * kLodYSteps;
+}
+
+LodMesh meshLodTile(const LodTile& tile, const LodPalette& palette, bool allWalls) {
+  LodMesh mesh{tile.key, {}, kMinY, kMinY, allWalls};
+  QuadWriter out(mesh);
+  const auto inside = [](int cx, int cz) {
+    return cx >= 0 && cz >= 0 && cx < kLodTileCells && cz < kLodTileCells;
+  };
+  const auto empty = [](const LodCell& c) { return c.top == kNoLodHeight && c.water == kNoLodHeight; };
+  int maxY = kFloorY;
+  // Tops of a tile that never meets full detail merge into rectangles of one height and colour (a
+  // sea, a plain); a tile that does keeps one per cell, as each may sink on its own.
+  std::vector<Top> tops(static_cast<std::size_t>(kLodTileCells * kLodTileCells));
+  for (int cz = 0; cz < kLodTileCells; ++cz)
+    for (int cx = 0; cx < kLodTileCells; ++cx) {
+      const LodCell& cell = tile.at(cx, cz);
+      if (empty(cell)) continue;
+      const bool wet = cell.water != kNoLodHeight;
+      const int y = lodSurfaceY(cell);
+      maxY = std::max(maxY, y);
+      const glm::vec3 top =
+          wet ? palette.top(cell.waterBlock, cell.tint) : palette.top(cell.surface, cell.tint);
+      const glm::vec3 side =
+          wet ? palette.side(cell.waterBlock, cell.tint) : palette.side(cell.surface, cell.tint);
+      const std::uint32_t topMaterial = materialOf(top, Direction::Up, wet);
+      if (allWalls) {
+        out.quad({Corner{cx, y, cz, cx, cz},
+                  {cx, y, cz + 1, cx, cz},
+                  {cx + 1, y, cz + 1, cx, cz},
+                  {cx + 1, y, cz, cx, cz}},
+                 topMaterial);
+      } else {
+        tops[static_cast<std::size_t>(cz * kLodTileCells + cx)] = {y, topMaterial};
+      }
+      for (const Direction d : {Direction::West, Direction::East, Direction::North, Direction::South}) {
+        const BlockPos o = kDirectionOffsets[static_cast<int>(d)];
+        const int nx = cx + o.x, nz = cz + o.z;
+        int bottom = kFloorY;  // a skirt: beyond the tile, or next to a cell no source has filled
+        if (inside(nx, nz) && !empty(tile.at(nx, nz))) {
+          bottom = std::min(lodSurfaceY(tile.at(nx, nz)), y);
+          if (bottom == y && !allWalls) continue;
+        }
+        // The edge facing d, from the end on the left to the one on the right seen from outside
+        // (right = -d x up), so the wall is counter-clockwise whatever its height, even none.
+        const int ex = o.x > 0 ? cx + 1 : cx, ez = o.z > 0 ? cz + 1 : cz;
+        const int lx = o.z != 0 ? (o.z > 0 ? cx : cx + 1) : ex, lz = o.x != 0 ? (o.x > 0 ? cz + 1 : cz) : ez;
+        const int rx = o.z != 0 ? (o.z > 0 ? cx + 1 : cx) : ex, rz = o.x != 0 ? (o.x > 0 ? cz : cz + 1) : ez;
+        out.quad({Corner{lx, bottom, lz, nx, nz},
+                  {rx, bottom, rz, nx, nz},
+                  {rx, y, rz, cx, cz},
+                  {lx, y, lz, cx, cz}},
+                 materialOf(side, d, wet));
+      }
+    }
+  mergeTops(tops, out);
+  mesh.maxY = (maxY + kLodYSteps - 1) / kLodYSteps;
+  return mesh;
+}
+
+}  // namespace terrasol

@@ -1,0 +1,55 @@
+#include "render/passes/lod_pass.h"
+
+#include "render/gl_slots.h"
+
+namespace terrasol {
+
+LodPass::LodPass(const VariantBuilder& build, PassShared& shared)
+    : shared_(shared), program_(build("lod.vert", "lod.frag", shared.contents.defines())) {}
+
+void LodPass::setup(FrameGraph::Builder& builder, Frame& frame) {
+  if (!frame.inputs.lod || frame.inputs.lod->empty()) return builder.skip("no far terrain");
+  builder.read(frame.resources.gbuffer);
+  builder.write(frame.resources.gbuffer);
+}
+
+void LodPass::execute(Frame& frame) {
+  const LodMeshes& lod = *frame.inputs.lod;
+  const GBuffer& gbuffer = *frame.gbuffer;
+  glBindFramebuffer(GL_FRAMEBUFFER, gbuffer.geometryFramebuffer());
+  glViewport(0, 0, gbuffer.size().x, gbuffer.size().y);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDepthMask(GL_TRUE);
+  glEnable(GL_CULL_FACE);
+  glDisable(GL_BLEND);
+  const FrameView& view = frame.view;
+  const Uniforms& u = program_.u;
+  u.viewProjection.set(view.viewProjection);
+  glUseProgram(program_.id());
+  glBindVertexArray(lod.vertexArray());
+  glBindTextureUnit(slots::kUnitLodMask, lod.fullDetailMask());
+  const glm::ivec2 maskBlock = lod.maskOrigin() * kChunkSize;
+  for (const LodMeshes::Tile& tile : lod.tiles()) {
+    if (tile.quads == 0) continue;
+    const LodTileKey key = tile.mesh->key;
+    const glm::dvec3 min(key.minBlockX(), tile.mesh->minY, key.minBlockZ());
+    const glm::vec3 lo(min - view.camera);
+    const glm::vec3 hi =
+        lo + glm::vec3(key.spanBlocks(), tile.mesh->maxY - tile.mesh->minY, key.spanBlocks());
+    if (!boxVisible(view.frustum, lo, hi)) {
+      ++frame.stats.lodTilesCulled;
+      continue;
+    }
+    u.tileOffset.set(glm::vec3(glm::dvec3(key.minBlockX(), 0.0, key.minBlockZ()) - view.camera));
+    u.cellBlocks.set(key.cellBlocks());
+    u.maskOffset.set(glm::ivec2(key.minBlockX(), key.minBlockZ()) - maskBlock);
+    u.masked.set(tile.mesh->allWalls);
+    lod.bindTile(tile);
+    glDrawElements(GL_TRIANGLES, tile.quads * 6, GL_UNSIGNED_INT, nullptr);
+    ++frame.stats.lodTilesDrawn;
+    frame.stats.lodQuadsDrawn += tile.quads;
+  }
+}
+
+}  // namespace terrasol
