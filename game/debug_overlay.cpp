@@ -46,7 +46,8 @@ void DebugOverlay::drawnFrameTime(double seconds) {
   if (graph_.size() > kGraphFrames) graph_.pop_front();
 }
 
-std::vector<std::string> DebugOverlay::left(const PlayWorld& world, const GameRenderer& renderer) const {
+std::vector<std::string> DebugOverlay::left(const PlayWorld& world, const GameRenderer& renderer,
+                                            const std::optional<LodTerrainStats>& far) const {
   double total = 0.0;
   for (double t : frameTimes_) total += t;
   const double frameMs = frameTimes_.empty() ? 0.0 : 1000.0 * total / static_cast<double>(frameTimes_.size());
@@ -85,6 +86,13 @@ std::vector<std::string> DebugOverlay::left(const PlayWorld& world, const GameRe
   out.push_back(format("Sections: %zu dirty, %zu meshing, %zu on GPU, %d drawn, %d culled, %d shadow casters",
                        c.meshDirty, c.meshInFlight, renderer.sectionsOnGpu(), f.sectionsDrawn,
                        f.sectionsCulled, f.shadowCasters));
+  if (far) {
+    out.push_back(format(
+        "Far terrain: %d tiles in %d levels (%d to build), %d drawn, %lld quads; %.1f MB CPU, "
+        "%.1f MB GPU",
+        far->tiles, far->levels, far->pending, f.lodTilesDrawn, static_cast<long long>(f.lodQuadsDrawn),
+        static_cast<double>(far->cachedBytes) / 1e6, static_cast<double>(renderer.lod().gpuBytes()) / 1e6));
+  }
   return out;
 }
 

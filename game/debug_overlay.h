@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/render_settings.h"
+#include "lod/lod_terrain.h"
 #include "render/pass_clock.h"
 #include "settings.h"
 #include "targeting.h"
@@ -39,7 +40,9 @@ class DebugOverlay {
   std::vector<PassTiming>& timings() { return timings_; }
 
   // `scale`: the render scale the frame was drawn at.
-  std::vector<std::string> left(const PlayWorld& world, const GameRenderer& renderer) const;
+  // `far`: far terrain's tiles, when it is on.
+  std::vector<std::string> left(const PlayWorld& world, const GameRenderer& renderer,
+                                const std::optional<LodTerrainStats>& far = std::nullopt) const;
   std::vector<std::string> right(const PlayWorld& world, const GameSettings& settings, glm::ivec2 size,
                                  float scale, const std::optional<Target>& target) const;
 

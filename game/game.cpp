@@ -10,6 +10,7 @@
 #include "core/paths.h"
 #include "first_run.h"
 #include "platform/glfw/glfw_window.h"
+#include "scene/block_colours.h"
 #include "world_choice.h"
 
 // The game's parts made and wired together, and what the menu and the script ask of them.
@@ -66,6 +67,7 @@ Game::Game(GlfwWindow& window, const GameOptions& options)
   input_.setScreenKeys(&ui_);
   if (!world_.notice().empty()) ui_.showNotice(world_.notice(), frames_.clock, kNoticeSeconds);
   if (!std::filesystem::exists(settings_.path)) probeMachine();
+  resetFarTerrain();
   window_.setVsync(settings_.values.vsync && !options.benchmark);
   input_.show(Screen::None);
 }
@@ -124,7 +126,10 @@ void Game::runCommand(const ScriptEvent& command) {
 
 void Game::applyMenu(const MenuResult& r) {
   const GameSettings& s = settings_.values;
-  if (r.viewChanged) world_.streamed().setViewDistance(s.viewDistance);
+  if (r.viewChanged) {
+    world_.streamed().setViewDistance(s.viewDistance);
+    resetFarTerrain();
+  }
   if (r.rendererChanged) renderer_.applySettings(s);
   if (r.packsChanged) reloadPacks();
   if (r.shaderPackChanged) renderer_.setShaderPack(s.shaderpack);
@@ -142,10 +147,18 @@ void Game::reloadPacks() {
     std::unique_ptr<BlockAssets> assets = renderer_.loadPacks(settings_.values.packs);
     world_.streamed().remeshAll(assets->table);
     renderer_.commit(std::move(assets));
+    resetFarTerrain();
     for (const PackProblem& p : renderer_.assets().atlas.problems) logWarning(p.message);
   } catch (const Error& e) {
     logError(std::string("packs not reloaded: ") + e.what());  // the old ones stay
   }
+}
+
+void Game::resetFarTerrain() {
+  const GameSettings& s = settings_.values;
+  far_.reset();  // its workers stop before a new one starts
+  renderer_.lod().clear();
+  far_ = FarTerrain::create(s.lod, world_, lodPaletteOf(content_.blocks, renderer_.assets().atlas));
 }
 
 void Game::save() {

@@ -9,6 +9,7 @@
 
 #include "block_interaction.h"
 #include "debug_overlay.h"
+#include "far_terrain.h"
 #include "game_renderer.h"
 #include "game_report.h"
 #include "game_ui.h"
@@ -83,6 +84,8 @@ class Game {
   void drawHud();
   void applyMenu(const MenuResult& r);
   void reloadPacks();
+  // Far terrain for the settings, packs and world now (after any of them changes).
+  void resetFarTerrain();
   void save();
   // The first start (no settings file): times a few empty frames and picks settings for the machine.
   void probeMachine();
@@ -100,6 +103,7 @@ class Game {
   InputRouter input_;  // before the UI: ImGui's callbacks chain to the router's
   GameUi ui_;
   DebugOverlay overlay_;
+  std::unique_ptr<FarTerrain> far_;  // settings "lod"; null when off
   FrameState frames_;
   std::optional<ScriptDriver> script_;
 };

@@ -165,6 +165,11 @@ void Game::draw(bool timed) {
   frame.ticks = world_.level().time;
   frame.sunPathRotation = s.sunPathRotation;
   frame.viewDistance = static_cast<float>(s.viewDistance * kChunkSize);
+  if (far_) {
+    far_->update(frame.cameraPosition, s.viewDistance, world_, renderer_.lod());
+    frame.lod = &renderer_.lod();
+    frame.viewDistance = static_cast<float>(std::max(s.viewDistance, far_->distance()) * kChunkSize);
+  }
   frame.debugView = overlay_.view();
   frame.reuseShadowMap = true;
   frame.props = &world_.props().placed().gpu();
@@ -183,7 +188,7 @@ void Game::drawHud() {
   if (overlay_.shown()) {
     const std::deque<float>& graph = overlay_.graph();
     ui_.overlay(
-        overlay_.left(world_, renderer_),
+        overlay_.left(world_, renderer_, far_ ? std::optional(far_->stats()) : std::nullopt),
         overlay_.right(world_, settings_.values, drawableSize(), renderScale(), interaction_.target()),
         {graph.begin(), graph.end()});
   }

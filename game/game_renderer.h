@@ -12,6 +12,7 @@
 #include "pack_render/pack_renderer.h"
 #include "render/block_icons.h"
 #include "render/deferred_renderer.h"
+#include "render/lod_meshes.h"
 #include "scene/block_atlas.h"
 #include "settings.h"
 
@@ -57,6 +58,9 @@ class GameRenderer {
   const PackRenderer* shaderPack() const { return pack_.get(); }
 
   void upload(const SectionMesh& mesh) { meshes_.upload(mesh); }
+  // Far terrain's tiles on the GPU and the chunks full detail covers.
+  LodMeshes& lod() { return lod_; }
+  const LodMeshes& lod() const { return lod_; }
   void render(const FrameInputs& frame, glm::ivec2 size, std::vector<PassTiming>* timings);
   const FrameStats& lastFrame() const { return drawing().lastFrame(); }
   std::size_t sectionsOnGpu() const { return meshes_.sections().size(); }
@@ -82,6 +86,7 @@ class GameRenderer {
   std::string shaderPackError_;
 
   SectionMeshes meshes_;
+  LodMeshes lod_;
   std::vector<BlockId> iconStates_;
   std::vector<int> iconOfBlock_;  // per block type: its icon, or -1
   std::unique_ptr<BlockIcons> icons_;

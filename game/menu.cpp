@@ -133,6 +133,8 @@ void Menu::settingsTab(GameSettings& s, MenuResult& out) {
   presetCombo(s, out);
   ImGui::SliderInt("View distance (chunks)", &s.viewDistance, 2, 32);
   out.viewChanged |= released();
+  ImGui::SliderInt("Far terrain (chunks, 0: off)", &s.lod.distance, 0, 1024);
+  out.viewChanged |= released();
   ImGui::SliderFloat("FOV", &s.fov, 30.0f, 110.0f, "%.0f");
   out.settingsChanged |= released();
   ImGui::SliderFloat("Mouse sensitivity", &s.mouseSensitivity, 0.01f, 2.0f, "%.2f deg/px");

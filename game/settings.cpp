@@ -45,8 +45,8 @@ void parseKeys(const json& value, KeyBindings& keys) {
 GameSettings parseRoot(const json& root, const path& dir) {
   checkObject(root, "",
               {"view_distance", "fov", "mouse_sensitivity", "sun_path_rotation", "shadow", "reflections",
-               "antialiasing", "bloom", "clouds", "fog", "shafts", "packs", "shaderpack", "keys", "vsync",
-               "render_scale", "target_fps", "first_run"});
+               "antialiasing", "bloom", "clouds", "fog", "shafts", "lod", "packs", "shaderpack", "keys",
+               "vsync", "render_scale", "target_fps", "first_run"});
   GameSettings s;
   if (const json* v = field(root, "view_distance"))
     s.viewDistance = static_cast<int>(wholeNumber(*v, "view_distance", 2, 32));
@@ -61,6 +61,7 @@ GameSettings parseRoot(const json& root, const path& dir) {
   if (const json* v = field(root, "clouds")) parseClouds(*v, "clouds", s.clouds);
   if (const json* v = field(root, "fog")) parseFog(*v, "fog", s.fog);
   if (const json* v = field(root, "shafts")) parseShafts(*v, "shafts", s.shafts);
+  if (const json* v = field(root, "lod")) parseLod(*v, "lod", s.lod);
   if (const json* v = field(root, "antialiasing"))
     s.antialiasing = enumOf(*v, "antialiasing", kAntialiasingModes);
   if (const json* v = field(root, "packs")) s.packs = parsePacks(*v, dir);
@@ -120,6 +121,7 @@ void saveSettings(const std::filesystem::path& file, const GameSettings& s) {
                {"clouds", cloudsJson(s.clouds)},
                {"fog", fogJson(s.fog)},
                {"shafts", shaftsJson(s.shafts)},
+               {"lod", lodJson(s.lod)},
                {"packs", packs},
                {"shaderpack", s.shaderpack.string()},
                {"keys", keys},

@@ -40,6 +40,7 @@ struct GameSettings {
   CloudSettings clouds{CloudMode::Fancy};          // "clouds": as render.clouds
   FogSettings fog;                                 // "fog": as render.fog
   ShaftSettings shafts;                            // "shafts": as render.shafts
+  LodSettings lod{.distance = 32};                 // "lod": as render.lod
   std::vector<PackChoice> packs;                   // stacked bottom to top over the default pack
   std::filesystem::path shaderpack;  // an OptiFine/Iris shader pack drawing instead of Terrasol's pipeline
   KeyBindings keys;

@@ -27,6 +27,7 @@ struct PresetSettings {
   CloudMode clouds;
   float fogDensity;  // height fog at its base (0: none)
   bool shafts;
+  int lodDistance;  // chunks of far terrain (0: none)
 };
 
 // Low keeps shadows (they are the look) and leaves out the rest: a slow llvmpipe machine's; medium adds
@@ -34,10 +35,10 @@ struct PresetSettings {
 // and ultra are a GPU's, with fancy clouds and a light haze the sun's shafts show in.
 inline constexpr float kPresetHaze = 0.004f;
 inline constexpr std::array<PresetSettings, 4> kPresetSettings{{
-    {3, 1024, 64.0f, 1, false, 0.25f, 12, Antialiasing::None, false, CloudMode::Off, 0.0f, false},
-    {4, 1024, 64.0f, 1, false, 0.25f, 12, Antialiasing::Fxaa, false, CloudMode::Flat, 0.0f, false},
-    {8, 2048, 96.0f, 1, true, 0.25f, 12, Antialiasing::Taa, true, CloudMode::Fancy, kPresetHaze, true},
-    {12, 4096, 128.0f, 2, true, 0.5f, 24, Antialiasing::Taa, true, CloudMode::Fancy, kPresetHaze, true},
+    {3, 1024, 64.0f, 1, false, 0.25f, 12, Antialiasing::None, false, CloudMode::Off, 0.0f, false, 32},
+    {4, 1024, 64.0f, 1, false, 0.25f, 12, Antialiasing::Fxaa, false, CloudMode::Flat, 0.0f, false, 48},
+    {8, 2048, 96.0f, 1, true, 0.25f, 12, Antialiasing::Taa, true, CloudMode::Fancy, kPresetHaze, true, 128},
+    {12, 4096, 128.0f, 2, true, 0.5f, 24, Antialiasing::Taa, true, CloudMode::Fancy, kPresetHaze, true, 256},
 }};
 
 inline const PresetSettings& presetSettings(RenderPreset preset) {
@@ -45,7 +46,7 @@ inline const PresetSettings& presetSettings(RenderPreset preset) {
 }
 
 // `Settings`: anything with the members a preset decides (a scene, the game's settings): viewDistance,
-// shadow, reflections, antialiasing, bloom, clouds, fog and shafts.
+// shadow, reflections, antialiasing, bloom, clouds, fog, shafts and lod.
 
 // The preset the settings match, if any (the menu shows "custom" otherwise).
 template <class Settings>
@@ -57,7 +58,7 @@ std::optional<RenderPreset> presetOf(const Settings& s) {
         s.reflections.enabled == p.reflections && s.reflections.resolutionScale == p.reflectionScale &&
         s.reflections.maxSteps == p.reflectionSteps && s.antialiasing == p.antialiasing &&
         s.bloom.enabled == p.bloom && s.clouds.mode == p.clouds && s.fog.density == p.fogDensity &&
-        s.shafts.enabled == p.shafts)
+        s.shafts.enabled == p.shafts && s.lod.distance == p.lodDistance)
       return static_cast<RenderPreset>(i);
   }
   return std::nullopt;
@@ -81,6 +82,7 @@ void applyPreset(RenderPreset preset, Settings& s) {
   s.clouds.mode = p.clouds;
   s.fog.density = p.fogDensity;
   s.shafts.enabled = p.shafts;
+  s.lod.distance = p.lodDistance;
 }
 
 }  // namespace terrasol

@@ -3,9 +3,8 @@
 #include "lod/lod_summary.h"
 
 namespace terrasol {
-namespace {
 
-LodColumn columnOf(const Chunk& chunk, int x, int z, const BlockRegistry& blocks) {
+LodColumn chunkColumn(const Chunk& chunk, int x, int z, const BlockRegistry& blocks) {
   LodColumn column;
   column.tint = chunk.tint(x, z);
   for (int y = kMaxY - 1; y >= kMinY; --y) {
@@ -28,14 +27,12 @@ LodColumn columnOf(const Chunk& chunk, int x, int z, const BlockRegistry& blocks
   return column;
 }
 
-}  // namespace
-
 LodTile tileFromChunks(LodTileKey key, const ChunkLookup& chunkAt, const BlockRegistry& blocks) {
   return sampleTile(key, [&](int x, int z) -> std::optional<LodColumn> {
     const ChunkPos pos = ChunkPos::of(BlockPos{x, 0, z});
     const Chunk* chunk = chunkAt(pos);
     if (!chunk) return std::nullopt;
-    return columnOf(*chunk, x - pos.minBlockX(), z - pos.minBlockZ(), blocks);
+    return chunkColumn(*chunk, x - pos.minBlockX(), z - pos.minBlockZ(), blocks);
   });
 }
 

@@ -6,6 +6,7 @@
 
 #include <functional>
 
+#include "lod/lod_summary.h"
 #include "lod/lod_tile.h"
 #include "world/block_registry.h"
 #include "world/chunk.h"
@@ -16,5 +17,8 @@ namespace terrasol {
 using ChunkLookup = std::function<const Chunk*(ChunkPos)>;
 
 LodTile tileFromChunks(LodTileKey key, const ChunkLookup& chunkAt, const BlockRegistry& blocks);
+
+// One column (x, z within the chunk) as tileFromChunks sees it.
+LodColumn chunkColumn(const Chunk& chunk, int x, int z, const BlockRegistry& blocks);
 
 }  // namespace terrasol

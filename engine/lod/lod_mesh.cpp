@@ -81,6 +81,10 @@ glm::vec3 LodPalette::top(BlockId block, const ColumnTint& column) const {
   return tinted(c.top, c.topTint, tints, column);
 }
 
+float LodPalette::opacity(BlockId block) const {
+  return block < blocks.size() ? blocks[block].opacity : 1.0f;
+}
+
 glm::vec3 LodPalette::side(BlockId block, const ColumnTint& column) const {
   if (block >= blocks.size()) return glm::vec3(0.5f);
   const LodBlockColour& c = blocks[block];
@@ -111,8 +115,11 @@ LodMesh meshLodTile(const LodTile& tile, const LodPalette& palette, bool allWall
       const bool wet = cell.water != kNoLodHeight;
       const int y = lodSurfaceY(cell);
       maxY = std::max(maxY, y);
+      // Water over its bed, as the translucent pass blends it (lit alike, as far terrain is).
+      const glm::vec3 ground = palette.top(cell.surface, cell.tint);
       const glm::vec3 top =
-          wet ? palette.top(cell.waterBlock, cell.tint) : palette.top(cell.surface, cell.tint);
+          wet ? glm::mix(ground, palette.top(cell.waterBlock, cell.tint), palette.opacity(cell.waterBlock))
+              : ground;
       const glm::vec3 side =
           wet ? palette.side(cell.waterBlock, cell.tint) : palette.side(cell.surface, cell.tint);
       const std::uint32_t topMaterial = materialOf(top, Direction::Up, wet);

@@ -1,5 +1,6 @@
 #pragma once
-// A far terrain tile as quads: each cell's top (the water's surface on a wet cell) at its height, and
+// A far terrain tile as quads: each cell's top (the water's surface on a wet cell, coloured as the water
+// over its bed) at its height, and
 // walls down to lower neighbours, so a slope of cells reads as terraces with no gap between them. Where
 // the tile ends the walls go down to the world's floor (skirts): a neighbouring tile of another level,
 // whatever its heights, meets them with no crack. A tile that touches full detail gets every wall,
@@ -20,6 +21,7 @@ namespace terrasol {
 struct LodBlockColour {
   glm::vec3 top{0.5f}, side{0.5f};
   Tint topTint = Tint::None, sideTint = Tint::None;
+  float opacity = 1.0f;  // its top texture's mean alpha: water lets its bed show through
 };
 
 // Every block's colours (by BlockId) and the pack's tint colours.
@@ -30,6 +32,7 @@ struct LodPalette {
   // sRGB 0..1, tinted as in a column of `column`.
   glm::vec3 top(BlockId block, const ColumnTint& column) const;
   glm::vec3 side(BlockId block, const ColumnTint& column) const;
+  float opacity(BlockId block) const;
 };
 
 struct LodMesh {

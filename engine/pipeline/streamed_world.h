@@ -44,6 +44,9 @@ class StreamedWorld {
   World& world() { return world_; }
   const World& world() const { return world_; }
   const LightEngine& light() const { return light_; }
+  const ChunkGenerator& generator() const { return *generator_; }
+  // Whether the chunk is meshed (all its neighbours are loaded): drawn in full detail.
+  bool meshable(ChunkPos pos) const { return meshable_.contains(pos); }
 
   // Streams chunks around `centre` (adding and lighting them until `deadline`, at least one a frame),
   // queues dirty sections for meshing and returns the meshes finished since the last call (an empty

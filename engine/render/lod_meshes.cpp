@@ -70,6 +70,9 @@ void LodMeshes::setFullDetail(glm::ivec2 origin, int size, const std::vector<std
   if (size != maskSize_) {
     mask_ = gl::Texture::create(GL_TEXTURE_2D);
     glTextureStorage2D(mask_.id(), 1, GL_R8UI, size, size);
+    // An integer texture is complete only with nearest filtering; texelFetch of an incomplete one reads 0.
+    glTextureParameteri(mask_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTextureParameteri(mask_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     maskSize_ = size;
   }
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);

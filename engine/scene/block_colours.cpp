@@ -27,6 +27,19 @@ glm::vec4 meanOf(const Atlas& atlas, int texture) {
                 : glm::vec4(0.0f);
 }
 
+// A texture's mean alpha, 0..1.
+float meanAlpha(const Atlas& atlas, int texture) {
+  const AtlasTexture& t = atlas.textures[static_cast<std::size_t>(texture)];
+  const Image& image = atlas.albedo[0];
+  const int pad = atlas.tileSize / 2;
+  const int x0 = (t.firstTile % atlas.columns) * atlas.slotSize + pad;
+  const int y0 = (t.firstTile / atlas.columns) * atlas.slotSize + pad;
+  double sum = 0.0;
+  for (int y = 0; y < atlas.tileSize; ++y)
+    for (int x = 0; x < atlas.tileSize; ++x) sum += image.pixel(x0 + x, y0 + y)[3] / 255.0;
+  return static_cast<float>(sum / (atlas.tileSize * atlas.tileSize));
+}
+
 // The quad a model block shows from above: its highest up-facing one, else its first.
 const ModelQuad* topQuad(const std::vector<ModelQuad>& quads) {
   const ModelQuad* best = nullptr;
@@ -77,6 +90,7 @@ LodPalette lodPaletteOf(const BlockRegistry& blocks, const BlockAtlas& atlas) {
     LodBlockColour& c = palette.blocks[id];
     c.top = c.side = glm::vec3(tops[id].texture);
     c.topTint = c.sideTint = tops[id].tint;
+    if (type.shape == BlockShape::Liquid) c.opacity = meanAlpha(atlas.atlas, atlas.textureOf(id, kUp));
     if (type.shape != BlockShape::Cube) continue;
     c.side = glm::vec3(meanOf(atlas.atlas, atlas.textureOf(id, kNorth)));
     c.sideTint = type.tint == Tint::Grass ? Tint::None : type.tint;

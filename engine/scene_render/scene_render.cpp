@@ -146,6 +146,13 @@ SceneRenderer::SceneRenderer(const SceneFile& scene)
 
 SceneRenderer::~SceneRenderer() = default;
 
+SceneFile lodTruthScene(const SceneFile& scene) {
+  SceneFile truth = scene;
+  truth.viewDistance = std::max(scene.viewDistance, scene.lod.distance);
+  truth.lod.distance = 0;
+  return truth;
+}
+
 DeferredRenderer& SceneRenderer::renderer() {
   return gpu_->renderer;
 }
@@ -211,6 +218,7 @@ RenderedFrame SceneRenderer::renderFrame(int frame, const FrameRequest& request)
   RenderedFrame out;
   const GLuint fbo = gpu_->target.framebuffer();
   if (scene_.targetFps > 0) inputs.renderScale = resolution_.scale();
+  if (request.renderScale) inputs.renderScale = *request.renderScale;
   if (frame == 0 && !request.aside) warmHistory(inputs);
   const auto start = std::chrono::steady_clock::now();
   drawing().render(inputs, gpu_->meshes, fbo, gpu_->target.size(), request.timed ? &out.timings : nullptr);

@@ -51,7 +51,11 @@ struct FrameRequest {
   std::optional<DebugView> debugView;  // overrides the scene's
   bool reuseShadowMap = false;         // FrameInputs::reuseShadowMap
   bool aside = false;                  // FrameInputs::aside
+  std::optional<float> renderScale;    // overrides the scene's (the far terrain report's yardstick)
 };
+
+// The scene with full detail out to its far terrain's edge and no far terrain: far terrain's truth.
+SceneFile lodTruthScene(const SceneFile& scene);
 
 class SceneRenderer {
  public:

@@ -22,6 +22,7 @@
 #include "progress.h"
 #include "render/gl/program.h"
 #include "scene_render/aa_error.h"
+#include "scene_render/lod_error.h"
 #include "scene_render/reflection_truth.h"
 #include "scene_render/scene_render.h"
 #include "scene_render/shadow_truth.h"
@@ -245,6 +246,9 @@ int renderScene(const Options& o, const SceneFile& scene, SceneRenderer& rendere
     big.targetFps = 0;
     reference.emplace(big);
   }
+  // Far terrain's truth: full detail out to its far edge, drawn for the report.
+  std::optional<SceneRenderer> lodTruth;
+  if (!o.report.empty() && renderer.lodStats()) lodTruth.emplace(lodTruthScene(scene));
   std::deque<Image> truths;  // the last kGhostFrames + 1, for ghosting
   for (int i = 0; i < renderer.frames(); ++i) {
     const auto start = std::chrono::steady_clock::now();
@@ -273,6 +277,21 @@ int renderScene(const Options& o, const SceneFile& scene, SceneRenderer& rendere
       if (ghost) frames.back()["aa_error"]["ghost"] = ghostJson(*ghost);
       if (frame.geometry.shadowMapShown)
         frames.back()["shadow_error"] = shadowReport(renderer, i, frame, request);
+      if (lodTruth) {
+        FrameRequest exact;
+        exact.readBack = true;
+        const RenderedFrame truth = lodTruth->renderFrame(i, exact);
+        FrameRequest half;
+        half.renderScale = 0.5f;
+        const Image halfImage = lodTruth->renderFrame(i, half).image;
+        const LodError e = measureLodError(frame, truth, scene.viewDistance * double(kChunkSize),
+                                           scene.lod.distance * double(kChunkSize), &halfImage);
+        frames.back()["lod_error"] = lodErrorJson(e);
+        progress.line(frameName("frame", i) + ": lod_error mean " + std::to_string(e.mean).substr(0, 6) +
+                      " (half resolution " + std::to_string(e.halfResolutionMean.value_or(0.0)).substr(0, 6) +
+                      "), holes " + std::to_string(e.holes) + " of " + std::to_string(e.band) +
+                      " in the band");
+      }
       if (frame.reflections) {
         const ReflectionError error = measureReflectionError(
             renderer.world(), frame.pixels, *frame.reflections, frame.geometry, scene.reflections.maxDistance,

@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
+#include <optional>
 
 #include "core/error.h"
 #include "scene_render/aa_error.h"
+#include "scene_render/lod_error.h"
 #include "scene_render/reflection_truth.h"
 #include "scene_render/scene_render.h"
 #include "scene_render/shadow_truth.h"
@@ -17,8 +19,9 @@ namespace {
 // What a sweep measures: the shadows' error against shadow + lighting ms, (when it sweeps a
 // render.reflections key) the reflections' against the reflection pass's ms, or (when it sweeps
 // render.antialiasing or render.scale) the frame's error against its 3 x 3 supersampled truth against
-// the frame's ms but the shadow map's.
-enum class Measure { Shadows, Reflections, Antialiasing };
+// the frame's ms but the shadow map's, or (when it sweeps a render.lod key) far terrain's error against
+// full detail out to the scene's far edge against the far terrain pass's ms.
+enum class Measure { Shadows, Reflections, Antialiasing, Lod };
 constexpr int kTruthSupersample = 3;
 
 struct Row {
@@ -29,7 +32,18 @@ struct Row {
   bool pareto = false;
 };
 
+// What rows are measured against: the supersampled frame, or far terrain's truth and its half-scale draw.
+struct Truth {
+  Image image;
+  std::optional<RenderedFrame> lod;
+  Image lodHalf;
+  double fullDetail = 0.0, farEdge = 0.0;  // blocks
+};
+
 std::vector<const char*> columnNames(Measure m) {
+  if (m == Measure::Lod)
+    return {"band_pixels",          "lod_mean",  "lod_p99", "holes", "sky_differs",
+            "half_resolution_mean", "error_pct", "lod_ms"};
   if (m == Measure::Antialiasing) return {"aa_mean", "aa_p99", "edge_over_pct", "error_pct"};
   if (m == Measure::Reflections) {
     return {"evaluated_pixels",
@@ -110,7 +124,25 @@ void measureAntialiasing(const RenderedFrame& frame, const Image& truth, Row& ro
   row.columns = {e.mean, e.p99, e.edgeOverPct, row.errorPct};
 }
 
+void measureLod(const RenderedFrame& frame, const Truth& truth, Row& row) {
+  const LodError e = measureLodError(frame, *truth.lod, truth.fullDetail, truth.farEdge, &truth.lodHalf);
+  row.evaluated = e.band;
+  row.errorPct = 100.0 * e.mean;
+  row.costMs = msOf(frame, "lod");
+  row.columns = {static_cast<double>(e.band),
+                 e.mean,
+                 e.p99,
+                 static_cast<double>(e.holes),
+                 static_cast<double>(e.skyDiffers),
+                 e.halfResolutionMean.value_or(0.0),
+                 row.errorPct,
+                 row.costMs};
+}
+
 Measure measureOf(const std::vector<Sweep>& sweeps) {
+  for (const Sweep& s : sweeps) {
+    if (s.key.starts_with("render.lod.")) return Measure::Lod;
+  }
   for (const Sweep& s : sweeps) {
     if (s.key.starts_with("render.reflections.")) return Measure::Reflections;
   }
@@ -133,6 +165,22 @@ Image supersampledTruth(const std::filesystem::path& file, const std::vector<std
   return downsample(renderer.renderFrame(0).image, kTruthSupersample);
 }
 
+// Far terrain's truth: frame 0 of the scene (without the swept values) with full detail to its far edge.
+Truth lodTruth(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
+  const SceneFile scene = loadScene(file, overrides);
+  SceneRenderer renderer(lodTruthScene(scene));
+  Truth t;
+  t.fullDetail = scene.viewDistance * double(kChunkSize);
+  t.farEdge = scene.lod.distance * double(kChunkSize);
+  FrameRequest exact;
+  exact.readBack = true;
+  t.lod = renderer.renderFrame(0, exact);
+  FrameRequest half;
+  half.renderScale = 0.5f;
+  t.lodHalf = renderer.renderFrame(0, half).image;
+  return t;
+}
+
 // Every combination, the last sweep varying fastest.
 std::vector<std::vector<std::string>> combinations(const std::vector<Sweep>& sweeps) {
   std::vector<std::vector<std::string>> out{{}};
@@ -150,7 +198,7 @@ std::vector<std::vector<std::string>> combinations(const std::vector<Sweep>& swe
 
 Row measure(const std::filesystem::path& file, std::vector<std::string> settings,
             const std::vector<Sweep>& sweeps, const std::vector<std::string>& values, Measure what,
-            const Image& truth) {
+            const Truth& truth) {
   for (std::size_t i = 0; i < sweeps.size(); ++i) settings.push_back(sweeps[i].key + "=" + values[i]);
   const SceneFile scene = loadScene(file, settings);
   SceneRenderer renderer(scene);
@@ -165,9 +213,11 @@ Row measure(const std::filesystem::path& file, std::vector<std::string> settings
   if (what == Measure::Reflections) {
     measureReflections(renderer, frame, row);
   } else if (what == Measure::Antialiasing) {
-    measureAntialiasing(frame, truth, row);
+    measureAntialiasing(frame, truth.image, row);
     // The scale changes every pass's cost but the shadow map's, which would only hide the rest.
     row.costMs = row.totalMs - msOf(frame, "shadow");
+  } else if (what == Measure::Lod) {
+    measureLod(frame, truth, row);
   } else {
     measureShadows(renderer, frame, row);
   }
@@ -215,9 +265,11 @@ void writePlot(const std::filesystem::path& file, const std::vector<Sweep>& swee
   }
   const char* x = what == Measure::Reflections    ? "reflection ms"
                   : what == Measure::Antialiasing ? "frame ms without the shadow map"
+                  : what == Measure::Lod          ? "far terrain ms"
                                                   : "shadow + lighting ms";
   const char* y = what == Measure::Reflections    ? "disagreeing with the truth %"
                   : what == Measure::Antialiasing ? "mean error against 3x3 supersampling %"
+                  : what == Measure::Lod          ? "mean error against full detail %"
                                                   : "misclassified %";
   saveImage(file, scatterPlot(points, x, y, sweeps[by].values));
 }
@@ -243,16 +295,18 @@ Sweep parseSweep(const std::string& text) {
 int runSweep(const std::filesystem::path& scene, const std::vector<std::string>& overrides,
              const std::vector<Sweep>& sweeps, const std::filesystem::path& out) {
   const Measure what = measureOf(sweeps);
-  const Image truth = what == Measure::Antialiasing ? supersampledTruth(scene, overrides) : Image();
+  Truth truth;
+  if (what == Measure::Antialiasing) truth.image = supersampledTruth(scene, overrides);
+  if (what == Measure::Lod) truth = lodTruth(scene, overrides);
   std::vector<Row> rows;
   for (const auto& values : combinations(sweeps)) {
     rows.push_back(measure(scene, overrides, sweeps, values, what, truth));
     const Row& r = rows.back();
     std::string name;
     for (std::size_t i = 0; i < sweeps.size(); ++i) name += (i ? " " : "") + sweeps[i].key + "=" + values[i];
-    const char* error = what == Measure::Reflections    ? "disagreeing"
-                        : what == Measure::Antialiasing ? "mean error"
-                                                        : "misclassified";
+    const char* error = what == Measure::Reflections                            ? "disagreeing"
+                        : what == Measure::Antialiasing || what == Measure::Lod ? "mean error"
+                                                                                : "misclassified";
     std::printf("%s: %s %.3f %% of %zu px, %.1f ms\n", name.c_str(), error, r.errorPct, r.evaluated,
                 r.costMs);
     std::fflush(stdout);

@@ -4,7 +4,8 @@
 // shadow error against shadow + lighting ms; when a render.reflections key is swept, the share of
 // reflections disagreeing with the truth against the reflection pass's ms; when render.antialiasing or
 // render.scale is, the frame's mean error against its 3 x 3 supersampled truth against the frame's ms
-// (but the shadow map's).
+// (but the shadow map's); when a render.lod key is, far terrain's error against full detail out to the
+// scene's far edge (lod/, scene_render/lod_error.h) against the far terrain pass's ms.
 
 #include <filesystem>
 #include <string>
