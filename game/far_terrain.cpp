@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "lod/chunk_tiles.h"
+#include "lod/generator_tiles.h"
 
 namespace terrasol {
 
@@ -20,14 +21,10 @@ FarTerrain::FarTerrain(const LodSettings& settings, const PlayWorld& world, LodP
                LodLevels{settings.minLevel, settings.detail}, 1) {}
 
 LodTile FarTerrain::tile(LodTileKey key) const {
-  return sampleTile(key, [&](int x, int z) -> std::optional<LodColumn> {
-    {
-      std::lock_guard lock(editsMutex_);
-      if (const auto it = edited_.find({x, z}); it != edited_.end()) return it->second;
-    }
-    const std::optional<SurfaceColumn> c = generator_.surfaceColumn(x, z);
-    if (!c) return std::nullopt;
-    return LodColumn{c->height, c->top, c->water, c->waterBlock, climateOnly(c->climate)};
+  return tileFromGenerator(generator_, key, [&](int x, int z) -> std::optional<LodColumn> {
+    std::lock_guard lock(editsMutex_);
+    if (const auto it = edited_.find({x, z}); it != edited_.end()) return it->second;
+    return std::nullopt;
   });
 }
 

@@ -28,6 +28,7 @@ struct PresetSettings {
   float fogDensity;  // height fog at its base (0: none)
   bool shafts;
   int lodDistance;  // chunks of far terrain (0: none)
+  float lodDetail;  // its tiles split while nearer than this times their width
 };
 
 // Low keeps shadows (they are the look) and leaves out the rest: a slow llvmpipe machine's; medium adds
@@ -35,10 +36,12 @@ struct PresetSettings {
 // and ultra are a GPU's, with fancy clouds and a light haze the sun's shafts show in.
 inline constexpr float kPresetHaze = 0.004f;
 inline constexpr std::array<PresetSettings, 4> kPresetSettings{{
-    {3, 1024, 64.0f, 1, false, 0.25f, 12, Antialiasing::None, false, CloudMode::Off, 0.0f, false, 32},
-    {4, 1024, 64.0f, 1, false, 0.25f, 12, Antialiasing::Fxaa, false, CloudMode::Flat, 0.0f, false, 48},
-    {8, 2048, 96.0f, 1, true, 0.25f, 12, Antialiasing::Taa, true, CloudMode::Fancy, kPresetHaze, true, 128},
-    {12, 4096, 128.0f, 2, true, 0.5f, 24, Antialiasing::Taa, true, CloudMode::Fancy, kPresetHaze, true, 256},
+    {3, 1024, 64.0f, 1, false, 0.25f, 12, Antialiasing::None, false, CloudMode::Off, 0.0f, false, 32, 0.75f},
+    {4, 1024, 64.0f, 1, false, 0.25f, 12, Antialiasing::Fxaa, false, CloudMode::Flat, 0.0f, false, 48, 1.0f},
+    {8, 2048, 96.0f, 1, true, 0.25f, 12, Antialiasing::Taa, true, CloudMode::Fancy, kPresetHaze, true, 128,
+     2.0f},
+    {12, 4096, 128.0f, 2, true, 0.5f, 24, Antialiasing::Taa, true, CloudMode::Fancy, kPresetHaze, true, 256,
+     2.0f},
 }};
 
 inline const PresetSettings& presetSettings(RenderPreset preset) {
@@ -58,7 +61,7 @@ std::optional<RenderPreset> presetOf(const Settings& s) {
         s.reflections.enabled == p.reflections && s.reflections.resolutionScale == p.reflectionScale &&
         s.reflections.maxSteps == p.reflectionSteps && s.antialiasing == p.antialiasing &&
         s.bloom.enabled == p.bloom && s.clouds.mode == p.clouds && s.fog.density == p.fogDensity &&
-        s.shafts.enabled == p.shafts && s.lod.distance == p.lodDistance)
+        s.shafts.enabled == p.shafts && s.lod.distance == p.lodDistance && s.lod.detail == p.lodDetail)
       return static_cast<RenderPreset>(i);
   }
   return std::nullopt;
@@ -83,6 +86,7 @@ void applyPreset(RenderPreset preset, Settings& s) {
   s.fog.density = p.fogDensity;
   s.shafts.enabled = p.shafts;
   s.lod.distance = p.lodDistance;
+  s.lod.detail = p.lodDetail;
 }
 
 }  // namespace terrasol

@@ -1,14 +1,18 @@
 #pragma once
 // Far terrain straight from a chunk generator: a tile's cells from its column rule
 // (ChunkGenerator::surfaceColumn) at the sampled columns, with no chunk made, so a world's horizon is
-// there in moments. Caves, trees and plants are not sampled: from afar the ground's shape and colour
-// are what shows. A generator with no column rule leaves the cells empty.
+// there in moments, with the crowns of the trees it would grow (ChunkGenerator::treeCrowns) over it.
+// Caves and plants are not sampled: from afar the ground's shape and colour are what shows. A
+// generator with no column rule leaves the cells empty.
 
+#include "lod/lod_summary.h"
 #include "lod/lod_tile.h"
 #include "world/generator.h"
 
 namespace terrasol {
 
-LodTile tileFromGenerator(const ChunkGenerator& generator, LodTileKey key);
+// `edited`: columns that differ from the generator's now (the player's edits), taken as they are.
+LodTile tileFromGenerator(const ChunkGenerator& generator, LodTileKey key,
+                          const LodColumnSource& edited = {});
 
 }  // namespace terrasol

@@ -25,21 +25,28 @@ struct Corner {
   int cellX, cellZ;  // -1..kLodTileCells
 };
 
+// Quads gathered by the face they show, then laid out face after face (LodMesh::faceStart).
 class QuadWriter {
  public:
-  explicit QuadWriter(LodMesh& mesh) : mesh_(mesh) {}
-
   // Four corners counter-clockwise seen from outside.
   void quad(const std::array<Corner, 4>& c, std::uint32_t material) {
+    std::vector<LodVertex>& out = byFace_[(material >> kLodFaceShift) & 7u];
     for (const Corner& k : c) {
-      mesh_.vertices.push_back({static_cast<std::int16_t>(k.x), static_cast<std::int16_t>(k.z),
-                                static_cast<std::int16_t>(k.y), static_cast<std::uint8_t>(k.cellX + 1),
-                                static_cast<std::uint8_t>(k.cellZ + 1), material});
+      out.push_back({static_cast<std::int16_t>(k.x), static_cast<std::int16_t>(k.z),
+                     static_cast<std::int16_t>(k.y), static_cast<std::uint8_t>(k.cellX + 1),
+                     static_cast<std::uint8_t>(k.cellZ + 1), material});
     }
+  }
+  void finish(LodMesh& mesh) const {
+    for (std::size_t f = 0; f < byFace_.size(); ++f) {
+      mesh.faceStart[f] = static_cast<std::uint32_t>(mesh.vertices.size() / 4);
+      mesh.vertices.insert(mesh.vertices.end(), byFace_[f].begin(), byFace_[f].end());
+    }
+    mesh.faceStart[byFace_.size()] = static_cast<std::uint32_t>(mesh.vertices.size() / 4);
   }
 
  private:
-  LodMesh& mesh_;
+  std::array<std::vector<LodVertex>, 6> byFace_;
 };
 
 struct Top {
@@ -98,8 +105,8 @@ int lodSurfaceY(const LodCell& cell) {
 }
 
 LodMesh meshLodTile(const LodTile& tile, const LodPalette& palette, bool allWalls) {
-  LodMesh mesh{tile.key, {}, kMinY, kMinY, allWalls};
-  QuadWriter out(mesh);
+  LodMesh mesh{tile.key, {}, kMinY, kMinY, allWalls, {}};
+  QuadWriter out;
   const auto inside = [](int cx, int cz) {
     return cx >= 0 && cz >= 0 && cx < kLodTileCells && cz < kLodTileCells;
   };
@@ -153,6 +160,7 @@ LodMesh meshLodTile(const LodTile& tile, const LodPalette& palette, bool allWall
       }
     }
   mergeTops(tops, out);
+  out.finish(mesh);
   mesh.maxY = (maxY + kLodYSteps - 1) / kLodYSteps;
   return mesh;
 }

@@ -7,6 +7,8 @@
 // even those of no height, because the renderer lowers the cells full detail covers and those walls then
 // close the step down to them. Plain C++: built on worker threads, uploaded by the renderer.
 
+#include <array>
+#include <cstdint>
 #include <glm/vec3.hpp>
 #include <vector>
 
@@ -40,6 +42,9 @@ struct LodMesh {
   std::vector<LodVertex> vertices;  // quads, four corners each, counter-clockwise seen from outside
   int minY = 0, maxY = 0;           // blocks: the box the quads lie in (skirts reach kMinY)
   bool allWalls = false;            // meshed to meet full detail
+  // The quads showing face d (Direction) are [faceStart[d], faceStart[d + 1]): a pass leaves out the
+  // walls turned away from the camera for the whole tile.
+  std::array<std::uint32_t, 7> faceStart{};
 };
 
 // `allWalls`: the tile touches full detail (see above).

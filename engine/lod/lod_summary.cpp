@@ -7,6 +7,17 @@ namespace terrasol {
 
 LodCell summarizeColumns(std::span<const LodColumn> columns) {
   LodCell cell;
+  // The block most columns show on top (the highest such column's among equal counts): a forest
+  // cell with one crown in four columns stays grass-coloured, though the crown's height is kept.
+  std::size_t mostShown = 0;
+  int shownTop = kNoLodHeight;
+  BlockId shown = kAir;
+  for (const LodColumn& c : columns) {
+    std::size_t n = 0;
+    for (const LodColumn& o : columns) n += o.surface == c.surface ? 1 : 0;
+    if (n > mostShown || (n == mostShown && c.top > shownTop))
+      mostShown = n, shownTop = c.top, shown = c.surface;
+  }
   std::size_t wet = 0;
   int waterTop = kNoLodHeight;
   BlockId waterBlock = kAir;
@@ -24,6 +35,7 @@ LodCell summarizeColumns(std::span<const LodColumn> columns) {
       }
     }
   }
+  if (cell.top != kNoLodHeight) cell.surface = shown;
   if (2 * wet > columns.size()) {
     cell.water = waterTop;
     cell.waterBlock = waterBlock;

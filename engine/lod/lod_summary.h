@@ -14,7 +14,8 @@ namespace terrasol {
 using LodColumn = LodCell;
 
 // The cell over `columns`: its top is the highest column's, so ridges and peaks keep their height from
-// afar (a mean would sink them into the hills), the block on it that column's; water where it lies
+// afar (a mean would sink them into the hills), the block on it the one most columns show (a lone
+// tree's crown does not paint its cell leaves); water where it lies
 // over more than half the columns, at the highest such surface, so a coast stays where it is and a
 // puddle does not flood its cell. No columns, or none with ground: an empty cell.
 LodCell summarizeColumns(std::span<const LodColumn> columns);

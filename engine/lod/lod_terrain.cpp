@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <utility>
 
+#include "core/thread_priority.h"
+
 namespace terrasol {
 namespace {
 
@@ -83,6 +85,7 @@ LodTerrainStats LodTerrain::stats() const {
 }
 
 void LodTerrain::work(std::stop_token stop) {
+  lowerThisThreadsPriority();  // as the chunk and mesh workers: the frame comes first
   std::unique_lock lock(mutex_);
   while (!stop.stop_requested()) {
     if (!wake_.wait(lock, stop, [&] { return !queue_.empty(); })) return;

@@ -1,5 +1,6 @@
 #include "scene_render/scene_lod.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <thread>
@@ -48,7 +49,9 @@ void SceneLod::update(glm::dvec3 camera, LodMeshes& meshes) {
   v.covered = ChunkSquare{centre - view, centre + view};
   terrain_.update(v, true);
   if (std::optional<LodSet> set = terrain_.takeSet()) meshes.show(*set);
-  lastMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  longestMs_ =
+      std::max(longestMs_,
+               std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
 }
 
 }  // namespace terrasol

@@ -20,7 +20,8 @@ class SceneLod {
   // Builds what a camera at `camera` needs and shows it in `meshes`.
   void update(glm::dvec3 camera, LodMeshes& meshes);
   LodTerrainStats stats() const { return terrain_.stats(); }
-  double lastUpdateMs() const { return lastMs_; }
+  // The longest wait for a frame's tiles so far: the first frame's, which builds them all.
+  double longestUpdateMs() const { return longestMs_; }
 
  private:
   SceneLod(const LodSettings& settings, const SceneWorld& world, LodPalette palette);
@@ -28,7 +29,7 @@ class SceneLod {
   const SceneWorld& world_;
   LodSettings settings_;
   LodTerrain terrain_;
-  double lastMs_ = 0.0;
+  double longestMs_ = 0.0;
 };
 
 }  // namespace terrasol

@@ -160,7 +160,7 @@ DeferredRenderer& SceneRenderer::renderer() {
 std::optional<SceneLodStats> SceneRenderer::lodStats() const {
   if (!world_->lod) return std::nullopt;
   const LodTerrainStats t = world_->lod->stats();
-  SceneLodStats s{t.tiles, t.levels, 0, t.cachedBytes, gpu_->lod.gpuBytes(), world_->lod->lastUpdateMs()};
+  SceneLodStats s{t.tiles, t.levels, 0, t.cachedBytes, gpu_->lod.gpuBytes(), world_->lod->longestUpdateMs()};
   for (const LodMeshes::Tile& tile : gpu_->lod.tiles()) s.quads += static_cast<std::size_t>(tile.quads);
   return s;
 }

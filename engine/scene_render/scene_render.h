@@ -30,7 +30,7 @@ struct SceneRenderStats {
 struct SceneLodStats {
   int tiles = 0, levels = 0;
   std::size_t quads = 0, cpuBytes = 0, gpuBytes = 0;
-  double buildMs = 0.0;  // the last frame's wait for its tiles
+  double buildMs = 0.0;  // the longest wait for a frame's tiles: the first frame's, which builds them all
 };
 
 struct RenderedFrame {
@@ -56,6 +56,9 @@ struct FrameRequest {
 
 // The scene with full detail out to its far terrain's edge and no far terrain: far terrain's truth.
 SceneFile lodTruthScene(const SceneFile& scene);
+// The truth is made only out to this many chunks: each costs some 300 KB, so 32 takes ~1.3 GB and 64
+// five times that.
+inline constexpr int kMaxLodTruthChunks = 32;
 
 class SceneRenderer {
  public:

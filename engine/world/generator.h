@@ -24,6 +24,16 @@ struct SurfaceColumn {
   TintClimate climate = kPlainsTint;  // its biome's grass, leaves and water
 };
 
+// A tree's crown as far terrain sees it: the column it stands on, and its leaves as two steps: the
+// narrow top (within `radius` of the trunk on each axis, up to `top`) over a wider layer (within
+// `wideRadius`, up to `wideTop`).
+struct TreeCrown {
+  int x = 0, z = 0;
+  int radius = 0, top = 0;
+  int wideRadius = 0, wideTop = 0;
+  BlockId leaves = kAir;
+};
+
 class ChunkGenerator {
  public:
   virtual ~ChunkGenerator() = default;
@@ -37,6 +47,8 @@ class ChunkGenerator {
   virtual void fillTints(Chunk& /*chunk*/) const {}
   // A column's ground without making its chunk, where the generator can say (far terrain).
   virtual std::optional<SurfaceColumn> surfaceColumn(int /*x*/, int /*z*/) const { return std::nullopt; }
+  // The crowns of the trees generate() roots in chunk `at` (far terrain's forests).
+  virtual void treeCrowns(ChunkPos /*at*/, std::vector<TreeCrown>& /*out*/) const {}
 };
 
 struct FlatLayer {

@@ -37,6 +37,9 @@ class TerrainGenerator final : public ChunkGenerator {
   Biome biomeAt(int x, int z) const { return context().biomeAt(x, z); }
   // A column's ground and water, from the same rules generate() uses.
   std::optional<SurfaceColumn> surfaceColumn(int x, int z) const override;
+  void treeCrowns(ChunkPos at, std::vector<TreeCrown>& out) const override {
+    trees_.crowns(at, context(), out);
+  }
   const BiomeSource& biomes() const { return biomes_; }
 
  private:

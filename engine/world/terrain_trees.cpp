@@ -18,23 +18,36 @@ void setWorld(Chunk& chunk, int wx, int y, int wz, BlockId id) {
   chunk.set(localOf(wx), y, localOf(wz), id);
 }
 
-// One tree rooted at (tx, ground, tz), of its biome's kind: oak (now and then a birch in a forest),
-// birch, spruce in the taiga and the snow, acacia on the savanna. Each chunk writes its own blocks.
+// A tree's kind and size, of its biome: oak (now and then a birch in a forest), birch, spruce in the
+// taiga and the snow, acacia on the savanna; none in the desert (trunk 0).
+struct TreeShape {
+  BlockId log, leaves;
+  int trunk = 0;
+  bool spruce = false, flat = false;
+};
+
+TreeShape treeShapeOf(const TerrainBlocks& b, Biome biome, std::uint64_t h) {
+  TreeShape s{b.log, b.leaves, 4 + static_cast<int>((h >> 8) % 3)};
+  if (biome == Biome::BirchForest || (biome == Biome::Forest && (h >> 56) % 5 == 0)) {
+    s.log = b.birchLog, s.leaves = b.birchLeaves, s.trunk += 1;
+  } else if (biome == Biome::Taiga || biome == Biome::SnowyPlains) {
+    s.log = b.spruceLog, s.leaves = b.spruceLeaves, s.spruce = true, s.trunk += 3;
+  } else if (biome == Biome::Savanna) {
+    s.log = b.acaciaLog, s.leaves = b.acaciaLeaves, s.flat = true;
+  } else if (biome == Biome::Desert) {
+    s.trunk = 0;
+  }
+  return s;
+}
+
+// One tree rooted at (tx, ground, tz). Each chunk writes its own blocks.
 void placeTree(Chunk& chunk, const TerrainBlocks& b, Biome biome, int tx, int ground, int tz,
                std::uint64_t h) {
-  BlockId log = b.log, leaves = b.leaves;
-  bool spruce = false, flat = false;
-  int trunk = 4 + static_cast<int>((h >> 8) % 3);
-  if (biome == Biome::BirchForest || (biome == Biome::Forest && (h >> 56) % 5 == 0)) {
-    log = b.birchLog, leaves = b.birchLeaves, trunk += 1;
-  } else if (biome == Biome::Taiga || biome == Biome::SnowyPlains) {
-    log = b.spruceLog, leaves = b.spruceLeaves, spruce = true, trunk += 3;
-  } else if (biome == Biome::Savanna) {
-    log = b.acaciaLog, leaves = b.acaciaLeaves, flat = true;
-  } else if (biome == Biome::Desert) {
-    return;
-  }
-  const int top = ground + trunk;
+  const TreeShape shape = treeShapeOf(b, biome, h);
+  if (shape.trunk == 0) return;
+  const BlockId log = shape.log, leaves = shape.leaves;
+  const bool spruce = shape.spruce, flat = shape.flat;
+  const int top = ground + shape.trunk;
   const auto leaf = [&](int lx, int y, int lz) {
     if (insideChunk(chunk, lx, lz) && getWorld(chunk, lx, y, lz) == kAir) setWorld(chunk, lx, y, lz, leaves);
   };
@@ -70,32 +83,54 @@ void placeTree(Chunk& chunk, const TerrainBlocks& b, Biome biome, int tx, int gr
 
 }  // namespace
 
+template <class F>
+void TerrainTrees::forEachTree(ChunkPos at, const TerrainContext& t, F&& f) const {
+  // Forest density varies smoothly: none on open plains, up to 8 trees per chunk in woods; forest
+  // biomes are wooded throughout, savannas have lone trees, deserts none.
+  const Biome area = t.biomeAt(at.x * kChunkSize + kChunkSize / 2, at.z * kChunkSize + kChunkSize / 2);
+  const double forest = forests_.fractal(at.x / 12.0, at.z / 12.0, 2) * 2.0;
+  int attempts = forest > 0.1 ? static_cast<int>(std::min(8.0, 2.0 + forest * 10.0)) : 1;
+  if (area == Biome::Forest || area == Biome::BirchForest || area == Biome::Taiga)
+    attempts = std::max(attempts, 4);
+  if (area == Biome::Savanna) attempts = 1;
+  if (area == Biome::Desert) attempts = 0;
+  for (int i = 0; i < attempts; ++i) {
+    const std::uint64_t h = hashCoords(t.seed ^ kTreeSalt, at.x, i, at.z);
+    if (attempts == 1 && (h >> 60) > 3) continue;  // lone trees: 1 chunk in 4
+    const int tx = at.x * kChunkSize + static_cast<int>(h & kLastCell),
+              tz = at.z * kChunkSize + static_cast<int>((h >> kChunkShift) & kLastCell);
+    const int ground = t.shape.surfaceHeight(tx, tz);
+    if (ground <= TerrainShape::kSeaLevel + 1 || ground >= TerrainShape::kRockyFrom)
+      continue;  // not on beaches, sea beds or rock
+    if (t.caves.density(tx, ground, tz) < 0.0 && TerrainCaves::carveAllowed(ground, ground))
+      continue;  // ground carved away
+    f(tx, ground, tz, h, t.biomes.biomeAt(tx, tz, ground));
+  }
+}
+
 void TerrainTrees::place(Chunk& chunk, const TerrainContext& t) const {
   const ChunkPos p = chunk.pos();
   for (int ncz = p.z - 1; ncz <= p.z + 1; ++ncz)
     for (int ncx = p.x - 1; ncx <= p.x + 1; ++ncx) {
-      // Forest density varies smoothly: none on open plains, up to 8 trees per chunk in woods; forest
-      // biomes are wooded throughout, savannas have lone trees, deserts none.
-      const Biome area = t.biomeAt(ncx * kChunkSize + kChunkSize / 2, ncz * kChunkSize + kChunkSize / 2);
-      const double forest = forests_.fractal(ncx / 12.0, ncz / 12.0, 2) * 2.0;
-      int attempts = forest > 0.1 ? static_cast<int>(std::min(8.0, 2.0 + forest * 10.0)) : 1;
-      if (area == Biome::Forest || area == Biome::BirchForest || area == Biome::Taiga)
-        attempts = std::max(attempts, 4);
-      if (area == Biome::Savanna) attempts = 1;
-      if (area == Biome::Desert) attempts = 0;
-      for (int i = 0; i < attempts; ++i) {
-        const std::uint64_t h = hashCoords(t.seed ^ kTreeSalt, ncx, i, ncz);
-        if (attempts == 1 && (h >> 60) > 3) continue;  // lone trees: 1 chunk in 4
-        const int tx = ncx * kChunkSize + static_cast<int>(h & kLastCell),
-                  tz = ncz * kChunkSize + static_cast<int>((h >> kChunkShift) & kLastCell);
-        const int ground = t.shape.surfaceHeight(tx, tz);
-        if (ground <= TerrainShape::kSeaLevel + 1 || ground >= TerrainShape::kRockyFrom)
-          continue;  // not on beaches, sea beds or rock
-        if (t.caves.density(tx, ground, tz) < 0.0 && TerrainCaves::carveAllowed(ground, ground))
-          continue;  // ground carved away
-        placeTree(chunk, t.blocks, t.biomes.biomeAt(tx, tz, ground), tx, ground, tz, h);
-      }
+      forEachTree({ncx, ncz}, t, [&](int tx, int ground, int tz, std::uint64_t h, Biome biome) {
+        placeTree(chunk, t.blocks, biome, tx, ground, tz, h);
+      });
     }
+}
+
+void TerrainTrees::crowns(ChunkPos at, const TerrainContext& t, std::vector<TreeCrown>& out) const {
+  forEachTree(at, t, [&](int tx, int ground, int tz, std::uint64_t h, Biome biome) {
+    const TreeShape s = treeShapeOf(t.blocks, biome, h);
+    if (s.trunk == 0) return;
+    // As placeTree grows them: an oak's two wide layers under its narrow top, a spruce's cone (radius
+    // 2 three below its top), an acacia's flat layer with a narrow one on it.
+    const int top = ground + s.trunk;
+    if (s.spruce) {
+      out.push_back({tx, tz, 1, top, 2, top - 3, s.leaves});  // its one-column tip left out
+    } else {
+      out.push_back({tx, tz, 1, top + 1, s.flat ? 3 : 2, s.flat ? top : top - 1, s.leaves});
+    }
+  });
 }
 
 }  // namespace terrasol

@@ -184,6 +184,8 @@ nlohmann::json frameReport(int index, const RenderedFrame& frame) {
            {{"drawn", frame.stats.propsDrawn},
             {"culled", frame.stats.propsCulled},
             {"shadow_casters", frame.stats.propShadowCasters}}},
+          {"lod_tiles", {{"drawn", frame.stats.lodTilesDrawn}, {"culled", frame.stats.lodTilesCulled}}},
+          {"lod_quads_drawn", frame.stats.lodQuadsDrawn},
           {"passes_skipped", skipped}};
 }
 
@@ -248,7 +250,8 @@ int renderScene(const Options& o, const SceneFile& scene, SceneRenderer& rendere
   }
   // Far terrain's truth: full detail out to its far edge, drawn for the report.
   std::optional<SceneRenderer> lodTruth;
-  if (!o.report.empty() && renderer.lodStats()) lodTruth.emplace(lodTruthScene(scene));
+  const bool lodMeasured = !o.report.empty() && renderer.lodStats();
+  if (lodMeasured && scene.lod.distance <= kMaxLodTruthChunks) lodTruth.emplace(lodTruthScene(scene));
   std::deque<Image> truths;  // the last kGhostFrames + 1, for ghosting
   for (int i = 0; i < renderer.frames(); ++i) {
     const auto start = std::chrono::steady_clock::now();
@@ -277,6 +280,10 @@ int renderScene(const Options& o, const SceneFile& scene, SceneRenderer& rendere
       if (ghost) frames.back()["aa_error"]["ghost"] = ghostJson(*ghost);
       if (frame.geometry.shadowMapShown)
         frames.back()["shadow_error"] = shadowReport(renderer, i, frame, request);
+      if (lodMeasured && !lodTruth)
+        frames.back()["lod_error"] = {
+            {"skipped",
+             "the truth is made out to " + std::to_string(kMaxLodTruthChunks) + " chunks at most"}};
       if (lodTruth) {
         FrameRequest exact;
         exact.readBack = true;

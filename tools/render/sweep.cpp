@@ -297,7 +297,13 @@ int runSweep(const std::filesystem::path& scene, const std::vector<std::string>&
   const Measure what = measureOf(sweeps);
   Truth truth;
   if (what == Measure::Antialiasing) truth.image = supersampledTruth(scene, overrides);
-  if (what == Measure::Lod) truth = lodTruth(scene, overrides);
+  if (what == Measure::Lod) {
+    if (loadScene(scene, overrides).lod.distance > kMaxLodTruthChunks)
+      throw Error("--sweep render.lod.*: far terrain's truth is made out to " +
+                  std::to_string(kMaxLodTruthChunks) +
+                  " chunks at most; the scene's render.lod.distance is more");
+    truth = lodTruth(scene, overrides);
+  }
   std::vector<Row> rows;
   for (const auto& values : combinations(sweeps)) {
     rows.push_back(measure(scene, overrides, sweeps, values, what, truth));

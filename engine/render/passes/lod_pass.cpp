@@ -1,5 +1,8 @@
 #include "render/passes/lod_pass.h"
 
+#include <array>
+#include <cstdint>
+
 #include "render/gl_slots.h"
 
 namespace terrasol {
@@ -46,9 +49,26 @@ void LodPass::execute(Frame& frame) {
     u.maskOffset.set(glm::ivec2(key.minBlockX(), key.minBlockZ()) - maskBlock);
     u.masked.set(tile.mesh->allWalls);
     lod.bindTile(tile);
-    glDrawElements(GL_TRIANGLES, tile.quads * 6, GL_UNSIGNED_INT, nullptr);
+    // Each face's quads where some of the tile lies on that face's front side; runs drawn as one.
+    const std::array<bool, 6> facing = {hi.x > 0.0f, lo.x < 0.0f, false, lo.y<0.0f, hi.z> 0.0f, lo.z < 0.0f};
+    const auto& start = tile.mesh->faceStart;
+    for (std::size_t f = 0; f < facing.size();) {
+      if (!facing[f]) {
+        ++f;
+        continue;
+      }
+      std::size_t end = f + 1;
+      while (end < facing.size() && facing[end]) ++end;
+      const GLsizei quads = static_cast<GLsizei>(start[end] - start[f]);
+      if (quads > 0) {
+        glDrawElements(
+            GL_TRIANGLES, quads * 6, GL_UNSIGNED_INT,
+            reinterpret_cast<const void*>(static_cast<std::uintptr_t>(start[f]) * 6 * sizeof(GLuint)));
+        frame.stats.lodQuadsDrawn += quads;
+      }
+      f = end;
+    }
     ++frame.stats.lodTilesDrawn;
-    frame.stats.lodQuadsDrawn += tile.quads;
   }
 }
 
