@@ -79,6 +79,16 @@ std::vector<ShaderDefine> lightingDefines(const RendererOptions& options) {
   return defines;
 }
 
+void bindForOpaqueGeometry(const GBuffer& gbuffer) {
+  glBindFramebuffer(GL_FRAMEBUFFER, gbuffer.geometryFramebuffer());
+  glViewport(0, 0, gbuffer.size().x, gbuffer.size().y);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDepthMask(GL_TRUE);
+  glEnable(GL_CULL_FACE);
+  glDisable(GL_BLEND);
+}
+
 std::vector<ShaderDefine> surfaceDefines(const RendererOptions& options) {
   std::vector<ShaderDefine> defines;
   if (options.reflections.enabled) defines.push_back({"REFLECTIONS", "1"});

@@ -54,4 +54,8 @@ std::vector<ShaderDefine> lightingDefines(const RendererOptions& options);
 // Water and glass reflecting (render.reflections) and water's waves (render.water.waves).
 std::vector<ShaderDefine> surfaceDefines(const RendererOptions& options);
 
+// The G-buffer's geometry targets bound over its whole size, for opaque surfaces: depth tested (less)
+// and written, back faces culled, no blending. The geometry pass and far terrain draw with it.
+void bindForOpaqueGeometry(const GBuffer& gbuffer);
+
 }  // namespace terrasol

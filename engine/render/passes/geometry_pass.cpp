@@ -21,18 +21,12 @@ void GeometryPass::setup(FrameGraph::Builder& builder, Frame& frame) {
 
 void GeometryPass::execute(Frame& frame) {
   const GBuffer& gbuffer = *frame.gbuffer;
+  bindForOpaqueGeometry(gbuffer);  // depth writes on before the clear, which they mask
   const GLuint fbo = gbuffer.geometryFramebuffer();
-  glBindFramebuffer(GL_FRAMEBUFFER, fbo);
-  glViewport(0, 0, gbuffer.size().x, gbuffer.size().y);
   const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
   const float farDepth = 1.0f;
   for (int i = 0; i < gbuffer::kTargets; ++i) glClearNamedFramebufferfv(fbo, GL_COLOR, i, zero);
   glClearNamedFramebufferfv(fbo, GL_DEPTH, 0, &farDepth);
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LESS);
-  glDepthMask(GL_TRUE);
-  glEnable(GL_CULL_FACE);
-  glDisable(GL_BLEND);
   const FrameView& view = frame.view;
   for (const Blocks* u : {&opaque_.u, &cutout_.u}) {
     u->viewProjection.set(view.viewProjection);

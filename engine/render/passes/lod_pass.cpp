@@ -18,14 +18,7 @@ void LodPass::setup(FrameGraph::Builder& builder, Frame& frame) {
 
 void LodPass::execute(Frame& frame) {
   const LodMeshes& lod = *frame.inputs.lod;
-  const GBuffer& gbuffer = *frame.gbuffer;
-  glBindFramebuffer(GL_FRAMEBUFFER, gbuffer.geometryFramebuffer());
-  glViewport(0, 0, gbuffer.size().x, gbuffer.size().y);
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LESS);
-  glDepthMask(GL_TRUE);
-  glEnable(GL_CULL_FACE);
-  glDisable(GL_BLEND);
+  bindForOpaqueGeometry(*frame.gbuffer);
   const FrameView& view = frame.view;
   const Uniforms& u = program_.u;
   u.viewProjection.set(view.viewProjection);
