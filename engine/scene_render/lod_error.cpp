@@ -51,30 +51,34 @@ class Surfaces {
   const RenderedFrame& f_;
 };
 
-// Sky through a surface: ground within kCrackReach pixels on both sides of the pixel (across or along
-// the row), the two no further apart than kCrackSpread of their distance: one surface with sky in it,
-// not a gap between a near ridge and a far one.
+// Sky through a surface: ground of one surface (no further apart than kCrackSpread of its distance)
+// within kCrackReach pixels above and below the pixel, or left and right with ground above it too.
+// A notch in a skyline (sky above, between two crowns) is not a hole: a silhouette drawn differently.
 constexpr int kCrackReach = 3;
 constexpr double kCrackSpread = 0.25;
 // Where the fog at the far edge (lib/sky.glsl: smoothstep from 0.8 to 1 of it) leaves half a surface
 // or more to see.
 constexpr double kVisibleEdge = 0.9;
 
-bool crack(const Surfaces& s, int x, int y, int width, int height) {
-  for (const glm::ivec2 step : {glm::ivec2(1, 0), glm::ivec2(0, 1)}) {
-    std::optional<double> side[2];
-    for (int k = 0; k < 2; ++k) {
-      const glm::ivec2 dir = k ? -step : step;
-      for (int i = 1; i <= kCrackReach && !side[k]; ++i) {
-        const glm::ivec2 p = glm::ivec2(x, y) + dir * i;
-        if (p.x < 0 || p.y < 0 || p.x >= width || p.y >= height) break;
-        if (!s.sky(p.x, p.y)) side[k] = s.horizontal(p.x, p.y);
-      }
-    }
-    if (side[0] && side[1] && std::abs(*side[0] - *side[1]) <= kCrackSpread * std::max(*side[0], *side[1]))
-      return true;
+// The distance of the nearest ground within kCrackReach pixels from (x, y) along `dir`.
+std::optional<double> groundAlong(const Surfaces& s, glm::ivec2 at, glm::ivec2 dir, glm::ivec2 size) {
+  for (int i = 1; i <= kCrackReach; ++i) {
+    const glm::ivec2 p = at + dir * i;
+    if (p.x < 0 || p.y < 0 || p.x >= size.x || p.y >= size.y) return std::nullopt;
+    if (!s.sky(p.x, p.y)) return s.horizontal(p.x, p.y);
   }
-  return false;
+  return std::nullopt;
+}
+
+bool oneSurface(std::optional<double> a, std::optional<double> b) {
+  return a && b && std::abs(*a - *b) <= kCrackSpread * std::max(*a, *b);
+}
+
+bool crack(const Surfaces& s, int x, int y, int width, int height) {
+  const glm::ivec2 at(x, y), size(width, height);
+  const std::optional<double> above = groundAlong(s, at, {0, -1}, size);
+  if (oneSurface(above, groundAlong(s, at, {0, 1}, size))) return true;
+  return above && oneSurface(groundAlong(s, at, {-1, 0}, size), groundAlong(s, at, {1, 0}, size));
 }
 
 }  // namespace

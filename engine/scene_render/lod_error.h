@@ -15,9 +15,9 @@ namespace terrasol {
 struct LodError {
   std::size_t band = 0;          // pixels compared
   double mean = 0.0, p99 = 0.0;  // per-pixel difference, the largest of the three channels, 0..1
-  // Far terrain shows sky where the truth has ground, between two pixels of one surface of its own
-  // (lod_error.cpp, crack): sky through the terrain, not a silhouette drawn a little lower; and nearer
-  // than 0.9 of the far edge, where the fog leaves half the surface to see.
+  // Far terrain shows sky where the truth has ground, under ground of its own and between two pixels of
+  // one surface (lod_error.cpp, crack): sky through the terrain, not a skyline drawn a little lower;
+  // nearer than 0.9 of the far edge, where the fog leaves half the surface to see.
   std::size_t holes = 0;
   // Sky in one picture and ground in the other (nearer than 0.9 of the far edge), silhouettes included.
   std::size_t skyDiffers = 0;
