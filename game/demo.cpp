@@ -10,11 +10,12 @@
 namespace terrasol {
 namespace {
 
-// Around the spawn area of seed 1 and back, while the sun crosses the sky and sets.
+// Around the spawn area of seed 1 and back, while the sun crosses the sky and sets; far terrain to 24
+// chunks shows the land round it.
 constexpr const char* kDemoScene = R"({
   "world": { "generator": "terrain", "seed": 1 },
   "sun_path_rotation": -25,
-  "render": { "view_distance": 4, "shadow": { "resolution": 2048, "distance": 96 } },
+  "render": { "view_distance": 4, "shadow": { "resolution": 2048, "distance": 96 }, "lod": { "distance": 24 } },
   "camera_path": { "frames": 3600, "keyframes": [
     { "t": 0.00, "position": [-40, 110, -40], "look_at": [0, 80, 0], "fov": 70, "time": 3000 },
     { "t": 0.25, "position": [30, 108, -45], "look_at": [0, 78, 10], "fov": 70, "time": 6000 },
