@@ -12,11 +12,11 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <optional>
-#include <random>
 #include <string>
 
 #include "core/error.h"
 #include "core/tool_main.h"
+#include "frame_report.h"
 #include "pack_render/pack_renderer.h"
 #include "platform/egl/egl_context.h"
 #include "progress.h"
@@ -25,7 +25,6 @@
 #include "scene_render/lod_error.h"
 #include "scene_render/reflection_truth.h"
 #include "scene_render/scene_render.h"
-#include "scene_render/shadow_truth.h"
 #include "sweep.h"
 
 namespace terrasol {
@@ -131,64 +130,6 @@ std::string frameName(const char* prefix, int frame) {
   return name;
 }
 
-// The frame's shadows against ray-traced truth, and their flicker: the same frame again with the shadow
-// map placed as if the camera had moved by a random fraction of a texel (the sun frozen, the view kept,
-// so every pixel shows the same world point in both).
-nlohmann::json shadowReport(SceneRenderer& renderer, int index, const RenderedFrame& frame,
-                            const FrameRequest& request) {
-  const float distance = renderer.scene().shadow.distance;
-  const ShadowError error = measureShadowError(renderer.world(), frame.pixels, frame.geometry, distance);
-  if (frame.geometry.shadowTexelWorld <= 0.0f) {
-    // A shader pack places its own map: there is no offset to move it by, so no flicker is measured.
-    nlohmann::json out = shadowErrorJson(error, 0.0, 0);
-    out["flicker_pct"] = nullptr;
-    return out;
-  }
-  std::mt19937 random(static_cast<std::uint32_t>(index) * 2654435761u + 1u);
-  std::uniform_real_distribution<double> within(-0.5, 0.5);
-  FrameRequest moved = request;
-  moved.timed = false;
-  moved.readBack = true;
-  moved.aside = true;
-  const double texel = frame.geometry.shadowTexelWorld;
-  moved.shadowCentreOffset =
-      glm::dvec3(within(random) * texel, within(random) * texel, within(random) * texel);
-  const RenderedFrame again = renderer.renderFrame(index, moved);
-  std::size_t compared = 0;
-  const double flicker = flickerPercent(frame.pixels, again.pixels, frame.geometry, distance, compared);
-  return shadowErrorJson(error, flicker, compared);
-}
-
-nlohmann::json frameReport(int index, const RenderedFrame& frame) {
-  nlohmann::json ms = nlohmann::json::object();
-  double total = 0.0;
-  for (const PassTiming& t : frame.timings) {
-    ms[t.pass] = t.ms;
-    total += t.ms;
-  }
-  ms["total"] = total;
-  nlohmann::json skipped = nlohmann::json::array();
-  for (const auto& s : frame.stats.passesSkipped) skipped.push_back({{"pass", s.pass}, {"why", s.why}});
-  return {{"frame", index},
-          {"ms", ms},
-          {"nan_pixels", frame.nanPixels},
-          {"chunks",
-           {{"drawn", frame.stats.sectionsDrawn},
-            {"culled", frame.stats.sectionsCulled},
-            {"hidden", frame.stats.sectionsHidden},
-            {"shadow_casters", frame.stats.shadowCasters},
-            {"shadow_casters_hidden", frame.stats.shadowCastersHidden},
-            {"shadow_casters_off_view", frame.stats.shadowCastersOffView}}},
-          {"quads", {{"drawn", frame.stats.quadsDrawn}, {"facing_away", frame.stats.quadsFacingAway}}},
-          {"props",
-           {{"drawn", frame.stats.propsDrawn},
-            {"culled", frame.stats.propsCulled},
-            {"shadow_casters", frame.stats.propShadowCasters}}},
-          {"lod_tiles", {{"drawn", frame.stats.lodTilesDrawn}, {"culled", frame.stats.lodTilesCulled}}},
-          {"lod_quads_drawn", frame.stats.lodQuadsDrawn},
-          {"passes_skipped", skipped}};
-}
-
 // One line per frame; true when it matches (or the golden was written on purpose).
 bool compareFrame(const Options& o, const SceneFile& scene, int index, const Image& image,
                   Progress& progress) {
@@ -285,14 +226,7 @@ int renderScene(const Options& o, const SceneFile& scene, SceneRenderer& rendere
             {"skipped",
              "the truth is made out to " + std::to_string(kMaxLodTruthChunks) + " chunks at most"}};
       if (lodTruth) {
-        FrameRequest exact;
-        exact.readBack = true;
-        const RenderedFrame truth = lodTruth->renderFrame(i, exact);
-        FrameRequest half;
-        half.renderScale = 0.5f;
-        const Image halfImage = lodTruth->renderFrame(i, half).image;
-        const LodError e = measureLodError(frame, truth, scene.viewDistance * double(kChunkSize),
-                                           scene.lod.distance * double(kChunkSize), &halfImage);
+        const LodError e = lodReport(*lodTruth, i, frame, scene);
         frames.back()["lod_error"] = lodErrorJson(e);
         progress.line(frameName("frame", i) + ": lod_error mean " + std::to_string(e.mean).substr(0, 6) +
                       " (half resolution " + std::to_string(e.halfResolutionMean.value_or(0.0)).substr(0, 6) +
