@@ -6,22 +6,27 @@ namespace {
 constexpr int kUp = static_cast<int>(Direction::Up);
 constexpr int kNorth = static_cast<int>(Direction::North);
 
-// A texture's mean colour over its opaque texels, and how many of them are opaque.
-glm::vec4 meanOf(const Atlas& atlas, int texture) {
+// Calls f(rgba) for each texel of a texture's level-0 tile in the atlas.
+template <class F>
+void forEachTexel(const Atlas& atlas, int texture, F&& f) {
   const AtlasTexture& t = atlas.textures[static_cast<std::size_t>(texture)];
   const Image& image = atlas.albedo[0];
   const int pad = atlas.tileSize / 2;
   const int x0 = (t.firstTile % atlas.columns) * atlas.slotSize + pad;
   const int y0 = (t.firstTile / atlas.columns) * atlas.slotSize + pad;
+  for (int y = 0; y < atlas.tileSize; ++y)
+    for (int x = 0; x < atlas.tileSize; ++x) f(image.pixel(x0 + x, y0 + y));
+}
+
+// A texture's mean colour over its opaque texels, and how many of them are opaque.
+glm::vec4 meanOf(const Atlas& atlas, int texture) {
   glm::vec3 sum(0.0f);
   int opaque = 0;
-  for (int y = 0; y < atlas.tileSize; ++y)
-    for (int x = 0; x < atlas.tileSize; ++x) {
-      const std::uint8_t* p = image.pixel(x0 + x, y0 + y);
-      if (p[3] < 128) continue;
-      sum += glm::vec3(p[0], p[1], p[2]) / 255.0f;
-      ++opaque;
-    }
+  forEachTexel(atlas, texture, [&](const std::uint8_t* p) {
+    if (p[3] < 128) return;
+    sum += glm::vec3(p[0], p[1], p[2]) / 255.0f;
+    ++opaque;
+  });
   const float texels = static_cast<float>(atlas.tileSize * atlas.tileSize);
   return opaque ? glm::vec4(sum / static_cast<float>(opaque), static_cast<float>(opaque) / texels)
                 : glm::vec4(0.0f);
@@ -29,14 +34,8 @@ glm::vec4 meanOf(const Atlas& atlas, int texture) {
 
 // A texture's mean alpha, 0..1.
 float meanAlpha(const Atlas& atlas, int texture) {
-  const AtlasTexture& t = atlas.textures[static_cast<std::size_t>(texture)];
-  const Image& image = atlas.albedo[0];
-  const int pad = atlas.tileSize / 2;
-  const int x0 = (t.firstTile % atlas.columns) * atlas.slotSize + pad;
-  const int y0 = (t.firstTile / atlas.columns) * atlas.slotSize + pad;
   double sum = 0.0;
-  for (int y = 0; y < atlas.tileSize; ++y)
-    for (int x = 0; x < atlas.tileSize; ++x) sum += image.pixel(x0 + x, y0 + y)[3] / 255.0;
+  forEachTexel(atlas, texture, [&](const std::uint8_t* p) { sum += p[3] / 255.0; });
   return static_cast<float>(sum / (atlas.tileSize * atlas.tileSize));
 }
 
