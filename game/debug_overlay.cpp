@@ -88,9 +88,9 @@ std::vector<std::string> DebugOverlay::left(const PlayWorld& world, const GameRe
                        f.sectionsCulled, f.shadowCasters));
   if (far) {
     out.push_back(format(
-        "Far terrain: %d tiles in %d levels (%d to build), %d drawn, %lld quads; %.1f MB CPU, "
+        "Far terrain: %d tiles in %d levels (%d to build), %d drawn, %lld triangles; %.1f MB CPU, "
         "%.1f MB GPU",
-        far->tiles, far->levels, far->pending, f.lodTilesDrawn, static_cast<long long>(f.lodQuadsDrawn),
+        far->tiles, far->levels, far->pending, f.lodTilesDrawn, static_cast<long long>(f.lodTrianglesDrawn),
         static_cast<double>(far->cachedBytes) / 1e6, static_cast<double>(renderer.lod().gpuBytes()) / 1e6));
   }
   return out;

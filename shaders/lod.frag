@@ -1,6 +1,6 @@
 #version 450 core
-// Far terrain into the G-buffer (layout: engine/render/gbuffer_layout.h): a cell's average colour, its
-// face's normal, full sky light; water as smooth as LabPBR's water, so reflections see the far sea.
+// Far terrain into the G-buffer (layout: engine/render/gbuffer_layout.h): the cells' average colours,
+// the surface's normal, full sky light; water as smooth as LabPBR's water, so reflections see the far sea.
 
 #include "lib/color.glsl"
 #include "lib/gbuffer_albedo.glsl"
@@ -13,16 +13,16 @@ layout(location = GB_SPECULAR) out vec4 o_specular;
 #endif
 layout(location = GB_LIGHT) out vec4 o_light;
 
-flat in vec3 v_colour;
-flat in vec3 v_normal;
-flat in float v_water;
+in vec3 v_colour;
+in vec3 v_normal;
+in float v_water;
 
 void main() {
   o_albedo = vec4(encodeAlbedo(srgbToLinear(v_colour)), 1.0);
 #ifdef NO_NORMAL_MAPS
-  o_normals = vec4(octEncode(v_normal), 0.0, 0.0);
+  o_normals = vec4(octEncode(normalize(v_normal)), 0.0, 0.0);
 #else
-  o_normals = vec4(octEncode(v_normal), octEncode(v_normal));
+  o_normals = vec4(octEncode(normalize(v_normal)), octEncode(normalize(v_normal)));
 #endif
 #ifndef NO_SPECULAR_MAPS
   // Water: smoothness 0.95, F0 0.02 (LabPBR's G in 1/255), no emission (alpha 1).

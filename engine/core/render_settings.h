@@ -145,6 +145,7 @@ struct LodSettings {
   int distance = 0;     // chunks to the far edge (0: off; 0..1024); beyond the view distance to matter
   float detail = 1.0f;  // a tile splits while nearer than detail x its width (0.5..8): more, finer tiles
   int minLevel = 2;     // the finest cells, 2^min_level blocks (0..4)
+  bool shadows = true;  // it casts into the shadow map
 
   bool operator==(const LodSettings&) const = default;
 };

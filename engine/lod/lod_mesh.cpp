@@ -7,16 +7,8 @@
 namespace terrasol {
 namespace {
 
-constexpr int kFloorY = kMinY * kLodYSteps;
-
 glm::vec3 tinted(glm::vec3 texture, Tint tint, const TintPalette& tints, const ColumnTint& column) {
   return texture * tints.colour(tint, column);
-}
-
-std::uint32_t materialOf(glm::vec3 srgb, Direction face, bool water) {
-  const glm::uvec3 c(glm::clamp(srgb, 0.0f, 1.0f) * 255.0f + 0.5f);
-  return c.r | c.g << 8 | c.b << 16 | static_cast<std::uint32_t>(face) << kLodFaceShift |
-         static_cast<std::uint32_t>(water) << kLodWaterShift;
 }
 
 // A corner as the quad builder sees it: place (cells, 1/kLodYSteps block) and the cell it follows.
@@ -32,9 +24,10 @@ class QuadWriter {
   void quad(const std::array<Corner, 4>& c, std::uint32_t material) {
     std::vector<LodVertex>& out = byFace_[(material >> kLodFaceShift) & 7u];
     for (const Corner& k : c) {
-      out.push_back({static_cast<std::int16_t>(k.x), static_cast<std::int16_t>(k.z),
-                     static_cast<std::int16_t>(k.y), static_cast<std::uint8_t>(k.cellX + 1),
-                     static_cast<std::uint8_t>(k.cellZ + 1), material});
+      out.push_back({static_cast<std::int16_t>(k.x * kLodXZSteps),
+                     static_cast<std::int16_t>(k.z * kLodXZSteps), static_cast<std::int16_t>(k.y),
+                     static_cast<std::uint8_t>(k.cellX + 1), static_cast<std::uint8_t>(k.cellZ + 1),
+                     material});
     }
   }
   void finish(LodMesh& mesh) const {
@@ -50,7 +43,7 @@ class QuadWriter {
 };
 
 struct Top {
-  int y = kFloorY;
+  int y = kLodFloorY;
   std::uint32_t material = 0;  // 0: no top (an empty cell, or one drawn already)
   bool operator==(const Top&) const = default;
 };
@@ -98,38 +91,56 @@ glm::vec3 LodPalette::side(BlockId block, const ColumnTint& column) const {
   return tinted(c.side, c.sideTint, tints, column);
 }
 
+glm::vec3 LodPalette::surface(const LodCell& cell) const {
+  const glm::vec3 ground = top(cell.surface, cell.tint);
+  if (cell.water == kNoLodHeight) return ground;
+  // Water over its bed, as the translucent pass blends it (lit alike, as far terrain is).
+  return glm::mix(ground, top(cell.waterBlock, cell.tint), opacity(cell.waterBlock));
+}
+
+glm::vec3 LodPalette::wall(const LodCell& cell) const {
+  return cell.water != kNoLodHeight ? side(cell.waterBlock, cell.tint) : side(cell.surface, cell.tint);
+}
+
 int lodSurfaceY(const LodCell& cell) {
   if (cell.water != kNoLodHeight) return (cell.water + 1) * kLodYSteps - 1;
-  if (cell.top == kNoLodHeight) return kFloorY;
+  if (cell.top == kNoLodHeight) return kLodFloorY;
   return (cell.top + 1) * kLodYSteps;
 }
 
-LodMesh meshLodTile(const LodTile& tile, const LodPalette& palette, bool allWalls) {
-  LodMesh mesh{tile.key, {}, kMinY, kMinY, allWalls, {}};
+bool lodCellEmpty(const LodCell& cell) {
+  return cell.top == kNoLodHeight && cell.water == kNoLodHeight;
+}
+
+LodMesh meshLodTile(const LodTile& tile, const LodPalette& palette, bool touchesFullDetail) {
+  // A cell no source filled (a save's missing chunk) is a hole a heightfield has no shape for.
+  const bool holes = std::any_of(tile.cells.begin(), tile.cells.end(), lodCellEmpty);
+  if (touchesFullDetail || holes) return meshLodTerraces(tile, palette, true);
+  return tile.key.level < kLodSmoothLevel ? meshLodTerraces(tile, palette, false)
+                                          : meshLodHeightfield(tile, palette);
+}
+
+LodMesh meshLodTerraces(const LodTile& tile, const LodPalette& palette, bool allWalls) {
+  LodMesh mesh;
+  mesh.key = tile.key;
+  mesh.allWalls = allWalls;
   QuadWriter out;
   const auto inside = [](int cx, int cz) {
     return cx >= 0 && cz >= 0 && cx < kLodTileCells && cz < kLodTileCells;
   };
-  const auto empty = [](const LodCell& c) { return c.top == kNoLodHeight && c.water == kNoLodHeight; };
-  int maxY = kFloorY;
+  int maxY = kLodFloorY;
   // Tops of a tile that never meets full detail merge into rectangles of one height and colour (a
   // sea, a plain); a tile that does keeps one per cell, as each may sink on its own.
   std::vector<Top> tops(static_cast<std::size_t>(kLodTileCells * kLodTileCells));
   for (int cz = 0; cz < kLodTileCells; ++cz)
     for (int cx = 0; cx < kLodTileCells; ++cx) {
       const LodCell& cell = tile.at(cx, cz);
-      if (empty(cell)) continue;
+      if (lodCellEmpty(cell)) continue;
       const bool wet = cell.water != kNoLodHeight;
       const int y = lodSurfaceY(cell);
       maxY = std::max(maxY, y);
-      // Water over its bed, as the translucent pass blends it (lit alike, as far terrain is).
-      const glm::vec3 ground = palette.top(cell.surface, cell.tint);
-      const glm::vec3 top =
-          wet ? glm::mix(ground, palette.top(cell.waterBlock, cell.tint), palette.opacity(cell.waterBlock))
-              : ground;
-      const glm::vec3 side =
-          wet ? palette.side(cell.waterBlock, cell.tint) : palette.side(cell.surface, cell.tint);
-      const std::uint32_t topMaterial = materialOf(top, Direction::Up, wet);
+      const std::uint32_t topMaterial =
+          lodMaterial(palette.surface(cell), static_cast<std::uint32_t>(Direction::Up), wet);
       if (allWalls) {
         out.quad({Corner{cx, y, cz, cx, cz},
                   {cx, y, cz + 1, cx, cz},
@@ -139,11 +150,12 @@ LodMesh meshLodTile(const LodTile& tile, const LodPalette& palette, bool allWall
       } else {
         tops[static_cast<std::size_t>(cz * kLodTileCells + cx)] = {y, topMaterial};
       }
+      const glm::vec3 side = palette.wall(cell);
       for (const Direction d : {Direction::West, Direction::East, Direction::North, Direction::South}) {
         const BlockPos o = kDirectionOffsets[static_cast<int>(d)];
         const int nx = cx + o.x, nz = cz + o.z;
-        int bottom = kFloorY;  // a skirt: beyond the tile, or next to a cell no source has filled
-        if (inside(nx, nz) && !empty(tile.at(nx, nz))) {
+        int bottom = kLodFloorY;  // a skirt: beyond the tile, or next to a cell no source has filled
+        if (inside(nx, nz) && !lodCellEmpty(tile.at(nx, nz))) {
           bottom = std::min(lodSurfaceY(tile.at(nx, nz)), y);
           if (bottom == y && !allWalls) continue;
         }
@@ -156,7 +168,7 @@ LodMesh meshLodTile(const LodTile& tile, const LodPalette& palette, bool allWall
                   {rx, bottom, rz, nx, nz},
                   {rx, y, rz, cx, cz},
                   {lx, y, lz, cx, cz}},
-                 materialOf(side, d, wet));
+                 lodMaterial(side, static_cast<std::uint32_t>(d), wet));
       }
     }
   mergeTops(tops, out);

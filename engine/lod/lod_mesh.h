@@ -1,11 +1,12 @@
 #pragma once
-// A far terrain tile as quads: each cell's top (the water's surface on a wet cell, coloured as the water
-// over its bed) at its height, and
-// walls down to lower neighbours, so a slope of cells reads as terraces with no gap between them. Where
-// the tile ends the walls go down to the world's floor (skirts): a neighbouring tile of another level,
-// whatever its heights, meets them with no crack. A tile that touches full detail gets every wall,
-// even those of no height, because the renderer lowers the cells full detail covers and those walls then
-// close the step down to them. Plain C++: built on worker threads, uploaded by the renderer.
+// A far terrain tile as a mesh, in one of two shapes. Terraces: each cell's top (the water's surface on
+// a wet cell, coloured as the water over its bed) at its height, walls down to lower neighbours, tops of
+// one height and colour merged into rectangles; for a tile that meets full detail a top per cell and a
+// wall on each side, even one of no height, because the renderer lowers the cells full detail covers
+// and those walls then close the step down to them. A heightfield, for coarse cells: a vertex mid-cell
+// at each cell's height, triangles between them, sides blending into steep slopes. Where a tile ends its edge
+// hangs down to the world's floor (skirts): a neighbouring tile of another level, whatever its heights, meets
+// them with no crack. Plain C++: built on worker threads, uploaded by the renderer.
 
 #include <array>
 #include <cstdint>
@@ -35,20 +36,39 @@ struct LodPalette {
   glm::vec3 top(BlockId block, const ColumnTint& column) const;
   glm::vec3 side(BlockId block, const ColumnTint& column) const;
   float opacity(BlockId block) const;
+  // A cell seen from above (water over its bed) and from the side.
+  glm::vec3 surface(const LodCell& cell) const;
+  glm::vec3 wall(const LodCell& cell) const;
 };
 
 struct LodMesh {
   LodTileKey key;
-  std::vector<LodVertex> vertices;  // quads, four corners each, counter-clockwise seen from outside
-  int minY = 0, maxY = 0;           // blocks: the box the quads lie in (skirts reach kMinY)
-  bool allWalls = false;            // meshed to meet full detail
-  // The quads showing face d (Direction) are [faceStart[d], faceStart[d + 1]): a pass leaves out the
-  // walls turned away from the camera for the whole tile.
+  // Terraces: quads, four corners each, counter-clockwise seen from outside. A heightfield: the
+  // vertices `indices` makes triangles of, counter-clockwise too.
+  std::vector<LodVertex> vertices;
+  std::vector<std::uint16_t> indices;
+  int minY = 0, maxY = 0;  // blocks: the box the quads lie in (skirts reach kMinY)
+  bool allWalls = false;   // terraces, meshed to meet full detail
+  // Terraces' quads showing face d (Direction) are [faceStart[d], faceStart[d + 1]): a pass leaves out
+  // the walls turned away from the camera for the whole tile.
   std::array<std::uint32_t, 7> faceStart{};
 };
 
-// `allWalls`: the tile touches full detail (see above).
-LodMesh meshLodTile(const LodTile& tile, const LodPalette& palette, bool allWalls);
+// Tiles of coarser cells than this draw as heightfields (unless full detail meets them): steps of 16
+// blocks and more look like no terrain, while a surface through their cells keeps ridges' lines.
+inline constexpr int kLodSmoothLevel = 4;
+
+// Terraces where the tile touches full detail, has cells no source filled or is finer than
+// kLodSmoothLevel, else a heightfield (see above).
+LodMesh meshLodTile(const LodTile& tile, const LodPalette& palette, bool touchesFullDetail);
+// `allWalls`: every wall, even of no height, and a top per cell (else tops merge into rectangles).
+LodMesh meshLodTerraces(const LodTile& tile, const LodPalette& palette, bool allWalls);
+LodMesh meshLodHeightfield(const LodTile& tile, const LodPalette& palette);
+
+inline constexpr int kLodFloorY = kMinY * kLodYSteps;  // where skirts end
+
+// Whether no source filled the cell (no ground, no water).
+bool lodCellEmpty(const LodCell& cell);
 
 // A cell's height as drawn, in 1/kLodYSteps block: its ground's top face, or its water's surface.
 int lodSurfaceY(const LodCell& cell);

@@ -55,6 +55,7 @@ struct FrameInputs {
   const Props* props = nullptr;
   // Far terrain beyond the sections (null: none); viewDistance then reaches its far edge.
   const LodMeshes* lod = nullptr;
+  bool lodShadows = true;  // far terrain casts into the shadow map
   // Under water, the surface is seen from below and what lies beyond fades into the water's colour.
   std::optional<UnderWater> underWater;
   // Block and sky light (0..15) at the camera's cell: shader packs' eyeBrightness.
@@ -114,7 +115,8 @@ struct FrameStats {
   int propsDrawn = 0, propsCulled = 0;        // placed props inside / outside the frustum
   int propShadowCasters = 0;                  // props drawn into the shadow map (per layer)
   int lodTilesDrawn = 0, lodTilesCulled = 0;  // far terrain's tiles inside / outside the frustum
-  std::int64_t lodQuadsDrawn = 0;
+  std::int64_t lodTrianglesDrawn = 0;
+  int lodShadowCasters = 0;  // far terrain's tiles drawn into the shadow map (per layer)
   struct Skipped {
     std::string pass, why;
   };

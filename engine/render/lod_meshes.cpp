@@ -32,12 +32,22 @@ void LodMeshes::show(const LodSet& set) {
       next.push_back(std::move(*kept));
       continue;
     }
-    Tile tile{mesh, {}, static_cast<GLsizei>(mesh->vertices.size() / 4)};
-    if (tile.quads > 0) {
+    Tile tile{mesh, {}, {}, 0, 0};
+    if (!mesh->indices.empty())
+      tile.triangles = static_cast<GLsizei>(mesh->indices.size() / 3);
+    else
+      tile.quads = static_cast<GLsizei>(mesh->vertices.size() / 4);
+    if (tile.quads > 0 || tile.triangles > 0) {
       tile.vertices = gl::Buffer::create();
       glNamedBufferStorage(tile.vertices.id(),
                            static_cast<GLsizeiptr>(mesh->vertices.size() * sizeof(LodVertex)),
                            mesh->vertices.data(), 0);
+    }
+    if (tile.triangles > 0) {
+      tile.indices = gl::Buffer::create();
+      glNamedBufferStorage(tile.indices.id(),
+                           static_cast<GLsizeiptr>(mesh->indices.size() * sizeof(std::uint16_t)),
+                           mesh->indices.data(), 0);
     }
     most = std::max(most, tile.quads);
     next.push_back(std::move(tile));
@@ -54,7 +64,6 @@ void LodMeshes::show(const LodSet& set) {
     for (const GLuint i : {0u, 1u, 2u, 0u, 2u, 3u}) data.push_back(q * 4 + i);
   indices_ = gl::Buffer::create();
   glNamedBufferStorage(indices_.id(), static_cast<GLsizeiptr>(data.size() * sizeof(GLuint)), data.data(), 0);
-  glVertexArrayElementBuffer(layout_.id(), indices_.id());
   indexQuads_ = count;
 }
 
@@ -84,12 +93,14 @@ void LodMeshes::setFullDetail(glm::ivec2 origin, int size, const std::vector<std
 std::size_t LodMeshes::gpuBytes() const {
   std::size_t bytes = static_cast<std::size_t>(indexQuads_) * 6 * sizeof(GLuint) +
                       static_cast<std::size_t>(maskSize_ * maskSize_);
-  for (const Tile& t : tiles_) bytes += t.mesh->vertices.size() * sizeof(LodVertex);
+  for (const Tile& t : tiles_)
+    bytes += t.mesh->vertices.size() * sizeof(LodVertex) + t.mesh->indices.size() * sizeof(std::uint16_t);
   return bytes;
 }
 
 void LodMeshes::bindTile(const Tile& tile) const {
   glVertexArrayVertexBuffer(layout_.id(), 0, tile.vertices.id(), 0, sizeof(LodVertex));
+  glVertexArrayElementBuffer(layout_.id(), tile.triangles > 0 ? tile.indices.id() : indices_.id());
 }
 
 }  // namespace terrasol

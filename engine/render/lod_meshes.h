@@ -1,8 +1,8 @@
 #pragma once
 // Far terrain on the GPU: one immutable vertex buffer per tile of the set shown (lod/lod_terrain.h),
-// replaced a set at a time (a tile the next set keeps keeps its buffer), drawn as quads through one
-// shared index buffer; and the chunks full detail covers, as a mask the vertex shader lowers the far
-// terrain's cells under. GL thread only.
+// replaced a set at a time (a tile the next set keeps keeps its buffer): terraces drawn as quads through
+// one shared index buffer, heightfields through their own; and the chunks full detail covers, as a mask the
+// vertex shader lowers the far terrain's cells under. GL thread only.
 
 #include <epoxy/gl.h>
 
@@ -29,14 +29,16 @@ class LodMeshes {
   struct Tile {
     std::shared_ptr<const LodMesh> mesh;
     gl::Buffer vertices;
-    GLsizei quads = 0;
+    gl::Buffer indices;     // a heightfield's triangles (terraces use the shared quad indices)
+    GLsizei quads = 0;      // terraces
+    GLsizei triangles = 0;  // a heightfield
   };
   const std::vector<Tile>& tiles() const { return tiles_; }  // nearest first
   bool empty() const { return tiles_.empty(); }
   std::uint64_t generation() const { return generation_; }
   std::size_t gpuBytes() const;
 
-  // The vertex array (attributes ATTRIB_LOD_*, the quad indices); bindTile points it at a tile.
+  // The vertex array (attributes ATTRIB_LOD_*); bindTile points it at a tile's vertices and indices.
   GLuint vertexArray() const { return layout_.id(); }
   void bindTile(const Tile& tile) const;
   GLuint fullDetailMask() const { return mask_.id(); }

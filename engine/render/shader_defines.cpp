@@ -124,6 +124,8 @@ std::vector<ShaderDefine> cloudLayerDefines() {
 std::vector<ShaderDefine> lodDefines() {
   return {{"LOD_Y_STEPS", std::to_string(kLodYSteps)},
           {"LOD_FLOOR_Y", std::to_string(kMinY)},
+          {"LOD_XZ_STEPS", std::to_string(kLodXZSteps)},
+          {"LOD_FACE_SMOOTH", std::to_string(kLodFaceSmooth) + "u"},
           {"LOD_FACE_SHIFT", std::to_string(kLodFaceShift)},
           {"LOD_WATER_SHIFT", std::to_string(kLodWaterShift)}};
 }

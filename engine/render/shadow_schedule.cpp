@@ -31,13 +31,13 @@ ShadowPlan ShadowSchedule::plan(const ShadowFrame& frame) const {
   plan.centre = recentred(plan.wanted);
   const double step = lastWanted_ ? glm::length(plan.wanted - *lastWanted_) : 0.0;
 
-  ShadowKey wanted{plan.centre, frame.toLight, frame.meshes, frame.props, true, std::nullopt};
+  ShadowKey wanted{plan.centre, frame.toLight, frame.meshes, frame.props, frame.far, true, std::nullopt};
   if (casterCulling_) wanted.receivers.emplace(frame.cone.widened(kMarginDegrees, kPullBack));
   const auto serves = [&](const ViewCone& cone) {
     return !shown_.receivers || shown_.receivers->contains(cone);
   };
   const bool unchanged = shown_.valid && shown_.centre == plan.centre && shown_.meshes == wanted.meshes &&
-                         shown_.props == wanted.props &&
+                         shown_.props == wanted.props && shown_.far == wanted.far &&
                          glm::dot(shown_.toLight, wanted.toLight) > kReuseCos &&
                          serves(frame.cone.widened(0.5f * kMarginDegrees, 0.5f * kPullBack));
   const int slices = frame.mayReuse ? std::max(settings_.updateFrames, 1) : 1;

@@ -34,6 +34,7 @@ struct ShadowKey {
   glm::vec3 toLight{0.0f};
   std::uint64_t meshes = 0;  // SectionMeshes::generation
   std::uint64_t props = 0;   // Props::generation
+  std::uint64_t far = 0;     // LodMeshes::generation (far terrain casts too)
   bool valid = false;
   std::optional<ShadowReceivers> receivers;  // what its casters were chosen for; none: every caster
 };
@@ -46,12 +47,12 @@ struct ShadowSlices {
 // One frame as the schedule sees it.
 struct ShadowFrame {
   glm::dvec3 camera{0.0};
-  glm::dvec3 centreOffset{0.0};         // FrameInputs::shadowCentreOffset
-  glm::dvec3 forward{0.0, 0.0, -1.0};   // unit view direction
-  glm::vec3 toLight{0.0f, 1.0f, 0.0f};  // unit
-  std::uint64_t meshes = 0, props = 0;  // generations
-  ViewCone cone;                        // the camera's receivers
-  bool mayReuse = false;                // FrameInputs::reuseShadowMap
+  glm::dvec3 centreOffset{0.0};                  // FrameInputs::shadowCentreOffset
+  glm::dvec3 forward{0.0, 0.0, -1.0};            // unit view direction
+  glm::vec3 toLight{0.0f, 1.0f, 0.0f};           // unit
+  std::uint64_t meshes = 0, props = 0, far = 0;  // generations
+  ViewCone cone;                                 // the camera's receivers
+  bool mayReuse = false;                         // FrameInputs::reuseShadowMap
 };
 
 struct ShadowPlan {

@@ -149,17 +149,21 @@ nlohmann::json shaftsJson(const ShaftSettings& shafts) {
 }
 
 void parseLod(const json& value, const std::string& key, LodSettings& lod) {
-  checkObject(value, key, {"distance", "detail", "min_level"});
+  checkObject(value, key, {"distance", "detail", "min_level", "shadows"});
   if (const json* v = field(value, "distance"))
     lod.distance = static_cast<int>(wholeNumber(*v, member(key, "distance"), 0, 1024));
   if (const json* v = field(value, "detail"))
     lod.detail = numberIn(*v, member(key, "detail"), 0.5, 8.0, false);
   if (const json* v = field(value, "min_level"))
     lod.minLevel = static_cast<int>(wholeNumber(*v, member(key, "min_level"), 0, 4));
+  if (const json* v = field(value, "shadows")) lod.shadows = boolean(*v, member(key, "shadows"));
 }
 
 nlohmann::json lodJson(const LodSettings& lod) {
-  return {{"distance", lod.distance}, {"detail", lod.detail}, {"min_level", lod.minLevel}};
+  return {{"distance", lod.distance},
+          {"detail", lod.detail},
+          {"min_level", lod.minLevel},
+          {"shadows", lod.shadows}};
 }
 
 }  // namespace terrasol

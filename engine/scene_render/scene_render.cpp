@@ -161,7 +161,8 @@ std::optional<SceneLodStats> SceneRenderer::lodStats() const {
   if (!world_->lod) return std::nullopt;
   const LodTerrainStats t = world_->lod->stats();
   SceneLodStats s{t.tiles, t.levels, 0, t.cachedBytes, gpu_->lod.gpuBytes(), world_->lod->longestUpdateMs()};
-  for (const LodMeshes::Tile& tile : gpu_->lod.tiles()) s.quads += static_cast<std::size_t>(tile.quads);
+  for (const LodMeshes::Tile& tile : gpu_->lod.tiles())
+    s.triangles += static_cast<std::size_t>(2 * tile.quads + tile.triangles);
   return s;
 }
 
@@ -190,6 +191,7 @@ FrameInputs SceneRenderer::inputsFor(int frame) const {
   inputs.viewDistance = static_cast<float>(scene_.viewDistance * kChunkSize);  // chunks to blocks
   if (world_->lod) {
     inputs.lod = &gpu_->lod;
+    inputs.lodShadows = scene_.lod.shadows;
     inputs.viewDistance = static_cast<float>(std::max(scene_.viewDistance, scene_.lod.distance) * kChunkSize);
   }
   inputs.renderScale = scene_.renderScale;  // with render.target_fps, the most renderFrame uses

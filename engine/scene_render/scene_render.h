@@ -29,7 +29,7 @@ struct SceneRenderStats {
 // Far terrain as the last frame drew it (render.lod).
 struct SceneLodStats {
   int tiles = 0, levels = 0;
-  std::size_t quads = 0, cpuBytes = 0, gpuBytes = 0;
+  std::size_t triangles = 0, cpuBytes = 0, gpuBytes = 0;
   double buildMs = 0.0;  // the longest wait for a frame's tiles: the first frame's, which builds them all
 };
 

@@ -1,5 +1,6 @@
-// Far terrain's meshes, tile choice and tile store (lod/): quads facing out, tiles of two levels meeting
-// with no gap (rays that hit the cells' columns hit the mesh), a disc covered once, edits reaching tiles.
+// Far terrain's meshes, tile choice and tile store (lod/): terraces and heightfields facing out, tiles of
+// two levels and both shapes meeting with no gap (rays that reach the floor inside them meet a
+// triangle), a disc covered once, edits reaching tiles.
 
 #include "lod/lod_mesh.h"
 
@@ -44,7 +45,13 @@ LodTile hillyTile(LodTileKey key, int base, int span) {
   return tile;
 }
 
-// A quad of a mesh in world blocks: its corners and the face it shows.
+glm::dvec3 worldPosition(const LodMesh& mesh, const LodVertex& v) {
+  const double cell = mesh.key.cellBlocks();
+  return {mesh.key.minBlockX() + v.x * cell / kLodXZSteps, static_cast<double>(v.y) / kLodYSteps,
+          mesh.key.minBlockZ() + v.z * cell / kLodXZSteps};
+}
+
+// A quad of a terrace mesh in world blocks: its corners and the face it shows.
 struct WorldQuad {
   glm::dvec3 corner[4];
   glm::dvec3 normal;
@@ -52,14 +59,10 @@ struct WorldQuad {
 
 std::vector<WorldQuad> worldQuads(const LodMesh& mesh) {
   std::vector<WorldQuad> quads;
-  const double cell = mesh.key.cellBlocks();
   for (std::size_t q = 0; q + 3 < mesh.vertices.size(); q += 4) {
     WorldQuad w{};
-    for (int i = 0; i < 4; ++i) {
-      const LodVertex& v = mesh.vertices[q + static_cast<std::size_t>(i)];
-      w.corner[i] = {mesh.key.minBlockX() + v.x * cell, static_cast<double>(v.y) / kLodYSteps,
-                     mesh.key.minBlockZ() + v.z * cell};
-    }
+    for (int i = 0; i < 4; ++i)
+      w.corner[i] = worldPosition(mesh, mesh.vertices[q + static_cast<std::size_t>(i)]);
     const int face = static_cast<int>(mesh.vertices[q].material >> kLodFaceShift) & 7;
     const BlockPos o = kDirectionOffsets[face];
     w.normal = {o.x, o.y, o.z};
@@ -68,11 +71,31 @@ std::vector<WorldQuad> worldQuads(const LodMesh& mesh) {
   return quads;
 }
 
-TEST(LodMesh, QuadsTurnTheirFrontOutwardsAndStepsGetWalls) {
+// Any mesh's triangles in world blocks, in drawing order (a terrace quad is two).
+struct Triangle {
+  glm::dvec3 p[3];
+};
+
+std::vector<Triangle> worldTriangles(const LodMesh& mesh) {
+  std::vector<Triangle> out;
+  const auto add = [&](std::size_t a, std::size_t b, std::size_t c) {
+    out.push_back({{worldPosition(mesh, mesh.vertices[a]), worldPosition(mesh, mesh.vertices[b]),
+                    worldPosition(mesh, mesh.vertices[c])}});
+  };
+  if (mesh.indices.empty()) {
+    for (std::size_t q = 0; q + 3 < mesh.vertices.size(); q += 4) add(q, q + 1, q + 2), add(q, q + 2, q + 3);
+  } else {
+    for (std::size_t i = 0; i + 2 < mesh.indices.size(); i += 3)
+      add(mesh.indices[i], mesh.indices[i + 1], mesh.indices[i + 2]);
+  }
+  return out;
+}
+
+TEST(LodMesh, TerracesTurnTheirFrontOutwardsAndStepsGetWalls) {
   LodTile tile{{2, 0, 0}, {}};
   for (LodCell& c : tile.cells) c = {70, kGround};
   tile.at(5, 5).top = 80;  // a pillar of one cell
-  const LodMesh mesh = meshLodTile(tile, greyPalette(), false);
+  const LodMesh mesh = meshLodTerraces(tile, greyPalette(), false);
   int pillarWalls = 0;
   for (const WorldQuad& q : worldQuads(mesh)) {
     const glm::dvec3 n = glm::cross(q.corner[1] - q.corner[0], q.corner[2] - q.corner[0]);
@@ -83,94 +106,133 @@ TEST(LodMesh, QuadsTurnTheirFrontOutwardsAndStepsGetWalls) {
     if (q.normal.y == 0.0 && top == 81.0 && bottom == 71.0) ++pillarWalls;
   }
   EXPECT_EQ(pillarWalls, 4) << "the pillar's four sides, from its neighbours' tops to its own";
+  EXPECT_EQ(mesh.maxY, 81);
   // The flat cells merge: 1023 flat cells are far fewer quads than cells.
   EXPECT_LT(mesh.vertices.size() / 4, 200u);
-  EXPECT_EQ(mesh.maxY, 81);
+  EXPECT_TRUE(mesh.indices.empty());
   // Meeting full detail: a top per cell and every wall, so each cell can sink on its own.
-  const LodMesh walled = meshLodTile(tile, greyPalette(), true);
+  const LodMesh walled = meshLodTerraces(tile, greyPalette(), true);
   EXPECT_EQ(walled.vertices.size() / 4, static_cast<std::size_t>(kLodTileCells * kLodTileCells * 5));
+}
+
+TEST(LodMesh, AHeightfieldFacesUpAndOutAndLeansAwayFromHigherCells) {
+  const LodTile tile = hillyTile({2, 0, 0}, 60, 30);
+  const LodMesh mesh = meshLodHeightfield(tile, greyPalette());
+  const glm::dvec3 middle(64.0, 0.0, 64.0);
+  int up = 0, out = 0;
+  for (const Triangle& t : worldTriangles(mesh)) {
+    const glm::dvec3 n = glm::cross(t.p[1] - t.p[0], t.p[2] - t.p[0]);
+    ASSERT_GT(glm::length(n), 1e-9) << "no degenerate triangle";
+    if (n.y > 0.0) {
+      ++up;
+      continue;
+    }
+    // A skirt: vertical, turned away from the tile's middle.
+    EXPECT_NEAR(n.y, 0.0, 1e-9);
+    EXPECT_GT(glm::dot(n, (t.p[0] + t.p[1] + t.p[2]) / 3.0 - middle), 0.0) << "a skirt turned inwards";
+    ++out;
+  }
+  EXPECT_EQ(up, 2 * (kLodTileCells + 1) * (kLodTileCells + 1));
+  EXPECT_EQ(out, 4 * 2 * (kLodTileCells + 1));
+  // Each cell's middle at its height; the normal leans away from the higher neighbour.
+  const LodVertex& v = mesh.vertices[static_cast<std::size_t>(6 * (kLodTileCells + 2) + 4)];  // cell (3, 5)
+  EXPECT_EQ(v.x, 3 * kLodXZSteps + kLodXZSteps / 2);
+  EXPECT_EQ(v.y, lodSurfaceY(tile.at(3, 5)));
+  EXPECT_EQ((v.material >> kLodFaceShift) & 7u, kLodFaceSmooth);
+  const double gx = lodSurfaceY(tile.at(4, 5)) - lodSurfaceY(tile.at(2, 5));
+  if (gx != 0.0) {
+    EXPECT_EQ(v.cellX<128, gx> 0.0);
+  }
 }
 
 TEST(LodMesh, WaterLiesAtSevenEighthsOfItsBlockAndIsMarked) {
   LodTile tile{{1, 0, 0}, {}};
   for (LodCell& c : tile.cells) c = {50, kGround, 62, kWater};
-  const LodMesh mesh = meshLodTile(tile, greyPalette(), false);
-  const auto top = std::find_if(mesh.vertices.begin(), mesh.vertices.end(), [](const LodVertex& v) {
-    return static_cast<Direction>((v.material >> kLodFaceShift) & 7u) == Direction::Up;
-  });
-  ASSERT_NE(top, mesh.vertices.end());
-  EXPECT_EQ(top->y, (62 + 1) * kLodYSteps - 1);
-  EXPECT_EQ((top->material >> kLodWaterShift) & 1u, 1u);
-  EXPECT_EQ(mesh.vertices.size() / 4, 1u + 4u * kLodTileCells) << "one top, and the skirts round the tile";
+  for (const LodMesh& mesh :
+       {meshLodTerraces(tile, greyPalette(), false), meshLodHeightfield(tile, greyPalette())}) {
+    const auto top = std::find_if(mesh.vertices.begin(), mesh.vertices.end(), [](const LodVertex& v) {
+      const std::uint32_t face = (v.material >> kLodFaceShift) & 7u;
+      return face == kLodFaceSmooth || face == static_cast<std::uint32_t>(Direction::Up);
+    });
+    ASSERT_NE(top, mesh.vertices.end());
+    EXPECT_EQ(top->y, (62 + 1) * kLodYSteps - 1);
+    EXPECT_EQ((top->material >> kLodWaterShift) & 1u, 1u);
+    if (mesh.indices.empty()) {
+      EXPECT_EQ(mesh.vertices.size() / 4, 1u + 4u * kLodTileCells)
+          << "one top, and the skirts round the tile";
+    }
+  }
 }
 
-// The nearest front face a ray meets, or none.
-std::optional<double> nearestHit(const std::vector<WorldQuad>& quads, glm::dvec3 o, glm::dvec3 d) {
+TEST(LodMesh, CoarseCellsMakeAHeightfieldUnlessFullDetailMeetsThemOrACellIsEmpty) {
+  EXPECT_TRUE(
+      meshLodTile(hillyTile({kLodSmoothLevel - 1, 0, 0}, 60, 8), greyPalette(), false).indices.empty());
+  LodTile tile = hillyTile({kLodSmoothLevel, 0, 0}, 60, 8);
+  EXPECT_FALSE(meshLodTile(tile, greyPalette(), false).indices.empty());
+  EXPECT_TRUE(meshLodTile(tile, greyPalette(), true).indices.empty()) << "full detail meets it";
+  tile.at(7, 7) = LodCell{};
+  EXPECT_TRUE(meshLodTile(tile, greyPalette(), false).indices.empty()) << "a hole";
+}
+
+// The nearest triangle a ray meets from the front, or none (Moller-Trumbore, back faces culled as the
+// renderer culls them).
+std::optional<double> nearestHit(const std::vector<Triangle>& triangles, glm::dvec3 o, glm::dvec3 d) {
   std::optional<double> best;
-  for (const WorldQuad& q : quads) {
-    if (glm::dot(q.normal, d) >= 0.0) continue;  // culled, as the renderer culls back faces
-    const int axis = q.normal.x != 0.0 ? 0 : q.normal.y != 0.0 ? 1 : 2;
-    const double t = (q.corner[0][axis] - o[axis]) / d[axis];
-    if (t <= 0.0 || (best && t >= *best)) continue;
-    const glm::dvec3 p = o + t * d;
-    glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
-    for (const glm::dvec3& c : q.corner) lo = glm::min(lo, c), hi = glm::max(hi, c);
-    bool in = true;
-    for (int a = 0; a < 3; ++a)
-      if (a != axis) in = in && p[a] >= lo[a] - 1e-9 && p[a] <= hi[a] + 1e-9;
-    if (in) best = t;
+  for (const Triangle& t : triangles) {
+    const glm::dvec3 e1 = t.p[1] - t.p[0], e2 = t.p[2] - t.p[0];
+    if (glm::dot(glm::cross(e1, e2), d) >= 0.0) continue;
+    const glm::dvec3 p = glm::cross(d, e2);
+    const double det = glm::dot(e1, p);
+    if (std::abs(det) < 1e-12) continue;
+    const glm::dvec3 s = o - t.p[0];
+    const double u = glm::dot(s, p) / det;
+    if (u < -1e-9 || u > 1.0 + 1e-9) continue;
+    const glm::dvec3 q = glm::cross(s, e1);
+    const double v = glm::dot(d, q) / det;
+    if (v < -1e-9 || u + v > 1.0 + 1e-9) continue;
+    const double dist = glm::dot(e2, q) / det;
+    if (dist > 0.0 && (!best || dist < *best)) best = dist;
   }
   return best;
 }
 
-// Whether a ray meets any cell's column (from the floor to the cell's surface).
-bool hitsColumns(const std::vector<LodTile>& tiles, glm::dvec3 o, glm::dvec3 d) {
-  for (const LodTile& tile : tiles) {
-    const double cell = tile.key.cellBlocks();
-    for (int z = 0; z < kLodTileCells; ++z)
-      for (int x = 0; x < kLodTileCells; ++x) {
-        const glm::dvec3 lo(tile.key.minBlockX() + x * cell, kMinY, tile.key.minBlockZ() + z * cell);
-        const glm::dvec3 hi(lo.x + cell, static_cast<double>(lodSurfaceY(tile.at(x, z))) / kLodYSteps,
-                            lo.z + cell);
-        double t0 = 0.0, t1 = 1e9;
-        for (int a = 0; a < 3; ++a) {
-          if (std::abs(d[a]) < 1e-12) {
-            if (o[a] < lo[a] || o[a] > hi[a]) t0 = 2e9;
-            continue;
-          }
-          double ta = (lo[a] - o[a]) / d[a], tb = (hi[a] - o[a]) / d[a];
-          if (ta > tb) std::swap(ta, tb);
-          t0 = std::max(t0, ta), t1 = std::min(t1, tb);
-        }
-        if (t0 <= t1) return true;
-      }
-  }
-  return false;
-}
-
-// A fine tile of hills (cells of 2) beside a coarse plateau (cells of 4) above them, and beyond it a
-// coarse valley: every ray that meets a cell's column meets the mesh. Without the skirts at the tiles'
-// edges the plateau's cliff would be open where it meets the hills.
-TEST(LodMesh, TilesOfTwoLevelsMeetWithNoGap) {
+// Three tiles side by side: fine hills (cells of 2), a coarse plateau above them (cells of 4) and
+// beyond it a coarse valley; the plateau a heightfield and the valley terraces (as if full detail were
+// near), then the other way round. Their meshes close over the ground they cover: every ray that
+// reaches down to the floor inside them meets a triangle first. Without the skirts at the tiles'
+// edges the plateau's cliffs are open where they meet the hills and the valley.
+TEST(LodMesh, TilesOfTwoLevelsAndBothShapesMeetWithNoGap) {
   LodTile plateau{{2, 1, 0}, {}};
   for (LodCell& c : plateau.cells) c = {120, kGround};
-  const std::vector<LodTile> tiles = {hillyTile({1, 1, 0}, 60, 40), plateau, hillyTile({2, 2, 0}, 30, 30)};
-  std::vector<WorldQuad> quads;
-  for (const LodTile& t : tiles)
-    for (const WorldQuad& q : worldQuads(meshLodTile(t, greyPalette(), false))) quads.push_back(q);
-  int rays = 0, holes = 0;
-  for (const glm::dvec3 eye : {glm::dvec3(96, 110, 32), glm::dvec3(70, 140, 50), glm::dvec3(300, 140, 64)})
-    for (int i = 0; i < 120; ++i)
-      for (int j = 0; j < 60; ++j) {
-        const double yaw = i * (2.0 * M_PI / 120.0), pitch = 0.3 - j * (1.5 / 60.0);
-        const glm::dvec3 d(std::cos(yaw) * std::cos(pitch), std::sin(pitch), std::sin(yaw) * std::cos(pitch));
-        if (!hitsColumns(tiles, eye, d)) continue;
-        ++rays;
-        holes += nearestHit(quads, eye, d) ? 0 : 1;
-      }
-  std::printf("%d rays meet the columns, %d of them miss the mesh\n", rays, holes);
-  EXPECT_GT(rays, 5000);
-  EXPECT_EQ(holes, 0);
+  const LodTile hills = hillyTile({1, 1, 0}, 60, 40), valley = hillyTile({2, 2, 0}, 30, 30);
+  const double x0 = hills.key.minBlockX(), x1 = valley.key.minBlockX() + valley.key.spanBlocks();
+  const double z0 = 0.0, z1 = hills.key.spanBlocks();  // the hills are narrower: the footprint they share
+  const double floorY = kMinY + 0.5;
+  for (const bool plateauTerraces : {false, true}) {
+    const auto shape = [&](const LodTile& t, bool terraces) {
+      return terraces ? meshLodTerraces(t, greyPalette(), false) : meshLodHeightfield(t, greyPalette());
+    };
+    std::vector<Triangle> triangles;
+    for (const LodMesh& mesh :
+         {shape(hills, false), shape(plateau, plateauTerraces), shape(valley, !plateauTerraces)})
+      for (const Triangle& t : worldTriangles(mesh)) triangles.push_back(t);
+    int rays = 0, holes = 0;
+    for (const glm::dvec3 eye : {glm::dvec3(96, 110, 32), glm::dvec3(70, 140, 50), glm::dvec3(300, 100, 60)})
+      for (int i = 0; i < 120; ++i)
+        for (int j = 0; j < 60; ++j) {
+          const double yaw = i * (2.0 * M_PI / 120.0), pitch = -0.02 - j * (1.5 / 60.0);
+          const glm::dvec3 d(std::cos(yaw) * std::cos(pitch), std::sin(pitch),
+                             std::sin(yaw) * std::cos(pitch));
+          const glm::dvec3 atFloor = eye + d * ((floorY - eye.y) / d.y);
+          if (atFloor.x <= x0 || atFloor.x >= x1 || atFloor.z <= z0 || atFloor.z >= z1) continue;
+          ++rays;
+          holes += nearestHit(triangles, eye, d) ? 0 : 1;
+        }
+    std::printf("plateau as %s: %d rays reach the floor inside the tiles, %d of them miss the meshes\n",
+                plateauTerraces ? "terraces" : "a heightfield", rays, holes);
+    EXPECT_GT(rays, 2000);
+    EXPECT_EQ(holes, 0);
+  }
 }
 
 TEST(LodSelect, LeavesCoverTheDiscOnceAndFullDetailIsLeftOut) {

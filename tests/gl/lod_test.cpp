@@ -1,6 +1,6 @@
-// Far terrain (render.lod): full detail hides the tiles beneath it, far terrain adds ground beyond it,
-// no sky shows through it, and its error against full detail out to its far edge is measured against
-// that of halving the resolution.
+// Far terrain (render.lod): full detail hides the tiles beneath it, far terrain adds ground beyond it
+// and casts the sun's shadow, no sky shows through it, and its error against full detail out to its far edge
+// is measured against that of halving the resolution.
 
 #include <cmath>
 #include <cstdio>
@@ -88,6 +88,38 @@ TEST_F(LodTest, NoSkyShowsThroughTheFarTerrainAndItsErrorIsMeasured) {
   EXPECT_LT(e.mean, 2.0 * *e.halfResolutionMean) << "within twice halving the resolution's error";
   EXPECT_LT(e.skyDiffers, e.band / 20) << "silhouettes near the truth's";
   context_->checkErrors("far terrain's truth");
+}
+
+// Far terrain casts into the shadow map: late in the day, with the map reaching 160 blocks, the far
+// ground inside that reach lies darker behind its ridges than when far terrain casts nothing (the
+// sections alone cast no shadow that far out).
+TEST_F(LodTest, FarTerrainCastsTheSunsShadow) {
+  SceneFile scene = loadScene(kScenes / "paths" / "lod_mountain.json",
+                              {"render.shadow.distance=160", "camera_path.keyframes.0.look_at=[-40, 130, 10]",
+                               "camera_path.keyframes.0.time=11000"});
+  const RenderedFrame far = drawn(scene);
+  scene.lod.shadows = false;
+  const RenderedFrame near = drawn(scene);
+  const glm::ivec2 size = near.pixels.size;
+  ASSERT_EQ(near.image.width, size.x);
+  std::size_t ground = 0, shaded = 0;  // far terrain's, inside the map's reach
+  for (std::size_t i = 0; i < near.pixels.depth.size(); ++i) {
+    const std::optional<double> d = distanceAt(near, i);
+    if (!d || *d < scene.viewDistance * double(kChunkSize) || *d > scene.shadow.distance) continue;
+    ++ground;
+    const int x = static_cast<int>(i) % size.x, y = size.y - 1 - static_cast<int>(i) / size.x;
+    const auto luma = [&](const Image& im) {
+      const std::uint8_t* p = im.pixel(x, y);
+      return p[0] + p[1] + p[2];
+    };
+    shaded += luma(far.image) + 30 < luma(near.image) ? 1 : 0;
+  }
+  std::printf("%zu of far terrain's %zu pixels in the map's reach darker when it casts; %d tiles cast\n",
+              shaded, ground, far.stats.lodShadowCasters);
+  EXPECT_GT(far.stats.lodShadowCasters, 0);
+  EXPECT_GT(ground, 5000u);
+  EXPECT_GT(shaded, ground / 10);
+  context_->checkErrors("far terrain's shadow");
 }
 
 }  // namespace

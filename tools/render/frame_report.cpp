@@ -57,7 +57,8 @@ nlohmann::json frameReport(int index, const RenderedFrame& frame) {
             {"culled", frame.stats.propsCulled},
             {"shadow_casters", frame.stats.propShadowCasters}}},
           {"lod_tiles", {{"drawn", frame.stats.lodTilesDrawn}, {"culled", frame.stats.lodTilesCulled}}},
-          {"lod_quads_drawn", frame.stats.lodQuadsDrawn},
+          {"lod_triangles_drawn", frame.stats.lodTrianglesDrawn},
+          {"lod_shadow_casters", frame.stats.lodShadowCasters},
           {"passes_skipped", skipped}};
 }
 

@@ -262,9 +262,9 @@ int renderScene(const Options& o, const SceneFile& scene, SceneRenderer& rendere
     }
     report["frames"] = frames;
     if (const auto lod = renderer.lodStats())
-      report["lod"] = {{"tiles", lod->tiles},        {"levels", lod->levels},
-                       {"quads", lod->quads},        {"cpu_bytes", lod->cpuBytes},
-                       {"gpu_bytes", lod->gpuBytes}, {"build_ms", lod->buildMs}};
+      report["lod"] = {{"tiles", lod->tiles},         {"levels", lod->levels},
+                       {"triangles", lod->triangles}, {"cpu_bytes", lod->cpuBytes},
+                       {"gpu_bytes", lod->gpuBytes},  {"build_ms", lod->buildMs}};
     std::ofstream(o.report) << report.dump(2) << "\n";
   }
   const SceneRenderStats& stats = renderer.stats();
@@ -272,9 +272,10 @@ int renderScene(const Options& o, const SceneFile& scene, SceneRenderer& rendere
               scene.file.string().c_str(), renderer.frames(), stats.sections, stats.quads, stats.loadMs,
               o.out.string().c_str());
   if (const auto lod = renderer.lodStats())
-    std::printf("terrasol-render: far terrain: %d tiles in %d levels, %zu quads, %.1f MB CPU, %.1f MB GPU\n",
-                lod->tiles, lod->levels, lod->quads, static_cast<double>(lod->cpuBytes) / 1e6,
-                static_cast<double>(lod->gpuBytes) / 1e6);
+    std::printf(
+        "terrasol-render: far terrain: %d tiles in %d levels, %zu triangles, %.1f MB CPU, %.1f MB GPU\n",
+        lod->tiles, lod->levels, lod->triangles, static_cast<double>(lod->cpuBytes) / 1e6,
+        static_cast<double>(lod->gpuBytes) / 1e6);
   if (!allMatch)
     std::printf("terrasol-render: some frames differ from their goldens in %s\n", o.compare.string().c_str());
   return allMatch ? 0 : 1;

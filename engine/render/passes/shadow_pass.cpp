@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "render/lod_draw.h"
+
 namespace terrasol {
 
 ShadowPass::ShadowPass(const VariantBuilder& build, PassShared& shared)
@@ -13,6 +15,7 @@ ShadowPass::ShadowPass(const VariantBuilder& build, PassShared& shared)
   opaque_ = BlocksProgram(build("shadow.vert", "shadow.frag"));
   cutout_ = BlocksProgram(build("shadow.vert", "shadow.frag", {{"CUTOUT", "1"}}));
   translucent_ = BlocksProgram(build("shadow.vert", "shadow.frag", {{"TRANSLUCENT", "1"}}));
+  farTerrain_ = gl::ProgramWith<FarTerrain>(build("lod.vert", "lod_shadow.frag", {{"SHADOW", "1"}}));
   const PropNeeds& needs = shared.options.props;
   if (!needs.any) return;
   propOpaque_ = PropProgram(build("prop_shadow.vert", "prop_shadow.frag"));
@@ -32,6 +35,8 @@ void ShadowPass::setup(FrameGraph::Builder& builder, Frame& frame) {
   schedule.toLight = frame.view.day.toShadowLight;
   schedule.meshes = frame.meshes.generation();
   schedule.props = frame.props ? frame.props->generation() : 0;
+  const bool farCasts = frame.inputs.lod && frame.inputs.lodShadows;
+  schedule.far = farCasts ? frame.inputs.lod->generation() : 0;
   schedule.cone = frame.view.cone;
   schedule.mayReuse = frame.inputs.reuseShadowMap;
   plan_ = schedule_.plan(schedule);
@@ -167,6 +172,16 @@ void ShadowPass::drawCasters(ShadowMap& map, const ShadowKey& key, const std::op
       if (propCutout_) {
         drawProps(propCutout_.id(), propCutout_.u.prop, props, propCasters, camera, AlphaMode::Mask, false);
       }
+    }
+    // Far terrain casts in the first slice too: out where the map reaches past full detail, and from
+    // ridges beyond it (depth clamp keeps those above the near plane).
+    if (frame.inputs.lod && frame.inputs.lodShadows && !frame.inputs.lod->empty() && slices.first == 0) {
+      glUseProgram(farTerrain_.id());
+      farTerrain_.u.shadowMatrix.set(light.matrix);
+      farTerrain_.u.warp.set(settings);
+      stats.lodShadowCasters +=
+          drawLodTiles(*frame.inputs.lod, frustumPlanes(light.matrix), camera, farTerrain_.u.tile, false)
+              .drawn;
     }
     // Translucent casters into their own depth and colour: the nearest one filters the light.
     glBindFramebuffer(GL_FRAMEBUFFER, translucent);

@@ -1,16 +1,17 @@
 #pragma once
-// The light's view, a layer per cascade, into the shadow map the lit passes read. Casters are the
-// sections inside a layer's box, less those no ray of the light reaches (cave_culling.h) and those
-// whose shadow falls on nothing in view (shadow_receivers.h); opaque, then alpha-tested, then
-// translucent casters into their own depth and colour. When the map is drawn, kept or rebuilt a slice
-// a frame is ShadowSchedule's decision; a spread rebuild draws into a second map, swapped in when
-// complete.
+// The light's view, a layer per cascade, into the shadow map the lit passes read. Casters are far
+// terrain's tiles and the sections inside a layer's box, less those no ray of the light reaches
+// (cave_culling.h) and those whose shadow falls on nothing in view (shadow_receivers.h); opaque, then
+// alpha-tested, then translucent casters into their own depth and colour. When the map is drawn, kept or
+// rebuilt a slice a frame is ShadowSchedule's decision; a spread rebuild draws into a second map, swapped in
+// when complete.
 
 #include <array>
 #include <optional>
 
 #include "render/cave_culling.h"
 #include "render/frame_uniforms.h"
+#include "render/lod_draw.h"
 #include "render/pass_shared.h"
 #include "render/prop_draw.h"
 #include "render/render_pass.h"
@@ -55,8 +56,17 @@ class ShadowPass final : public RenderPass {
     gl::Uniform<glm::mat4> shadowMatrix;
   };
 
+  struct FarTerrain {
+    FarTerrain() = default;
+    explicit FarTerrain(const LinkedProgram& p) : warp(p), shadowMatrix(p, "u_shadowMatrix"), tile(p) {}
+    WarpUniforms warp;
+    gl::Uniform<glm::mat4> shadowMatrix;
+    LodTileUniforms tile;
+  };
+
   PassShared& shared_;
   gl::ProgramWith<Blocks> opaque_, cutout_, translucent_;
+  gl::ProgramWith<FarTerrain> farTerrain_;
   gl::ProgramWith<Prop> propOpaque_, propCutout_, propTranslucent_;  // each only when a placed prop needs it
   ShadowSchedule schedule_;
   ShadowPlan plan_;  // this frame's, from setup
