@@ -9,7 +9,7 @@ namespace terrasol {
 
 std::unique_ptr<FarTerrain> FarTerrain::create(const LodSettings& settings, const PlayWorld& world,
                                                LodPalette palette) {
-  if (settings.distance <= 0 || !world.streamed().generator().surfaceColumn(0, 0)) return nullptr;
+  if (settings.distance <= 0 || !lodCanSample(world.streamed().generator())) return nullptr;
   return std::unique_ptr<FarTerrain>(new FarTerrain(settings, world, std::move(palette)));
 }
 
@@ -21,7 +21,7 @@ FarTerrain::FarTerrain(const LodSettings& settings, const PlayWorld& world, LodP
                LodLevels{settings.minLevel, settings.detail}, 1) {}
 
 LodTile FarTerrain::tile(LodTileKey key) const {
-  return tileFromGenerator(generator_, key, [&](int x, int z) -> std::optional<LodColumn> {
+  return tileFromSource(generator_, key, blocks_, [&](int x, int z) -> std::optional<LodColumn> {
     std::lock_guard lock(editsMutex_);
     if (const auto it = edited_.find({x, z}); it != edited_.end()) return it->second;
     return std::nullopt;

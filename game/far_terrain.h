@@ -2,7 +2,7 @@
 // The game's far terrain (settings "lod"): tiles from the world's generator round the player, built on
 // a worker thread, the chunks the streamed world has meshed as the mask that hides them, and the
 // player's edits: each edited column's summary replaces the generator's there, and its tiles are
-// built again. A world whose generator cannot be sampled without chunks (a Minecraft save) has none.
+// built again. A Minecraft save has no column rule: its tiles come from the chunks it holds, read whole.
 
 #include <glm/vec3.hpp>
 #include <map>

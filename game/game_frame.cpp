@@ -168,6 +168,7 @@ void Game::draw(bool timed) {
   if (far_) {
     far_->update(frame.cameraPosition, s.viewDistance, world_, renderer_.lod());
     frame.lod = &renderer_.lod();
+    frame.lodShadows = s.lod.shadows;
     frame.viewDistance = static_cast<float>(std::max(s.viewDistance, far_->distance()) * kChunkSize);
   }
   frame.debugView = overlay_.view();

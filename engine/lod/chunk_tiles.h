@@ -10,6 +10,7 @@
 #include "lod/lod_tile.h"
 #include "world/block_registry.h"
 #include "world/chunk.h"
+#include "world/generator.h"
 
 namespace terrasol {
 
@@ -17,6 +18,12 @@ namespace terrasol {
 using ChunkLookup = std::function<const Chunk*(ChunkPos)>;
 
 LodTile tileFromChunks(LodTileKey key, const ChunkLookup& chunkAt, const BlockRegistry& blocks);
+
+// From a source that holds finished chunks (ChunkGenerator::holdsChunk: a Minecraft save): each chunk
+// of the tile it holds is made whole once, on first need, and kept as its columns while the tile is
+// sampled; the others stay empty. `edited` columns (the player's edits) are taken as they are.
+LodTile tileFromHeldChunks(const ChunkGenerator& source, LodTileKey key, const BlockRegistry& blocks,
+                           const LodColumnSource& edited = {});
 
 // One column (x, z within the chunk) as tileFromChunks sees it.
 LodColumn chunkColumn(const Chunk& chunk, int x, int z, const BlockRegistry& blocks);

@@ -5,6 +5,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "lod/chunk_tiles.h"
 #include "lod/lod_summary.h"
 
 namespace terrasol {
@@ -36,6 +37,16 @@ LodTile tileFromGenerator(const ChunkGenerator& generator, LodTileKey key, const
         }
     return column;
   });
+}
+
+bool lodCanSample(const ChunkGenerator& source) {
+  return source.surfaceColumn(0, 0).has_value() || source.holdsChunks();
+}
+
+LodTile tileFromSource(const ChunkGenerator& source, LodTileKey key, const BlockRegistry& blocks,
+                       const LodColumnSource& edited) {
+  if (source.surfaceColumn(0, 0)) return tileFromGenerator(source, key, edited);
+  return tileFromHeldChunks(source, key, blocks, edited);
 }
 
 }  // namespace terrasol

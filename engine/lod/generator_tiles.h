@@ -7,6 +7,7 @@
 
 #include "lod/lod_summary.h"
 #include "lod/lod_tile.h"
+#include "world/block_registry.h"
 #include "world/generator.h"
 
 namespace terrasol {
@@ -14,5 +15,12 @@ namespace terrasol {
 // `edited`: columns that differ from the generator's now (the player's edits), taken as they are.
 LodTile tileFromGenerator(const ChunkGenerator& generator, LodTileKey key,
                           const LodColumnSource& edited = {});
+
+// Whether far terrain can show what `source` makes: by its column rule, or from the chunks it holds.
+bool lodCanSample(const ChunkGenerator& source);
+// A tile by the column rule where there is one, else from the chunks the source holds
+// (lod/chunk_tiles.h).
+LodTile tileFromSource(const ChunkGenerator& source, LodTileKey key, const BlockRegistry& blocks,
+                       const LodColumnSource& edited = {});
 
 }  // namespace terrasol

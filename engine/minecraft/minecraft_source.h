@@ -28,6 +28,8 @@ class MinecraftChunkSource : public ChunkGenerator {
   int surfaceHeight(int x, int z) const override;
   // Each column's biome tint, blended (a chunk of the overlay's save).
   void fillTints(Chunk& chunk) const override;
+  bool holdsChunks() const override { return true; }
+  bool holdsChunk(ChunkPos pos) const override { return save_.contains(pos); }
 
   const MinecraftSave& save() const { return save_; }
   // Where a player starts: the save's single player, else its spawn, else above the middle of its

@@ -17,14 +17,15 @@ constexpr int kMaskMargin = 2;
 
 std::unique_ptr<SceneLod> SceneLod::create(const LodSettings& settings, const SceneWorld& world,
                                            LodPalette palette) {
-  if (settings.distance <= 0 || !world.generator().surfaceColumn(0, 0)) return nullptr;
+  if (settings.distance <= 0 || !lodCanSample(world.generator())) return nullptr;
   return std::unique_ptr<SceneLod>(new SceneLod(settings, world, std::move(palette)));
 }
 
 SceneLod::SceneLod(const LodSettings& settings, const SceneWorld& world, LodPalette palette)
     : world_(world),
       settings_(settings),
-      terrain_([&generator = world.generator()](LodTileKey key) { return tileFromGenerator(generator, key); },
+      terrain_([&source = world.generator(), &blocks = world.world().blocks()](
+                   LodTileKey key) { return tileFromSource(source, key, blocks); },
                std::move(palette), LodLevels{settings.minLevel, settings.detail},
                static_cast<int>(std::max(1u, std::thread::hardware_concurrency()))) {}
 

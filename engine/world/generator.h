@@ -49,6 +49,10 @@ class ChunkGenerator {
   virtual std::optional<SurfaceColumn> surfaceColumn(int /*x*/, int /*z*/) const { return std::nullopt; }
   // The crowns of the trees generate() roots in chunk `at` (far terrain's forests).
   virtual void treeCrowns(ChunkPos /*at*/, std::vector<TreeCrown>& /*out*/) const {}
+  // A source that holds finished chunks (a save) rather than a rule: whether it does, and which it
+  // holds. Far terrain makes those whole where there is no column rule.
+  virtual bool holdsChunks() const { return false; }
+  virtual bool holdsChunk(ChunkPos /*pos*/) const { return false; }
 };
 
 struct FlatLayer {

@@ -1,5 +1,5 @@
-// Far terrain's tiles (lod/): a cell's summary of hand-built columns, and the generator sampled
-// coarsely against the chunks it makes.
+// Far terrain's tiles (lod/): a cell's summary of hand-built columns, the generator sampled coarsely
+// against the chunks it makes, and a save's chunks read whole.
 
 #include <gtest/gtest.h>
 
@@ -14,6 +14,7 @@
 #include "lod/generator_tiles.h"
 #include "lod/lod_summary.h"
 #include "minecraft/minecraft_save.h"
+#include "minecraft/minecraft_source.h"
 #include "support/test_data.h"
 #include "support/world_support.h"
 #include "world/chunk.h"
@@ -169,13 +170,69 @@ TEST(ChunkTiles, ColumnsKeepTheirGroundWaterAndLeavesAndMissingChunksLeaveCellsE
   EXPECT_EQ(tile.at(20, 20).top, 63);
 }
 
-// A real Minecraft save (go-mc 1.18.1, 593 chunks): every cell of 4 blocks over its chunks has ground,
+// A source that holds a few finished chunks of a flat world, one with a pillar, and counts what it makes.
+class HeldChunks : public ChunkGenerator {
+ public:
+  explicit HeldChunks(const BlockRegistry& b)
+      : flat_(makeGenerator({"flat", 0, {}}, b)), stone_(b.id("stone")) {}
+  void generate(Chunk& chunk) const override {
+    ++made;
+    flat_->generate(chunk);
+    if (chunk.pos() == ChunkPos{1, 0}) chunk.set(3, 90, 4, stone_);
+  }
+  int surfaceHeight(int x, int z) const override { return flat_->surfaceHeight(x, z); }
+  bool holdsChunks() const override { return true; }
+  bool holdsChunk(ChunkPos pos) const override { return pos.z == 0 && (pos.x == 0 || pos.x == 1); }
+  mutable int made = 0;
+
+ private:
+  std::unique_ptr<ChunkGenerator> flat_;
+  BlockId stone_;
+};
+
+// With no column rule, a tile comes from the chunks the source holds, each made once however many
+// columns are sampled in it, the same as from those chunks made beforehand; the rest stays empty.
+TEST(ChunkTiles, ASourceOfHeldChunksMakesEachOnceAndLeavesTheRestEmpty) {
+  const BlockRegistry& b = defaultBlocks();
+  const HeldChunks source(b);
+  EXPECT_TRUE(lodCanSample(source));
+  const LodTileKey key{1, 0, 0};  // cells of 2 blocks: 64 columns sampled in each chunk
+  const LodTile tile = tileFromSource(source, key, b);
+  EXPECT_EQ(source.made, 2);
+  std::map<std::pair<int, int>, std::unique_ptr<Chunk>> chunks;
+  for (const int x : {0, 1}) {
+    chunks[{x, 0}] = std::make_unique<Chunk>(ChunkPos{x, 0});
+    source.generate(*chunks[{x, 0}]);
+  }
+  const LodTile expected = tileFromChunks(
+      key,
+      [&](ChunkPos p) -> const Chunk* {
+        const auto found = chunks.find({p.x, p.z});
+        return found == chunks.end() ? nullptr : found->second.get();
+      },
+      b);
+  EXPECT_TRUE(tile.cells == expected.cells);
+  EXPECT_EQ(tile.at(9, 2).top, 90) << "the pillar at (19, 4)";
+  EXPECT_EQ(tile.at(20, 2), LodCell{}) << "chunk (2, 0) is not held";
+  EXPECT_EQ(tile.at(3, 12), LodCell{}) << "chunk (0, 1) is not held";
+  // The player's edits come first.
+  const LodTile edited = tileFromSource(source, key, b, [](int x, int z) -> std::optional<LodColumn> {
+    if (x / 2 == 20 && z / 2 == 2) return LodColumn{100, 1};
+    return std::nullopt;
+  });
+  EXPECT_EQ(edited.at(20, 2).top, 100);
+  EXPECT_FALSE(lodCanSample(*makeGenerator({"flat", 0, {}}, b))) << "no rule, no chunks of its own";
+}
+
+// A real Minecraft save (go-mc 1.18.1, 593 chunks), its chunks loaded beforehand and read on demand
+// through the source that opens it (the same cells): every cell of 4 blocks over its chunks has ground,
 // never above the highest block the save's columns hold, and its top or water no lower than that
 // block by more than a cell (what lies above the ground and water is plants, snow and torches).
 TEST(ChunkTiles, AMinecraftSavesTilesFollowItsSurface) {
   TERRASOL_SKIP_WITHOUT_TEST_DATA();
   const BlockRegistry& b = defaultBlocks();
   const MinecraftSave save(testing::testData() / "worlds" / "go-mc-1.18.1");
+  const MinecraftChunkSource source(testing::testData() / "worlds" / "go-mc-1.18.1", b);
   BlockStateMapper mapper(b, kAir);
   std::map<std::pair<int, int>, std::unique_ptr<Chunk>> chunks;
   for (const ChunkPos pos : save.chunks()) {
@@ -209,8 +266,14 @@ TEST(ChunkTiles, AMinecraftSavesTilesFollowItsSurface) {
   for (const auto& [t, unused] : tiles) {
     const LodTileKey key{2, t.first, t.second};
     const LodTile tile = tileFromChunks(key, lookup, b);
+    // The save as the game and scenes open it: the same ground, water and blocks, read on demand.
+    const LodTile held = tileFromSource(source, key, b);
     for (int cz = 0; cz < kLodTileCells; ++cz)
       for (int cx = 0; cx < kLodTileCells; ++cx) {
+        const LodCell &a = tile.at(cx, cz), &h = held.at(cx, cz);
+        ASSERT_TRUE(a.top == h.top && a.surface == h.surface && a.water == h.water &&
+                    a.waterBlock == h.waterBlock)
+            << "cell " << cx << ", " << cz << " of tile " << key.x << ", " << key.z;
         const int x0 = key.minBlockX() + cx * key.cellBlocks(), z0 = key.minBlockZ() + cz * key.cellBlocks();
         if (!lookup(ChunkPos::of(BlockPos{x0, 0, z0}))) {
           EXPECT_EQ(tile.at(cx, cz), LodCell{});
