@@ -47,8 +47,8 @@ struct LodMesh {
   // vertices `indices` makes triangles of, counter-clockwise too.
   std::vector<LodVertex> vertices;
   std::vector<std::uint16_t> indices;
-  int minY = 0, maxY = 0;  // blocks: the box the quads lie in (skirts reach kMinY)
-  bool allWalls = false;   // terraces, meshed to meet full detail
+  int minY = kMinY, maxY = kMinY;  // blocks: the box the mesh lies in (skirts reach kMinY)
+  bool allWalls = false;           // terraces, meshed to meet full detail
   // Terraces' quads showing face d (Direction) are [faceStart[d], faceStart[d + 1]): a pass leaves out
   // the walls turned away from the camera for the whole tile.
   std::array<std::uint32_t, 7> faceStart{};

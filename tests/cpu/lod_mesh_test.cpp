@@ -17,6 +17,7 @@
 #include <optional>
 #include <vector>
 
+#include "core/octahedral.h"
 #include "lod/lod_select.h"
 #include "lod/lod_terrain.h"
 
@@ -107,6 +108,7 @@ TEST(LodMesh, TerracesTurnTheirFrontOutwardsAndStepsGetWalls) {
   }
   EXPECT_EQ(pillarWalls, 4) << "the pillar's four sides, from its neighbours' tops to its own";
   EXPECT_EQ(mesh.maxY, 81);
+  EXPECT_EQ(mesh.minY, kMinY) << "the box the renderer culls by reaches the skirts' foot";
   // The flat cells merge: 1023 flat cells are far fewer quads than cells.
   EXPECT_LT(mesh.vertices.size() / 4, 200u);
   EXPECT_TRUE(mesh.indices.empty());
@@ -139,10 +141,16 @@ TEST(LodMesh, AHeightfieldFacesUpAndOutAndLeansAwayFromHigherCells) {
   EXPECT_EQ(v.x, 3 * kLodXZSteps + kLodXZSteps / 2);
   EXPECT_EQ(v.y, lodSurfaceY(tile.at(3, 5)));
   EXPECT_EQ((v.material >> kLodFaceShift) & 7u, kLodFaceSmooth);
-  const double gx = lodSurfaceY(tile.at(4, 5)) - lodSurfaceY(tile.at(2, 5));
-  if (gx != 0.0) {
-    EXPECT_EQ(v.cellX<128, gx> 0.0);
-  }
+  // The normal is the slope's, from the neighbours' heights (1/8 block; cells of 4 blocks), as the
+  // shader decodes it.
+  const auto rise = [&](int x0, int z0, int x1, int z1) {
+    return (lodSurfaceY(tile.at(x1, z1)) - lodSurfaceY(tile.at(x0, z0))) / (8.0 * kLodYSteps);
+  };
+  const glm::dvec3 slope = glm::normalize(glm::dvec3(-rise(2, 5, 4, 5), 1.0, -rise(3, 4, 3, 6)));
+  const glm::dvec3 decoded = octDecode(glm::dvec2(v.cellX, v.cellZ) / 127.5 - 1.0);
+  EXPECT_GT(glm::dot(decoded, slope), 0.999);
+  EXPECT_GT(std::abs(slope.x) + std::abs(slope.z), 0.1) << "a cell on a slope, so the check means something";
+  EXPECT_EQ(mesh.minY, kMinY) << "the box the renderer culls by reaches the skirts' foot";
 }
 
 TEST(LodMesh, WaterLiesAtSevenEighthsOfItsBlockAndIsMarked) {
