@@ -61,8 +61,11 @@ Game::Game(GlfwWindow& window, const GameOptions& options)
       interaction_(content_),
       input_(window, settings_.values.keys),
       ui_(window.handle(), settings_, firstOf(world_.propFiles())),
-      overlay_(reinterpret_cast<const char*>(glGetString(GL_RENDERER))) {
+      overlay_(reinterpret_cast<const char*>(glGetString(GL_RENDERER))),
+      audio_(options, content_.blocks) {
   content_.defaultBake.reset();  // the shapes and the first atlas are made
+  audio_.setPacks(renderer_.assets().packs);
+  audio_.setVolumes(settings_.values.sound);
   if (!options.inputScript.empty()) script_.emplace(loadInputScript(options.inputScript));
   input_.setScreenKeys(&ui_);
   if (!world_.notice().empty()) ui_.showNotice(world_.notice(), frames_.clock, kNoticeSeconds);
@@ -135,6 +138,7 @@ void Game::applyMenu(const MenuResult& r) {
   if (r.shaderPackChanged) renderer_.setShaderPack(s.shaderpack);
   if (r.settingsChanged) {
     window_.setVsync(s.vsync);
+    audio_.setVolumes(s.sound);
     settings_.save();
   }
   if (r.save) save();
@@ -147,6 +151,7 @@ void Game::reloadPacks() {
     std::unique_ptr<BlockAssets> assets = renderer_.loadPacks(settings_.values.packs);
     world_.streamed().remeshAll(assets->table);
     renderer_.commit(std::move(assets));
+    audio_.setPacks(renderer_.assets().packs);
     resetFarTerrain();
     for (const PackProblem& p : renderer_.assets().atlas.problems) logWarning(p.message);
   } catch (const Error& e) {

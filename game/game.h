@@ -10,6 +10,7 @@
 #include "block_interaction.h"
 #include "debug_overlay.h"
 #include "far_terrain.h"
+#include "game_audio.h"
 #include "game_renderer.h"
 #include "game_report.h"
 #include "game_ui.h"
@@ -103,6 +104,7 @@ class Game {
   InputRouter input_;  // before the UI: ImGui's callbacks chain to the router's
   GameUi ui_;
   DebugOverlay overlay_;
+  GameAudio audio_;
   std::unique_ptr<FarTerrain> far_;  // settings "lod"; null when off
   FrameState frames_;
   std::optional<ScriptDriver> script_;

@@ -114,7 +114,10 @@ void Game::playInput(double dt) {
   }
   const FrameInput in = input_.take();
   handleInput(in, dt);
-  world_.tick(in, input_.screenOpen(), Player::ticksFor(frames_.tickAccumulator, dt));
+  world_.tick(in, input_.screenOpen(), Player::ticksFor(frames_.tickAccumulator, dt),
+              [this] { audio_.tick(world_); });
+  const Player& player = world_.player();
+  audio_.frame(world_, player.eyeAt(frames_.tickAccumulator * kTicksPerSecond), player.forward(), dt);
 }
 
 void Game::handleInput(const FrameInput& in, double dt) {

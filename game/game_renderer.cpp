@@ -71,7 +71,8 @@ BlockAssets::BlockAssets(const BlockRegistry& blocks, const PackStack& stack, st
     : atlas(defaultBake && isDefaultPackAlone(stack) ? buildBlockAtlas(blocks, stack, *defaultBake)
                                                      : buildBlockAtlas(blocks, stack)),
       table(meshTableOf(blocks, atlas)),
-      packNames(std::move(names)) {}
+      packNames(std::move(names)),
+      packs(stack) {}
 
 GameRenderer::GameRenderer(const BlockRegistry& blocks, const GameSettings& settings,
                            const BlockModelBake* defaultBake)

@@ -32,6 +32,7 @@ struct BlockAssets {
   BlockAtlas atlas;
   BlockMeshTable table;
   std::vector<std::string> packNames;  // bottom to top, as loaded
+  PackStack packs;                     // for what else the packs hold (sounds)
 };
 
 class GameRenderer {

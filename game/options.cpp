@@ -86,6 +86,9 @@ std::string gameUsage() {
          "  --screenshot FILE save the last frame as an image (with --frames)\n"
          "  --demo-dir DIR    where to write the headless demo when there is no display\n"
          "                    (default: demo/ beside the executable)\n"
+         "  --audio-out F.wav play into this file instead of the speakers, in step with the frames (no\n"
+         "                    sound card needed; with --input-script the file is the same every run)\n"
+         "  --sound-log FILE  write every sound the game asks for, with its tick, as JSON lines\n"
          "  --help            show this text\n";
 }
 
@@ -131,6 +134,10 @@ GameOptions parseGameOptions(const std::vector<std::string>& args) {
       options.size = parseSize(arg, value());
     } else if (arg == "--screenshot") {
       options.screenshot = value();
+    } else if (arg == "--audio-out") {
+      options.audioOut = value();
+    } else if (arg == "--sound-log") {
+      options.soundLog = value();
     } else if (arg == "--demo-dir") {
       options.demoDir = value();
     } else {

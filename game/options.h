@@ -32,6 +32,8 @@ struct GameOptions {
   glm::ivec2 size{1280, 720};           // window size
   std::filesystem::path demoDir;        // where the headless demo goes when there is no display
   std::filesystem::path screenshot;     // with --frames: the last frame is saved here
+  std::filesystem::path audioOut;       // play into this .wav instead of the speakers, in step with frames
+  std::filesystem::path soundLog;       // every sound the game asks for, a JSON object per line
   bool demo = false;                    // fly the built-in demo path instead of playing
   bool help = false;
 };

@@ -84,7 +84,8 @@ PlayWorld::PlayWorld(const std::filesystem::path& dir, bool scratch, std::uint64
   renderer_.setPropNeeds(props_.placed().gpu().needs());
 }
 
-void PlayWorld::tick(const FrameInput& in, bool screenOpen, int ticks) {
+void PlayWorld::tick(const FrameInput& in, bool screenOpen, int ticks,
+                     const std::function<void()>& afterTick) {
   MoveInput move;
   if (!screenOpen) {
     move.forward =
@@ -99,6 +100,7 @@ void PlayWorld::tick(const FrameInput& in, bool screenOpen, int ticks) {
     if (player_.position().y < kMinY - 64)
       spawnPending_ = true;  // fell out of the world: back to the surface
     time_.tick(world_.level().time);
+    if (afterTick) afterTick();
   }
 }
 
@@ -127,7 +129,9 @@ int PlayWorld::stream(std::chrono::steady_clock::time_point deadline) {
 }
 
 bool PlayWorld::editBlock(const BlockPos& pos, BlockId state) {
+  const BlockId before = world_.world().getBlock(pos);
   if (!world_.setBlock(pos, state)) return false;
+  changes_.push_back({pos, before, state});
   edits_.push_back({pos, content_.blocks.stateName(state)});
   for (const auto& [at, connected] : connectionUpdates(world_.world(), pos)) {
     if (world_.setBlock(at, connected)) edits_.push_back({at, content_.blocks.stateName(connected)});

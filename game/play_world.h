@@ -6,8 +6,10 @@
 #include <chrono>
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "controls.h"
@@ -37,6 +39,12 @@ struct Edit {
   std::string block;  // its state's name
 };
 
+// A cell the player changed (not the neighbours that joined it), for what is heard.
+struct StateChange {
+  BlockPos pos;
+  BlockId before = kAir, after = kAir;
+};
+
 class PlayWorld {
  public:
   // Opens `dir`, or creates it with `seed`; a saved player stands where they were, a new world's
@@ -64,10 +72,12 @@ class PlayWorld {
   TimeControls& time() { return time_; }
   const TimeControls& time() const { return time_; }
   const std::vector<Edit>& edits() const { return edits_; }
+  // The player's changes since the last call.
+  std::vector<StateChange> takeStateChanges() { return std::exchange(changes_, {}); }
 
   // `ticks` game ticks of the player moving by `input` (nothing held while a screen is open) and of
-  // the world's clock.
-  void tick(const FrameInput& input, bool screenOpen, int ticks);
+  // the world's clock; `afterTick` runs after each.
+  void tick(const FrameInput& input, bool screenOpen, int ticks, const std::function<void()>& afterTick = {});
   // A jump press at game time `now`: two in quick succession toggle flight.
   void jumpPressed(double now);
   // Streams the world round the player until `deadline` and uploads the finished meshes; relights
@@ -102,6 +112,7 @@ class PlayWorld {
   bool spawnPending_ = false;  // the player waits for the ground to drop onto
   std::string notice_;
   std::vector<Edit> edits_;
+  std::vector<StateChange> changes_;
 };
 
 }  // namespace terrasol

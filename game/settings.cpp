@@ -28,6 +28,14 @@ std::vector<PackChoice> parsePacks(const json& value, const path& dir) {
   return packs;
 }
 
+void parseSound(const json& value, AudioVolumes& v) {
+  checkObject(value, "sound", {"master", "blocks", "ambient", "music"});
+  for (auto [name, target] : {std::pair{"master", &v.master}, std::pair{"blocks", &v.blocks},
+                              std::pair{"ambient", &v.ambient}, std::pair{"music", &v.music}}) {
+    if (const json* f = field(value, name)) *target = numberIn(*f, member("sound", name), 0.0, 1.0, false);
+  }
+}
+
 void parseKeys(const json& value, KeyBindings& keys) {
   if (!value.is_object()) expected("keys", "an object", value);
   for (const auto& [name, k] : value.items()) {
@@ -44,9 +52,26 @@ void parseKeys(const json& value, KeyBindings& keys) {
 
 GameSettings parseRoot(const json& root, const path& dir) {
   checkObject(root, "",
-              {"view_distance", "fov", "mouse_sensitivity", "sun_path_rotation", "shadow", "reflections",
-               "antialiasing", "bloom", "clouds", "fog", "shafts", "lod", "packs", "shaderpack", "keys",
-               "vsync", "render_scale", "target_fps", "first_run"});
+              {"view_distance",
+               "fov",
+               "mouse_sensitivity",
+               "sun_path_rotation",
+               "shadow",
+               "reflections",
+               "antialiasing",
+               "bloom",
+               "clouds",
+               "fog",
+               "shafts",
+               "lod",
+               "packs",
+               "shaderpack",
+               "keys",
+               "sound",
+               "vsync",
+               "render_scale",
+               "target_fps",
+               "first_run"});
   GameSettings s;
   if (const json* v = field(root, "view_distance"))
     s.viewDistance = static_cast<int>(wholeNumber(*v, "view_distance", 2, 32));
@@ -69,6 +94,7 @@ GameSettings parseRoot(const json& root, const path& dir) {
   if (const json* v = field(root, "shaderpack"); v && !(v->is_string() && v->get<std::string>().empty()))
     s.shaderpack = dir / nonEmptyString(*v, "shaderpack");
   if (const json* v = field(root, "keys")) parseKeys(*v, s.keys);
+  if (const json* v = field(root, "sound")) parseSound(*v, s.sound);
   if (const json* v = field(root, "vsync")) s.vsync = boolean(*v, "vsync");
   if (const json* v = field(root, "render_scale"))
     s.renderScale = numberIn(*v, "render_scale", kMinRenderScale, kMaxRenderScale, false);
@@ -125,6 +151,11 @@ void saveSettings(const std::filesystem::path& file, const GameSettings& s) {
                {"packs", packs},
                {"shaderpack", s.shaderpack.string()},
                {"keys", keys},
+               {"sound",
+                {{"master", s.sound.master},
+                 {"blocks", s.sound.blocks},
+                 {"ambient", s.sound.ambient},
+                 {"music", s.sound.music}}},
                {"vsync", s.vsync},
                {"render_scale", s.renderScale},
                {"target_fps", s.targetFps}};

@@ -9,6 +9,7 @@
 #include <string_view>
 #include <vector>
 
+#include "audio/audio_engine.h"
 #include "controls.h"
 #include "scene/scene_file.h"
 
@@ -44,6 +45,7 @@ struct GameSettings {
   std::vector<PackChoice> packs;                   // stacked bottom to top over the default pack
   std::filesystem::path shaderpack;  // an OptiFine/Iris shader pack drawing instead of Terrasol's pipeline
   KeyBindings keys;
+  AudioVolumes sound;  // "sound": {"master", "blocks", "ambient", "music"}, each 0..1
   bool vsync = true;
   float renderScale = 1.0f;                // the scene drawn at this fraction of the window, 0.25..1
   int targetFps = 30;                      // dynamic resolution holds this rate (below render_scale); 0: off

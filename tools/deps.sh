@@ -18,6 +18,8 @@ packages=(
   zlib1g-dev liblz4-dev
   # resource packs shipped as .zip
   libzip-dev
+  # sound: OpenAL Soft for playback, libvorbis to decode packs' .ogg files and to encode the default pack's
+  libopenal-dev libvorbis-dev
   # the HUD, debug overlay and menus (Dear ImGui with its GLFW and OpenGL 3 backends)
   libimgui-dev
   # tests and benchmarks

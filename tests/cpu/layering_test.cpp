@@ -25,6 +25,7 @@ const std::map<std::string, std::set<std::string>> kAllowed = {
     {"lod", {"core", "world", "lod"}},
     {"mesh", {"core", "world", "mesh"}},
     {"assets", {"core", "assets"}},
+    {"audio", {"core", "assets", "audio"}},
     {"shaderpack", {"core", "world", "assets", "shaderpack"}},
     {"render", {"core", "assets", "mesh", "lod", "render"}},
     {"pack_render", {"core", "world", "assets", "mesh", "lod", "render", "shaderpack", "pack_render"}},

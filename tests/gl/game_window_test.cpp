@@ -12,6 +12,7 @@
 #include "core/error.h"
 #include "demo.h"
 #include "scene_render/scene_render.h"
+#include "support/game_run.h"
 #include "support/gl_test.h"
 #include "support/gltf_box.h"
 #include "support/golden.h"
@@ -21,11 +22,9 @@ namespace {
 
 class GameWindowTest : public testing::GlTest {};
 
-int runGame(const std::string& arguments) {
-  const std::string command =
-      std::string(TERRASOL_XVFB_RUN) + " -a -s '-screen 0 640x480x24' " + TERRASOL_GAME_EXE + " " + arguments;
-  return std::system(command.c_str());
-}
+using testing::GameDir;
+using testing::readJson;
+using testing::runGame;
 
 TEST_F(GameWindowTest, WindowShowsWhatHeadlessRenders) {
   constexpr int kFrames = 5;
@@ -46,25 +45,6 @@ TEST_F(GameWindowTest, WindowShowsWhatHeadlessRenders) {
   const ImageComparison cmp = compareImages(window, headless, {});
   EXPECT_TRUE(cmp.matches) << cmp.failingPercent << " % of pixels differ, max " << cmp.maxError * 255.0;
 }
-
-nlohmann::json readJson(const std::filesystem::path& file) {
-  return nlohmann::json::parse(readTextFile(file));
-}
-
-// A fresh folder for one run of the game, with small, quick settings: 2 chunks of view, a small
-// shadow map. `common` holds the arguments every run in it takes.
-struct GameDir {
-  explicit GameDir(const std::string& name, int shadowResolution = 512, int shadowDistance = 32)
-      : dir(testing::testOutputDir() / name), settings(dir / "settings.json") {
-    std::filesystem::remove_all(dir);
-    std::filesystem::create_directories(dir);
-    std::ofstream(settings) << R"({ "view_distance": 2, "shadow": { "resolution": )" << shadowResolution
-                            << R"(, "distance": )" << shadowDistance << " } }";
-    common = "--world " + (dir / "world").string() + " --settings " + settings.string() + " --size 320x180";
-  }
-  std::filesystem::path dir, settings;
-  std::string common;
-};
 
 TEST_F(GameWindowTest, ScriptedPlayEditsSavesAndTheNextRunFindsTheEditsAndTheLight) {
   const GameDir game("game_smoke");

@@ -1,0 +1,267 @@
+// The audio engine without a sound card: OpenAL Soft's loopback device renders what plays into
+// memory, so these tests hear it. Also the default pack's sounds (every event the game fires has
+// one and every file decodes), .wav files, and which voice a sound takes when voices run out.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <iterator>
+
+#include "ambience.h"
+#include "audio/audio_engine.h"
+#include "audio/ogg_file.h"
+#include "audio/voice_pool.h"
+#include "audio/wav_file.h"
+#include "core/paths.h"
+#include "music_timer.h"
+#include "support/pack_builder.h"
+#include "support/world_support.h"
+#include "world/block_sounds.h"
+
+namespace terrasol {
+namespace {
+
+using testing::defaultBlocks;
+
+std::vector<std::uint8_t> bytesOf(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), {}};
+}
+
+PackStack defaultPack() {
+  return testing::stackOf({resourcePackDir() / "default"});
+}
+
+// Loudness of each channel of interleaved stereo, in 16-bit steps.
+struct Levels {
+  double left = 0.0, right = 0.0;
+};
+Levels rms(const std::vector<std::int16_t>& stereo) {
+  Levels l;
+  for (std::size_t i = 0; i + 1 < stereo.size(); i += 2) {
+    l.left += static_cast<double>(stereo[i]) * stereo[i];
+    l.right += static_cast<double>(stereo[i + 1]) * stereo[i + 1];
+  }
+  const double n = std::max<double>(1.0, static_cast<double>(stereo.size() / 2));
+  return {std::sqrt(l.left / n), std::sqrt(l.right / n)};
+}
+
+TEST(VoicePool, TheQuietestGivesWayToALouderSound) {
+  VoicePool pool(3);
+  EXPECT_EQ(pool.claim(0.5f), 0);
+  EXPECT_EQ(pool.claim(0.2f), 1);
+  EXPECT_EQ(pool.claim(0.9f), 2);
+  EXPECT_EQ(pool.busyCount(), 3);
+  EXPECT_FALSE(pool.claim(0.1f));  // quieter than all that play: not played
+  EXPECT_EQ(pool.claim(0.3f), 1);  // takes the 0.2 voice
+  pool.release(0);
+  EXPECT_EQ(pool.claim(0.01f), 0);  // a free voice takes any sound
+}
+
+TEST(WavFile, WritesAndReadsBack) {
+  const std::filesystem::path file = testing::testOutputDir() / "roundtrip.wav";
+  const std::vector<std::int16_t> samples = {0, 1, -1, 32767, -32768, 1234, -4321, 7};
+  {
+    WavWriter w(file, 2, 44100);
+    w.write(samples);
+  }
+  const Pcm back = readWav(file);
+  EXPECT_EQ(back.channels, 2);
+  EXPECT_EQ(back.rate, 44100);
+  EXPECT_EQ(back.samples, samples);
+  std::ofstream(testing::testOutputDir() / "not.wav") << "RIFF but not really";
+  try {
+    readWav(testing::testOutputDir() / "not.wav");
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("not.wav"), std::string::npos) << e.what();
+  }
+}
+
+TEST(OggFile, BadBytesAreAnErrorNamingTheFile) {
+  try {
+    decodeOgg({'O', 'g', 'g', 'S', 0, 1, 2}, "pack/sounds/bad.ogg");
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("pack/sounds/bad.ogg"), std::string::npos) << e.what();
+  }
+}
+
+// Every sound the game can ask for is in the default pack, and every file it names decodes to
+// sound: no silence, no clipping, no NaN.
+TEST(DefaultPackSounds, EveryEventTheGameFiresHasASound) {
+  std::vector<std::string> problems;
+  const SoundEvents events = SoundEvents::load(defaultPack(), problems);
+  EXPECT_TRUE(problems.empty()) << problems.front();
+  std::vector<std::string> fired;
+  for (const SoundGroup& g : soundGroups()) {
+    if (g.like != g.name || g.name == kSilentSoundGroup) continue;
+    for (std::string_view action : {"break", "place", "step", "hit", "fall"})
+      fired.push_back("block." + std::string(g.name) + "." + std::string(action));
+  }
+  for (std::size_t i = 0; i < defaultBlocks().blockCount(); ++i) {
+    const std::string_view kind = openSoundKind(defaultBlocks().block(i).name);
+    if (kind.empty()) continue;
+    fired.push_back("block." + std::string(kind) + ".open");
+    fired.push_back("block." + std::string(kind) + ".close");
+  }
+  for (std::string_view e : kAmbienceEvents) fired.emplace_back(e);
+  fired.emplace_back(MusicTimer::kDay);
+  fired.emplace_back(MusicTimer::kNight);
+  for (const std::string& e : fired) {
+    const auto pick = events.pick(e, 12345);
+    EXPECT_TRUE(pick) << e;
+    if (pick) {
+      EXPECT_TRUE(std::filesystem::exists(resourcePackDir() / "default" / pick->file)) << pick->file;
+    }
+  }
+  EXPECT_GT(fired.size(), 90u);
+}
+
+TEST(DefaultPackSounds, EveryFileDecodesToSound) {
+  int files = 0;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(resourcePackDir() / "default" /
+                                                                         "assets" / "minecraft" / "sounds")) {
+    if (entry.path().extension() != ".ogg") continue;
+    ++files;
+    const Pcm pcm = decodeOgg(bytesOf(entry.path()), entry.path().string());
+    ASSERT_GT(pcm.frames(), 1000u) << entry.path();
+    double sum = 0.0;
+    int peak = 0;
+    for (std::int16_t s : pcm.samples) {
+      sum += static_cast<double>(s) * s;
+      peak = std::max(peak, std::abs(static_cast<int>(s)));
+    }
+    const double level = std::sqrt(sum / static_cast<double>(pcm.samples.size())) / 32768.0;
+    EXPECT_GT(level, 0.01) << entry.path() << " is all but silent";
+    EXPECT_LT(peak, 32767) << entry.path() << " clips";
+  }
+  EXPECT_GE(files, 100);
+}
+
+// A sound to the listener's right is louder on the right; one past its reach plays nothing; nothing
+// playing is silence.
+TEST(AudioEngine, PositionalSoundsArePannedAndFadeWithDistance) {
+  AudioEngine engine(AudioOutput::Loopback);
+  std::vector<std::string> problems;
+  engine.setPacks(defaultPack(), problems);
+  engine.setListener({0, 64, 0}, {0, 0, -1}, {0, 1, 0});  // looking north: east (+x) is on the right
+  std::vector<std::int16_t> out(44100);                   // half a second of stereo
+  engine.render(out);
+  EXPECT_LT(rms(out).left + rms(out).right, 2.0);  // OpenAL Soft dithers its 16-bit output: ±1 at most
+
+  auto heard = [&](glm::vec3 at) {
+    SoundPlay s;
+    s.event = "block.stone.break";
+    s.at = at;
+    EXPECT_TRUE(engine.play(s, 1));
+    engine.render(out);
+    engine.update();
+    std::vector<std::int16_t> rest(44100 * 2);
+    engine.render(rest);  // let it end
+    engine.update();
+    return rms(out);
+  };
+  const Levels right = heard({4, 64, 0}), left = heard({-4, 64, 0}), far = heard({0, 64, -12});
+  EXPECT_GT(right.right, 1.5 * right.left);
+  EXPECT_GT(left.left, 1.5 * left.right);
+  const Levels near = heard({0, 64, -2});
+  EXPECT_GT(near.left + near.right, 2.0 * (far.left + far.right));  // 1 - 2/16 against 1 - 12/16
+  EXPECT_EQ(engine.stats().playing, 0);
+
+  SoundPlay beyond;
+  beyond.event = "block.stone.break";
+  beyond.at = {0, 64, -20};  // past the 16-block reach
+  EXPECT_FALSE(engine.play(beyond, 1));
+  SoundPlay unknown;
+  unknown.event = "block.no_such.break";
+  EXPECT_FALSE(engine.play(unknown, 1));
+  unknown.fallback = "block.stone.break";
+  unknown.at = {0, 64, -1};
+  EXPECT_TRUE(engine.play(unknown, 1));
+}
+
+TEST(AudioEngine, VolumesAndTheVoiceLimit) {
+  AudioEngine engine(AudioOutput::Loopback, 8);
+  std::vector<std::string> problems;
+  engine.setPacks(defaultPack(), problems);
+  engine.setListener({0, 0, 0}, {0, 0, -1}, {0, 1, 0});
+  SoundPlay s;
+  s.event = "block.metal.break";
+  for (int i = 0; i < 12; ++i) {
+    s.at = {0, 0, -static_cast<float>(i)};
+    engine.play(s, static_cast<std::uint32_t>(i));
+  }
+  EXPECT_EQ(engine.stats().playing, 8);
+  EXPECT_EQ(engine.stats().dropped, 4);  // the farthest, quietest ones
+  std::vector<std::int16_t> out(4410);
+  AudioVolumes volumes;
+  volumes.blocks = 0.0f;
+  engine.setVolumes(volumes);
+  engine.render(out);
+  EXPECT_LT(rms(out).left, 1.0);  // blocks at 0: dither alone
+  EXPECT_FALSE(engine.play(s, 1));
+}
+
+// A pack whose sounds.json replaces block.stone.break changes what breaking stone plays.
+TEST(AudioEngine, APackReplacesAnEvent) {
+  testing::PackBuilder pack("sound_replace_pack");
+  const auto glass = bytesOf(resourcePackDir() / "default/assets/minecraft/sounds/dig/glass1.ogg");
+  pack.asset("sounds/custom/crash.ogg", std::string(glass.begin(), glass.end()));
+  pack.asset("sounds.json", R"({"block.stone.break": {"replace": true, "sounds": ["custom/crash"]}})");
+  AudioEngine engine(AudioOutput::Loopback);
+  std::vector<std::string> problems;
+  engine.setPacks(testing::stackOf({resourcePackDir() / "default", pack.dir()}), problems);
+  EXPECT_TRUE(problems.empty());
+  SoundPlay s;
+  s.event = "block.stone.break";
+  s.positional = false;
+  for (std::uint32_t r = 0; r < 20; ++r)
+    EXPECT_EQ(engine.play(s, r), "assets/minecraft/sounds/custom/crash.ogg");
+  s.event = "block.stone.step";  // untouched events keep the default pack's
+  EXPECT_NE(engine.play(s, 0)->find("step/stone"), std::string::npos);
+}
+
+// A missing file is reported once with its name and plays nothing; the rest still plays.
+TEST(AudioEngine, AMissingFileIsReportedAndSilent) {
+  testing::PackBuilder pack("sound_missing_pack");
+  pack.asset("sounds.json", R"({"block.stone.break": {"replace": true, "sounds": ["custom/absent"]}})");
+  AudioEngine engine(AudioOutput::Loopback);
+  std::vector<std::string> problems;
+  engine.setPacks(testing::stackOf({resourcePackDir() / "default", pack.dir()}), problems);
+  SoundPlay s;
+  s.event = "block.stone.break";
+  s.positional = false;
+  EXPECT_FALSE(engine.play(s, 0));
+  EXPECT_FALSE(engine.play(s, 0));
+  const std::vector<std::string> said = engine.takeProblems();
+  ASSERT_EQ(said.size(), 1u);
+  EXPECT_NE(said[0].find("sounds/custom/absent.ogg"), std::string::npos) << said[0];
+  s.event = "block.wood.break";
+  EXPECT_TRUE(engine.play(s, 0));
+}
+
+// Music streams through small buffers and plays to its end, in step with what is rendered.
+TEST(AudioEngine, MusicStreamsToItsEnd) {
+  AudioEngine engine(AudioOutput::Loopback);
+  std::vector<std::string> problems;
+  engine.setPacks(defaultPack(), problems);
+  ASSERT_EQ(engine.playMusic(MusicTimer::kDay, 0), "assets/minecraft/sounds/music/game/meadow.ogg");
+  std::vector<std::int16_t> second(44100 * 2);
+  double quiet = 0.0;
+  int seconds = 0;
+  for (; seconds < 200 && engine.musicPlaying(); ++seconds) {
+    for (int i = 0; i < 20; ++i) {  // 20 frames a second, each with its update
+      engine.render(std::span(second).subspan(static_cast<std::size_t>(i) * 4410, 4410));
+      engine.update();
+    }
+    if (seconds > 3 && seconds < 80 && rms(second).left < 50.0) quiet += 1.0;
+  }
+  EXPECT_GT(seconds, 85);  // the track is about a minute and a half
+  EXPECT_LT(seconds, 110);
+  EXPECT_EQ(quiet, 0.0);  // no second in its middle without sound: no gaps
+}
+
+}  // namespace
+}  // namespace terrasol
