@@ -136,9 +136,9 @@ void Game::applyMenu(const MenuResult& r) {
   if (r.rendererChanged) renderer_.applySettings(s);
   if (r.packsChanged) reloadPacks();
   if (r.shaderPackChanged) renderer_.setShaderPack(s.shaderpack);
+  if (r.soundChanged) audio_.setVolumes(s.sound);
   if (r.settingsChanged) {
     window_.setVsync(s.vsync);
-    audio_.setVolumes(s.sound);
     settings_.save();
   }
   if (r.save) save();

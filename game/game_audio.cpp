@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <nlohmann/json.hpp>
 
 #include "core/error.h"
@@ -108,6 +109,15 @@ void GameAudio::frame(PlayWorld& world, glm::dvec3 eye, glm::dvec3 forward, doub
     wav_->write(mix_);
     rendered_ += frames;
   }
+}
+
+std::string GameAudio::overlayLine() const {
+  if (!engine_) return "Sound: off (no audio device)";
+  const AudioStats s = engine_->stats();
+  char line[128];
+  std::snprintf(line, sizeof line, "Sound: %d/%d voices%s%s, %.2f ms", s.playing, s.voices,
+                s.music ? ", music" : "", ambience_.underwater() ? ", under water" : "", frameMs_);
+  return line;
 }
 
 void GameAudio::play(const SoundCue& cue) {

@@ -191,8 +191,11 @@ void Game::drawHud() {
   if (ui_.hudShown()) ui_.notice(frames_.clock);
   if (overlay_.shown()) {
     const std::deque<float>& graph = overlay_.graph();
+    std::vector<std::string> left =
+        overlay_.left(world_, renderer_, far_ ? std::optional(far_->stats()) : std::nullopt);
+    left.push_back(audio_.overlayLine());
     ui_.overlay(
-        overlay_.left(world_, renderer_, far_ ? std::optional(far_->stats()) : std::nullopt),
+        std::move(left),
         overlay_.right(world_, settings_.values, drawableSize(), renderScale(), interaction_.target()),
         {graph.begin(), graph.end()});
   }

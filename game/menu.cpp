@@ -65,6 +65,10 @@ MenuResult Menu::draw(GameSettings& settings, const std::vector<std::string>& lo
         shaderPacksTab(settings, shaderPacks, out);
         ImGui::EndTabItem();
       }
+      if (ImGui::BeginTabItem("Sound")) {
+        soundTab(settings, out);
+        ImGui::EndTabItem();
+      }
       if (ImGui::BeginTabItem("Controls")) {
         keysTab(settings);
         ImGui::EndTabItem();
@@ -127,6 +131,15 @@ static void presetCombo(GameSettings& s, MenuResult& out) {
     }
   }
   ImGui::EndCombo();
+}
+
+// Volumes change as the slider moves (cheap, and the ear judges them); the file is saved on release.
+void Menu::soundTab(GameSettings& s, MenuResult& out) {
+  for (auto [label, volume] : {std::pair{"Master", &s.sound.master}, std::pair{"Blocks", &s.sound.blocks},
+                               std::pair{"Ambient", &s.sound.ambient}, std::pair{"Music", &s.sound.music}}) {
+    out.soundChanged |= ImGui::SliderFloat(label, volume, 0.0f, 1.0f, "%.2f");
+    out.settingsChanged |= released();
+  }
 }
 
 void Menu::settingsTab(GameSettings& s, MenuResult& out) {

@@ -24,6 +24,7 @@ struct MenuResult {
   bool rendererChanged = false;     // shadow settings: new shader variants and maps
   bool packsChanged = false;        // reload the packs
   bool shaderPackChanged = false;   // draw with settings.shaderpack (or Terrasol's pipeline) from now on
+  bool soundChanged = false;        // volumes: heard while the slider moves
   bool settingsChanged = false;     // anything: save the settings file
   std::optional<std::string> prop;  // the prop model chosen in the Props tab
 };
@@ -42,6 +43,7 @@ class Menu {
   void packsTab(GameSettings& settings, const std::vector<std::string>& loadedPacks, MenuResult& out);
   void shaderPacksTab(GameSettings& settings, const ShaderPackChoices& packs, MenuResult& out);
   void keysTab(GameSettings& settings);
+  void soundTab(GameSettings& settings, MenuResult& out);
   void propsTab(const std::vector<std::string>& files, const std::string& selected, MenuResult& out);
 
   std::optional<Action> rebinding_;

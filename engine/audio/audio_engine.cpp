@@ -268,7 +268,10 @@ void AudioEngine::update() {
     voices_->pool.setLoudness(slot, loudness(where, v.gain, v.reach));
   }
   if (voices_->music && device_.output() == AudioOutput::Loopback) voices_->music->pump();
-  if (voices_->music && !voices_->music->playing()) voices_->music.reset();
+  if (voices_->music && !voices_->music->playing()) {
+    musicUnderruns_ += voices_->music->underruns();
+    voices_->music.reset();
+  }
 }
 
 AudioStats AudioEngine::stats() const {
@@ -278,6 +281,7 @@ AudioStats AudioEngine::stats() const {
   s.loops = static_cast<int>(loops_->byEvent.size());
   s.dropped = voices_->dropped;
   s.music = musicPlaying();
+  s.musicUnderruns = musicUnderruns_ + (voices_->music ? voices_->music->underruns() : 0);
   s.bufferBytes = voices_->bank.bytes();
   return s;
 }

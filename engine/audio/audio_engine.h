@@ -41,6 +41,7 @@ struct SoundPlay {
 struct AudioStats {
   int voices = 0, playing = 0, loops = 0, dropped = 0;  // dropped: sounds no voice was free for
   bool music = false;
+  int musicUnderruns = 0;  // times streamed music ran dry: gaps heard
   std::size_t bufferBytes = 0;
 };
 
@@ -92,6 +93,7 @@ class AudioEngine {
   AudioVolumes volumes_;
   glm::vec3 listener_{0.0f};
   bool underwater_ = false;
+  int musicUnderruns_ = 0;  // of tracks that have ended
   std::vector<std::string> problems_;
 };
 

@@ -79,6 +79,7 @@ bool MusicStream::pump() {
   if (queued == 0) {
     playing_ = false;
   } else if (state != AL_PLAYING) {
+    ++underruns_;
     alSourcePlay(source_.id());  // ran dry for a moment: carry on rather than stop
   }
   return playing_;

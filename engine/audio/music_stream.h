@@ -25,6 +25,8 @@ class MusicStream {
   // Refills played buffers; false once the track has ended and played out. Thread-safe.
   bool pump();
   bool playing() const { return playing_; }
+  // Times the queue ran dry and the track stalled: a gap heard.
+  int underruns() const { return underruns_; }
   void setGain(float gain);
   ALuint source() const { return source_.id(); }
 
@@ -40,6 +42,7 @@ class MusicStream {
   std::vector<std::int16_t> scratch_;
   std::mutex mutex_;
   std::atomic<bool> playing_{true}, ended_{false};
+  std::atomic<int> underruns_{0};
   std::jthread thread_;
 };
 

@@ -83,8 +83,11 @@ Pcm readWav(const std::filesystem::path& file) {
     if (at + 8 + size > bytes.size())
       throw Error(name + ": chunk at byte " + std::to_string(at) + " runs past the end");
     if (std::memcmp(bytes.data() + at, "fmt ", 4) == 0) {
-      if (size < 16 || get16(body) != 1 || get16(body + 14) != 16)
-        throw Error(name + ": only 16-bit PCM is read");
+      // PCM, or WAVE_FORMAT_EXTENSIBLE (as OpenAL Soft's wave writer and others write it) whose
+      // subformat is PCM.
+      const std::uint16_t tag = get16(body);
+      const bool linear = tag == 1 || (tag == 0xfffe && size >= 40 && get16(body + 24) == 1);
+      if (size < 16 || !linear || get16(body + 14) != 16) throw Error(name + ": only 16-bit PCM is read");
       pcm.channels = get16(body + 2);
       pcm.rate = static_cast<int>(get32(body + 4));
       format = true;

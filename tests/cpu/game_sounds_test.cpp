@@ -241,6 +241,29 @@ TEST(Ambience, WindRisesWithHeightUnderOpenSky) {
   EXPECT_EQ(windAt(30.0), 0.0f);  // inside the stone: no sky
 }
 
+TEST(Ambience, EnteringAndLeavingWater) {
+  World world = flatWorld();
+  const BlockId water = defaultBlocks().id("water");
+  for (int y = 64; y < 68; ++y)
+    for (int x = -3; x <= 3; ++x)
+      for (int z = -3; z <= 3; ++z) world.setBlock({x, y, z}, water);
+  LightEngine light(world);
+  for (int cz = -3; cz <= 3; ++cz)
+    for (int cx = -3; cx <= 3; ++cx) light.chunkLoaded({cx, cz});
+  const BlockSoundTable table(world.blocks());
+  Ambience ambience;
+  std::mt19937 random(1);
+  std::vector<SoundCue> cues;
+  const double eyes[] = {70.0, 66.0, 66.0, 69.0};  // above, under, under, above
+  for (int t = 0; t < 4; ++t) ambience.tick(world, light, table, {0.5, eyes[t], 0.5}, t, random, cues);
+  std::vector<std::string> heard;
+  for (const SoundCue& c : cues) heard.push_back(c.sound.event);
+  EXPECT_EQ(heard, (std::vector<std::string>{std::string(kEnterWaterEvent), std::string(kLeaveWaterEvent)}));
+  EXPECT_EQ(cues[0].tick, 1);
+  EXPECT_EQ(cues[1].tick, 3);
+  EXPECT_FALSE(ambience.underwater());
+}
+
 TEST(MusicTimer, MinecraftsDelaysAndNightsTrack) {
   MusicTimer timer;
   std::mt19937 random(7);
