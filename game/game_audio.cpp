@@ -41,7 +41,12 @@ GameAudio::GameAudio(const GameOptions& options, const BlockRegistry& blocks) : 
   }
 }
 
-GameAudio::~GameAudio() = default;
+GameAudio::~GameAudio() {
+  if (frames_ > 0 && engine_)
+    logInfo("sound: " + std::to_string(totalMs_ / static_cast<double>(frames_)).substr(0, 5) +
+            " ms of the main thread a frame on average, at most " + std::to_string(maxMs_).substr(0, 5) +
+            " ms, over " + std::to_string(frames_) + " frames");
+}
 
 void GameAudio::setPacks(const PackStack& packs) {
   if (!engine_) return;
@@ -55,6 +60,12 @@ void GameAudio::setVolumes(const AudioVolumes& volumes) {
 }
 
 void GameAudio::tick(const PlayWorld& world) {
+  const auto start = std::chrono::steady_clock::now();
+  tickSounds(world);
+  ticksMs_ += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+void GameAudio::tickSounds(const PlayWorld& world) {
   const std::int64_t now = world.level().time;
   const Player& player = world.player();
   footsteps_.tick(player, world.world(), sounds_, now, cues_);
@@ -99,7 +110,12 @@ void GameAudio::frame(PlayWorld& world, glm::dvec3 eye, glm::dvec3 forward, doub
     engine_->update();
     for (const std::string& p : engine_->takeProblems()) logWarning(p);
   }
-  frameMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  frameMs_ =
+      ticksMs_ + std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  ticksMs_ = 0.0;
+  totalMs_ += frameMs_;
+  maxMs_ = std::max(maxMs_, frameMs_);
+  ++frames_;
   if (wav_ && engine_) {
     unrendered_ += seconds * engine_->device().rate();
     const auto frames = static_cast<std::size_t>(std::floor(unrendered_));

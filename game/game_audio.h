@@ -36,11 +36,12 @@ class GameAudio {
 
   bool on() const { return engine_ != nullptr; }
   AudioStats stats() const { return engine_ ? engine_->stats() : AudioStats{}; }
-  double frameMs() const { return frameMs_; }  // the last frame's cost on this thread
+  double frameMs() const { return frameMs_; }  // the last frame's cost on this thread, its ticks' too
   // For F3: voices playing, music, the cost per frame.
   std::string overlayLine() const;
 
  private:
+  void tickSounds(const PlayWorld& world);
   void play(const SoundCue& cue);
   void log(const SoundCue& cue, const std::optional<std::string>& file);
 
@@ -56,7 +57,9 @@ class GameAudio {
   double unrendered_ = 0.0;     // frames owed to the .wav, carried between frames
   std::uint64_t rendered_ = 0;  // frames in the .wav so far: where a sound played now starts
   std::ofstream log_;
-  double frameMs_ = 0.0;
+  double frameMs_ = 0.0, ticksMs_ = 0.0;  // this frame's, so far
+  double totalMs_ = 0.0, maxMs_ = 0.0;    // over the run, said at the end
+  std::int64_t frames_ = 0;
 };
 
 }  // namespace terrasol
