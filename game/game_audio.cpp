@@ -7,6 +7,7 @@
 
 #include "core/error.h"
 #include "core/log.h"
+#include "world/block_sounds.h"
 #include "world/coords.h"
 
 namespace terrasol {
@@ -52,6 +53,12 @@ void GameAudio::setPacks(const PackStack& packs) {
   if (!engine_) return;
   std::vector<std::string> problems;
   engine_->setPacks(packs, problems);
+  // The sounds every walk and dig plays, decoded before they are first needed.
+  for (const SoundGroup& g : soundGroups()) {
+    if (g.like != g.name || g.name == kSilentSoundGroup) continue;
+    for (const char* action : {"break", "place", "step"})
+      engine_->preload("block." + std::string(g.name) + "." + action);
+  }
   for (const std::string& p : problems) logWarning(p);
 }
 

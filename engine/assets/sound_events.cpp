@@ -1,5 +1,6 @@
 #include "assets/sound_events.h"
 
+#include <algorithm>
 #include <exception>
 
 #include "core/error.h"
@@ -146,6 +147,27 @@ std::optional<SoundPick> SoundEvents::pick(std::string_view event, std::uint32_t
     name = chosen->name.substr(colon + 1);
   }
   return std::nullopt;  // events that name each other round
+}
+
+std::vector<std::string> SoundEvents::files(std::string_view event, bool streamed) const {
+  std::vector<std::string> out;
+  std::vector<std::pair<std::string, int>> todo = {{std::string(event), 0}};
+  while (!todo.empty()) {
+    const auto [name, depth] = todo.back();
+    todo.pop_back();
+    const SoundEvent* e = depth < kMaxEventDepth ? find(name) : nullptr;
+    if (!e) continue;
+    for (const SoundEntry& s : e->sounds) {
+      if (s.event) {
+        todo.emplace_back(s.name.substr(s.name.find(':') + 1), depth + 1);
+      } else if (streamed || !s.stream) {
+        out.push_back(soundFile(s.name));
+      }
+    }
+  }
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
 }
 
 }  // namespace terrasol

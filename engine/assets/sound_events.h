@@ -57,6 +57,8 @@ class SoundEvents {
   // named by entries followed. None when the event is unknown or names nothing playable (an empty
   // list, or events that only name each other).
   std::optional<SoundPick> pick(std::string_view event, std::uint32_t random) const;
+  // Every file `event` can play, events named by entries followed; `streamed` ones too or not.
+  std::vector<std::string> files(std::string_view event, bool streamed = false) const;
 
  private:
   std::map<std::string, SoundEvent, std::less<>> events_;

@@ -56,9 +56,17 @@ struct AudioEngine::Voices {
     glm::vec3 at{0.0f};
     bool positional = true;
   };
-  explicit Voices(int count) : pool(count), voices(static_cast<std::size_t>(count)) {}
+  // A sound whose file is still being decoded: started once it is, if it is still in time.
+  struct Pending {
+    SoundPlay sound;
+    SoundPick pick;
+    int frames = 0;  // updates waited
+  };
+  Voices(int count, bool background)
+      : pool(count), voices(static_cast<std::size_t>(count)), bank(background) {}
   VoicePool pool;
   std::vector<Voice> voices;
+  std::vector<Pending> pending;
   SoundBank bank;
   std::unique_ptr<MusicStream> music;
   Efx efx;
@@ -78,7 +86,7 @@ struct AudioEngine::Loops {
 
 AudioEngine::AudioEngine(AudioOutput output, int voices)
     : device_(output, voices),
-      voices_(std::make_unique<Voices>(device_.voices())),
+      voices_(std::make_unique<Voices>(device_.voices(), output == AudioOutput::Speakers)),
       loops_(std::make_unique<Loops>()) {
   alDistanceModel(AL_LINEAR_DISTANCE_CLAMPED);
   if (device_.efx()) {
@@ -111,8 +119,13 @@ void AudioEngine::setPacks(const PackStack& packs, std::vector<std::string>& pro
     voices_->voices[i].source.reset();
     voices_->pool.release(static_cast<int>(i));
   }
+  voices_->pending.clear();
   events_ = SoundEvents::load(packs, problems);
   voices_->bank.setPacks(packs);
+}
+
+void AudioEngine::preload(std::string_view event) {
+  for (const std::string& file : events_.files(event)) voices_->bank.request(file, problems_);
 }
 
 float AudioEngine::loudness(const SoundPlay& sound, float volume, float reach) const {
@@ -126,23 +139,37 @@ std::optional<std::string> AudioEngine::play(const SoundPlay& sound, std::uint32
   std::optional<SoundPick> pick = events_.pick(sound.event, random);
   if (!pick && !sound.fallback.empty()) pick = events_.pick(sound.fallback, random);
   if (!pick) return std::nullopt;
-  const float volume = pick->volume * sound.volume;
   // Minecraft: a volume over 1 plays no louder but carries farther.
-  const float reach = pick->reach * std::max(volume, 1.0f);
+  const float volume = pick->volume * sound.volume;
+  if (loudness(sound, volume, pick->reach * std::max(volume, 1.0f)) <= 0.0f) return std::nullopt;
+  switch (voices_->bank.request(pick->file, problems_)) {
+    case SoundBank::State::Failed:
+      return std::nullopt;
+    case SoundBank::State::Loading:
+      voices_->pending.push_back({sound, *pick, 0});
+      return pick->file;
+    case SoundBank::State::Ready:
+      break;
+  }
+  return start(sound, *pick) ? std::optional(pick->file) : std::nullopt;
+}
+
+bool AudioEngine::start(const SoundPlay& sound, const SoundPick& pick) {
+  const float volume = pick.volume * sound.volume;
+  const float reach = pick.reach * std::max(volume, 1.0f);
   const float heard = loudness(sound, volume, reach);
-  if (heard <= 0.0f) return std::nullopt;
-  const ALuint buffer = voices_->bank.buffer(pick->file, problems_);
-  if (!buffer) return std::nullopt;
+  const ALuint buffer = voices_->bank.buffer(pick.file);
+  if (heard <= 0.0f || !buffer) return false;
   const std::optional<int> slot = voices_->pool.claim(heard);
   if (!slot) {
     ++voices_->dropped;
-    return std::nullopt;
+    return false;
   }
   Voices::Voice& v = voices_->voices[static_cast<std::size_t>(*slot)];
   if (!v.source) v.source = makeSource();
   if (!v.source) {
     voices_->pool.release(*slot);
-    return std::nullopt;
+    return false;
   }
   const ALuint s = v.source.id();
   alSourceStop(s);
@@ -159,13 +186,13 @@ std::optional<std::string> AudioEngine::play(const SoundPlay& sound, std::uint32
   alSourcef(s, AL_MAX_DISTANCE, reach);
   alSourcef(s, AL_ROLLOFF_FACTOR, sound.positional ? 1.0f : 0.0f);
   alSourcef(s, AL_GAIN, v.gain * volumes_.of(v.category));
-  alSourcef(s, AL_PITCH, clampPitch(pick->pitch * sound.pitch));
+  alSourcef(s, AL_PITCH, clampPitch(pick.pitch * sound.pitch));
   alSourcei(s, AL_LOOPING, AL_FALSE);
   if (voices_->lowPass)
     alSourcei(s, AL_DIRECT_FILTER,
               static_cast<ALint>(underwater_ && v.category != SoundCategory::Music ? voices_->lowPass : 0));
   alSourcePlay(s);
-  return pick->file;
+  return true;
 }
 
 void AudioEngine::setLoop(std::string_view event, float gain, SoundCategory category, std::uint32_t random) {
@@ -176,9 +203,10 @@ void AudioEngine::setLoop(std::string_view event, float gain, SoundCategory cate
   }
   if (it == loops_->byEvent.end()) {
     const std::optional<SoundPick> pick = events_.pick(event, random);
-    if (!pick) return;
-    const ALuint buffer = voices_->bank.buffer(pick->file, problems_);
-    AlSource source = buffer ? makeSource() : AlSource();
+    // Still decoding: asked again next frame.
+    if (!pick || voices_->bank.request(pick->file, problems_) != SoundBank::State::Ready) return;
+    const ALuint buffer = voices_->bank.buffer(pick->file);
+    AlSource source = makeSource();
     if (!source) return;
     const ALuint s = source.id();
     alSourcei(s, AL_BUFFER, static_cast<ALint>(buffer));
@@ -251,6 +279,8 @@ void AudioEngine::setUnderwater(bool underwater) {
 }
 
 void AudioEngine::update() {
+  voices_->bank.collect(problems_);
+  startPending();
   for (std::size_t i = 0; i < voices_->voices.size(); ++i) {
     const int slot = static_cast<int>(i);
     if (!voices_->pool.busy(slot)) continue;
@@ -272,6 +302,19 @@ void AudioEngine::update() {
     musicUnderruns_ += voices_->music->underruns();
     voices_->music.reset();
   }
+}
+
+void AudioEngine::startPending() {
+  std::vector<Voices::Pending> waiting;
+  for (Voices::Pending& p : voices_->pending) {
+    if (voices_->bank.buffer(p.pick.file)) {
+      start(p.sound, p.pick);
+    } else if (++p.frames < kPendingFrames &&
+               voices_->bank.request(p.pick.file, problems_) == SoundBank::State::Loading) {
+      waiting.push_back(std::move(p));
+    }
+  }
+  voices_->pending = std::move(waiting);
 }
 
 AudioStats AudioEngine::stats() const {

@@ -64,6 +64,8 @@ class AudioEngine {
   std::optional<std::string> play(const SoundPlay& sound, std::uint32_t random);
   // `event` looping at the listener at `gain` (0 stops it).
   void setLoop(std::string_view event, float gain, SoundCategory category, std::uint32_t random);
+  // Decodes the files of `event` ahead of its first play (with speakers, in the background).
+  void preload(std::string_view event);
   // Starts a track of the music event: the file playing, or none when it cannot play.
   std::optional<std::string> playMusic(std::string_view event, std::uint32_t random);
   bool musicPlaying() const;
@@ -82,9 +84,15 @@ class AudioEngine {
   std::vector<std::string> takeProblems() { return std::exchange(problems_, {}); }
 
  private:
+  // A sound whose file is decoding waits this many updates at most: later it would be out of step.
+  static constexpr int kPendingFrames = 30;
+
   struct Voices;
   struct Loops;
   float loudness(const SoundPlay& sound, float volume, float reach) const;
+  // A voice for the sound (its file decoded): false when out of reach or no voice is free.
+  bool start(const SoundPlay& sound, const SoundPick& pick);
+  void startPending();
 
   AudioDevice device_;
   SoundEvents events_;

@@ -20,17 +20,25 @@ MusicStream::MusicStream(std::unique_ptr<OggStream> track, float gain, bool thre
   alSourcei(source_.id(), AL_SOURCE_RELATIVE, AL_TRUE);
   alSource3f(source_.id(), AL_POSITION, 0.0f, 0.0f, 0.0f);
   alSourcef(source_.id(), AL_GAIN, gain);
-  for (AlBuffer& b : buffers_) {
-    b = makeBuffer();
+  for (AlBuffer& b : buffers_) b = makeBuffer();
+  if (!threaded) {
+    start();
+    return;
+  }
+  // The first buffers are decoded on the stream's thread too: starting a track costs the caller nothing.
+  thread_ = std::jthread([this](std::stop_token stop) {
+    start();
+    while (!stop.stop_requested() && pump()) std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  });
+}
+
+void MusicStream::start() {
+  const std::lock_guard lock(mutex_);
+  for (const AlBuffer& b : buffers_) {
     const ALuint id = b.id();
     if (id && fill(id)) alSourceQueueBuffers(source_.id(), 1, &id);
   }
   alSourcePlay(source_.id());
-  if (threaded) {
-    thread_ = std::jthread([this](std::stop_token stop) {
-      while (!stop.stop_requested() && pump()) std::this_thread::sleep_for(std::chrono::milliseconds(20));
-    });
-  }
 }
 
 MusicStream::~MusicStream() {

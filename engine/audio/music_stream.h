@@ -34,6 +34,7 @@ class MusicStream {
   static constexpr int kBuffers = 4;
   static constexpr int kFramesPerBuffer = 8192;  // ~0.19 s at 44.1 kHz: 0.74 s queued
 
+  void start();  // fills the queue and plays
   bool fill(ALuint buffer);
 
   std::unique_ptr<OggStream> track_;
