@@ -15,7 +15,7 @@
 namespace terrasol {
 namespace {
 
-constexpr float kUnderwaterGainHf = 0.15f;  // the low-pass filter's high frequencies under water
+constexpr float kUnderwaterGainHf = 0.05f;  // the low-pass filter's high frequencies under water
 
 // Minecraft's limits on a sound's pitch.
 float clampPitch(float pitch) {

@@ -205,6 +205,35 @@ TEST(AudioEngine, VolumesAndTheVoiceLimit) {
   EXPECT_FALSE(engine.play(s, 1));
 }
 
+// Under water the blocks' and ambience's sounds lose their highs (EFX's low-pass); music keeps them.
+TEST(AudioEngine, UnderWaterSoundsAreMuffled) {
+  AudioEngine engine(AudioOutput::Loopback);
+  std::vector<std::string> problems;
+  engine.setPacks(defaultPack(), problems);
+  // How bright: the energy of the sample-to-sample change against the energy, over a glass break.
+  auto brightness = [&](bool underwater) {
+    engine.setUnderwater(underwater);
+    SoundPlay glass;
+    glass.event = "block.glass.break";
+    glass.positional = false;
+    EXPECT_TRUE(engine.play(glass, 3));
+    std::vector<std::int16_t> out(44100);
+    engine.render(out);
+    engine.update();
+    double change = 0.0, level = 0.0;
+    for (std::size_t i = 2; i < out.size(); i += 2) {
+      change += std::pow(static_cast<double>(out[i]) - out[i - 2], 2.0);
+      level += std::pow(static_cast<double>(out[i]), 2.0);
+    }
+    std::vector<std::int16_t> rest(44100 * 2);
+    engine.render(rest);
+    engine.update();
+    return change / std::max(level, 1.0);
+  };
+  const double dry = brightness(false), wet = brightness(true);
+  EXPECT_LT(wet, 0.6 * dry) << dry << " in the air, " << wet << " under water";
+}
+
 // A pack whose sounds.json replaces block.stone.break changes what breaking stone plays.
 TEST(AudioEngine, APackReplacesAnEvent) {
   testing::PackBuilder pack("sound_replace_pack");
