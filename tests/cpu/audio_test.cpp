@@ -7,6 +7,7 @@
 #include <cmath>
 #include <fstream>
 #include <iterator>
+#include <set>
 #include <thread>
 
 #include "ambience.h"
@@ -16,6 +17,7 @@
 #include "audio/wav_file.h"
 #include "core/paths.h"
 #include "music_timer.h"
+#include "soundgen.h"
 #include "support/pack_builder.h"
 #include "support/world_support.h"
 #include "world/block_sounds.h"
@@ -139,6 +141,29 @@ TEST(DefaultPackSounds, EveryFileDecodesToSound) {
     EXPECT_LT(peak, 32767) << entry.path() << " clips";
   }
   EXPECT_GE(files, 100);
+}
+
+// resourcepacks/default's sounds are what tools/soundgen makes: the same events, the same files, each
+// as long as the generator makes it (the bytes may differ where the encoder's float sums do).
+TEST(DefaultPackSounds, MatchTheGenerator) {
+  soundgen::Catalogue made;
+  soundgen::blockSounds(made);
+  soundgen::worldSounds(made);
+  soundgen::music(made);
+  const std::filesystem::path root = resourcePackDir() / "default" / "assets" / "minecraft";
+  EXPECT_EQ(made.events, nlohmann::json::parse(readTextFile(root / "sounds.json")))
+      << "run build/terrasol-soundgen resourcepacks/default";
+  std::set<std::string> committed;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(root / "sounds"))
+    if (entry.path().extension() == ".ogg")
+      committed.insert(std::filesystem::relative(entry.path(), root / "sounds").replace_extension().string());
+  std::set<std::string> names;
+  for (const soundgen::SoundFile& f : made.files) {
+    names.insert(f.name);
+    const Pcm pcm = decodeOgg(bytesOf(root / "sounds" / (f.name + ".ogg")), f.name);
+    EXPECT_EQ(pcm.frames(), f.samples.size() / static_cast<std::size_t>(f.channels)) << f.name;
+  }
+  EXPECT_EQ(names, committed);
 }
 
 // A sound to the listener's right is louder on the right; one past its reach plays nothing; nothing
