@@ -49,20 +49,26 @@ Wave stoneStep(Rng& r) {
   return w;
 }
 
-Wave woodDig(Rng& r) {
-  Wave w(static_cast<std::size_t>(samples(0.4f)), 0.0f);
-  const float f = r.range(180, 240);
-  strike(w, {{f, 0.09f, 1.0f}, {f * 2.31f, 0.06f, 0.6f}, {f * 3.9f, 0.04f, 0.35f}, {f * 5.4f, 0.025f, 0.2f}},
-         0, kRate);
-  add(w, burst(0.2f, r.range(500, 800), 1.0f, 0.001f, 0.03f, r), 0.5f, 0, kRate);
+// A struck body (wood's knock, metal's clang) and the click of the blow.
+struct Click {
+  float seconds, hz, q, decay, gain;
+};
+Wave knocked(float seconds, const std::vector<Mode>& modes, const Click& click, Rng& r) {
+  Wave w(static_cast<std::size_t>(samples(seconds)), 0.0f);
+  strike(w, modes, 0, kRate);
+  add(w, burst(click.seconds, click.hz, click.q, 0.001f, click.decay, r), click.gain, 0, kRate);
   return w;
 }
+
+Wave woodDig(Rng& r) {
+  const float f = r.range(180, 240);
+  return knocked(
+      0.4f, {{f, 0.09f, 1.0f}, {f * 2.31f, 0.06f, 0.6f}, {f * 3.9f, 0.04f, 0.35f}, {f * 5.4f, 0.025f, 0.2f}},
+      {0.2f, r.range(500, 800), 1.0f, 0.03f, 0.5f}, r);
+}
 Wave woodStep(Rng& r) {
-  Wave w(static_cast<std::size_t>(samples(0.2f)), 0.0f);
   const float f = r.range(150, 200);
-  strike(w, {{f, 0.05f, 1.0f}, {f * 2.4f, 0.03f, 0.5f}}, 0, kRate);
-  add(w, burst(0.1f, 900, 1.2f, 0.001f, 0.015f, r), 0.3f, 0, kRate);
-  return w;
+  return knocked(0.2f, {{f, 0.05f, 1.0f}, {f * 2.4f, 0.03f, 0.5f}}, {0.1f, 900, 1.2f, 0.015f, 0.3f}, r);
 }
 
 Wave gravelDig(Rng& r) {
@@ -145,19 +151,14 @@ Wave glassStep(Rng& r) {
 
 // Metal: an inharmonic clang that rings on.
 Wave metalDig(Rng& r) {
-  Wave w(static_cast<std::size_t>(samples(0.8f)), 0.0f);
   const float f = r.range(380, 480);
-  strike(w, {{f, 0.35f, 1.0f}, {f * 2.76f, 0.25f, 0.6f}, {f * 5.40f, 0.15f, 0.4f}, {f * 8.93f, 0.08f, 0.25f}},
-         0, kRate);
-  add(w, burst(0.1f, 2000, 1.0f, 0.001f, 0.015f, r), 0.5f, 0, kRate);
-  return w;
+  return knocked(
+      0.8f, {{f, 0.35f, 1.0f}, {f * 2.76f, 0.25f, 0.6f}, {f * 5.40f, 0.15f, 0.4f}, {f * 8.93f, 0.08f, 0.25f}},
+      {0.1f, 2000, 1.0f, 0.015f, 0.5f}, r);
 }
 Wave metalStep(Rng& r) {
-  Wave w(static_cast<std::size_t>(samples(0.3f)), 0.0f);
   const float f = r.range(600, 750);
-  strike(w, {{f, 0.09f, 1.0f}, {f * 2.76f, 0.06f, 0.5f}}, 0, kRate);
-  add(w, burst(0.08f, 1500, 1.0f, 0.001f, 0.01f, r), 0.5f, 0, kRate);
-  return w;
+  return knocked(0.3f, {{f, 0.09f, 1.0f}, {f * 2.76f, 0.06f, 0.5f}}, {0.08f, 1500, 1.0f, 0.01f, 0.5f}, r);
 }
 
 // Wool: a soft, muffled pat.
