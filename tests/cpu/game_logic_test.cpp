@@ -470,6 +470,8 @@ TEST(SettingsTest, SaveAndLoadRoundTripAndMissingMeansDefaults) {
   s.fog = {0.01f, 70.0f, 12.0f};
   s.shafts = {true, 12, 0.5f};
   s.keys.bind(Action::Jump, GLFW_KEY_J);
+  s.sound.music = 0.25f;
+  s.sound.blocks = 0.0f;
   saveSettings(file, s);
   const GameSettings back = loadSettings(file);
   EXPECT_EQ(back.viewDistance, 12);
@@ -488,6 +490,10 @@ TEST(SettingsTest, SaveAndLoadRoundTripAndMissingMeansDefaults) {
   EXPECT_TRUE(defaults.shaderpack.empty()) << "Terrasol's own pipeline";
   EXPECT_EQ(back.keys.key(Action::Jump), GLFW_KEY_J);
   EXPECT_EQ(back.keys.key(Action::Forward), GLFW_KEY_W);
+  EXPECT_EQ(back.sound.music, 0.25f);
+  EXPECT_EQ(back.sound.blocks, 0.0f);
+  EXPECT_EQ(back.sound.master, 1.0f);
+  EXPECT_EQ(defaults.sound.music, 1.0f);
 }
 
 TEST(SettingsTest, MalformedSettingsNameTheKey) {
@@ -502,6 +508,8 @@ TEST(SettingsTest, MalformedSettingsNameTheKey) {
   EXPECT_NE(error(R"({"packs": [{"enabled": true}]})").find("packs[0]"), std::string::npos);
   EXPECT_NE(error(R"({"fov": )").find("settings.json:1:"), std::string::npos);
   EXPECT_NE(error(R"({"shaderpack": 3})").find("shaderpack"), std::string::npos);
+  EXPECT_NE(error(R"({"sound": {"music": 1.5}})").find("sound.music"), std::string::npos);
+  EXPECT_NE(error(R"({"sound": {"voices": 1}})").find("sound"), std::string::npos);
 }
 
 // The Shader packs tab lists folders with shaders/ in them and .zip files, each once, by name.
