@@ -9,10 +9,13 @@ std::optional<std::pair<BlockId, BlockPos>> Footsteps::underfoot(const World& wo
                                                                  glm::dvec3 feet) {
   const BlockPos below{static_cast<int>(std::floor(feet.x)), static_cast<int>(std::floor(feet.y - 0.2)),
                        static_cast<int>(std::floor(feet.z))};
-  for (const BlockPos& at : {below, below.offset(0, -1, 0)}) {
-    const BlockId state = world.getBlock(at);
-    if (!sounds.silent(state)) return std::pair{state, at};
-  }
+  const BlockId state = world.getBlock(below);
+  if (!sounds.silent(state)) return std::pair{state, below};
+  // On a fence or wall the foot is a cell above the block it stands on (Minecraft's getOnPos).
+  const BlockPos post = below.offset(0, -1, 0);
+  const BlockId postState = world.getBlock(post);
+  if (world.blocks()[postState].collisionHeight > 16 && !sounds.silent(postState))
+    return std::pair{postState, post};
   return std::nullopt;
 }
 
@@ -34,27 +37,23 @@ void Footsteps::tick(const Player& player, const World& world, const BlockSoundT
     wasOnGround_ = grounded;
     return;
   }
-  if (!grounded) {
-    peakY_ = std::max(peakY_, now.y);
-    wasOnGround_ = false;
-    return;
-  }
-  if (!wasOnGround_ && peakY_ - now.y > kQuietFall) {
+  if (grounded && !wasOnGround_ && peakY_ - now.y > kQuietFall) {
     if (const auto foot = underfoot(world, sounds, now)) {
       if (auto c = sounds.cue(foot->first, foot->second, BlockAction::Fall, tick))
         out.push_back(std::move(*c));
     }
   }
-  wasOnGround_ = true;
-  peakY_ = now.y;
-  const double horizontal = std::hypot(moved.x, moved.z);
-  walked_ += horizontal * kStepScale;
+  peakY_ = grounded ? now.y : std::max(peakY_, now.y);
+  wasOnGround_ = grounded;
+  // Minecraft counts the distance in the air too, and steps once a foot finds a block: a running
+  // jump lands with a step. A player sneaking on the ground moves without a sound or a count.
+  if (player.sneaking() && grounded) return;
+  walked_ += std::hypot(moved.x, moved.z) * kStepScale;
   if (walked_ <= nextStep_) return;
+  const auto foot = underfoot(world, sounds, now);
+  if (!foot) return;  // in the air: the step waits for the ground
   nextStep_ = std::floor(walked_) + 1.0;
-  if (player.sneaking()) return;
-  if (const auto foot = underfoot(world, sounds, now)) {
-    if (auto c = sounds.cue(foot->first, foot->second, BlockAction::Step, tick)) out.push_back(std::move(*c));
-  }
+  if (auto c = sounds.cue(foot->first, foot->second, BlockAction::Step, tick)) out.push_back(std::move(*c));
 }
 
 }  // namespace terrasol

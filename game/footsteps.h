@@ -1,8 +1,9 @@
 #pragma once
 // The player's own sounds, by Minecraft's rules: a step of the block underfoot each time the
-// distance walked on the ground passes the next whole step (0.6 of a block's travel counts as one,
-// so a step every 1.67 blocks), none while sneaking, flying or in water; a fall's thud on landing
-// from more than 3 blocks. Plain C++, called after each of the player's ticks.
+// distance moved passes the next whole step (0.6 of a block's travel counts as one, so a step every
+// 1.67 blocks; distance in the air counts, and the step comes when a foot finds a block), none while
+// sneaking on the ground, flying or in water; a fall's thud on landing from more than 3 blocks.
+// Plain C++, called after each of the player's ticks.
 
 #include <glm/geometric.hpp>
 #include <vector>

@@ -174,6 +174,13 @@ TEST(Footsteps, AStepEveryBlockAndTwoThirdsWalkedOnTheFloor) {
   EXPECT_TRUE(walk(world, sneak, 100).empty());
   EXPECT_TRUE(walk(world, forward, 100, {0.5, 70.0, 0.5}, true).empty());  // flying
   EXPECT_TRUE(walk(world, {}, 100).empty());                               // standing still
+
+  // A running jump: the distance in the air counts, the step comes on landing.
+  MoveInput hop = forward;
+  hop.jump = true;
+  const std::vector<SoundCue> hops = walk(world, hop, 100);
+  EXPECT_GE(static_cast<double>(hops.size()), 0.5 * static_cast<double>(cues.size()));
+  for (const SoundCue& c : hops) EXPECT_EQ(c.sound.event, "block.stone.step");
 }
 
 TEST(Footsteps, TheFloorUnderfootNamesTheStep) {
