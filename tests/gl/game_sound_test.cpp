@@ -43,7 +43,7 @@ Levels levels(const Pcm& wav, std::size_t from, double seconds) {
 }
 
 TEST(GameSound, AScriptedPlayIsHeardAtItsTicks) {
-  const GameDir game("game_sound", 512, 32, R"(, "sound": { "music": 0 })");
+  const GameDir game("game_sound", 512, 32, R"({ "music": 0 })");
   std::filesystem::create_directories(game.dir / "world");
   std::ofstream(game.dir / "world" / "level.json")
       << R"({ "version": 1, "generator": "flat", "seed": 1, "time": 6000,
