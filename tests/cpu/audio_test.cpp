@@ -278,6 +278,32 @@ TEST(AudioEngine, APackReplacesAnEvent) {
   EXPECT_NE(engine.play(s, 0)->find("step/stone"), std::string::npos);
 }
 
+// An event carries as far as its attenuation_distance says (16 blocks when it says nothing), and a
+// volume over 1 carries farther in proportion, as in Minecraft.
+TEST(AudioEngine, AnEventsReachIsItsAttenuationDistance) {
+  testing::PackBuilder pack("sound_reach_pack");
+  pack.asset("sounds.json", R"({
+    "block.stone.break": {"replace": true, "sounds": [{"name": "dig/stone1", "attenuation_distance": 4}]},
+    "block.wood.break": {"replace": true, "sounds": [{"name": "dig/wood1", "volume": 2}]}})");
+  AudioEngine engine(AudioOutput::Loopback);
+  std::vector<std::string> problems;
+  engine.setPacks(testing::stackOf({resourcePackDir() / "default", pack.dir()}), problems);
+  ASSERT_TRUE(problems.empty()) << problems.front();
+  engine.setListener({0, 0, 0}, {0, 0, -1}, {0, 1, 0});
+  auto plays = [&](const char* event, float distance) {
+    SoundPlay s;
+    s.event = event;
+    s.at = {0, 0, -distance};
+    return engine.play(s, 0).has_value();
+  };
+  EXPECT_TRUE(plays("block.stone.break", 3.5f));
+  EXPECT_FALSE(plays("block.stone.break", 4.5f));
+  EXPECT_TRUE(plays("block.gravel.break", 15.5f));
+  EXPECT_FALSE(plays("block.gravel.break", 16.5f));
+  EXPECT_TRUE(plays("block.wood.break", 31.5f));  // volume 2: twice the reach
+  EXPECT_FALSE(plays("block.wood.break", 32.5f));
+}
+
 // A missing file is reported once with its name and plays nothing; the rest still plays.
 TEST(AudioEngine, AMissingFileIsReportedAndSilent) {
   testing::PackBuilder pack("sound_missing_pack");
