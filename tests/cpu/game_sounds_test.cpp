@@ -271,6 +271,37 @@ TEST(Ambience, EnteringAndLeavingWater) {
   EXPECT_FALSE(ambience.underwater());
 }
 
+// Minecraft's animate ticks: 667 random cells within 16 blocks a tick; flowing water murmurs 1 in 64,
+// still water never; lava under air pops 1 in 100 and murmurs 1 in 200.
+TEST(Ambience, FlowingWaterAndLavaAreHeardAtMinecraftsOdds) {
+  const BlockRegistry& blocks = defaultBlocks();
+  auto heard = [&](BlockId fluid) {
+    World world = flatWorld();
+    for (int y = 64; y < 67; ++y)
+      for (int x = -7; x <= 7; ++x)
+        for (int z = -7; z <= 7; ++z) world.setBlock({x, y, z}, fluid);
+    LightEngine light(world);
+    const BlockSoundTable table(world.blocks());
+    Ambience ambience;
+    std::mt19937 random(5);
+    std::vector<SoundCue> cues;
+    for (int t = 0; t < 400; ++t) ambience.tick(world, light, table, {0.5, 70.5, 0.5}, t, random, cues);
+    std::map<std::string, int> n;
+    for (const SoundCue& c : cues) ++n[c.sound.event];
+    return n;
+  };
+  // 675 fluid cells of the 29 791 sampled from: 667 x 675 / 29 791 = 15.1 a tick.
+  const double sampled = 400.0 * 667.0 * 675.0 / 29791.0;
+  const BlockId flowing = *blocks.with(blocks.id("water"), "level", "1");
+  const auto water = heard(flowing);
+  EXPECT_NEAR(water.at(std::string(kWaterEvent)), sampled / 64.0, 0.3 * sampled / 64.0);
+  EXPECT_TRUE(heard(blocks.id("water")).empty());  // still water
+  // Lava: only the top layer has air above it, a third of the cells.
+  const auto lava = heard(blocks.id("lava"));
+  EXPECT_NEAR(lava.at(std::string(kLavaPopEvent)), sampled / 3.0 / 100.0, 0.4 * sampled / 3.0 / 100.0);
+  EXPECT_NEAR(lava.at(std::string(kLavaEvent)), sampled / 3.0 / 200.0, 0.5 * sampled / 3.0 / 200.0);
+}
+
 TEST(MusicTimer, MinecraftsDelaysAndNightsTrack) {
   MusicTimer timer;
   std::mt19937 random(7);
