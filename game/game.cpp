@@ -66,6 +66,7 @@ Game::Game(GlfwWindow& window, const GameOptions& options)
   content_.defaultBake.reset();  // the shapes and the first atlas are made
   audio_.setPacks(renderer_.assets().packs);
   audio_.setVolumes(settings_.values.sound);
+  ui_.setSoundDevice(audio_.deviceLine());
   if (!options.inputScript.empty()) script_.emplace(loadInputScript(options.inputScript));
   input_.setScreenKeys(&ui_);
   if (!world_.notice().empty()) ui_.showNotice(world_.notice(), frames_.clock, kNoticeSeconds);

@@ -28,8 +28,7 @@ GameAudio::GameAudio(const GameOptions& options, const BlockRegistry& blocks) : 
   const AudioOutput output = options.audioOut.empty() ? AudioOutput::Speakers : AudioOutput::Loopback;
   try {
     engine_ = std::make_unique<AudioEngine>(output);
-    logInfo("sound: " + engine_->device().name() + ", " + std::to_string(engine_->device().voices()) +
-            " voices");
+    logInfo("sound: " + deviceLine());
     if (output == AudioOutput::Loopback)
       wav_ = std::make_unique<WavWriter>(options.audioOut, 2, engine_->device().rate());
   } catch (const Error& e) {
@@ -132,6 +131,12 @@ void GameAudio::frame(PlayWorld& world, glm::dvec3 eye, glm::dvec3 forward, doub
     wav_->write(mix_);
     rendered_ += frames;
   }
+}
+
+std::string GameAudio::deviceLine() const {
+  if (!engine_) return "No audio device: the game is silent.";
+  return engine_->device().name() + ", " + std::to_string(engine_->device().voices()) + " voices" +
+         (wav_ ? " (into the --audio-out file)" : "");
 }
 
 std::string GameAudio::overlayLine() const {

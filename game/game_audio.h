@@ -37,6 +37,8 @@ class GameAudio {
   bool on() const { return engine_ != nullptr; }
   AudioStats stats() const { return engine_ ? engine_->stats() : AudioStats{}; }
   double frameMs() const { return frameMs_; }  // the last frame's cost on this thread, its ticks' too
+  // The device and its voices, or that there is none and the game is silent.
+  std::string deviceLine() const;
   // For F3: voices playing, music, the cost per frame.
   std::string overlayLine() const;
 

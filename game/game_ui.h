@@ -52,6 +52,7 @@ class GameUi final : public ScreenKeys {
   MenuResult menu(const std::vector<std::string>& loadedPacks, const ShaderPackChoices& shaderPacks,
                   const std::vector<std::string>& propFiles);
   void inventory(GameRenderer& renderer, Hotbar& hotbar);
+  void setSoundDevice(std::string text) { menu_.setSoundDevice(std::move(text)); }
 
  private:
   SettingsFile& settings_;

@@ -135,6 +135,7 @@ static void presetCombo(GameSettings& s, MenuResult& out) {
 
 // Volumes change as the slider moves (cheap, and the ear judges them); the file is saved on release.
 void Menu::soundTab(GameSettings& s, MenuResult& out) {
+  if (!soundDevice_.empty()) ImGui::TextDisabled("%s", soundDevice_.c_str());
   for (auto [label, volume] : {std::pair{"Master", &s.sound.master}, std::pair{"Blocks", &s.sound.blocks},
                                std::pair{"Ambient", &s.sound.ambient}, std::pair{"Music", &s.sound.music}}) {
     out.soundChanged |= ImGui::SliderFloat(label, volume, 0.0f, 1.0f, "%.2f");

@@ -37,6 +37,8 @@ class Menu {
                   const std::string& selectedProp);
   // While the menu waits for a key to bind, the game hands key presses here first; true when taken.
   bool takeKey(int key, GameSettings& settings);
+  // What the Sound tab says of the device ("OpenAL Soft, 247 voices", or that the game is silent).
+  void setSoundDevice(std::string text) { soundDevice_ = std::move(text); }
 
  private:
   void settingsTab(GameSettings& settings, MenuResult& out);
@@ -48,6 +50,7 @@ class Menu {
 
   std::optional<Action> rebinding_;
   std::string newPack_;
+  std::string soundDevice_;
 };
 
 }  // namespace terrasol
