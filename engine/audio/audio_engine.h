@@ -61,6 +61,7 @@ class AudioEngine {
 
   // Plays a sound of the event (or its fallback) with `random` choosing among its files. The pack
   // file played, or none: an unknown event, out of reach, no voice, or a file that cannot be read.
+  // With speakers a file not yet decoded is promised and starts at the update after it is.
   std::optional<std::string> play(const SoundPlay& sound, std::uint32_t random);
   // `event` looping at the listener at `gain` (0 stops it).
   void setLoop(std::string_view event, float gain, SoundCategory category, std::uint32_t random);
@@ -73,7 +74,8 @@ class AudioEngine {
   void setListener(glm::vec3 position, glm::vec3 forward, glm::vec3 up);
   void setVolumes(const AudioVolumes& volumes);
   void setUnderwater(bool underwater);
-  // Once a frame: frees finished voices, refills music on a loopback device, follows the listener.
+  // Once a frame: starts sounds whose files are now decoded, frees finished voices, refills music
+  // on a loopback device, follows the listener.
   void update();
   // Loopback only: the next out.size() / 2 frames of interleaved stereo.
   void render(std::span<std::int16_t> out) { device_.render(out); }
