@@ -11,10 +11,8 @@ namespace {
 constexpr float kWindFollow = 0.05f;  // of the way to the wind's target gain each tick: ~1 s to settle
 
 BlockPos cellOf(glm::dvec3 p) {
-  return {static_cast<int>(std::floor(p.x)), static_cast<int>(std::floor(p.y)),
-          static_cast<int>(std::floor(p.z))};
+  return BlockPos::containing(p.x, p.y, p.z);
 }
-
 float unit(std::mt19937& random) {
   return std::uniform_real_distribution<float>(0.0f, 1.0f)(random);
 }

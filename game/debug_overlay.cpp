@@ -59,8 +59,7 @@ std::vector<std::string> DebugOverlay::left(const PlayWorld& world, const GameRe
   out.push_back(passes);
   const Player& player = world.player();
   const glm::dvec3 p = player.position();
-  const BlockPos b{static_cast<int>(std::floor(p.x)), static_cast<int>(std::floor(p.y)),
-                   static_cast<int>(std::floor(p.z))};
+  const BlockPos b = BlockPos::containing(p.x, p.y, p.z);
   out.push_back(format("XYZ: %.3f / %.5f / %.3f", p.x, p.y, p.z));
   out.push_back(format("Block: %d %d %d  [%d %d %d in chunk %d %d, section %d]", b.x, b.y, b.z, localOf(b.x),
                        localOf(b.y), localOf(b.z), chunkOf(b.x), chunkOf(b.z),

@@ -7,8 +7,7 @@ namespace terrasol {
 std::optional<std::pair<BlockId, BlockPos>> Footsteps::underfoot(const World& world,
                                                                  const BlockSoundTable& sounds,
                                                                  glm::dvec3 feet) {
-  const BlockPos below{static_cast<int>(std::floor(feet.x)), static_cast<int>(std::floor(feet.y - 0.2)),
-                       static_cast<int>(std::floor(feet.z))};
+  const BlockPos below = BlockPos::containing(feet.x, feet.y - 0.2, feet.z);
   const BlockId state = world.getBlock(below);
   if (!sounds.silent(state)) return std::pair{state, below};
   // On a fence or wall the foot is a cell above the block it stands on (Minecraft's getOnPos).

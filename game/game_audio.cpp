@@ -13,11 +13,6 @@
 namespace terrasol {
 namespace {
 
-bool night(std::int64_t time) {
-  const std::int64_t t = ((time % 24000) + 24000) % 24000;
-  return t >= 13000 && t < 23000;  // Minecraft's night: monsters' hours
-}
-
 glm::vec3 toVec(glm::dvec3 v) {
   return glm::vec3(v);
 }
@@ -77,7 +72,7 @@ void GameAudio::tickSounds(const PlayWorld& world) {
   footsteps_.tick(player, world.world(), sounds_, now, cues_);
   ambience_.tick(world.world(), world.light(), sounds_, player.eye(), now, random_, cues_);
   if (!engine_) return;
-  if (const auto event = music_.tick(engine_->musicPlaying(), night(now), random_)) {
+  if (const auto event = music_.tick(engine_->musicPlaying(), MusicTimer::night(now), random_)) {
     const std::string_view chosen = engine_->events().find(*event) ? *event : MusicTimer::kDay;
     SoundCue cue;
     cue.sound.event = std::string(chosen);

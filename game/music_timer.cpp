@@ -1,6 +1,13 @@
 #include "music_timer.h"
 
+#include "core/day_cycle.h"
+
 namespace terrasol {
+
+bool MusicTimer::night(std::int64_t ticks) {
+  const std::int64_t t = ((ticks % kTicksPerDay) + kTicksPerDay) % kTicksPerDay;
+  return t >= kSunset + 1000 && t < kTicksPerDay - 1000;
+}
 
 std::optional<std::string_view> MusicTimer::tick(bool playing, bool night, std::mt19937& random) {
   if (playing) {

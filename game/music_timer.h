@@ -4,6 +4,7 @@
 // day the track is from "music.game"; by night from "music.game.night" where the packs have it.
 // Plain C++.
 
+#include <cstdint>
 #include <optional>
 #include <random>
 #include <string_view>
@@ -15,6 +16,8 @@ class MusicTimer {
   static constexpr int kFirstDelay = 100, kMinDelay = 12000, kMaxDelay = 24000;  // ticks
   static constexpr std::string_view kDay = "music.game", kNight = "music.game.night";
 
+  // Whether world time `ticks` is night for music: Minecraft's monsters' hours, 13 000 to 23 000.
+  static bool night(std::int64_t ticks);
   // One tick; `playing`: a track still plays. The event to start a track of now, if it is time.
   std::optional<std::string_view> tick(bool playing, bool night, std::mt19937& random);
   int delay() const { return delay_; }

@@ -151,15 +151,15 @@ std::optional<SoundPick> SoundEvents::pick(std::string_view event, std::uint32_t
 
 std::vector<std::string> SoundEvents::files(std::string_view event, bool streamed) const {
   std::vector<std::string> out;
-  std::vector<std::pair<std::string, int>> todo = {{std::string(event), 0}};
-  while (!todo.empty()) {
-    const auto [name, depth] = todo.back();
-    todo.pop_back();
+  std::vector<std::pair<std::string, int>> toVisit = {{std::string(event), 0}};
+  while (!toVisit.empty()) {
+    const auto [name, depth] = toVisit.back();
+    toVisit.pop_back();
     const SoundEvent* e = depth < kMaxEventDepth ? find(name) : nullptr;
     if (!e) continue;
     for (const SoundEntry& s : e->sounds) {
       if (s.event) {
-        todo.emplace_back(s.name.substr(s.name.find(':') + 1), depth + 1);
+        toVisit.emplace_back(s.name.substr(s.name.find(':') + 1), depth + 1);
       } else if (streamed || !s.stream) {
         out.push_back(soundFile(s.name));
       }

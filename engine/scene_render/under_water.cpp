@@ -10,8 +10,7 @@ namespace terrasol {
 std::optional<UnderWater> underWaterAt(const World& world, const LightEngine& light, glm::dvec3 eye) {
   const std::optional<double> surface = liquidSurfaceAbove(world, eye);
   if (!surface) return std::nullopt;
-  const BlockPos cell{static_cast<int>(std::floor(eye.x)), static_cast<int>(std::floor(eye.y)),
-                      static_cast<int>(std::floor(eye.z))};
+  const BlockPos cell = BlockPos::containing(eye.x, eye.y, eye.z);
   return UnderWater{*surface, static_cast<float>(light.lightAt(cell, LightChannel::Sky)) / kMaxLight};
 }
 

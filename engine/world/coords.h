@@ -2,6 +2,7 @@
 // Integer world coordinates. Blocks are int32 on every axis: the world border at ±30 000 000 fits
 // with room to spare, and chunk coordinates are exact (no floating point anywhere in addressing).
 
+#include <cmath>
 #include <compare>
 #include <cstddef>
 #include <cstdint>
@@ -37,6 +38,11 @@ struct BlockPos {
   int x = 0, y = 0, z = 0;
   friend constexpr auto operator<=>(const BlockPos&, const BlockPos&) = default;
   constexpr BlockPos offset(int dx, int dy, int dz) const { return {x + dx, y + dy, z + dz}; }
+  // The cell a point lies in (the callers' points are finite and within the world border).
+  static BlockPos containing(double px, double py, double pz) {
+    return {static_cast<int>(std::floor(px)), static_cast<int>(std::floor(py)),
+            static_cast<int>(std::floor(pz))};
+  }
 };
 
 struct ChunkPos {

@@ -19,8 +19,7 @@ bool isLiquid(const World& world, const BlockPos& pos) {
 std::optional<double> liquidSurfaceAbove(const World& world, glm::dvec3 point) {
   if (!std::isfinite(point.x) || !std::isfinite(point.y) || !std::isfinite(point.z)) return std::nullopt;
   if (point.y < kMinY || point.y >= kMaxY) return std::nullopt;
-  const BlockPos start{static_cast<int>(std::floor(point.x)), static_cast<int>(std::floor(point.y)),
-                       static_cast<int>(std::floor(point.z))};
+  const BlockPos start = BlockPos::containing(point.x, point.y, point.z);
   const std::optional<std::size_t> liquid = liquidIn(world, start);
   if (!liquid) return std::nullopt;
   BlockPos top = start;

@@ -8,7 +8,6 @@
 #include <fstream>
 #include <iterator>
 #include <set>
-#include <thread>
 
 #include "ambience.h"
 #include "audio/audio_engine.h"
@@ -18,6 +17,7 @@
 #include "core/paths.h"
 #include "music_timer.h"
 #include "soundgen.h"
+#include "support/audio_levels.h"
 #include "support/pack_builder.h"
 #include "support/world_support.h"
 #include "world/block_sounds.h"
@@ -36,18 +36,10 @@ PackStack defaultPack() {
   return testing::stackOf({resourcePackDir() / "default"});
 }
 
-// Loudness of each channel of interleaved stereo, in 16-bit steps.
-struct Levels {
-  double left = 0.0, right = 0.0;
-};
-Levels rms(const std::vector<std::int16_t>& stereo) {
-  Levels l;
-  for (std::size_t i = 0; i + 1 < stereo.size(); i += 2) {
-    l.left += static_cast<double>(stereo[i]) * stereo[i];
-    l.right += static_cast<double>(stereo[i + 1]) * stereo[i + 1];
-  }
-  const double n = std::max<double>(1.0, static_cast<double>(stereo.size() / 2));
-  return {std::sqrt(l.left / n), std::sqrt(l.right / n)};
+using testing::Levels;
+
+Levels rms(std::span<const std::int16_t> stereo) {
+  return testing::levels(stereo);
 }
 
 TEST(VoicePool, TheQuietestGivesWayToALouderSound) {
@@ -342,60 +334,6 @@ TEST(AudioEngine, MusicStreamsToItsEnd) {
   EXPECT_GT(seconds, 85);  // the track is about a minute and a half
   EXPECT_LT(seconds, 110);
   EXPECT_EQ(quiet, 0.0);  // no second in its middle without sound: no gaps
-}
-
-// With speakers the music streams on a thread of its own: a main thread busy for 2.5 s (loading
-// chunks) leaves no gap. OpenAL Soft's "wave" backend stands in for the speakers: it mixes in real
-// time on its own thread into a .wav. It is chosen by a config file read once per process, so this
-// test runs alone (as ctest runs every test).
-TEST(AudioEngine, MusicPlaysOnWhileTheMainThreadStalls) {
-  const std::filesystem::path dir = testing::testOutputDir() / "wave_backend";
-  std::filesystem::create_directories(dir);
-  const std::filesystem::path conf = dir / "alsoft.conf", out = dir / "music.wav";
-  std::filesystem::remove(out);
-  std::ofstream(conf) << "[general]\ndrivers = wave\nsample-type = int16\nchannels = stereo\n[wave]\nfile = "
-                      << out.string() << "\n";
-  setenv("ALSOFT_CONF", conf.c_str(), 1);
-  std::unique_ptr<AudioEngine> engine;
-  try {
-    engine = std::make_unique<AudioEngine>(AudioOutput::Speakers);
-  } catch (const Error& e) {
-    GTEST_SKIP() << e.what();
-  }
-  if (!std::filesystem::exists(out))  // the config is read once: another test opened OpenAL first
-    GTEST_SKIP() << "OpenAL Soft was set up before in this process; run this test alone";
-  std::vector<std::string> problems;
-  engine->setPacks(defaultPack(), problems);
-  ASSERT_TRUE(engine->playMusic(MusicTimer::kDay, 0));
-  // With speakers a file is decoded in the background: the sound is promised at once and starts at
-  // the first update after its file is ready.
-  SoundPlay step;
-  step.event = "block.gravel.break";
-  step.positional = false;
-  EXPECT_TRUE(engine->play(step, 0));
-  EXPECT_EQ(engine->stats().playing, 0);
-  std::this_thread::sleep_for(std::chrono::milliseconds(2500));  // no update(): the main thread is busy
-  int started = 0;
-  for (int i = 0; i < 25; ++i) {
-    engine->update();
-    started = std::max(started, engine->stats().playing);
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
-  }
-  EXPECT_EQ(started, 1);
-  EXPECT_TRUE(engine->musicPlaying());
-  EXPECT_EQ(engine->stats().musicUnderruns, 0);
-  engine.reset();  // closes the file
-  const Pcm wav = readWav(out);
-  ASSERT_GT(wav.frames(), static_cast<std::size_t>(wav.rate) * 5 / 2);  // the stall and the updates after
-  // Every quarter second after the first heard (the track's first notes) and before the end.
-  const std::size_t quarter = static_cast<std::size_t>(wav.rate / 4);
-  std::size_t first = 0;
-  while (first < wav.frames() && std::abs(wav.samples[first * 2]) < 20) ++first;
-  for (std::size_t at = first + quarter; at + 2 * quarter < wav.frames(); at += quarter) {
-    const std::vector<std::int16_t> window(wav.samples.begin() + static_cast<long>(at * 2),
-                                           wav.samples.begin() + static_cast<long>((at + quarter) * 2));
-    EXPECT_GT(rms(window).left, 20.0) << "a gap at " << static_cast<double>(at) / wav.rate << " s";
-  }
 }
 
 }  // namespace

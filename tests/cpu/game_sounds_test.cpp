@@ -12,6 +12,7 @@
 #include "music_timer.h"
 #include "support/game_world.h"
 #include "support/world_support.h"
+#include "world/block_sound_rules.h"
 #include "world/block_sounds.h"
 
 namespace terrasol {
@@ -98,15 +99,21 @@ TEST(BlockSounds, EveryBlockHasAGroupThatFallsBackToAPlainOne) {
   }
   EXPECT_GE(defaultBlocks().blockCount(), 1166u);
   for (const SoundGroup& g : soundGroups()) {
-    const SoundGroup& plain = blockSoundGroup(g.like);
     bool found = false;
     for (const SoundGroup& h : soundGroups()) found |= h.name == g.like && h.like == h.name;
     EXPECT_TRUE(found) << g.name << " sounds like " << g.like << ", which is not a plain group";
-    (void)plain;
   }
   EXPECT_GT(uses["stone"], 200);
   EXPECT_GT(uses["wood"], 150);
   EXPECT_GT(uses["grass"], 40);
+}
+
+TEST(BlockSounds, EveryRuleNamesAGroup) {
+  for (const SoundRule& r : blockSoundRules()) {
+    bool found = false;
+    for (const SoundGroup& g : soundGroups()) found |= g.name == r.group;
+    EXPECT_TRUE(found) << "the rule for \"" << r.text << "\" names the unknown group " << r.group;
+  }
 }
 
 TEST(BlockSounds, OpeningKinds) {
@@ -316,6 +323,12 @@ TEST(MusicTimer, MinecraftsDelaysAndNightsTrack) {
   EXPECT_GE(quiet + 1, MusicTimer::kMinDelay);
   EXPECT_LE(quiet + 1, MusicTimer::kMaxDelay);
   EXPECT_EQ(*next, MusicTimer::kNight);
+  EXPECT_FALSE(MusicTimer::night(6000));
+  EXPECT_FALSE(MusicTimer::night(12999));
+  EXPECT_TRUE(MusicTimer::night(13000));
+  EXPECT_TRUE(MusicTimer::night(18000 + 24000 * 3));
+  EXPECT_TRUE(MusicTimer::night(-6000));  // a day before noon is midnight
+  EXPECT_FALSE(MusicTimer::night(23000));
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "audio/wav_file.h"
+#include "support/audio_levels.h"
 #include "support/game_run.h"
 
 namespace terrasol {
@@ -25,22 +26,8 @@ struct Heard {
   double z = 0.0;
 };
 
-struct Levels {
-  double left = 0.0, right = 0.0;
-  double both() const { return (left + right) * 0.5; }
-};
-
-// RMS of each channel over [from, from + seconds), in 16-bit steps.
-Levels levels(const Pcm& wav, std::size_t from, double seconds) {
-  const std::size_t to = std::min(wav.frames(), from + static_cast<std::size_t>(seconds * wav.rate));
-  Levels l;
-  for (std::size_t i = from; i < to; ++i) {
-    l.left += std::pow(wav.samples[2 * i], 2.0);
-    l.right += std::pow(wav.samples[2 * i + 1], 2.0);
-  }
-  const double n = std::max<double>(1.0, static_cast<double>(to) - static_cast<double>(from));
-  return {std::sqrt(l.left / n), std::sqrt(l.right / n)};
-}
+using testing::Levels;
+using testing::levels;
 
 TEST(GameSound, AScriptedPlayIsHeardAtItsTicks) {
   const GameDir game("game_sound", 512, 32, R"({ "music": 0 })");
