@@ -1,5 +1,7 @@
 #include "block_interaction.h"
 
+#include <utility>
+
 #include "core/error.h"
 #include "core/log.h"
 #include "placement.h"
@@ -30,11 +32,11 @@ void BlockInteraction::update(const FrameInput& in, double dt, PlayWorld& world)
   if (targetProp_) return useTargetedProp(in, world);
   if (!target_) return;
   if (in.wasPressed(MouseButton::Middle)) hotbar_.pick(pickedBy(world.world(), target_->block));
-  if (fires(in, MouseButton::Left, breakCooldown_)) {
-    for (const Placement& cell : brokenBy(world.world(), target_->block))
-      world.editBlock(cell.at, cell.state);
+  if (survival_) {
+    clicked_ |= in.wasPressed(MouseButton::Left);
+  } else if (fires(in, MouseButton::Left, breakCooldown_)) {
+    breakTarget(world);
     breakCooldown_ = kBreakRepeat;
-    target_ = targetBlock(world.world(), player.eye(), player.forward());
     return;
   }
   if (!fires(in, MouseButton::Right, placeCooldown_)) return;
@@ -45,6 +47,32 @@ void BlockInteraction::update(const FrameInput& in, double dt, PlayWorld& world)
     return;
   }
   placeHeld(world);
+}
+
+std::optional<DigHit> BlockInteraction::digTick(bool held, PlayWorld& world) {
+  if (!survival_) return std::nullopt;
+  held = held || std::exchange(clicked_, false);
+  const std::optional<BlockPos> at =
+      target_ && !targetProp_ ? std::optional<BlockPos>(target_->block) : std::nullopt;
+  const BlockId state = at ? world.world().getBlock(*at) : kAir;
+  const Digging::Tick tick = digging_.tick(held, at, content_.blocks[state].hardness);
+  if (tick.broken) breakTarget(world);
+  if (!tick.hit) return std::nullopt;
+  return DigHit{*at, state};
+}
+
+std::optional<BlockCrack> BlockInteraction::crack() const {
+  const std::optional<int> stage = digging_.crackStage();
+  if (!stage) return std::nullopt;
+  const BlockPos at = *digging_.block();
+  const glm::dvec3 corner(at.x, at.y, at.z);
+  return BlockCrack{{corner, corner + glm::dvec3(1.0)}, *stage};
+}
+
+void BlockInteraction::breakTarget(PlayWorld& world) {
+  for (const Placement& cell : brokenBy(world.world(), target_->block)) world.editBlock(cell.at, cell.state);
+  const Player& player = world.player();
+  target_ = targetBlock(world.world(), player.eye(), player.forward());
 }
 
 void BlockInteraction::useTargetedProp(const FrameInput& in, PlayWorld& world) {

@@ -66,6 +66,7 @@ Game::Game(GlfwWindow& window, const GameOptions& options)
   content_.defaultBake.reset();  // the shapes and the first atlas are made
   audio_.setPacks(renderer_.assets().packs);
   audio_.setVolumes(settings_.values.sound);
+  interaction_.setSurvivalDigging(settings_.values.survivalDigging);
   ui_.setSoundDevice(audio_.deviceLine());
   if (!options.inputScript.empty()) script_.emplace(loadInputScript(options.inputScript));
   input_.setScreenKeys(&ui_);
@@ -140,6 +141,7 @@ void Game::applyMenu(const MenuResult& r) {
   if (r.soundChanged) audio_.setVolumes(s.sound);
   if (r.settingsChanged) {
     window_.setVsync(s.vsync);
+    interaction_.setSurvivalDigging(s.survivalDigging);
     settings_.save();
   }
   if (r.save) save();

@@ -60,16 +60,19 @@ void GameAudio::setVolumes(const AudioVolumes& volumes) {
   if (engine_) engine_->setVolumes(volumes);
 }
 
-void GameAudio::tick(const PlayWorld& world) {
+void GameAudio::tick(const PlayWorld& world, const std::optional<DigHit>& hit) {
   const auto start = std::chrono::steady_clock::now();
-  tickSounds(world);
+  tickSounds(world, hit);
   ticksMs_ += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
-void GameAudio::tickSounds(const PlayWorld& world) {
+void GameAudio::tickSounds(const PlayWorld& world, const std::optional<DigHit>& hit) {
   const std::int64_t now = world.level().time;
   const Player& player = world.player();
   footsteps_.tick(player, world.world(), sounds_, now, cues_);
+  if (hit) {
+    if (auto cue = sounds_.cue(hit->state, hit->at, BlockAction::Hit, now)) cues_.push_back(std::move(*cue));
+  }
   ambience_.tick(world.world(), world.light(), sounds_, player.eye(), now, random_, cues_);
   if (!engine_) return;
   if (const auto event = music_.tick(engine_->musicPlaying(), MusicTimer::night(now), random_)) {

@@ -14,6 +14,7 @@
 #include "audio/audio_engine.h"
 #include "audio/wav_file.h"
 #include "block_sound_cues.h"
+#include "digging.h"
 #include "footsteps.h"
 #include "music_timer.h"
 #include "options.h"
@@ -28,8 +29,9 @@ class GameAudio {
 
   void setPacks(const PackStack& packs);
   void setVolumes(const AudioVolumes& volumes);
-  // After each tick of the player and the world's clock: steps, falls, ambience, music.
-  void tick(const PlayWorld& world);
+  // After each tick of the player and the world's clock: steps, falls, the block `hit` while dug,
+  // ambience, music.
+  void tick(const PlayWorld& world, const std::optional<DigHit>& hit);
   // Once a frame after its ticks: the player's edits heard, the listener at the camera (`eye`,
   // looking along `forward`), and with --audio-out `seconds` of sound rendered into the file.
   void frame(PlayWorld& world, glm::dvec3 eye, glm::dvec3 forward, double seconds);
@@ -43,7 +45,7 @@ class GameAudio {
   std::string overlayLine() const;
 
  private:
-  void tickSounds(const PlayWorld& world);
+  void tickSounds(const PlayWorld& world, const std::optional<DigHit>& hit);
   void play(const SoundCue& cue);
   void log(const SoundCue& cue, const std::optional<std::string>& file);
 

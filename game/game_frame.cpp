@@ -114,8 +114,9 @@ void Game::playInput(double dt) {
   }
   const FrameInput in = input_.take();
   handleInput(in, dt);
-  world_.tick(in, input_.screenOpen(), Player::ticksFor(frames_.tickAccumulator, dt),
-              [this] { audio_.tick(world_); });
+  world_.tick(in, input_.screenOpen(), Player::ticksFor(frames_.tickAccumulator, dt), [&] {
+    audio_.tick(world_, interaction_.digTick(!input_.screenOpen() && in.isHeld(MouseButton::Left), world_));
+  });
   const Player& player = world_.player();
   audio_.frame(world_, player.eyeAt(frames_.tickAccumulator * kTicksPerSecond), player.forward(), dt);
 }
@@ -181,6 +182,7 @@ void Game::draw(bool timed) {
   frame.eyeLight = eyeLightAt(world_.light(), frame.cameraPosition);
   frame.renderScale = renderScale();
   if (!input_.screenOpen() && ui_.hudShown()) frame.outline = interaction_.outline(world_);
+  frame.crack = interaction_.crack();
   overlay_.timings().clear();
   renderer_.render(frame, drawableSize(), timed ? &overlay_.timings() : nullptr);
 }

@@ -155,6 +155,7 @@ void Menu::settingsTab(GameSettings& s, MenuResult& out) {
   out.settingsChanged |= released();
   ImGui::SliderFloat("Sun path rotation", &s.sunPathRotation, -90.0f, 90.0f, "%.0f deg");
   out.settingsChanged |= released();
+  out.settingsChanged |= ImGui::Checkbox("Survival digging (blocks take time to break)", &s.survivalDigging);
   out.settingsChanged |= ImGui::Checkbox("VSync", &s.vsync);
   ImGui::SliderFloat("Render scale", &s.renderScale, kMinRenderScale, kMaxRenderScale, "%.2f");
   out.settingsChanged |= released();

@@ -56,6 +56,7 @@ GameSettings parseRoot(const json& root, const path& dir) {
                "fov",
                "mouse_sensitivity",
                "sun_path_rotation",
+               "survival_digging",
                "shadow",
                "reflections",
                "antialiasing",
@@ -80,6 +81,7 @@ GameSettings parseRoot(const json& root, const path& dir) {
     s.mouseSensitivity = numberIn(*v, "mouse_sensitivity", 0.01, 2.0, false);
   if (const json* v = field(root, "sun_path_rotation"))
     s.sunPathRotation = numberIn(*v, "sun_path_rotation", -90.0, 90.0, false);
+  if (const json* v = field(root, "survival_digging")) s.survivalDigging = boolean(*v, "survival_digging");
   if (const json* v = field(root, "shadow")) parseShadow(*v, "shadow", s.shadow);
   if (const json* v = field(root, "reflections")) parseReflections(*v, "reflections", s.reflections);
   if (const json* v = field(root, "bloom")) parseBloom(*v, "bloom", s.bloom);
@@ -140,6 +142,7 @@ void saveSettings(const std::filesystem::path& file, const GameSettings& s) {
                {"fov", s.fov},
                {"mouse_sensitivity", s.mouseSensitivity},
                {"sun_path_rotation", s.sunPathRotation},
+               {"survival_digging", s.survivalDigging},
                {"shadow", shadowJson(s.shadow)},
                {"reflections", reflectionsJson(s.reflections)},
                {"antialiasing", std::string(kAntialiasingModes.nameOf(s.antialiasing))},

@@ -34,6 +34,7 @@ struct GameSettings {
   float fov = 70.0f;               // degrees, 30..110
   float mouseSensitivity = 0.15f;  // degrees per pixel, 0.01..2
   float sunPathRotation = -25.0f;  // degrees, -90..90
+  bool survivalDigging = false;    // "survival_digging": blocks take their time to break, as in survival
   ShadowSettings shadow = defaultShadow();
   ReflectionSettings reflections;                  // as in scenes
   Antialiasing antialiasing = Antialiasing::None;  // "antialiasing": as render.antialiasing in scenes

@@ -23,6 +23,7 @@ DeferredRenderer::DeferredRenderer(const ShaderPreprocessor& shaders, const Atla
     : shared_(atlas, tints, clouds, options),
       geometry_(VariantBuilder(shaders, shared_), shared_),
       lod_(VariantBuilder(shaders, shared_), shared_),
+      crack_(VariantBuilder(shaders, shared_), shared_, atlas),
       lighting_(VariantBuilder(shaders, shared_), shared_),
       reflection_(VariantBuilder(shaders, shared_), shared_),
       translucent_(VariantBuilder(shaders, shared_), shared_),
@@ -84,7 +85,7 @@ void DeferredRenderer::render(const FrameInputs& inputs, const SectionMeshes& me
                      graph.transient("reflections"),
                      graph.transient("image"),
                      graph.transient("resolved")};
-  for (RenderPass* pass : std::initializer_list<RenderPass*>{&shadow_, &geometry_, &lod_, &lighting_,
+  for (RenderPass* pass : std::initializer_list<RenderPass*>{&shadow_, &geometry_, &lod_, &crack_, &lighting_,
                                                              &reflection_, &translucent_, &shafts_, &bloom_,
                                                              &taa_, &final_, &fxaa_, &debug_, &outline_}) {
     addPass(graph, *pass, frame);

@@ -27,6 +27,7 @@
 #include "render/pass_clock.h"
 #include "render/pass_shared.h"
 #include "render/passes/bloom_pass.h"
+#include "render/passes/crack_pass.h"
 #include "render/passes/geometry_pass.h"
 #include "render/passes/lighting_pass.h"
 #include "render/passes/lod_pass.h"
@@ -73,6 +74,7 @@ class DeferredRenderer final : public WorldRenderer {
   PassShared shared_;  // before the passes: they build their programs into it
   GeometryPass geometry_;
   LodPass lod_;
+  CrackPass crack_;
   LightingPass lighting_;
   ReflectionPass reflection_;
   TranslucentPass translucent_;

@@ -23,6 +23,12 @@ struct WorldBox {
   glm::dvec3 min{0.0}, max{0.0};
 };
 
+// A block being dug: Minecraft's destroy_stage_<stage> texture darkens whatever surfaces lie in `cell`.
+struct BlockCrack {
+  WorldBox cell;
+  int stage = 0;  // 0..9
+};
+
 // The camera under a liquid's surface (world/liquid.h): the surface's height and the sky light at
 // the camera (0..1), which dims the colour the depths fade to.
 struct UnderWater {
@@ -51,6 +57,7 @@ struct FrameInputs {
   bool aside = false;
   // The targeted block: its edges are drawn over the image where nothing nearer hides them.
   std::optional<WorldBox> outline;
+  std::optional<BlockCrack> crack;
   // glTF props drawn beside the blocks (null: none); the renderer was built for their PropNeeds.
   const Props* props = nullptr;
   // Far terrain beyond the sections (null: none); viewDistance then reaches its far edge.

@@ -30,7 +30,8 @@ GBuffer::GBuffer(glm::ivec2 size, GBufferContents contents)
       contents_(contents),
       geometry_(gl::Framebuffer::create()),
       lighting_(gl::Framebuffer::create()),
-      translucent_(gl::Framebuffer::create()) {
+      translucent_(gl::Framebuffer::create()),
+      decal_(gl::Framebuffer::create()) {
   if (size.x <= 0 || size.y <= 0) {
     std::string message = "G-buffer size must be positive, got ";
     message += std::to_string(size.x) + "x" + std::to_string(size.y);
@@ -55,7 +56,9 @@ GBuffer::GBuffer(glm::ivec2 size, GBufferContents contents)
   glNamedFramebufferTexture(translucent_.id(), GL_DEPTH_ATTACHMENT, depth_.id(), 0);
   reactive_ = makeTarget(GL_R8, size);
   glNamedFramebufferTexture(translucent_.id(), GL_COLOR_ATTACHMENT0 + slots::kOutReactive, reactive_.id(), 0);
+  glNamedFramebufferTexture(decal_.id(), GL_COLOR_ATTACHMENT0, target(gbuffer::kAlbedo), 0);
   checkComplete(geometry_.id(), "G-buffer");
+  checkComplete(decal_.id(), "decal");
   checkComplete(lighting_.id(), "lighting");
   checkComplete(translucent_.id(), "translucent");
 }

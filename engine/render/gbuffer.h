@@ -37,6 +37,8 @@ class GBuffer {
   GLuint lightingDepth() const { return lightingDepth_.id(); }
 
   GLuint geometryFramebuffer() const { return geometry_.id(); }  // every target + depth
+  // The albedo target alone, for decals that read depth and normals while they change albedo.
+  GLuint decalFramebuffer() const { return decal_.id(); }
   // The scene, with a copy of depth (copyDepthForLighting) that the lighting and sky draws are tested
   // against: each runs only on its own pixels. The lighting shader samples the original, so no texture
   // it reads is attached.
@@ -58,7 +60,7 @@ class GBuffer {
   GBufferContents contents_;
   std::array<gl::Texture, gbuffer::kTargets> targets_;
   gl::Texture depth_, lightingDepth_, scene_, reactive_;
-  gl::Framebuffer geometry_, lighting_, translucent_;
+  gl::Framebuffer geometry_, lighting_, translucent_, decal_;
 };
 
 }  // namespace terrasol

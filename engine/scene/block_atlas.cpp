@@ -11,6 +11,7 @@
 #include "assets/block_model.h"
 #include "assets/block_states.h"
 #include "assets/cloud_map.h"
+#include "assets/crack_textures.h"
 #include "assets/model_bake.h"
 #include "assets/tints.h"
 #include "core/error.h"
@@ -244,6 +245,12 @@ BlockAtlas buildBlockAtlas(const BlockRegistry& blocks, const PackStack& packs, 
     textures.push_back(loadBlockTexture(packs, candidates, result.problems));
   }
   if (textures.empty()) textures.push_back(loadBlockTexture(packs, {"missing"}, result.problems));
+  // The crack drawn over a block being dug, where some pack has it (none drawn otherwise).
+  for (int stage = 0; stage < kCrackStages; ++stage) {
+    const std::vector<std::string> name{crackTextureName(stage)};
+    if (!index.contains(name) && packs.findBlockTextureNamed(name))
+      textures.push_back(loadBlockTexture(packs, name, result.problems));
+  }
   result.atlas = buildAtlas(textures);
   result.tints = loadColormaps(packs, result.problems);
   result.clouds = loadCloudMap(packs, result.problems);

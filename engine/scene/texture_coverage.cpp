@@ -3,6 +3,7 @@
 #include <cctype>
 #include <set>
 
+#include "assets/crack_textures.h"
 #include "scene/block_atlas.h"
 #include "scene/texture_names.h"
 
@@ -46,6 +47,7 @@ TextureCoverage textureCoverage(const BlockRegistry& blocks, const PackStack& pa
     for (const BakedChoice& c : baked.choices[id])
       for (const BakedQuad& q : c.quads) use(candidatesOf(q.texture));
   }
+  for (int stage = 0; stage < kCrackStages; ++stage) use({crackTextureName(stage)});
   TextureCoverage coverage;
   if (packs.packs().empty()) return coverage;
   std::set<std::string> top;

@@ -217,6 +217,7 @@ RenderedFrame SceneRenderer::renderFrame(int frame, const FrameRequest& request)
   inputs.shadowCentreOffset = request.shadowCentreOffset;
   inputs.reuseShadowMap = request.reuseShadowMap;
   inputs.aside = request.aside;
+  inputs.crack = request.crack;
   RenderedFrame out;
   const GLuint fbo = gpu_->target.framebuffer();
   if (scene_.targetFps > 0) inputs.renderScale = resolution_.scale();

@@ -52,6 +52,7 @@ struct FrameRequest {
   bool reuseShadowMap = false;         // FrameInputs::reuseShadowMap
   bool aside = false;                  // FrameInputs::aside
   std::optional<float> renderScale;    // overrides the scene's (the far terrain report's yardstick)
+  std::optional<BlockCrack> crack;     // FrameInputs::crack
 };
 
 // The scene with full detail out to its far terrain's edge and no far terrain: far terrain's truth.

@@ -18,6 +18,7 @@ namespace terrasol {
 // properties' values (one for a block without properties), numbered consecutively; 0 is always air.
 using BlockId = std::uint16_t;
 inline constexpr BlockId kAir = 0;
+inline constexpr float kUnbreakable = -1.0f;  // BlockType::hardness of what no digging breaks
 
 // Model: drawn by the models its blockstates file names (assets/minecraft/blockstates/<name>.json).
 enum class BlockShape : std::uint8_t { None, Cube, Cross, Liquid, Torch, Model };
@@ -108,6 +109,9 @@ struct BlockType {
   // fences and walls 24), and none in states with `passableWhen` ("open=true": an open gate).
   std::uint8_t collisionHeight = 0;
   std::optional<PropertyValue> passableWhen;
+  // How long it takes to dig, Minecraft's measure (stone 1.5, dirt 0.5, obsidian 50): 0 breaks at
+  // once, kUnbreakable never (bedrock).
+  float hardness = 1.0f;
   Tint tint = Tint::None;
   FaceTextures textures;
   // Faces some states draw otherwise ("textures_when": a snowy grass block's sides); a face left

@@ -184,6 +184,11 @@ void parseStates(const json& block, BlockType& type, const std::string& at) {
   type.defaultState = static_cast<BlockId>(defaultOffset(block, type, at));  // made absolute by the registry
 }
 
+float parseHardness(const json& value, const std::string& key) {
+  if (value.is_number() && value.get<double>() == kUnbreakable) return kUnbreakable;
+  return numberIn(value, key, 0.0, 1e6, false);
+}
+
 BlockType parsePackBlock(const json& block, const std::string& where) {
   if (!block.is_object()) expected(where, "an object", block);
   BlockType type;
@@ -192,7 +197,7 @@ BlockType parsePackBlock(const json& block, const std::string& where) {
   checkObject(block, at,
               {"name", "shape", "layer", "textures", "tint", "opacity", "emission", "shape_occludes_light",
                "properties", "default", "placement", "wall_variant", "connects", "opens", "collision",
-               "placeable", "textures_when"});
+               "placeable", "textures_when", "hardness"});
   type.shape = BlockShape::Cube;
   type.inBlocksJson = true;
   parseLooks(block, type, at);
@@ -205,6 +210,7 @@ BlockType parsePackBlock(const json& block, const std::string& where) {
   parseStates(block, type, at);
   parseGameplay(block, type, at);
   if (const json* v = field(block, "placeable")) type.placeable = boolean(*v, member(at, "placeable"));
+  if (const json* v = field(block, "hardness")) type.hardness = parseHardness(*v, member(at, "hardness"));
   return type;
 }
 
@@ -212,7 +218,7 @@ void parseLooksAndRules(const json& block, BlockType& type, const std::string& w
   if (!block.is_object()) expected(where, "an object", block);
   const std::string at = join({where, " (", type.name, ")"});
   for (const char* fact :
-       {"properties", "default", "opacity", "emission", "shape_occludes_light", "collision"}) {
+       {"properties", "default", "opacity", "emission", "shape_occludes_light", "collision", "hardness"}) {
     if (field(block, fact)) fail(member(at, fact), "is Minecraft's, given by its block table: leave it out");
   }
   checkObject(block, at,

@@ -13,6 +13,9 @@ namespace terrasol {
 // "properties" and "default": the block's states; type.defaultState is relative to its first state.
 void parseStates(const json_check::json& block, BlockType& type, const std::string& at);
 
+// "hardness": Minecraft's digging measure, kUnbreakable (-1) or from 0 up.
+float parseHardness(const json_check::json& value, const std::string& key);
+
 // A block the pack adds: everything from its entry. `where` is its place: "blocks[3]".
 BlockType parsePackBlock(const json_check::json& block, const std::string& where);
 

@@ -60,7 +60,7 @@ TableBlock parseTableBlock(const json& block, const std::string& where, std::siz
   const std::string at = join({where, " (", type.name, ")"});
   checkObject(block, at,
               {"name", "properties", "default", "opacity", "emission", "air", "transparent", "light_by_shape",
-               "in_water", "collision"});
+               "in_water", "collision", "hardness"});
   parseStates(block, type, at);
   type.minecraft = true;
   type.opacity = static_cast<std::uint8_t>(
@@ -80,6 +80,7 @@ TableBlock parseTableBlock(const json& block, const std::string& where, std::siz
   }
   t.collision = perState<std::uint16_t>(required(block, at, "collision"), member(at, "collision"),
                                         type.stateCount, static_cast<std::int64_t>(shapeCount) - 1);
+  type.hardness = parseHardness(required(block, at, "hardness"), member(at, "hardness"));
   return t;
 }
 

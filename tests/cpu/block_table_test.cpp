@@ -148,6 +148,33 @@ TEST(BlockTable, BadTableNamesTheFileBlockAndKey) {
       "data/t.json: blocks[0] (lamp).emission: expected a number or one per state (2), got an array of 1");
   EXPECT_EQ(errorOf(R"({"name": "air", "opacity": 16, "emission": 0, "collision": 0})"),
             "data/t.json: blocks[0] (air).opacity: expected a whole number from 0 to 15, got 16");
+  const std::string hardness =
+      errorOf(R"({"name": "stone", "opacity": 15, "emission": 0, "collision": 1, "hardness": -2})");
+  EXPECT_NE(hardness.find("data/t.json: blocks[0] (stone).hardness: "), std::string::npos) << hardness;
+}
+
+// How long each block takes to dig, Minecraft's hardness: from the table for Minecraft's blocks, from
+// blocks.json (1 unless given) for a pack's own, and never from a pack for Minecraft's.
+TEST(BlockTable, HardnessIsMinecraftsOrThePacks) {
+  const BlockRegistry& b = defaultBlocks();
+  EXPECT_EQ(b[b.id("stone")].hardness, 1.5f);
+  EXPECT_EQ(b[b.id("oak_log[axis=x]")].hardness, 2.0f);
+  EXPECT_EQ(b[b.id("bedrock")].hardness, kUnbreakable);
+  EXPECT_EQ(b[b.id("torch")].hardness, 0.0f);
+  EXPECT_EQ(b[b.id("obsidian")].hardness, 50.0f);
+  const BlockTable table = BlockTable::fromFile(BlockTable::shippedFile());
+  const BlockRegistry own = BlockRegistry::load(
+      table, R"({"blocks": [{"name": "air", "shape": "none"}, {"name": "moon_rock", "hardness": 3,
+                 "textures": {"all": "stone"}}, {"name": "moon_dust", "textures": {"all": "sand"}}]})",
+      "test/blocks.json");
+  EXPECT_EQ(own[own.id("moon_rock")].hardness, 3.0f);
+  EXPECT_EQ(own[own.id("moon_dust")].hardness, 1.0f);
+  const std::string error = testing::errorOf([&] {
+    BlockRegistry::load(table,
+                        R"({"blocks": [{"name": "stone", "hardness": 9, "textures": {"all": "stone"}}]})",
+                        "test/blocks.json");
+  });
+  EXPECT_NE(error.find("hardness"), std::string::npos) << error;
 }
 
 }  // namespace

@@ -472,6 +472,7 @@ TEST(SettingsTest, SaveAndLoadRoundTripAndMissingMeansDefaults) {
   s.keys.bind(Action::Jump, GLFW_KEY_J);
   s.sound.music = 0.25f;
   s.sound.blocks = 0.0f;
+  s.survivalDigging = true;
   saveSettings(file, s);
   const GameSettings back = loadSettings(file);
   EXPECT_EQ(back.viewDistance, 12);
@@ -494,6 +495,8 @@ TEST(SettingsTest, SaveAndLoadRoundTripAndMissingMeansDefaults) {
   EXPECT_EQ(back.sound.blocks, 0.0f);
   EXPECT_EQ(back.sound.master, 1.0f);
   EXPECT_EQ(defaults.sound.music, 1.0f);
+  EXPECT_TRUE(back.survivalDigging);
+  EXPECT_FALSE(defaults.survivalDigging) << "blocks break at a click unless asked";
 }
 
 TEST(SettingsTest, MalformedSettingsNameTheKey) {

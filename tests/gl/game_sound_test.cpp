@@ -93,5 +93,40 @@ TEST(GameSound, AScriptedPlayIsHeardAtItsTicks) {
   EXPECT_LT(levels(wav, quiet, static_cast<double>(wav.frames() - quiet) / wav.rate).both(), 3.0);
 }
 
+// With survival digging on, holding the button on a block hits it every 4th tick until it breaks:
+// the grass block (hardness 0.6) in 3 ticks, a hit on the first; after 5 ticks' pause the dirt under it
+// (ticks as logged after each frame: +-1).
+// With it off (the test above) no hit is heard: blocks break at the click.
+TEST(GameSound, SurvivalDiggingHitsTheBlockUntilItBreaks) {
+  const GameDir game("game_sound_survival", 512, 32, R"({ "music": 0 })", R"(, "survival_digging": true)");
+  std::filesystem::create_directories(game.dir / "world");
+  std::ofstream(game.dir / "world" / "level.json")
+      << R"({ "version": 1, "generator": "flat", "seed": 1, "time": 6000,
+              "player": { "position": [0.5, 64, 0.5], "yaw": 0, "pitch": 0, "flying": false } })";
+  const auto log = game.dir / "sounds.jsonl";
+  ASSERT_EQ(runGame(game.common + " --input-script " + std::string(TERRASOL_SOURCE_DIR) +
+                    "/tests/scripts/survival_dig.json --audio-out " + (game.dir / "heard.wav").string() +
+                    " --sound-log " + log.string()),
+            0);
+  std::vector<Heard> heard;
+  std::istringstream lines(readTextFile(log));
+  for (std::string line; std::getline(lines, line);) {
+    const nlohmann::json j = nlohmann::json::parse(line);
+    const std::string event = j["event"].get<std::string>();
+    if (!event.ends_with(".hit") && !event.ends_with(".break")) continue;
+    ASSERT_FALSE(j["file"].is_null()) << event << " played nothing";
+    heard.push_back({event, j["tick"].get<std::int64_t>(), 0, 0.0});
+  }
+  ASSERT_GE(heard.size(), 4u) << readTextFile(log);
+  EXPECT_EQ(heard[0].event, "block.grass.hit");
+  EXPECT_EQ(heard[1].event, "block.grass.break");
+  EXPECT_NEAR(static_cast<double>(heard[1].tick - heard[0].tick), 2.0, 1.0)
+      << "ticks 1 and 3 of the grass block's 3";
+  EXPECT_EQ(heard[2].event, "block.gravel.hit") << "dirt sounds as gravel";
+  EXPECT_NEAR(static_cast<double>(heard[2].tick - heard[1].tick), 6.0, 1.0) << "5 ticks' pause after a break";
+  EXPECT_EQ(heard[3].event, "block.gravel.break");
+  EXPECT_NEAR(static_cast<double>(heard[3].tick - heard[2].tick), 2.0, 1.0);
+}
+
 }  // namespace
 }  // namespace terrasol

@@ -187,6 +187,7 @@ ordered_json convertBlock(const json& block, const json& collision, const json& 
     if (!d.empty()) out["default"] = d;
   }
   out["opacity"] = block.at("filterLight");
+  out["hardness"] = block.at("hardness");
 
   const int upstreamEmission = block.at("emitLight");
   const std::size_t defaultOffset = block.at("defaultState").get<std::size_t>() - first;

@@ -7,6 +7,7 @@
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
+#include "assets/crack_textures.h"
 #include "assets/labpbr.h"
 #include "recipes.h"
 #include "world/noise.h"
@@ -163,6 +164,9 @@ void writeDefaultPack(const std::filesystem::path& dir) {
     saveImage(blockDir / (t.name + "_s.png"), t.specular);
     if (!t.mcmeta.empty()) std::ofstream(blockDir / (t.name + ".png.mcmeta")) << t.mcmeta;
   }
+  const std::vector<Image> cracks = generateCracks();
+  for (int stage = 0; stage < kCrackStages; ++stage)
+    saveImage(blockDir / (crackTextureName(stage) + ".png"), cracks[static_cast<std::size_t>(stage)]);
   const auto colormapDir = dir / "assets" / "minecraft" / "textures" / "colormap";
   std::filesystem::create_directories(colormapDir);
   for (const auto& c : generateColormaps()) saveImage(colormapDir / (c.name + ".png"), c.map);

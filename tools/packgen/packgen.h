@@ -28,6 +28,9 @@ std::vector<GeneratedColormap> generateColormaps();
 // The cloud layer's map (textures/environment/clouds.png), 256 x 256, repeating.
 Image generateClouds();
 
+// The crack over a block being dug (textures/block/destroy_stage_0..9.png), 16 x 16, stage by stage.
+std::vector<Image> generateCracks();
+
 // A text file of the pack: its path under the pack's root and its contents.
 struct GeneratedFile {
   std::string path;  // "assets/minecraft/blockstates/granite_slab.json"
@@ -39,7 +42,8 @@ struct GeneratedFile {
 std::vector<GeneratedFile> generateShapedBlockFiles();
 std::vector<std::string> shapedBlockNames();
 
-// Writes every texture (and _n, _s, .png.mcmeta) into DIR/assets/minecraft/textures/block/, the
+// Writes every texture (and _n, _s, .png.mcmeta) and the crack's stages into
+// DIR/assets/minecraft/textures/block/, the
 // colormaps into DIR/assets/minecraft/textures/colormap/, the cloud layer into .../environment/, and the
 // shaped blocks' blockstates and models.
 void writeDefaultPack(const std::filesystem::path& dir);
