@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
 #include <sstream>
 
 #include "audio/wav_file.h"
@@ -29,28 +30,38 @@ struct Heard {
 using testing::Levels;
 using testing::levels;
 
-TEST(GameSound, AScriptedPlayIsHeardAtItsTicks) {
-  const GameDir game("game_sound", 512, 32, R"({ "music": 0 })");
+// Plays tests/scripts/`script` on a fresh flat world of grass in `game`, into game.dir/heard.wav; the
+// sounds it asked for whose event `keep` takes, each checked to have played a file.
+std::vector<Heard> play(const GameDir& game, const std::string& script,
+                        const std::function<bool(const std::string&)>& keep) {
   std::filesystem::create_directories(game.dir / "world");
   std::ofstream(game.dir / "world" / "level.json")
       << R"({ "version": 1, "generator": "flat", "seed": 1, "time": 6000,
               "player": { "position": [0.5, 64, 0.5], "yaw": 0, "pitch": 0, "flying": false } })";
-  const auto wavFile = game.dir / "heard.wav", log = game.dir / "sounds.jsonl";
-  ASSERT_EQ(runGame(game.common + " --input-script " + std::string(TERRASOL_SOURCE_DIR) +
-                    "/tests/scripts/game_sounds.json --audio-out " + wavFile.string() + " --sound-log " +
-                    log.string()),
-            0);
-
+  const auto log = game.dir / "sounds.jsonl";
+  EXPECT_EQ(
+      runGame(game.common + " --input-script " + std::string(TERRASOL_SOURCE_DIR) + "/tests/scripts/" +
+              script + " --audio-out " + (game.dir / "heard.wav").string() + " --sound-log " + log.string()),
+      0);
   std::vector<Heard> heard;
   std::istringstream lines(readTextFile(log));
   for (std::string line; std::getline(lines, line);) {
     const nlohmann::json j = nlohmann::json::parse(line);
     const std::string event = j["event"].get<std::string>();
-    if (!event.starts_with("block.")) continue;  // music (at volume 0 here) comes when it will
-    ASSERT_FALSE(j["file"].is_null()) << event << " played nothing";
+    if (!keep(event)) continue;
+    EXPECT_FALSE(j["file"].is_null()) << event << " played nothing";
     heard.push_back(
         {event, j["tick"].get<std::int64_t>(), j["sample"].get<std::size_t>(), j["at"][2].get<double>()});
   }
+  return heard;
+}
+
+TEST(GameSound, AScriptedPlayIsHeardAtItsTicks) {
+  const GameDir game("game_sound", 512, 32, R"({ "music": 0 })");
+  // Music (at volume 0 here) comes when it will.
+  const std::vector<Heard> heard =
+      play(game, "game_sounds.json", [](const std::string& event) { return event.starts_with("block."); });
+  const auto wavFile = game.dir / "heard.wav", log = game.dir / "sounds.jsonl";
   // What the script does, in order, and when (ticks after the first break: the script's seconds x 20).
   const std::vector<std::pair<std::string, int>> expected = {
       {"block.grass.break", 0},  {"block.stone.place", 6},      {"block.grass.break", 14},
@@ -99,25 +110,10 @@ TEST(GameSound, AScriptedPlayIsHeardAtItsTicks) {
 // With it off (the test above) no hit is heard: blocks break at the click.
 TEST(GameSound, SurvivalDiggingHitsTheBlockUntilItBreaks) {
   const GameDir game("game_sound_survival", 512, 32, R"({ "music": 0 })", R"(, "survival_digging": true)");
-  std::filesystem::create_directories(game.dir / "world");
-  std::ofstream(game.dir / "world" / "level.json")
-      << R"({ "version": 1, "generator": "flat", "seed": 1, "time": 6000,
-              "player": { "position": [0.5, 64, 0.5], "yaw": 0, "pitch": 0, "flying": false } })";
-  const auto log = game.dir / "sounds.jsonl";
-  ASSERT_EQ(runGame(game.common + " --input-script " + std::string(TERRASOL_SOURCE_DIR) +
-                    "/tests/scripts/survival_dig.json --audio-out " + (game.dir / "heard.wav").string() +
-                    " --sound-log " + log.string()),
-            0);
-  std::vector<Heard> heard;
-  std::istringstream lines(readTextFile(log));
-  for (std::string line; std::getline(lines, line);) {
-    const nlohmann::json j = nlohmann::json::parse(line);
-    const std::string event = j["event"].get<std::string>();
-    if (!event.ends_with(".hit") && !event.ends_with(".break")) continue;
-    ASSERT_FALSE(j["file"].is_null()) << event << " played nothing";
-    heard.push_back({event, j["tick"].get<std::int64_t>(), 0, 0.0});
-  }
-  ASSERT_GE(heard.size(), 4u) << readTextFile(log);
+  const std::vector<Heard> heard = play(game, "survival_dig.json", [](const std::string& event) {
+    return event.ends_with(".hit") || event.ends_with(".break");
+  });
+  ASSERT_GE(heard.size(), 4u) << readTextFile(game.dir / "sounds.jsonl");
   EXPECT_EQ(heard[0].event, "block.grass.hit");
   EXPECT_EQ(heard[1].event, "block.grass.break");
   EXPECT_NEAR(static_cast<double>(heard[1].tick - heard[0].tick), 2.0, 1.0)
