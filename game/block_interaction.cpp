@@ -34,6 +34,7 @@ void BlockInteraction::update(const FrameInput& in, double dt, PlayWorld& world)
   if (in.wasPressed(MouseButton::Middle)) hotbar_.pick(pickedBy(world.world(), target_->block));
   if (survival_) {
     clicked_ |= in.wasPressed(MouseButton::Left);
+    if (digging_.block()) return;  // nothing is used or placed while a block is dug, as in Minecraft
   } else if (fires(in, MouseButton::Left, breakCooldown_)) {
     breakTarget(world);
     breakCooldown_ = kBreakRepeat;
