@@ -31,9 +31,7 @@ SoundCue ambientCue(std::string_view event, glm::vec3 at, bool positional, std::
 
 void Ambience::tick(const World& world, const LightEngine& light, const BlockSoundTable& sounds,
                     glm::dvec3 eye, std::int64_t tick, std::mt19937& random, std::vector<SoundCue>& out) {
-  const std::optional<std::size_t> liquid = liquidIn(world, cellOf(eye));
-  const bool under = liquid && world.blocks().block(*liquid).name.ends_with("water") &&
-                     liquidSurfaceAbove(world, eye).has_value();
+  const bool under = underWater(world, eye);
   if (started_ && under != underwater_)
     out.push_back(ambientCue(under ? kEnterWaterEvent : kLeaveWaterEvent, {}, false, tick));
   underwater_ = under;

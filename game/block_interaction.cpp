@@ -5,6 +5,7 @@
 #include "core/error.h"
 #include "core/log.h"
 #include "placement.h"
+#include "world/liquid.h"
 
 namespace terrasol {
 namespace {
@@ -52,14 +53,18 @@ void BlockInteraction::update(const FrameInput& in, double dt, PlayWorld& world)
 
 std::optional<DigHit> BlockInteraction::digTick(bool held, PlayWorld& world) {
   if (!survival_) return std::nullopt;
-  held = held || std::exchange(clicked_, false);
-  const std::optional<BlockPos> at =
-      target_ && !targetProp_ ? std::optional<BlockPos>(target_->block) : std::nullopt;
-  const BlockId state = at ? world.world().getBlock(*at) : kAir;
-  const Digging::Tick tick = digging_.tick(held, at, content_.blocks[state].hardness);
+  const Player& player = world.player();
+  DigInput in;
+  in.clicked = std::exchange(clicked_, false);
+  in.held = held;
+  if (target_ && !targetProp_) in.target = target_->block;
+  const BlockId state = in.target ? world.world().getBlock(*in.target) : kAir;
+  in.hardness = content_.blocks[state].hardness;
+  in.hampered = !player.onGround() || underWater(world.world(), player.eye());
+  const Digging::Tick tick = digging_.tick(in);
   if (tick.broken) breakTarget(world);
   if (!tick.hit) return std::nullopt;
-  return DigHit{*at, state};
+  return DigHit{*in.target, state};
 }
 
 std::optional<BlockCrack> BlockInteraction::crack() const {

@@ -24,8 +24,8 @@ class BlockInteraction {
   void update(const FrameInput& in, double dt, PlayWorld& world);
   // Survival digging: blocks take their time to break (Digging) instead of breaking at a click.
   void setSurvivalDigging(bool on) { survival_ = on; }
-  // One world tick of survival digging with the button `held` (or clicked since the last tick); the
-  // block hit this tick, whose hit sound plays. Nothing in creative.
+  // One world tick of survival digging with the button `held` (and any click since the last tick);
+  // the block hit this tick, whose hit sound plays. Nothing in creative.
   std::optional<DigHit> digTick(bool held, PlayWorld& world);
   // The crack on the block being dug.
   std::optional<BlockCrack> crack() const;

@@ -3,36 +3,40 @@
 #include <algorithm>
 #include <limits>
 
-#include "world/block.h"
-
 namespace terrasol {
 
-float Digging::progressPerTick(float hardness) {
+float Digging::progressPerTick(float hardness, bool hampered) {
   if (hardness < 0.0f) return 0.0f;  // kUnbreakable
   if (hardness == 0.0f) return std::numeric_limits<float>::infinity();
-  return kToolSpeed / hardness / 30.0f;
+  return kToolSpeed / (hampered ? kHamperedSlowdown : 1.0f) / hardness / 30.0f;
 }
 
-Digging::Tick Digging::tick(bool held, const std::optional<BlockPos>& target, float hardness) {
-  if (delay_ > 0) {  // counted down held or not: a fresh click waits too
+Digging::Tick Digging::start(const BlockPos& at, float perTick) {
+  progress_ = 0.0f;
+  ticks_ = 0;
+  if (perTick >= 1.0f) {  // no hit and no pause after
+    block_.reset();
+    return {.hit = false, .broken = true};
+  }
+  block_ = at;
+  return {};
+}
+
+Digging::Tick Digging::tick(const DigInput& in) {
+  const float perTick = progressPerTick(in.hardness, in.hampered);
+  // A click starts on the block; one that breaks it ends the tick, as Minecraft's startAttack.
+  if (in.clicked && in.target && block_ != in.target) {
+    if (const Tick t = start(*in.target, perTick); t.broken) return t;
+  }
+  if (!in.held || !in.target) {  // let go (a click and release in one tick digs nothing)
+    block_.reset();
+    return {};
+  }
+  if (delay_ > 0) {  // counted down only while held
     --delay_;
-    block_.reset();
     return {};
   }
-  if (!held || !target) {
-    block_.reset();
-    return {};
-  }
-  const float perTick = progressPerTick(hardness);
-  if (block_ != target) {
-    block_ = target;
-    progress_ = 0.0f;
-    ticks_ = 0;
-    if (perTick >= 1.0f) {  // at once, with no hit and no pause after (Minecraft's instant break)
-      block_.reset();
-      return {.hit = false, .broken = true};
-    }
-  }
+  if (block_ != in.target) return start(*in.target, perTick);
   Tick out;
   out.hit = ticks_ % kHitEvery == 0;
   ++ticks_;

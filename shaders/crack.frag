@@ -29,7 +29,7 @@ void main() {
   vec3 n = octDecode(normals.zw);  // the vertex normal: the face, not its normal map
 #endif
   // A step into the surface decides whose it is: the dug block's own face on the cell's side is in,
-  // the neighbour's face it stands on (the ground under a torch) is out, whatever depth's error.
+  // the neighbour's face it stands on (the ground under a fence post) is out, whatever depth's error.
   vec3 inside = p - n * (1.0 / 64.0);
   if (any(lessThan(inside, u_cellMin)) || any(greaterThan(inside, u_cellMax))) discard;
   // Within the cell, 0..1 on each axis; the face's two axes give the texture's, top up on the sides.

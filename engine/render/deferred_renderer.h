@@ -2,6 +2,8 @@
 // The deferred pipeline, one frame at a time, as a graph of passes (render/frame_graph.h):
 //   shadow       the light's depth (and translucent casters' colour) -> shadow map, kept across frames
 //   geometry     opaque, then alpha-tested cutout -> G-buffer
+//   lod          far terrain's tiles -> G-buffer
+//   crack        the crack on a block being dug, multiplied into the G-buffer's albedo
 //   lighting     LabPBR direct + ambient + block light + emission where something was drawn, sky elsewhere
 //   reflection   screen-space reflections of smooth surfaces, with the sky where a ray finds nothing
 //   translucent  water, glass, blended props: lit forward, blended over the lit scene

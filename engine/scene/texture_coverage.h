@@ -12,8 +12,7 @@ namespace terrasol {
 
 // Of the top pack's block textures (base names: no _n, _s or .mcmeta), those the blocks draw with (their
 // faces' textures and their models', as the stack resolves them, and the crack over a block being dug)
-// and the rest, each sorted: how much
-// of a pack the world can show.
+// and the rest, each sorted: how much of a pack the world can show.
 // Of the unused, those no Minecraft model could name, by why: a numbered variant of a texture the pack
 // has ("stone7" beside "stone", for random-variant models the pack does not ship), an emissive layer
 // ("torch_e", OptiFine's `_e` beside its base), and an older name whose current name the pack also has.

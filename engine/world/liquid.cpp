@@ -29,4 +29,10 @@ std::optional<double> liquidSurfaceAbove(const World& world, glm::dvec3 point) {
   return surface;
 }
 
+bool underWater(const World& world, glm::dvec3 point) {
+  if (!liquidSurfaceAbove(world, point)) return false;
+  const std::optional<std::size_t> liquid = liquidIn(world, BlockPos::containing(point.x, point.y, point.z));
+  return liquid && world.blocks().block(*liquid).name.ends_with("water");
+}
+
 }  // namespace terrasol

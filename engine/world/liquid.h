@@ -18,5 +18,7 @@ bool isLiquid(const World& world, const BlockPos& pos);
 
 // The world height of the surface of the liquid `point` is in, or nothing where it is not in one.
 std::optional<double> liquidSurfaceAbove(const World& world, glm::dvec3 point);
+// Whether `point` is under water's surface (not lava's): where the eyes hear and dig as under water.
+bool underWater(const World& world, glm::dvec3 point);
 
 }  // namespace terrasol

@@ -6,6 +6,7 @@
 
 #include "render/shadow_schedule.h"
 #include "scene_render/scene_render.h"
+#include "support/frame_probe.h"
 #include "support/gl_test.h"
 #include "support/golden.h"
 #include "support/shader_variants.h"
@@ -56,12 +57,7 @@ TEST_F(LeaveOutTest, CaveCullingHidesSectionsAndCastersButNoPixel) {
   context_->checkErrors("cave culling");
 }
 
-std::string skipReason(const RenderedFrame& frame, const std::string& pass) {
-  for (const FrameStats::Skipped& s : frame.stats.passesSkipped) {
-    if (s.pass == pass) return s.why;
-  }
-  return "(ran)";
-}
+using testing::skipReason;
 
 // The frame graph leaves out every pass whose output no pass that runs reads: a debug view replaces
 // the final image, so the lit scene, the translucent pass and the shadow map are not needed.

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
+#include <string>
 
 #include "scene_render/scene_render.h"
 
@@ -24,6 +25,14 @@ inline glm::vec3 colourAt(const RenderedFrame& frame, glm::dvec3 world) {
       sum += glm::vec3(p[0], p[1], p[2]) / 255.0f;
     }
   return sum / 9.0f;
+}
+
+// Why the frame left `pass` out, or "(ran)".
+inline std::string skipReason(const RenderedFrame& frame, const std::string& pass) {
+  for (const FrameStats::Skipped& s : frame.stats.passesSkipped) {
+    if (s.pass == pass) return s.why;
+  }
+  return "(ran)";
 }
 
 inline float brightness(glm::vec3 c) {

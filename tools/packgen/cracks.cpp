@@ -38,7 +38,7 @@ std::vector<int> crackOrder() {
     if (r % 4 == 0) tip.direction = (tip.direction + (r % 8 < 4 ? 1 : 7)) % 8;
     tip.x += kSteps[static_cast<std::size_t>(tip.direction)][0];
     tip.y += kSteps[static_cast<std::size_t>(tip.direction)][1];
-    if (tip.x < 0 || tip.y < 0 || tip.x >= kSide || tip.y >= kSide) {  // a new walk from a cracked texel
+    if (tip.x < 0 || tip.y < 0 || tip.x >= kSide || tip.y >= kSide) {  // a new walk from the middle
       tip = {kSide / 2, kSide / 2, static_cast<int>(r % 8)};
       continue;
     }

@@ -43,9 +43,8 @@ std::vector<GeneratedFile> generateShapedBlockFiles();
 std::vector<std::string> shapedBlockNames();
 
 // Writes every texture (and _n, _s, .png.mcmeta) and the crack's stages into
-// DIR/assets/minecraft/textures/block/, the
-// colormaps into DIR/assets/minecraft/textures/colormap/, the cloud layer into .../environment/, and the
-// shaped blocks' blockstates and models.
+// DIR/assets/minecraft/textures/block/, the colormaps into DIR/assets/minecraft/textures/colormap/, the
+// cloud layer into .../environment/, and the shaped blocks' blockstates and models.
 void writeDefaultPack(const std::filesystem::path& dir);
 
 }  // namespace terrasol::packgen
