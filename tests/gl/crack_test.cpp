@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <glm/common.hpp>
+#include <optional>
 
 #include "assets/crack_textures.h"
 #include "assets/image.h"
@@ -21,15 +22,10 @@ const std::filesystem::path kScenes = std::filesystem::path(TERRASOL_SOURCE_DIR)
 
 using testing::skipReason;
 
-struct Changed {
-  int inCell = 0, outside = 0;
-  double brightnessBefore = 0.0, brightnessAfter = 0.0;  // summed over the changed pixels
-};
-
-// Pixels of `after` that differ from `before`, sorted by whether the surface under them (from the
-// read-back depth) lies in `cell` (grown by `slack` blocks).
-Changed compare(const RenderedFrame& before, const RenderedFrame& after, const WorldBox& cell, double slack) {
-  Changed out;
+// Calls `visit(point, before, after)` for each pixel `after` changed from `before` (by more than
+// rounding), with the world point of the surface under it (from the read-back depth; none for sky).
+template <class Visit>
+void forEachChanged(const RenderedFrame& before, const RenderedFrame& after, Visit visit) {
   const glm::ivec2 size = before.pixels.size;
   for (int y = 0; y < size.y; ++y) {
     for (int x = 0; x < size.x; ++x) {
@@ -38,41 +34,48 @@ Changed compare(const RenderedFrame& before, const RenderedFrame& after, const W
       const std::uint8_t* b = after.image.pixel(x, row);
       if (std::abs(a[0] - b[0]) + std::abs(a[1] - b[1]) + std::abs(a[2] - b[2]) <= 3) continue;
       const float depth = before.pixels.depth[static_cast<std::size_t>(y * size.x + x)];
-      const glm::dvec3 p = before.geometry.camera + testing::pixelPoint(before, x, y, depth);
-      const bool in = depth < 1.0f && glm::all(glm::greaterThanEqual(p, cell.min - slack)) &&
-                      glm::all(glm::lessThanEqual(p, cell.max + slack));
-      (in ? out.inCell : out.outside) += 1;
-      out.brightnessBefore += a[0] + a[1] + a[2];
-      out.brightnessAfter += b[0] + b[1] + b[2];
+      std::optional<glm::dvec3> point;
+      if (depth < 1.0f) point = before.geometry.camera + testing::pixelPoint(before, x, y, depth);
+      visit(point, a, b);
     }
   }
+}
+
+struct Changed {
+  int inCell = 0, outside = 0;
+  double brightnessBefore = 0.0, brightnessAfter = 0.0;  // summed over the changed pixels
+};
+
+// The changed pixels, sorted by whether their surface lies in `cell` (grown by `slack` blocks).
+Changed compare(const RenderedFrame& before, const RenderedFrame& after, const WorldBox& cell, double slack) {
+  Changed out;
+  forEachChanged(before, after,
+                 [&](const std::optional<glm::dvec3>& p, const std::uint8_t* a, const std::uint8_t* b) {
+                   const bool in = p && glm::all(glm::greaterThanEqual(*p, cell.min - slack)) &&
+                                   glm::all(glm::lessThanEqual(*p, cell.max + slack));
+                   (in ? out.inCell : out.outside) += 1;
+                   out.brightnessBefore += a[0] + a[1] + a[2];
+                   out.brightnessAfter += b[0] + b[1] + b[2];
+                 });
   return out;
 }
 
-// Of the pixels `after` changed on the cell's +z face, the share whose texel in `crack` is drawn (alpha
-// at least 0.1) when the face takes the texture with u along +x and v down from its top, as Minecraft
+// Of the pixels changed on the cell's +z face, the share whose texel in `crack` is drawn (alpha at
+// least 0.1) when the face takes the texture with u along +x and v down from its top, as Minecraft
 // lays it on (or mirrored left to right).
 double drawnShare(const RenderedFrame& before, const RenderedFrame& after, const WorldBox& cell,
                   const Image& crack, bool mirrored) {
   int changed = 0, drawn = 0;
-  const glm::ivec2 size = before.pixels.size;
-  for (int y = 0; y < size.y; ++y) {
-    for (int x = 0; x < size.x; ++x) {
-      const int row = size.y - 1 - y;
-      const std::uint8_t* a = before.image.pixel(x, row);
-      const std::uint8_t* b = after.image.pixel(x, row);
-      if (std::abs(a[0] - b[0]) + std::abs(a[1] - b[1]) + std::abs(a[2] - b[2]) <= 3) continue;
-      const float depth = before.pixels.depth[static_cast<std::size_t>(y * size.x + x)];
-      const glm::dvec3 p = before.geometry.camera + testing::pixelPoint(before, x, y, depth);
-      if (std::abs(p.z - cell.max.z) > 0.02) continue;
-      const double u = mirrored ? cell.max.x - p.x : p.x - cell.min.x, v = cell.max.y - p.y;
-      const auto texel = [&](double t) {
-        return std::clamp(static_cast<int>(t * crack.width), 0, crack.width - 1);
-      };
-      ++changed;
-      drawn += crack.pixel(texel(u), texel(v))[3] >= 26;
-    }
-  }
+  const auto texel = [&](double t) {
+    return std::clamp(static_cast<int>(t * crack.width), 0, crack.width - 1);
+  };
+  forEachChanged(before, after,
+                 [&](const std::optional<glm::dvec3>& p, const std::uint8_t*, const std::uint8_t*) {
+                   if (!p || std::abs(p->z - cell.max.z) > 0.02) return;
+                   const double u = mirrored ? cell.max.x - p->x : p->x - cell.min.x, v = cell.max.y - p->y;
+                   ++changed;
+                   drawn += crack.pixel(texel(u), texel(v))[3] >= 26;
+                 });
   return changed ? static_cast<double>(drawn) / changed : 0.0;
 }
 
