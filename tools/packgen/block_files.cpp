@@ -87,6 +87,11 @@ Json frontVariants(const std::string& model, const std::string& prefix) {
       {prefix + "facing=up", variant(model, 270, 0)},    {prefix + "facing=down", variant(model, 90, 0)}};
 }
 
+void addModelBlock(const std::string& name, const Json& model, std::vector<GeneratedFile>& out) {
+  out.push_back(file("model", name, model));
+  out.push_back(file("blockstates", name, single(name)));
+}
+
 Json axisVariants(const std::string& model) {
   return Json{{"axis=x", variant(model, 90, 90)},
               {"axis=y", variant(model, 0, 0)},

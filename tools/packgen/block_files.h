@@ -67,6 +67,12 @@ inline Json child(const std::string& parent, const Json& textures) {
 inline Json single(const std::string& model) {
   return Json{{"variants", {{"", {{"model", block(model)}}}}}};
 }
+
+// A block of one model drawn in every state: the model and its blockstates file.
+void addModelBlock(const std::string& name, const Json& model, std::vector<GeneratedFile>& out);
+
+// Copper's ages: the prefix of each age's blocks ("" is fresh copper).
+inline constexpr std::array<const char*, 4> kCopperAges{"", "exposed_", "weathered_", "oxidized_"};
 // The four horizontal facings and the y turn that brings a model made facing north to them.
 inline constexpr std::array<std::pair<const char*, int>, 4> kFacings = {
     {{"north", 0}, {"east", 90}, {"south", 180}, {"west", 270}}};
@@ -84,11 +90,13 @@ Json axisVariants(const std::string& model);
 void addPane(const std::string& name, const std::string& pane, const std::string& edge,
              std::vector<GeneratedFile>& out);
 
-// The families by job: block-entity blocks as static models (furniture_files.cpp), work stations,
-// cakes, candles, lanterns and metalwork (workshop_files.cpp), redstone (redstone_files.cpp),
-// plants (plant_files.cpp) and full blocks with their own faces (cube_files.cpp).
+// The families by job: block-entity blocks as static models (furniture_files.cpp), work stations
+// (workshop_files.cpp), cakes, candles, lanterns, metalwork and flower pots (home_files.cpp),
+// redstone (redstone_files.cpp), plants (plant_files.cpp) and full blocks with their own faces
+// (cube_files.cpp).
 void addFurnitureFiles(std::vector<GeneratedFile>& out);
 void addWorkshopFiles(std::vector<GeneratedFile>& out);
+void addHomeFiles(std::vector<GeneratedFile>& out);
 void addRedstoneFiles(std::vector<GeneratedFile>& out);
 void addPlantFiles(std::vector<GeneratedFile>& out);
 void addCubeFiles(std::vector<GeneratedFile>& out);

@@ -16,11 +16,6 @@
 namespace terrasol::packgen {
 namespace {
 
-void addSingle(const std::string& name, const Json& model, std::vector<GeneratedFile>& out) {
-  out.push_back(file("model", name, model));
-  out.push_back(file("blockstates", name, single(name)));
-}
-
 Json cubeAll(const std::string& texture) {
   return child("block/cube_all", Json{{"all", block(texture)}});
 }
@@ -44,46 +39,46 @@ Json fronted(const std::string& front, const std::string& side, const std::strin
 }
 
 void addCubes(std::vector<GeneratedFile>& out) {
-  addSingle("podzol", bottomTop("podzol_side", "podzol_top", "dirt"), out);
-  addSingle("mycelium", bottomTop("mycelium_side", "mycelium_top", "dirt"), out);
-  addSingle("crimson_nylium", bottomTop("crimson_nylium_side", "crimson_nylium", "netherrack"), out);
-  addSingle("warped_nylium", bottomTop("warped_nylium_side", "warped_nylium", "netherrack"), out);
+  addModelBlock("podzol", bottomTop("podzol_side", "podzol_top", "dirt"), out);
+  addModelBlock("mycelium", bottomTop("mycelium_side", "mycelium_top", "dirt"), out);
+  addModelBlock("crimson_nylium", bottomTop("crimson_nylium_side", "crimson_nylium", "netherrack"), out);
+  addModelBlock("warped_nylium", bottomTop("warped_nylium_side", "warped_nylium", "netherrack"), out);
   // Their models come with their slabs (shaped_blocks.cpp).
   for (const char* name : {"bamboo_mosaic", "blackstone"})
     out.push_back(file("blockstates", name, single(name)));
   for (const char* name : {"chiseled_stone_bricks", "chiseled_resin_bricks", "chiseled_polished_blackstone",
                            "gilded_blackstone", "chiseled_nether_bricks", "azalea_leaves",
                            "flowering_azalea_leaves", "slime_block", "spawner", "end_gateway"})
-    addSingle(name, cubeAll(name), out);
+    addModelBlock(name, cubeAll(name), out);
   out.push_back(file("blockstates", "infested_chiseled_stone_bricks", single("chiseled_stone_bricks")));
-  addSingle("honey_block", bottomTop("honey_block_side", "honey_block_top", "honey_block_bottom"), out);
-  addSingle("mangrove_roots", column("mangrove_roots_side", "mangrove_roots_top"), out);
-  addSingle("ancient_debris", column("ancient_debris_side", "ancient_debris_top"), out);
-  addSingle("lodestone", column("lodestone_side", "lodestone_top"), out);
-  addSingle("chiseled_tuff", column("chiseled_tuff", "chiseled_tuff_top"), out);
-  addSingle("chiseled_tuff_bricks", column("chiseled_tuff_bricks", "chiseled_tuff_bricks_top"), out);
-  addSingle("chiseled_deepslate", cubeAll("chiseled_deepslate"), out);
-  addSingle("reinforced_deepslate",
-            bottomTop("reinforced_deepslate_side", "reinforced_deepslate_top", "reinforced_deepslate_bottom"),
-            out);
-  addSingle("dried_kelp_block", bottomTop("dried_kelp_side", "dried_kelp_top", "dried_kelp_bottom"), out);
-  addSingle("sculk_catalyst", bottomTop("sculk_catalyst_side", "sculk_catalyst_top", "sculk_catalyst_bottom"),
-            out);
-  addSingle("trial_spawner",
-            bottomTop("trial_spawner_side_inactive", "trial_spawner_top_inactive", "trial_spawner_bottom"),
-            out);
+  addModelBlock("honey_block", bottomTop("honey_block_side", "honey_block_top", "honey_block_bottom"), out);
+  addModelBlock("mangrove_roots", column("mangrove_roots_side", "mangrove_roots_top"), out);
+  addModelBlock("ancient_debris", column("ancient_debris_side", "ancient_debris_top"), out);
+  addModelBlock("lodestone", column("lodestone_side", "lodestone_top"), out);
+  addModelBlock("chiseled_tuff", column("chiseled_tuff", "chiseled_tuff_top"), out);
+  addModelBlock("chiseled_tuff_bricks", column("chiseled_tuff_bricks", "chiseled_tuff_bricks_top"), out);
+  addModelBlock("chiseled_deepslate", cubeAll("chiseled_deepslate"), out);
+  addModelBlock(
+      "reinforced_deepslate",
+      bottomTop("reinforced_deepslate_side", "reinforced_deepslate_top", "reinforced_deepslate_bottom"), out);
+  addModelBlock("dried_kelp_block", bottomTop("dried_kelp_side", "dried_kelp_top", "dried_kelp_bottom"), out);
+  addModelBlock("sculk_catalyst",
+                bottomTop("sculk_catalyst_side", "sculk_catalyst_top", "sculk_catalyst_bottom"), out);
+  addModelBlock(
+      "trial_spawner",
+      bottomTop("trial_spawner_side_inactive", "trial_spawner_top_inactive", "trial_spawner_bottom"), out);
   // Tables as Minecraft faces them: a front to the north and south, their sides east and west.
   const auto table = [&](const std::string& name, const std::string& front, const std::string& side,
                          const std::string& west, const std::string& top, const std::string& bottom) {
-    addSingle(name,
-              child("block/cube", Json{{"particle", block(front)},
-                                       {"north", block(front)},
-                                       {"south", block(front)},
-                                       {"east", block(side)},
-                                       {"west", block(west)},
-                                       {"up", block(top)},
-                                       {"down", block(bottom)}}),
-              out);
+    addModelBlock(name,
+                  child("block/cube", Json{{"particle", block(front)},
+                                           {"north", block(front)},
+                                           {"south", block(front)},
+                                           {"east", block(side)},
+                                           {"west", block(west)},
+                                           {"up", block(top)},
+                                           {"down", block(bottom)}}),
+                  out);
   };
   table("cartography_table", "cartography_table_side3", "cartography_table_side1", "cartography_table_side2",
         "cartography_table_top", "dark_oak_planks");
@@ -226,7 +221,7 @@ void addDoors(std::vector<GeneratedFile>& out) {
                                              "models/block/oak_trapdoor_top"};
   addRenamedOak(door, "iron_", "", out);
   addRenamedOak(trapdoor, "iron_", "", out);
-  for (const std::string age : {"", "exposed_", "weathered_", "oxidized_"}) {
+  for (const std::string age : kCopperAges) {
     addRenamedOak(door, age + "copper_", "", out);
     addRenamedOak(trapdoor, age + "copper_", "", out);
     // Waxed copper looks as the copper it keeps.
@@ -237,9 +232,9 @@ void addDoors(std::vector<GeneratedFile>& out) {
       });
       out.push_back({"assets/minecraft/blockstates/waxed_" + name + ".json", states->text});
     }
-    addSingle(age + "chiseled_copper", cubeAll(age + "chiseled_copper"), out);
+    addModelBlock(age + "chiseled_copper", cubeAll(age + "chiseled_copper"), out);
     out.push_back(file("blockstates", "waxed_" + age + "chiseled_copper", single(age + "chiseled_copper")));
-    addSingle(age + "copper_grate", cubeAll(age + "copper_grate"), out);
+    addModelBlock(age + "copper_grate", cubeAll(age + "copper_grate"), out);
     out.push_back(file("blockstates", "waxed_" + age + "copper_grate", single(age + "copper_grate")));
   }
   addRenamedOak({"blockstates/oak_fence", "models/block/oak_fence_post", "models/block/oak_fence_side"},
@@ -254,10 +249,10 @@ void addPortals(std::vector<GeneratedFile>& out) {
       file("blockstates", "nether_portal",
            Json{{"variants",
                  {{"axis=x", variant("nether_portal")}, {"axis=z", variant("nether_portal", 0, 90)}}}}));
-  addSingle("end_portal",
-            elementModel(Json{{"portal", block("end_portal")}},
-                         Json::array({box({0, 12, 0}, {16, 12, 16}, "#portal", "u")})),
-            out);
+  addModelBlock("end_portal",
+                elementModel(Json{{"portal", block("end_portal")}},
+                             Json::array({box({0, 12, 0}, {16, 12, 16}, "#portal", "u")})),
+                out);
   out.push_back(file("model", "end_rod",
                      elementModel(Json{{"rod", block("end_rod")}},
                                   Json::array({box({6, 0, 6}, {10, 1, 10}, "#rod"),

@@ -16,7 +16,7 @@ namespace {
 constexpr const char* kSignWoods[] = {"oak",      "spruce",   "birch",    "jungle", "acacia",  "cherry",
                                       "dark_oak", "pale_oak", "mangrove", "bamboo", "crimson", "warped"};
 // Copper's four ages, their block textures, and the waxed names beside them.
-constexpr std::array<std::pair<const char*, const char*>, 4> kCopperAges = {
+constexpr std::array<std::pair<const char*, const char*>, 4> kCopperAgeTextures = {
     {{"", "copper_block"},
      {"exposed_", "exposed_copper"},
      {"weathered_", "weathered_copper"},
@@ -232,7 +232,7 @@ void addFurnitureFiles(std::vector<GeneratedFile>& out) {
   addChest("chest", "oak_planks", "iron_block", out);
   addChest("trapped_chest", "oak_planks", "redstone_block", out);
   addChest("ender_chest", "obsidian", "end_stone", out, false);
-  for (const auto& [age, texture] : kCopperAges) {
+  for (const auto& [age, texture] : kCopperAgeTextures) {
     addChest(std::string(age) + "copper_chest", texture, "iron_block", out);
     addChest("waxed_" + std::string(age) + "copper_chest", texture, "iron_block", out);
     addStatue(age, texture, out);
@@ -245,10 +245,8 @@ void addFurnitureFiles(std::vector<GeneratedFile>& out) {
   // Shulker boxes: a cube of the box's own texture, as Minecraft's block model gives for its particle.
   std::vector<std::string> boxes{"shulker_box"};
   for (const auto& [colour, rgb] : kDyes) boxes.push_back(std::string(colour) + "_shulker_box");
-  for (const std::string& name : boxes) {
-    out.push_back(file("model", name, child("block/cube_all", Json{{"all", block(name)}})));
-    out.push_back(file("blockstates", name, single(name)));
-  }
+  for (const std::string& name : boxes)
+    addModelBlock(name, child("block/cube_all", Json{{"all", block(name)}}), out);
   const Json pot{{"clay", block("terracotta")}};
   out.push_back(file("model", "decorated_pot",
                      elementModel(pot, Json::array({box({1, 0, 1}, {15, 12, 15}, "#clay"),

@@ -253,7 +253,7 @@ void addSwitchedBlocks(std::vector<GeneratedFile>& out) {
       file("blockstates", "redstone_lamp",
            Json{{"variants",
                  {{"lit=false", variant("redstone_lamp")}, {"lit=true", variant("redstone_lamp_on")}}}}));
-  for (const std::string age : {"", "exposed_", "weathered_", "oxidized_"}) {
+  for (const std::string age : kCopperAges) {
     const std::string bulb = age + "copper_bulb";
     Json variants;
     for (const bool lit : {false, true}) {

@@ -209,6 +209,7 @@ std::vector<GeneratedFile> generateShapedBlockFiles() {
   addFamilyFiles(out);
   addFurnitureFiles(out);
   addWorkshopFiles(out);
+  addHomeFiles(out);
   addRedstoneFiles(out);
   addPlantFiles(out);
   addCubeFiles(out);
