@@ -202,13 +202,12 @@ void addCorals(std::vector<GeneratedFile>& out) {
     for (const std::string dead : {"", "dead_"}) {
       const std::string coral = dead + kind + "_coral", fan = coral + "_fan";
       addCrossBlock(coral, out);
-      out.push_back(
-          file("model", fan,
-               Json{{"ambientocclusion", false},
-                    {"textures", {{"particle", block(fan)}, {"fan", block(fan)}}},
-                    {"elements", Json::array({turnedBox({0, 0, 8}, {16, 8, 8}, "#fan", "ns", 45),
-                                              turnedBox({8, 0, 0}, {8, 8, 16}, "#fan", "we", 45)})}}));
-      out.push_back(file("blockstates", fan, single(fan)));
+      addModelBlock(fan,
+                    Json{{"ambientocclusion", false},
+                         {"textures", {{"particle", block(fan)}, {"fan", block(fan)}}},
+                         {"elements", Json::array({turnedBox({0, 0, 8}, {16, 8, 8}, "#fan", "ns", 45),
+                                                   turnedBox({8, 0, 0}, {8, 8, 16}, "#fan", "we", 45)})}},
+                    out);
       Json sheet = box({0, 8, 0}, {16, 8, 16}, "#fan", "du");
       sheet["rotation"] = Json{{"origin", {8, 8, 16}}, {"axis", "x"}, {"angle", 22.5}};
       const std::string wall = dead + kind + "_coral_wall_fan";
@@ -312,16 +311,15 @@ void addCaveGrowth(std::vector<GeneratedFile>& out) {
   out.push_back(file("blockstates", "small_dripleaf", Json{{"variants", small}}));
   // Azaleas: a leafy top over a trunk.
   for (const std::string kind : {"azalea", "flowering_azalea"}) {
-    out.push_back(
-        file("model", kind,
-             elementModel(Json{{"top", block(kind + "_top")},
-                               {"side", block(kind + "_side")},
-                               {"plant", block("azalea_plant")}},
-                          Json::array({box({0, 8, 0}, {16, 16, 16}, "#side", "dnswe"),
-                                       box({0, 8, 0}, {16, 16, 16}, "#top", "u"),
-                                       turnedBox({0.8, 0, 8}, {15.2, 8, 8}, "#plant", "ns", 45),
-                                       turnedBox({8, 0, 0.8}, {8, 8, 15.2}, "#plant", "we", 45)}))));
-    out.push_back(file("blockstates", kind, single(kind)));
+    addModelBlock(kind,
+                  elementModel(Json{{"top", block(kind + "_top")},
+                                    {"side", block(kind + "_side")},
+                                    {"plant", block("azalea_plant")}},
+                               Json::array({box({0, 8, 0}, {16, 16, 16}, "#side", "dnswe"),
+                                            box({0, 8, 0}, {16, 16, 16}, "#top", "u"),
+                                            turnedBox({0.8, 0, 8}, {15.2, 8, 8}, "#plant", "ns", 45),
+                                            turnedBox({8, 0, 0.8}, {8, 8, 15.2}, "#plant", "we", 45)})),
+                  out);
   }
   addCross("flowering_azalea_plant", "flowering_azalea_plant", out);
 }
@@ -332,10 +330,10 @@ void addWaterAndEndPlants(std::vector<GeneratedFile>& out) {
   addCounted("turtle_egg", "eggs",
              {{5, 0, 4, 9, 7, 8}, {1, 0, 7, 5, 5, 11}, {10, 0, 9, 14, 4, 13}, {6, 0, 10, 10, 5, 14}}, out,
              "hatch", {"turtle_egg", "turtle_egg_slightly_cracked", "turtle_egg_very_cracked"});
-  out.push_back(file("model", "sniffer_egg",
-                     elementModel(Json{{"all", block("sniffer_egg")}},
-                                  Json::array({box({1, 0, 2}, {15, 16, 14}, "#all")}))));
-  out.push_back(file("blockstates", "sniffer_egg", single("sniffer_egg")));
+  addModelBlock(
+      "sniffer_egg",
+      elementModel(Json{{"all", block("sniffer_egg")}}, Json::array({box({1, 0, 2}, {15, 16, 14}, "#all")})),
+      out);
   out.push_back(file("model", "dried_ghast",
                      elementModel(Json{{"all", block("dried_ghast")}},
                                   Json::array({box({3, 0, 3}, {13, 10, 13}, "#all")}))));
@@ -435,8 +433,7 @@ void addPlantFiles(std::vector<GeneratedFile>& out) {
   addSunflower(out);
   addDoublePlant("tall_grass", "tall_grass", true, out);
   addDoublePlant("large_fern", "large_fern", true, out);
-  addCross("pitcher_crop", "pitcher_crop", out);
-  out.push_back(file("blockstates", "pitcher_crop", single("pitcher_crop")));
+  addCrossBlock("pitcher_crop", out);
   addMultiface("vine", false, true, out);
   for (const char* growth : {"glow_lichen", "sculk_vein", "resin_clump"})
     addMultiface(growth, true, false, out);
@@ -448,14 +445,8 @@ void addPlantFiles(std::vector<GeneratedFile>& out) {
   addCaveGrowth(out);
   addWaterAndEndPlants(out);
   addCocoa(out);
-  for (const char* carpet : {"moss_carpet", "pale_moss_carpet"}) {
-    out.push_back(file(
-        "model", carpet,
-        child(
-            "block/carpet",
-            Json{{"wool", block(carpet == std::string("moss_carpet") ? "moss_block" : "pale_moss_block")}})));
-    out.push_back(file("blockstates", carpet, single(carpet)));
-  }
+  for (const std::string carpet : {"moss", "pale_moss"})
+    addModelBlock(carpet + "_carpet", child("block/carpet", Json{{"wool", block(carpet + "_block")}}), out);
 }
 
 }  // namespace terrasol::packgen
